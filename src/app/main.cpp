@@ -1,0 +1,2 @@
+// The crumple command. Placeholder until the application layer lands.
+int main() { return 0; }

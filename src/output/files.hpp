@@ -1,0 +1,55 @@
+// Small output helpers that know no physics: CSV histories, the state digest, the results
+// folder guard and the progress line.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace crumple::output {
+
+// A CSV file with a header row; numbers written with 17 significant digits (round-trip).
+class CsvWriter {
+ public:
+  CsvWriter() = default;
+  CsvWriter(const std::filesystem::path& path, const std::vector<std::string>& columns);
+  bool isOpen() const { return out_.is_open(); }
+  // One row; `values` must have as many entries as the header. Integers print exactly.
+  void row(const std::vector<double>& values);
+  void flush() { out_.flush(); }
+ private:
+  std::ofstream out_;
+  std::size_t columns_ = 0;
+};
+
+// SHA-256 over x then v, each as little-endian IEEE float64, nodes in the given order
+// (ascending global node id), as 64 lowercase hex characters. x and v are packed xyz.
+std::string stateDigest(const std::vector<double>& x, const std::vector<double>& v);
+
+// Makes `dir` ready for a run's results. If it already holds results of an earlier run
+// (summary.json, results.pvd, glstat.csv or run.log) and `overwrite` is false, throws
+// util::InputError telling the user to pass --overwrite or choose another -o; with
+// `overwrite`, only those result files and the VTU pieces are removed. Creates `dir`.
+void prepareResultsDir(const std::filesystem::path& dir, bool overwrite);
+
+// The progress line: refreshed in place (\r) when `interactive` (a terminal), otherwise one
+// line each 10% of the end time. Shows cycle, time, dt, % done, ETA and energy ratio.
+class Progress {
+ public:
+  Progress(std::FILE* stream, bool interactive, double end_time);
+  void update(int64_t cycle, double time, double dt, double energy_ratio);
+  void finish(int64_t cycle, double time, double dt, double energy_ratio);
+ private:
+  std::FILE* stream_;
+  bool interactive_;
+  double end_time_;
+  int next_decile_ = 1;
+  std::chrono::steady_clock::time_point start_, last_draw_;
+  std::string line(int64_t cycle, double time, double dt, double energy_ratio) const;
+};
+
+}  // namespace crumple::output

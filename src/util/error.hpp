@@ -1,0 +1,22 @@
+// The two kinds of failure a user sees (ARCHITECTURE.md "Errors"); both end a run with exit 1.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace crumple::util {
+
+// Bad input: the message already names file:line, keyword, card and field.
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The solution failed (negative volume, NaN, time-step collapse): names element, part,
+// cycle and time. The solver writes the last state before this propagates.
+class NumericalError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace crumple::util
