@@ -1,2 +1,41 @@
-// The crumple command. Placeholder until the application layer lands.
-int main() { return 0; }
+// crumple: explicit finite-element crash and impact solver.
+#include <CLI/CLI.hpp>
+
+#include "app/commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"Crumple: parallel explicit finite-element code for crash and impact", "crumple"};
+  app.set_version_flag("--version", std::string("crumple ") + CRUMPLE_VERSION);
+  app.require_subcommand(1);
+
+  crumple::app::RunOptions run;
+  auto* run_cmd = app.add_subcommand("run", "Run an LS-DYNA-style keyword deck");
+  run_cmd->add_option("deck", run.deck, "Keyword deck (.k)")->required()->check(CLI::ExistingFile);
+  run_cmd->add_option("-o,--output", run.output_dir,
+                      "Results folder (default: <deck stem>.out in the working directory)");
+  run_cmd->add_option("--threads", run.threads, "OpenMP threads per rank (default: all cores)")
+      ->check(CLI::PositiveNumber);
+  run_cmd->add_option("--endtime", run.end_time, "End time, overriding *CONTROL_TERMINATION")
+      ->check(CLI::PositiveNumber);
+  run_cmd->add_flag("--strict", run.strict, "Treat unsupported keywords as errors");
+  run_cmd->add_flag("--overwrite", run.overwrite,
+                    "Replace the results of an earlier run in the results folder");
+  run_cmd->add_flag("-q,--quiet", run.quiet, "No progress line");
+
+  crumple::app::CheckOptions check;
+  auto* check_cmd = app.add_subcommand(
+      "check", "Read and validate a deck; print its contents, mass, time step and what is unsupported");
+  check_cmd->add_option("deck", check.deck, "Keyword deck (.k)")->required()->check(CLI::ExistingFile);
+  check_cmd->add_flag("--strict", check.strict, "Exit with an error if anything is unsupported");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    // CLI11 returns 0 for --help/--version; every real usage error is exit status 2.
+    return code == 0 ? 0 : 2;
+  }
+  if (*run_cmd) return crumple::app::runCommand(run);
+  if (*check_cmd) return crumple::app::checkCommand(check, stdout);
+  return 2;
+}

@@ -1,0 +1,216 @@
+#include "app/commands.hpp"
+
+#include <fmt/format.h>
+#include <omp.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include "comm/communicator.hpp"
+#include "domain/subdomain.hpp"
+#include "model/build.hpp"
+#include "output/files.hpp"
+#include "output/results.hpp"
+#include "solver/solver.hpp"
+#include "util/error.hpp"
+
+namespace crumple::app {
+
+namespace {
+
+std::atomic<bool> g_interrupted{false};
+extern "C" void onSignal(int) { g_interrupted = true; }
+
+const char* lawName(const model::MaterialLaw& law) {
+  struct Visitor {
+    const char* operator()(const model::ElasticLaw&) const { return "*MAT_ELASTIC"; }
+    const char* operator()(const model::PlasticKinematicLaw&) const {
+      return "*MAT_PLASTIC_KINEMATIC";
+    }
+    const char* operator()(const model::PiecewiseLinearLaw&) const {
+      return "*MAT_PIECEWISE_LINEAR_PLASTICITY";
+    }
+  };
+  return std::visit(Visitor{}, law);
+}
+
+// The model summary shared by `crumple check` and run.log.
+std::string modelSummary(const model::Model& m, const solver::Solver& s) {
+  std::string out;
+  out += fmt::format("deck: {}\n", m.deck_path);
+  if (!m.title.empty()) out += fmt::format("title: {}\n", m.title);
+  out += fmt::format("nodes: {}\nsolid elements: {}\n", m.nodes.size(), m.solids.size());
+  std::map<int32_t, std::size_t> per_part;
+  for (int32_t p : m.solids.part) ++per_part[p];
+  for (const auto& [p, count] : per_part) {
+    const auto& part = m.parts[static_cast<std::size_t>(p)];
+    const auto& mat = m.materials[static_cast<std::size_t>(part.material)];
+    out += fmt::format("  part {}{}: {} solids, {} {} (density {:g})\n", part.id,
+                       part.title.empty() ? "" : " \"" + part.title + "\"", count,
+                       lawName(mat.law), mat.id, mat.rho);
+  }
+  out += fmt::format("total mass: {:.6g}\n", s.totalMass());
+  if (s.addedMass() > 0.0)
+    out += fmt::format("mass added by scaling (DT2MS): {:.6g} ({:.3g}%)\n", s.addedMass(),
+                       100.0 * s.addedMass() / s.totalMass());
+  out += fmt::format("initial time step: {:.6g} (element {}, TSSFAC {:g})\n", s.initialDt(),
+                     s.initialDtElement(), m.controls.tssfac);
+  out += fmt::format("end time: {:g}\n", m.controls.end_time);
+  return out;
+}
+
+std::string warningsText(const model::Model& m) {
+  std::string out;
+  if (!m.unsupported.empty()) out += "keywords read but not acted on:\n" + model::formatUnsupported(m);
+  for (const auto& f : m.ignored)
+    out += fmt::format("{}: {} field {} ignored: {}\n", f.where.str(), f.keyword, f.field, f.reason);
+  return out;
+}
+
+std::string timingTable(const solver::Timing& t, double output_s, double wall) {
+  auto row = [&](const char* name, double v) {
+    return fmt::format("  {:<14} {:10.3f} s {:6.1f}%\n", name, v, wall > 0 ? 100.0 * v / wall : 0.0);
+  };
+  const double other =
+      std::max(0.0, wall - t.elements - t.contact - t.constraints - t.communication - output_s);
+  return "timing:\n" + row("elements", t.elements) + row("contact", t.contact) +
+         row("constraints", t.constraints) + row("communication", t.communication) +
+         row("output", output_s) + row("other", other) + row("total", wall);
+}
+
+}  // namespace
+
+int checkCommand(const CheckOptions& opt, std::FILE* out) {
+  try {
+    const model::Model m = model::readModel(opt.deck);
+    auto sd = domain::buildSerialSubdomain(m);
+    solver::Solver s(m, sd, comm::world());
+    s.initialize();
+    std::fputs(modelSummary(m, s).c_str(), out);
+    const std::string warn = warningsText(m);
+    std::fputs(warn.empty() ? "everything in the deck is supported\n" : warn.c_str(), out);
+    if (opt.strict && !m.unsupported.empty()) {
+      std::fprintf(stderr, "crumple: error: --strict: the deck uses %zu unsupported keyword(s)\n",
+                   m.unsupported.size());
+      return 1;
+    }
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "crumple: error: %s\n", e.what());
+    return 1;
+  }
+}
+
+int runCommand(const RunOptions& opt) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  auto& comm = comm::world();
+  if (opt.threads > 0) omp_set_num_threads(opt.threads);
+  const int threads = omp_get_max_threads();
+
+  model::Model m;
+  try {
+    m = model::readModel(opt.deck);
+    if (opt.end_time) m.controls.end_time = *opt.end_time;
+    if (opt.strict && !m.unsupported.empty()) {
+      throw util::InputError("--strict: the deck uses unsupported keywords:\n" +
+                             model::formatUnsupported(m));
+    }
+    if (!(m.controls.end_time > 0.0) && m.controls.end_cycle <= 0)
+      throw util::InputError(opt.deck + ": *CONTROL_TERMINATION gives no end time (ENDTIM) or "
+                             "cycle count (ENDCYC); pass --endtime to run anyway");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "crumple: error: %s\n", e.what());
+    return 1;
+  }
+
+  const std::filesystem::path dir =
+      opt.output_dir.empty() ? std::filesystem::path(std::filesystem::path(opt.deck).stem().string() + ".out")
+                             : std::filesystem::path(opt.output_dir);
+  try {
+    output::prepareResultsDir(dir, opt.overwrite);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "crumple: error: %s\n", e.what());
+    return 1;
+  }
+
+  std::ofstream log(dir / "run.log");
+  auto say = [&](const std::string& text) {
+    log << text;
+    log.flush();
+  };
+  say(fmt::format("crumple {} — {} rank(s), {} thread(s)\n", CRUMPLE_VERSION, comm.size(), threads));
+  const std::string warn = warningsText(m);
+  if (!warn.empty()) {
+    std::fputs(warn.c_str(), stderr);
+    say(warn);
+  }
+
+  auto sd = domain::buildSerialSubdomain(m);
+  solver::Solver s(m, sd, comm);
+  output::RunInfo info;
+  info.deck = opt.deck;
+  info.ranks = comm.size();
+  info.threads = threads;
+  std::signal(SIGINT, onSignal);
+  std::signal(SIGTERM, onSignal);
+
+  std::unique_ptr<output::ResultsWriter> writer;
+  int status = 0;
+  try {
+    s.initialize();
+    say(modelSummary(m, s));
+    writer = std::make_unique<output::ResultsWriter>(dir, m, s);
+    output::Progress progress(stdout, !opt.quiet && isatty(STDOUT_FILENO), s.endTime());
+    const bool show = !opt.quiet;
+    writer->write(s);
+    while (!s.finished()) {
+      s.step();
+      writer->write(s);
+      // The energy sums cost a pass over every node and element: refresh them sparingly.
+      if (show && s.cycle() % 64 == 0) progress.update(s.cycle(), s.time(), s.dt(), s.energies().ratio);
+      if (g_interrupted) {
+        info.termination = "signal";
+        info.message = "interrupted by a signal; the last state was written";
+        status = 1;
+        break;
+      }
+    }
+    writer->write(s, true);
+    if (show) progress.finish(s.cycle(), s.time(), s.dt(), s.energies().ratio);
+  } catch (const std::exception& e) {
+    info.termination = "error";
+    info.message = e.what();
+    status = 1;
+    std::fprintf(stderr, "crumple: error: %s\n", e.what());
+    say(fmt::format("error termination: {}\n", e.what()));
+    if (writer) {
+      try {
+        writer->write(s, true);
+      } catch (const std::exception& e2) {
+        say(fmt::format("could not write the last state: {}\n", e2.what()));
+      }
+    }
+  }
+  info.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  const double output_s = writer ? writer->seconds() : 0.0;
+  if (writer) writer->writeSummary(s, info);
+  const auto e = s.energies();
+  say(fmt::format(
+      "{} termination at time {:.6g}, cycle {}\nenergy: kinetic {:.6g} internal {:.6g} hourglass "
+      "{:.6g} rigidwall {:.6g} external work {:.6g} ratio {:.6f}\n",
+      info.termination, s.time(), s.cycle(), e.kinetic, e.internal, e.hourglass, e.rigidwall,
+      e.external_work, e.ratio));
+  say(timingTable(s.timing(), output_s, info.wall_s));
+  if (s.cycle() > 0 && info.wall_s > 0.0)
+    say(fmt::format("{:.3g} element-cycles per second\n",
+                    double(m.solids.size()) * double(s.cycle()) / info.wall_s));
+  if (!opt.quiet) std::printf("%s termination; results in %s\n", info.termination.c_str(), dir.c_str());
+  return status;
+}
+
+}  // namespace crumple::app

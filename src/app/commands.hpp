@@ -1,0 +1,29 @@
+// The crumple subcommands, callable from main() and from tests.
+#pragma once
+
+#include <cstdio>
+#include <optional>
+#include <string>
+
+namespace crumple::app {
+
+struct RunOptions {
+  std::string deck;
+  std::string output_dir;           // empty: <deck stem>.out next to the working directory
+  int threads = 0;                  // 0: OpenMP default
+  std::optional<double> end_time;   // overrides *CONTROL_TERMINATION ENDTIM
+  bool strict = false;              // unsupported keywords are errors
+  bool overwrite = false;           // replace results of an earlier run in the folder
+  bool quiet = false;               // no progress line
+};
+
+// Exit status: 0 normal termination, 1 error termination (ARCHITECTURE.md, Commands).
+int runCommand(const RunOptions& opt);
+
+struct CheckOptions {
+  std::string deck;
+  bool strict = false;
+};
+int checkCommand(const CheckOptions& opt, std::FILE* out);
+
+}  // namespace crumple::app

@@ -1,0 +1,212 @@
+#include "constraints/boundary.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace crumple::constraints {
+
+namespace {
+
+const model::Curve* curveOf(const model::Model& m, int32_t index) {
+  return index == model::kNone ? nullptr : &m.curves[static_cast<std::size_t>(index)];
+}
+double curveValue(const model::Curve* c, double t) { return c ? c->value(t) : 1.0; }
+
+// Local index of a model node in the subdomain, or kNone if the rank does not hold it.
+int32_t localOf(const domain::Subdomain& sd, int32_t model_node) {
+  auto it = std::lower_bound(sd.node_model.begin(), sd.node_model.end(), model_node);
+  if (it == sd.node_model.end() || *it != model_node) return model::kNone;
+  return static_cast<int32_t>(it - sd.node_model.begin());
+}
+
+double dot(const model::Vec3& a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+}  // namespace
+
+Boundary::Boundary(const model::Model& m, const domain::Subdomain& sd) {
+  for (const auto& s : m.spcs) {
+    const int32_t n = localOf(sd, s.node);
+    if (n != model::kNone && (s.dofs & 7)) spc_.emplace_back(n, s.dofs);
+  }
+  for (const auto& p : m.prescribed) {
+    const int32_t n = localOf(sd, p.node);
+    if (n != model::kNone)
+      motion_.push_back({n, p.dof, p.kind, curveOf(m, p.curve), p.sf, p.birth, p.death});
+  }
+  for (const auto& l : m.nodal_loads) {
+    const int32_t n = localOf(sd, l.node);
+    if (n != model::kNone) loads_.push_back({n, l.dof, curveOf(m, l.curve), l.sf});
+  }
+  for (const auto& p : m.pressure_loads) {
+    Pressure q{{}, curveOf(m, p.curve), p.sf, p.at};
+    bool held = true;
+    for (int k = 0; k < 4; ++k) {
+      q.nodes[k] = localOf(sd, p.nodes[k]);
+      held = held && q.nodes[k] != model::kNone;
+    }
+    if (held) pressure_.push_back(q);
+  }
+  for (const auto& b : m.body_loads) body_.push_back({b.dof, curveOf(m, b.curve), b.sf});
+  for (const auto& w : m.rigid_walls) {
+    WallState ws;
+    ws.def = &w;
+    if (w.nodes.empty()) {
+      for (std::size_t i = 0; i < sd.numNodes(); ++i) ws.nodes.push_back(int32_t(i));
+    } else {
+      for (int32_t mn : w.nodes)
+        if (int32_t n = localOf(sd, mn); n != model::kNone) ws.nodes.push_back(n);
+    }
+    ws.velocity = w.moving ? w.v0 : 0.0;
+    walls_.push_back(std::move(ws));
+  }
+}
+
+void Boundary::externalForces(double t, const domain::Subdomain& sd,
+                              domain::NodeVector& f_ext) const {
+  std::fill(f_ext.begin(), f_ext.end(), 0.0);
+  for (const auto& l : loads_)
+    f_ext[3 * static_cast<std::size_t>(l.node) + l.dof] += l.sf * curveValue(l.curve, t);
+
+  // Follower pressure on the current geometry: F = -p A, A = (x3 - x1) x (x4 - x2) / 2 the
+  // area vector along the right-hand normal of n1..n4 (LS-DYNA: positive pressure pushes
+  // against the segment normal). Triangles (n3 == n4) share it in thirds.
+  for (const auto& p : pressure_) {
+    if (t < p.at) continue;
+    const double pr = p.sf * curveValue(p.curve, t - p.at);
+    if (pr == 0.0) continue;
+    const double* x1 = &sd.x[3 * static_cast<std::size_t>(p.nodes[0])];
+    const double* x2 = &sd.x[3 * static_cast<std::size_t>(p.nodes[1])];
+    const double* x3 = &sd.x[3 * static_cast<std::size_t>(p.nodes[2])];
+    const double* x4 = &sd.x[3 * static_cast<std::size_t>(p.nodes[3])];
+    const double d1[3] = {x3[0] - x1[0], x3[1] - x1[1], x3[2] - x1[2]};
+    const double d2[3] = {x4[0] - x2[0], x4[1] - x2[1], x4[2] - x2[2]};
+    const double area[3] = {0.5 * (d1[1] * d2[2] - d1[2] * d2[1]),
+                            0.5 * (d1[2] * d2[0] - d1[0] * d2[2]),
+                            0.5 * (d1[0] * d2[1] - d1[1] * d2[0])};
+    const bool triangle = p.nodes[2] == p.nodes[3];
+    const int corners = triangle ? 3 : 4;
+    const double share = -pr / corners;
+    for (int k = 0; k < corners; ++k)
+      for (int c = 0; c < 3; ++c) f_ext[3 * static_cast<std::size_t>(p.nodes[k]) + c] += share * area[c];
+  }
+
+  // Base acceleration: body force -m a on every node.
+  for (const auto& b : body_) {
+    const double acc = b.sf * curveValue(b.curve, t);
+    if (acc == 0.0) continue;
+    for (std::size_t n = 0; n < sd.numNodes(); ++n) f_ext[3 * n + b.dof] -= sd.mass[n] * acc;
+  }
+}
+
+double Boundary::applyKinematics(double t, double dt_n, double dt_half, domain::Subdomain& sd,
+                                 const domain::NodeVector& v_old) const {
+  double work = 0.0;
+  // Reaction work: the velocity change a constraint imposes is an impulse m dv acting while
+  // the node moves at the mean of its old and new velocities over dt_n.
+  auto impose = [&](std::size_t i, double v_new) {
+    const double m = sd.mass[i / 3];
+    const double dv = v_new - sd.v[i];
+    work += m * dv * 0.5 * (v_old[i] + v_new);
+    sd.v[i] = v_new;
+  };
+  for (const auto& [n, mask] : spc_)
+    for (int c = 0; c < 3; ++c)
+      if (mask & (1u << c)) {
+        impose(3 * static_cast<std::size_t>(n) + c, 0.0);
+        sd.a[3 * static_cast<std::size_t>(n) + c] = 0.0;
+      }
+  const double t_half = t + 0.5 * dt_half;
+  const double t_next = t + dt_half;
+  for (const auto& m : motion_) {
+    if (t_half < m.birth || t_half > m.death) continue;
+    const std::size_t i = 3 * static_cast<std::size_t>(m.node) + m.dof;
+    double v_new = sd.v[i];
+    switch (m.kind) {
+      case model::MotionKind::Velocity:
+        v_new = m.sf * curveValue(m.curve, t_half);
+        break;
+      case model::MotionKind::Acceleration:
+        v_new = v_old[i] + dt_n * m.sf * curveValue(m.curve, t);
+        break;
+      case model::MotionKind::Displacement: {
+        const double u_next = m.sf * curveValue(m.curve, t_next);
+        v_new = dt_half > 0.0 ? (u_next - (sd.x[i] - sd.x0[i])) / dt_half : 0.0;
+        break;
+      }
+    }
+    impose(i, v_new);
+    sd.a[i] = dt_n > 0.0 ? (v_new - v_old[i]) / dt_n : 0.0;
+  }
+  return work;
+}
+
+double Boundary::applyRigidWalls(double dt_n, double dt_half, domain::Subdomain& sd,
+                                 const domain::NodeVector& v_old) {
+  double absorbed = 0.0;
+  for (auto& w : walls_) {
+    const auto& d = *w.def;
+    const model::Vec3& nrm = d.normal;
+    w.force = {0.0, 0.0, 0.0};
+    w.normal_force = 0.0;
+    model::Vec3 m_axis{};
+    if (d.finite) {
+      m_axis = {nrm[1] * d.l_axis[2] - nrm[2] * d.l_axis[1], nrm[2] * d.l_axis[0] - nrm[0] * d.l_axis[2],
+                nrm[0] * d.l_axis[1] - nrm[1] * d.l_axis[0]};
+    }
+    for (int32_t node : w.nodes) {
+      const std::size_t n = static_cast<std::size_t>(node);
+      const double m = sd.mass[n];
+      if (m <= 0.0) continue;
+      double* v = &sd.v[3 * n];
+      const double* x = &sd.x[3 * n];
+      const double rel[3] = {x[0] - d.tail[0], x[1] - d.tail[1], x[2] - d.tail[2]};
+      const double gap_now = dot(nrm, rel) - w.displacement;
+      const double gap_next = gap_now + dt_half * (dot(nrm, v) - w.velocity);
+      if (gap_next >= 0.0) continue;
+      // Only nodes in front of the wall at the start of the step are stopped by it; a node
+      // already far behind (outside a finite wall's edge, or a sign slip) is left alone.
+      if (gap_now < -1e-3 * std::max(1.0, std::abs(dot(nrm, rel)))) continue;
+      if (d.finite) {
+        const double s = dot(d.l_axis, rel), r = dot(m_axis, rel);
+        if (s < 0.0 || s > d.lenl || r < 0.0 || r > d.lenm) continue;
+      }
+      // Normal correction that puts the node on the plane at the end of the step.
+      const double dvn = -gap_next / dt_half;
+      double v_new[3] = {v[0] + dvn * nrm[0], v[1] + dvn * nrm[1], v[2] + dvn * nrm[2]};
+      if (d.fric > 0.0) {
+        const double vn = dot(nrm, v_new);
+        double vt[3] = {v_new[0] - vn * nrm[0], v_new[1] - vn * nrm[1], v_new[2] - vn * nrm[2]};
+        const double vt_mag = std::sqrt(vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2]);
+        const double limit = d.fric * dvn;  // Coulomb: |tangential impulse| <= mu * normal one
+        const double scale = vt_mag > limit ? limit / vt_mag : 1.0;
+        for (int c = 0; c < 3; ++c) v_new[c] -= scale * vt[c];
+      }
+      double f[3];
+      for (int c = 0; c < 3; ++c) {
+        const double dv = v_new[c] - v[c];
+        f[c] = dt_n > 0.0 ? m * dv / dt_n : 0.0;
+        // Energy taken out of the node, less the work the wall's own motion did on it.
+        const double vmean = 0.5 * (v_old[3 * n + c] + v_new[c]);
+        absorbed -= m * dv * (vmean - w.velocity * nrm[c]);
+        w.force[c] += f[c];
+        v[c] = v_new[c];
+      }
+      w.normal_force += dot(nrm, f);
+    }
+    if (d.moving && d.mass > 0.0) {
+      // The structure pushes back on a wall of finite mass (Newton's third law).
+      w.velocity -= dt_n * w.normal_force / d.mass;
+    }
+    w.displacement += dt_half * w.velocity;
+  }
+  return absorbed;
+}
+
+double Boundary::wallKineticEnergy() const {
+  double e = 0.0;
+  for (const auto& w : walls_)
+    if (w.def->moving) e += 0.5 * w.def->mass * w.velocity * w.velocity;
+  return e;
+}
+
+}  // namespace crumple::constraints

@@ -1,0 +1,394 @@
+#include "elements/hex8.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace crumple::elements {
+
+namespace {
+
+// Node permutation of FB 1981 (Appendix): the formula for node 1 gives node a's gradient
+// when nodes are renumbered by row a. Zero-based.
+constexpr int kPerm[8][8] = {{0, 1, 2, 3, 4, 5, 6, 7}, {1, 2, 3, 0, 5, 6, 7, 4},
+                             {2, 3, 0, 1, 6, 7, 4, 5}, {3, 0, 1, 2, 7, 4, 5, 6},
+                             {4, 7, 6, 5, 0, 3, 2, 1}, {5, 4, 7, 6, 1, 0, 3, 2},
+                             {6, 5, 4, 7, 2, 1, 0, 3}, {7, 6, 5, 4, 3, 2, 1, 0}};
+
+// Hourglass base vectors Gamma (FB 1981 eq. 43): eta*zeta, zeta*xi, xi*eta, xi*eta*zeta at
+// the nodes of the LS-DYNA ordering (1-4 bottom face, 5-8 top face).
+constexpr double kGamma[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
+                                 {1, -1, -1, 1, -1, 1, 1, -1},
+                                 {1, -1, 1, -1, 1, -1, 1, -1},
+                                 {-1, 1, -1, 1, 1, -1, 1, -1}};
+
+// Faces for the characteristic length, each as 4 corners.
+constexpr int kFaces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                              {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+
+using LaneArray = double[kBatch];
+
+// dV/dx of node A, component (y, z) -> x of FB 1981 eq. 79, for every lane.
+template <int A>
+inline void gradientOfNode(const NodalBatch& x, NodalBatch& b) {
+  constexpr int p1 = kPerm[A][1], p2 = kPerm[A][2], p3 = kPerm[A][3], p4 = kPerm[A][4],
+                p5 = kPerm[A][5], p7 = kPerm[A][7];
+  constexpr double twelfth = 1.0 / 12.0;
+  for (int c = 0; c < 3; ++c) {
+    const auto& y = x[(c + 1) % 3];
+    const auto& z = x[(c + 2) % 3];
+    for (int l = 0; l < kBatch; ++l) {
+      b[c][A][l] = twelfth * (y[p1][l] * ((z[p5][l] - z[p2][l]) - (z[p3][l] - z[p4][l])) +
+                              y[p2][l] * (z[p1][l] - z[p3][l]) +
+                              y[p3][l] * ((z[p2][l] - z[p7][l]) - (z[p4][l] - z[p1][l])) +
+                              y[p4][l] * ((z[p7][l] - z[p5][l]) - (z[p1][l] - z[p3][l])) +
+                              y[p5][l] * (z[p4][l] - z[p1][l]) + y[p7][l] * (z[p3][l] - z[p4][l]));
+    }
+  }
+}
+
+template <std::size_t... A>
+inline void gradientOfAll(const NodalBatch& x, NodalBatch& b, std::index_sequence<A...>) {
+  (gradientOfNode<int(A)>(x, b), ...);
+}
+
+inline void volumeOf(const NodalBatch& x, const NodalBatch& b, LaneArray& vol) {
+  for (int l = 0; l < kBatch; ++l) vol[l] = 0.0;
+  for (int c = 0; c < 3; ++c)
+    for (int a = 0; a < 8; ++a)
+      for (int l = 0; l < kBatch; ++l) vol[l] += x[c][a][l] * b[c][a][l];
+  for (int l = 0; l < kBatch; ++l) vol[l] *= (1.0 / 3.0);
+}
+
+// Largest face area: each face as half the cross product of its diagonals.
+inline void maxFaceArea(const NodalBatch& x, LaneArray& area) {
+  for (int l = 0; l < kBatch; ++l) area[l] = 0.0;
+  for (const auto& f : kFaces) {
+    for (int l = 0; l < kBatch; ++l) {
+      const double d1x = x[0][f[2]][l] - x[0][f[0]][l], d1y = x[1][f[2]][l] - x[1][f[0]][l],
+                   d1z = x[2][f[2]][l] - x[2][f[0]][l];
+      const double d2x = x[0][f[3]][l] - x[0][f[1]][l], d2y = x[1][f[3]][l] - x[1][f[1]][l],
+                   d2z = x[2][f[3]][l] - x[2][f[1]][l];
+      const double cx = d1y * d2z - d1z * d2y, cy = d1z * d2x - d1x * d2z,
+                   cz = d1x * d2y - d1y * d2x;
+      const double a2 = 0.25 * (cx * cx + cy * cy + cz * cz);
+      area[l] = std::max(area[l], a2);
+    }
+  }
+  for (int l = 0; l < kBatch; ++l) area[l] = std::sqrt(area[l]);
+}
+
+// Lane l of a batch starting at `first` with `n` live elements reads element first+min(l,n-1).
+inline std::size_t laneElement(std::size_t first, int n, int l) {
+  return first + static_cast<std::size_t>(std::min(l, n - 1));
+}
+
+void gatherNodal(const domain::SolidBlock& b, std::size_t first, int n,
+                 const domain::NodeVector& src, NodalBatch& out) {
+  for (int l = 0; l < kBatch; ++l) {
+    const auto& conn = b.conn[laneElement(first, n, l)];
+    for (int a = 0; a < 8; ++a) {
+      const double* p = &src[3 * static_cast<std::size_t>(conn[a])];
+      out[0][a][l] = p[0];
+      out[1][a][l] = p[1];
+      out[2][a][l] = p[2];
+    }
+  }
+}
+
+materials::Moduli moduliOf(const materials::Law& law) {
+  return std::visit([](const auto& m) { return m.moduli; }, law);
+}
+
+// Scratch for one batch, kept per thread.
+struct BatchScratch {
+  NodalBatch x, v, xm, b, f;
+  double s[6][kBatch], s_old[6][kBatch], de[6][kBatch], alpha[6][kBatch];
+  double eps_p[kBatch];
+  uint8_t failed[kBatch];
+};
+
+template <class Law>
+BlockStatus solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVector& x,
+                             const domain::NodeVector& v, double dt, const BulkViscosity& bv,
+                             double* slots) {
+  const std::size_t ne = blk.size();
+  const std::size_t nbatch = (ne + kBatch - 1) / kBatch;
+  const materials::Moduli mod = law.moduli;
+  const double lam2mu = mod.bulk + 4.0 / 3.0 * mod.shear;
+  const int ihq = blk.hourglass.ihq;
+  const double qm = blk.hourglass.qm;
+  const bool stiffness_hg = ihq >= 4;
+  const bool projected_hg = ihq >= 2;  // FB orthogonal hourglass vectors gamma; type 1 uses Gamma
+  std::vector<BlockStatus> status(nbatch);
+
+#pragma omp parallel
+  {
+    BatchScratch w;
+#pragma omp for schedule(static)
+    for (std::size_t ib = 0; ib < nbatch; ++ib) {
+      const std::size_t first = ib * kBatch;
+      const int n = static_cast<int>(std::min<std::size_t>(kBatch, ne - first));
+      BlockStatus& st = status[ib];
+      gatherNodal(blk, first, n, x, w.x);
+      gatherNodal(blk, first, n, v, w.v);
+
+      // --- strain rate at the mid-step geometry x(n-1/2) = x(n) - dt/2 v(n-1/2) --------------
+      for (int c = 0; c < 3; ++c)
+        for (int a = 0; a < 8; ++a)
+          for (int l = 0; l < kBatch; ++l) w.xm[c][a][l] = w.x[c][a][l] - 0.5 * dt * w.v[c][a][l];
+      gradientOfAll(w.xm, w.b, std::make_index_sequence<8>{});
+      LaneArray vol_mid;
+      volumeOf(w.xm, w.b, vol_mid);
+      double L[3][3][kBatch];  // velocity gradient dv_i/dx_j
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          for (int l = 0; l < kBatch; ++l) {
+            double s = 0.0;
+            for (int a = 0; a < 8; ++a) s += w.v[i][a][l] * w.b[j][a][l];
+            L[i][j][l] = s / vol_mid[l];
+          }
+
+      // --- stress: Jaumann rotation, then the material law ------------------------------------
+      for (int k = 0; k < 6; ++k)
+        for (int l = 0; l < kBatch; ++l) w.s[k][l] = blk.sig[k][laneElement(first, n, l)];
+      if constexpr (Law::kPlastic)
+        for (int l = 0; l < kBatch; ++l) w.eps_p[l] = blk.eps_p[laneElement(first, n, l)];
+      if constexpr (Law::kKinematic)
+        for (int k = 0; k < 6; ++k)
+          for (int l = 0; l < kBatch; ++l) w.alpha[k][l] = blk.alpha[k][laneElement(first, n, l)];
+      LaneArray trace_d;
+      for (int l = 0; l < kBatch; ++l) {
+        const double wxy = 0.5 * (L[0][1][l] - L[1][0][l]) * dt;
+        const double wyz = 0.5 * (L[1][2][l] - L[2][1][l]) * dt;
+        const double wzx = 0.5 * (L[2][0][l] - L[0][2][l]) * dt;
+        // sigma += W sigma - sigma W (W skew: W_yx = -W_xy, W_xz = -W_zx, W_zy = -W_yz).
+        const double sxx = w.s[0][l], syy = w.s[1][l], szz = w.s[2][l];
+        const double sxy = w.s[3][l], syz = w.s[4][l], szx = w.s[5][l];
+        w.s[0][l] = sxx + 2.0 * (wxy * sxy - wzx * szx);
+        w.s[1][l] = syy + 2.0 * (-wxy * sxy + wyz * syz);
+        w.s[2][l] = szz + 2.0 * (wzx * szx - wyz * syz);
+        w.s[3][l] = sxy + wxy * (syy - sxx) - wzx * syz + wyz * szx;
+        w.s[4][l] = syz + wyz * (szz - syy) - wxy * szx + wzx * sxy;
+        w.s[5][l] = szx + wzx * (sxx - szz) - wyz * sxy + wxy * syz;
+        w.de[0][l] = L[0][0][l] * dt;
+        w.de[1][l] = L[1][1][l] * dt;
+        w.de[2][l] = L[2][2][l] * dt;
+        w.de[3][l] = 0.5 * (L[0][1][l] + L[1][0][l]) * dt;
+        w.de[4][l] = 0.5 * (L[1][2][l] + L[2][1][l]) * dt;
+        w.de[5][l] = 0.5 * (L[2][0][l] + L[0][2][l]) * dt;
+        trace_d[l] = L[0][0][l] + L[1][1][l] + L[2][2][l];
+      }
+      for (int k = 0; k < 6; ++k)
+        for (int l = 0; l < kBatch; ++l) w.s_old[k][l] = w.s[k][l];
+      for (int l = 0; l < kBatch; ++l) w.failed[l] = 0;
+      materials::PointBatch pb;
+      pb.n = kBatch;
+      pb.dt = dt;
+      for (int k = 0; k < 6; ++k) {
+        pb.s[k] = w.s[k];
+        pb.de[k] = w.de[k];
+        pb.alpha[k] = Law::kKinematic ? w.alpha[k] : nullptr;
+      }
+      pb.eps_p = Law::kPlastic ? w.eps_p : nullptr;
+      pb.failed = w.failed;
+      law.update(pb);
+
+      // --- geometry at x(n): volume, volume gradient, characteristic length -------------------
+      gradientOfAll(w.x, w.b, std::make_index_sequence<8>{});
+      LaneArray vol, area, rho, c, c_dt, len, q, cbrt_vol;
+      volumeOf(w.x, w.b, vol);
+      maxFaceArea(w.x, area);
+      for (int l = 0; l < kBatch; ++l) {
+        const std::size_t e = laneElement(first, n, l);
+        const double v_safe = vol[l] > 0.0 ? vol[l] : 1.0;
+        rho[l] = blk.rho0 * blk.vol0[e] / v_safe;
+        c[l] = std::sqrt(lam2mu / rho[l]);
+        // Mass scaling slows the element's waves: c / sqrt(scale) enters the stable step only.
+        c_dt[l] = blk.mass_scale.empty() ? c[l] : c[l] / std::sqrt(blk.mass_scale[e]);
+        len[l] = v_safe / area[l];
+        // Bulk viscosity (von Neumann-Richtmyer quadratic + Landshoff linear), compression only;
+        // LS-DYNA Theory Manual "Bulk viscosity".
+        q[l] = trace_d[l] < 0.0
+                   ? rho[l] * len[l] * (bv.q1 * len[l] * trace_d[l] * trace_d[l] - bv.q2 * c[l] * trace_d[l])
+                   : 0.0;
+        cbrt_vol[l] = std::cbrt(v_safe);
+      }
+
+      // --- internal energy: midpoint rule on the stress power, plus bulk viscosity work ------
+      LaneArray de_int;
+      for (int l = 0; l < kBatch; ++l) {
+        double p = 0.0;
+        for (int k = 0; k < 6; ++k) p += (k < 3 ? 0.5 : 1.0) * (w.s_old[k][l] + w.s[k][l]) * w.de[k][l];
+        de_int[l] = (p - q[l] * trace_d[l] * dt) * vol_mid[l];
+      }
+
+      // --- stress divergence: f_a = -(sigma - q I) . B_a --------------------------------------
+      for (int a = 0; a < 8; ++a)
+        for (int l = 0; l < kBatch; ++l) {
+          const double sxx = w.s[0][l] - q[l], syy = w.s[1][l] - q[l], szz = w.s[2][l] - q[l];
+          const double sxy = w.s[3][l], syz = w.s[4][l], szx = w.s[5][l];
+          const double bx = w.b[0][a][l], by = w.b[1][a][l], bz = w.b[2][a][l];
+          w.f[0][a][l] = -(sxx * bx + sxy * by + szx * bz);
+          w.f[1][a][l] = -(sxy * bx + syy * by + syz * bz);
+          w.f[2][a][l] = -(szx * bx + syz * by + szz * bz);
+        }
+
+      // --- hourglass control (FB 1981 sec. 4; LS-DYNA Theory Manual "Hourglass control") -----
+      LaneArray de_hg;
+      for (int l = 0; l < kBatch; ++l) de_hg[l] = 0.0;
+      if (qm > 0.0) {
+        LaneArray coef, bb;
+        for (int l = 0; l < kBatch; ++l) {
+          double s = 0.0;
+          for (int cc = 0; cc < 3; ++cc)
+            for (int a = 0; a < 8; ++a) s += w.b[cc][a][l] * w.b[cc][a][l];
+          bb[l] = s;
+          // Viscous: a_h = QM rho V^(2/3) c / 4. Stiffness: QM (lambda + 2 mu) B:B / V, the FB
+          // stiffness scaled like the element's own stiffness, integrated incrementally.
+          coef[l] = stiffness_hg ? qm * lam2mu * bb[l] / vol[l] * dt
+                                 : 0.25 * qm * rho[l] * cbrt_vol[l] * cbrt_vol[l] * c[l];
+        }
+        for (int alpha = 0; alpha < 4; ++alpha) {
+          double g[8][kBatch];
+          for (int a = 0; a < 8; ++a)
+            for (int l = 0; l < kBatch; ++l) g[a][l] = kGamma[alpha][a];
+          if (projected_hg) {
+            // gamma_a = Gamma_a - (1/V) (sum_b x_b Gamma_b) . B_a: orthogonal to linear fields.
+            for (int l = 0; l < kBatch; ++l) {
+              double h[3] = {0.0, 0.0, 0.0};
+              for (int cc = 0; cc < 3; ++cc)
+                for (int a = 0; a < 8; ++a) h[cc] += w.x[cc][a][l] * kGamma[alpha][a];
+              for (int a = 0; a < 8; ++a)
+                g[a][l] -= (h[0] * w.b[0][a][l] + h[1] * w.b[1][a][l] + h[2] * w.b[2][a][l]) / vol[l];
+            }
+          }
+          for (int i = 0; i < 3; ++i)
+            for (int l = 0; l < kBatch; ++l) {
+              double qdot = 0.0;
+              for (int a = 0; a < 8; ++a) qdot += w.v[i][a][l] * g[a][l];
+              double force;
+              if (stiffness_hg) {
+                const std::size_t e = laneElement(first, n, l);
+                force = blk.hgq[static_cast<std::size_t>(3 * alpha + i)][e] + coef[l] * qdot;
+                if (l < n) blk.hgq[static_cast<std::size_t>(3 * alpha + i)][e] = force;
+              } else {
+                force = coef[l] * qdot;
+              }
+              for (int a = 0; a < 8; ++a) w.f[i][a][l] -= force * g[a][l];
+              de_hg[l] += force * qdot * dt;
+            }
+        }
+      }
+
+      // --- store state, forces, stable step ---------------------------------------------------
+      for (int l = 0; l < n; ++l) {
+        const std::size_t e = first + static_cast<std::size_t>(l);
+        double* slot = slots + 3 * (blk.slot_offset + 8 * e);
+        if (!blk.active[e]) {
+          std::fill(slot, slot + 24, 0.0);
+          continue;
+        }
+        if (vol[l] <= 0.0 && (st.bad_elem < 0 || blk.elem[e] < st.bad_elem)) st.bad_elem = blk.elem[e];
+        for (int k = 0; k < 6; ++k) blk.sig[k][e] = w.s[k][l];
+        if constexpr (Law::kPlastic) blk.eps_p[e] = w.eps_p[l];
+        if constexpr (Law::kKinematic)
+          for (int k = 0; k < 6; ++k) blk.alpha[k][e] = w.alpha[k][l];
+        blk.vol[e] = vol[l];
+        blk.e_int[e] += de_int[l];
+        blk.e_hg[e] += de_hg[l];
+        if (w.failed[l]) {
+          // Erosion: the element is removed once its integration point fails (LS-DYNA FAIL).
+          blk.active[e] = 0;
+          blk.failed[e] = 1;
+          for (int k = 0; k < 6; ++k) blk.sig[k][e] = 0.0;
+          std::fill(slot, slot + 24, 0.0);
+          ++st.eroded;
+          continue;
+        }
+        for (int a = 0; a < 8; ++a)
+          for (int i = 0; i < 3; ++i) slot[3 * a + i] = w.f[i][a][l];
+        const double dte = solidTimeStep(len[l], c_dt[l], trace_d[l], bv);
+        if (dte < st.dt_min) {
+          st.dt_min = dte;
+          st.dt_elem = blk.elem[e];
+        }
+      }
+    }
+  }
+
+  // Merge in batch order: the result does not depend on the thread count.
+  BlockStatus total;
+  for (const auto& s : status) {
+    if (s.dt_elem >= 0 && (s.dt_min < total.dt_min ||
+                           (s.dt_min == total.dt_min && s.dt_elem < total.dt_elem))) {
+      total.dt_min = s.dt_min;
+      total.dt_elem = s.dt_elem;
+    }
+    if (s.bad_elem >= 0 && (total.bad_elem < 0 || s.bad_elem < total.bad_elem))
+      total.bad_elem = s.bad_elem;
+    total.eroded += s.eroded;
+  }
+  return total;
+}
+
+}  // namespace
+
+void volumeGradient(const NodalBatch& x, NodalBatch& b) {
+  gradientOfAll(x, b, std::make_index_sequence<8>{});
+}
+
+double solidTimeStep(double length, double wave_speed, double trace_d, const BulkViscosity& bv) {
+  const double qv = trace_d < 0.0 ? bv.q2 * wave_speed + bv.q1 * length * (-trace_d) : 0.0;
+  return length / (qv + std::sqrt(qv * qv + wave_speed * wave_speed));
+}
+
+BlockStatus computeSolidForces(domain::SolidBlock& block, const domain::NodeVector& x,
+                               const domain::NodeVector& v, double dt, const BulkViscosity& bv,
+                               double* slots) {
+  return std::visit(
+      [&](const auto& law) { return solidBlockForces(law, block, x, v, dt, bv, slots); },
+      block.law);
+}
+
+BlockStatus initializeSolids(domain::SolidBlock& blk, const domain::NodeVector& x0,
+                             double* slots, std::vector<double>& element_dt) {
+  const materials::Moduli mod = moduliOf(blk.law);
+  const double c = std::sqrt((mod.bulk + 4.0 / 3.0 * mod.shear) / blk.rho0);
+  BlockStatus st;
+  NodalBatch xb, bb;
+  const std::size_t ne = blk.size();
+  element_dt.assign(ne, 0.0);
+  for (std::size_t first = 0; first < ne; first += kBatch) {
+    const int n = static_cast<int>(std::min<std::size_t>(kBatch, ne - first));
+    gatherNodal(blk, first, n, x0, xb);
+    volumeGradient(xb, bb);
+    LaneArray vol, area;
+    volumeOf(xb, bb, vol);
+    maxFaceArea(xb, area);
+    for (int l = 0; l < n; ++l) {
+      const std::size_t e = first + static_cast<std::size_t>(l);
+      blk.vol0[e] = blk.vol[e] = vol[l];
+      if (vol[l] <= 0.0) {
+        if (st.bad_elem < 0) st.bad_elem = blk.elem[e];
+        continue;
+      }
+      const double corner_mass = blk.rho0 * vol[l] / 8.0;
+      double* slot = slots + 3 * (blk.slot_offset + 8 * e);
+      for (int a = 0; a < 8; ++a) {
+        slot[3 * a] = corner_mass;
+        slot[3 * a + 1] = slot[3 * a + 2] = 0.0;
+      }
+      const double dte = vol[l] / area[l] / c;
+      element_dt[e] = dte;
+      if (dte < st.dt_min) {
+        st.dt_min = dte;
+        st.dt_elem = blk.elem[e];
+      }
+    }
+  }
+  return st;
+}
+
+}  // namespace crumple::elements

@@ -1,0 +1,59 @@
+// The 8-node hexahedron with one-point integration: the uniform-strain element of
+// Flanagan & Belytschko (1981), "A uniform strain hexahedron and quadrilateral with orthogonal
+// hourglass control", IJNME 17:679-706, as used in DYNA3D (Hallquist, DYNA3D User Manual,
+// UCRL-MA-107254, section 2).
+//
+// Kernels work on batches of kBatch elements held as structure of arrays; lanes beyond the
+// batch's count replicate the last element so every loop has a constant trip count and every
+// element goes through the same instructions wherever it sits (determinism).
+#pragma once
+
+#include <cstdint>
+
+#include "domain/subdomain.hpp"
+
+namespace crumple::elements {
+
+inline constexpr int kBatch = 16;
+
+// Coordinates or velocities of the 8 nodes of a batch: v[component][node][lane].
+using NodalBatch = double[3][8][kBatch];
+
+// Volume gradient B_ai = dV/dx_ai of a trilinear hexahedron (exact, FB 1981 eq. 79 and the
+// node permutation of its Appendix); the uniform-strain gradient is B/V. V = sum_a x_a.B_a/3.
+void volumeGradient(const NodalBatch& x, NodalBatch& b);
+
+// Bulk viscosity coefficients (*CONTROL_BULK_VISCOSITY): quadratic Q1 and linear Q2.
+struct BulkViscosity {
+  double q1 = 1.5;
+  double q2 = 0.06;
+};
+
+// What one pass over a block found; merged over blocks by the solver.
+struct BlockStatus {
+  double dt_min = 1e300;              // smallest stable element step (before TSSFAC)
+  int32_t dt_elem = -1;               // model index of the controlling element
+  int32_t bad_elem = -1;              // model index of an element with volume <= 0
+  int32_t eroded = 0;                 // elements eroded in this pass
+};
+
+// One cycle for a block of solids: strain rate at the mid-step geometry
+// x - dt/2 v, Jaumann stress rotation, material update, bulk viscosity, stress divergence at
+// x, hourglass forces, element energies and stable time step. Corner forces go to the block's
+// force slots (no scatter). `dt` is the step dt(n-1/2) that brought x and v to this cycle.
+BlockStatus computeSolidForces(domain::SolidBlock& block, const domain::NodeVector& x,
+                               const domain::NodeVector& v, double dt, const BulkViscosity& bv,
+                               double* slots);
+
+// Initial volumes and the stable step of a block; writes each corner's lumped mass
+// (rho0 V0 / 8) into the x component of its force slot, so that nodal masses are assembled by
+// the same ordered gather as forces.
+BlockStatus initializeSolids(domain::SolidBlock& block, const domain::NodeVector& x0,
+                             double* slots, std::vector<double>& element_dt);
+
+// Stable time step of one element from its characteristic length (volume / largest face
+// area, LS-DYNA Theory Manual sec. 22 "Time step control") and the dilatational wave speed,
+// reduced for bulk viscosity: dt = L / (Q + sqrt(Q^2 + c^2)), Q = Q2 c + Q1 L |tr D| (tr D < 0).
+double solidTimeStep(double length, double wave_speed, double trace_d, const BulkViscosity& bv);
+
+}  // namespace crumple::elements

@@ -1,0 +1,288 @@
+#include "solver/solver.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "util/error.hpp"
+
+namespace crumple::solver {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double>(b - a).count();
+}
+
+// Nodes are processed in fixed chunks whose partial sums are added in chunk order, so
+// reductions do not depend on the number of threads.
+constexpr std::size_t kNodeChunk = 4096;
+
+}  // namespace
+
+Solver::Solver(const model::Model& model, domain::Subdomain& sd, comm::Communicator& comm)
+    : model_(model), sd_(sd), comm_(comm), boundary_(model, sd) {
+  bv_.q1 = model.controls.q_quadratic;
+  bv_.q2 = model.controls.q_linear;
+  end_time_ = model.controls.end_time;
+}
+
+void Solver::gatherNodalForces(std::vector<double>& out, int components) const {
+  const std::size_t nn = sd_.numNodes();
+  const double* slots = sd_.slots.data();
+#pragma omp parallel for schedule(static)
+  for (std::size_t n = 0; n < nn; ++n) {
+    double s[3] = {0.0, 0.0, 0.0};
+    for (int32_t k = sd_.gather_ptr[n]; k < sd_.gather_ptr[n + 1]; ++k) {
+      const double* slot = slots + 3 * static_cast<std::size_t>(sd_.gather_slot[k]);
+      for (int c = 0; c < components; ++c) s[c] += slot[c];
+    }
+    for (int c = 0; c < components; ++c) out[components * n + c] = s[c];
+  }
+}
+
+void Solver::initialize() {
+  const auto& ctl = model_.controls;
+  std::vector<std::vector<double>> element_dt(sd_.solid_blocks.size());
+  double dt_min = 1e300;
+  int32_t dt_elem = -1;
+  for (std::size_t ib = 0; ib < sd_.solid_blocks.size(); ++ib) {
+    auto& blk = sd_.solid_blocks[ib];
+    const auto st = elements::initializeSolids(blk, sd_.x0, sd_.slots.data(), element_dt[ib]);
+    if (st.bad_elem >= 0) {
+      throw util::NumericalError(fmt::format(
+          "solid element {} (part {}) has zero or negative initial volume: check its node "
+          "ordering (LS-DYNA: nodes 1-4 one face, 5-8 the opposite face, right-handed)",
+          model_.solids.id[static_cast<std::size_t>(st.bad_elem)], blk.part_id));
+    }
+    if (st.dt_elem >= 0 && (st.dt_min < dt_min || (st.dt_min == dt_min && st.dt_elem < dt_elem))) {
+      dt_min = st.dt_min;
+      dt_elem = st.dt_elem;
+    }
+  }
+  gatherNodalForces(sd_.mass, 1);
+  std::vector<double> physical_mass = sd_.mass;
+
+  // Mass scaling (*CONTROL_TIMESTEP DT2MS): elements whose step TSSFAC*dt_e is below |DT2MS|
+  // get density scaled by (|DT2MS| / (TSSFAC dt_e))^2 so that they run at |DT2MS|. The added
+  // mass is reported; it is assembled through the slots like the physical mass.
+  if (ctl.dt2ms != 0.0) {
+    const double target = std::abs(ctl.dt2ms);
+    bool any = false;
+    for (std::size_t ib = 0; ib < sd_.solid_blocks.size(); ++ib) {
+      auto& blk = sd_.solid_blocks[ib];
+      blk.mass_scale.assign(blk.size(), 1.0);
+      for (std::size_t e = 0; e < blk.size(); ++e) {
+        double* slot = sd_.slots.data() + 3 * (blk.slot_offset + 8 * e);
+        const double step = ctl.tssfac * element_dt[ib][e];
+        double extra = 0.0;
+        if (step > 0.0 && step < target) {
+          blk.mass_scale[e] = (target / step) * (target / step);
+          extra = blk.rho0 * blk.vol0[e] / 8.0 * (blk.mass_scale[e] - 1.0);
+          any = true;
+        }
+        for (int a = 0; a < 8; ++a) slot[3 * a] = extra;
+      }
+    }
+    if (any) {
+      gatherNodalForces(sd_.mass_added, 1);
+      for (std::size_t n = 0; n < sd_.numNodes(); ++n) sd_.mass[n] += sd_.mass_added[n];
+      dt_min = 1e300;
+      for (std::size_t ib = 0; ib < sd_.solid_blocks.size(); ++ib) {
+        const auto& blk = sd_.solid_blocks[ib];
+        for (std::size_t e = 0; e < blk.size(); ++e) {
+          const double dte = element_dt[ib][e] * std::sqrt(blk.mass_scale[e]);
+          if (dte < dt_min || (dte == dt_min && blk.elem[e] < dt_elem)) {
+            dt_min = dte;
+            dt_elem = blk.elem[e];
+          }
+        }
+      }
+    }
+  }
+  total_mass_ = 0.0;
+  added_mass_ = 0.0;
+  for (std::size_t n = 0; n < sd_.numNodes(); ++n) {
+    total_mass_ += physical_mass[n];
+    added_mass_ += sd_.mass_added[n];
+  }
+
+  for (std::size_t n = 0; n < sd_.numNodes(); ++n)
+    for (int c = 0; c < 3; ++c)
+      sd_.v[3 * n + c] = model_.initial_velocity[static_cast<std::size_t>(sd_.node_model[n])][c];
+
+  dt_min = comm_.minAll(dt_min);
+  dt_next_ = ctl.tssfac * dt_min;
+  if (ctl.dt_init > 0.0) dt_next_ = std::min(dt_next_, ctl.dt_init);
+  dt_initial_ = dt_next_;
+  dt_initial_elem_ = dt_elem >= 0 ? model_.solids.id[static_cast<std::size_t>(dt_elem)] : 0;
+  dt_elem_ = dt_initial_elem_;
+  dt_ = 0.0;
+  time_ = 0.0;
+  cycle_ = 0;
+  initial_energy_ = 0.0;
+  initial_energy_ = energies().kinetic;
+}
+
+bool Solver::finished() const {
+  const auto& ctl = model_.controls;
+  if (ctl.end_cycle > 0 && cycle_ >= ctl.end_cycle) return true;
+  return time_ >= end_time_ * (1.0 - 1e-12);
+}
+
+void Solver::computeInternalForces() {
+  double dt_min = 1e300;
+  int32_t dt_elem = -1, bad = -1;
+  for (auto& blk : sd_.solid_blocks) {
+    const auto st = elements::computeSolidForces(blk, sd_.x, sd_.v, dt_, bv_, sd_.slots.data());
+    if (st.dt_elem >= 0 && (st.dt_min < dt_min || (st.dt_min == dt_min && st.dt_elem < dt_elem))) {
+      dt_min = st.dt_min;
+      dt_elem = st.dt_elem;
+    }
+    if (st.bad_elem >= 0 && (bad < 0 || st.bad_elem < bad)) bad = st.bad_elem;
+    eroded_ += st.eroded;
+  }
+  if (comm_.anyAll(bad >= 0)) {
+    const auto e = static_cast<std::size_t>(bad >= 0 ? bad : 0);
+    throw util::NumericalError(fmt::format(
+        "negative volume in solid element {} (part {}) at cycle {}, time {:.6g}",
+        model_.solids.id[e], model_.parts[static_cast<std::size_t>(model_.solids.part[e])].id,
+        cycle_, time_));
+  }
+  double dt_new = model_.controls.tssfac * comm_.minAll(dt_min);
+  if (model_.controls.dt_max_curve != model::kNone)
+    dt_new = std::min(dt_new, model_.curves[static_cast<std::size_t>(model_.controls.dt_max_curve)].value(time_));
+  if (!(dt_new > 0.0) || !std::isfinite(dt_new)) {
+    throw util::NumericalError(fmt::format(
+        "time step collapsed to {:.3g} at cycle {}, time {:.6g} (controlling element {})", dt_new,
+        cycle_, time_, dt_elem >= 0 ? model_.solids.id[static_cast<std::size_t>(dt_elem)] : 0));
+  }
+  if (model_.controls.dt_min_ratio > 0.0 && dt_new < model_.controls.dt_min_ratio * dt_initial_) {
+    throw util::NumericalError(fmt::format(
+        "time step {:.3g} fell below DTMIN x initial step ({:.3g}) at cycle {}, time {:.6g} "
+        "(controlling element {})",
+        dt_new, model_.controls.dt_min_ratio * dt_initial_, cycle_, time_,
+        dt_elem >= 0 ? model_.solids.id[static_cast<std::size_t>(dt_elem)] : 0));
+  }
+  dt_next_ = dt_new;
+  if (dt_elem >= 0) dt_elem_ = model_.solids.id[static_cast<std::size_t>(dt_elem)];
+}
+
+void Solver::updateKinematics() {
+  // Land exactly on the end time rather than overshoot it.
+  double dt_half = dt_next_;
+  const double remaining = end_time_ - time_;
+  if (remaining > 0.0 && dt_half > remaining) dt_half = remaining;
+  // dt(n) centred on t(n); the first cycle starts from v(-1/2) = v(0) with half a step.
+  const double dt_n = cycle_ == 0 ? 0.5 * dt_half : 0.5 * (dt_ + dt_half);
+  const std::size_t nn = sd_.numNodes();
+  v_old_ = sd_.v;
+
+  const std::size_t nchunk = (nn + kNodeChunk - 1) / kNodeChunk;
+  std::vector<double> work(nchunk, 0.0);
+#pragma omp parallel for schedule(static)
+  for (std::size_t ch = 0; ch < nchunk; ++ch) {
+    const std::size_t end = std::min(nn, (ch + 1) * kNodeChunk);
+    double w = 0.0;
+    for (std::size_t n = ch * kNodeChunk; n < end; ++n) {
+      const double m = sd_.mass[n];
+      for (int c = 0; c < 3; ++c) {
+        const std::size_t i = 3 * n + c;
+        const double f = sd_.f[i] + sd_.f_ext[i];
+        sd_.a[i] = m > 0.0 ? f / m : 0.0;
+        sd_.v[i] = v_old_[i] + dt_n * sd_.a[i];
+        // External work over dt_n at the mean velocity (trapezoidal in velocity).
+        w += sd_.f_ext[i] * 0.5 * (v_old_[i] + sd_.v[i]) * dt_n;
+      }
+    }
+    work[ch] = w;
+  }
+  double ext = 0.0;
+  for (double w : work) ext += w;
+
+  const auto t0 = Clock::now();
+  ext += boundary_.applyKinematics(time_, dt_n, dt_half, sd_, v_old_);
+  rigidwall_energy_ += boundary_.applyRigidWalls(dt_n, dt_half, sd_, v_old_);
+  timing_.constraints += seconds(t0, Clock::now());
+  external_work_ += comm_.sumOrdered({ext})[0];
+
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < 3 * nn; ++i) sd_.x[i] += dt_half * sd_.v[i];
+
+  dt_ = dt_half;
+  time_ += dt_half;
+  ++cycle_;
+}
+
+void Solver::step() {
+  auto t0 = Clock::now();
+  computeInternalForces();
+  gatherNodalForces(sd_.f, 3);
+  auto t1 = Clock::now();
+  timing_.elements += seconds(t0, t1);
+  boundary_.externalForces(time_, sd_, sd_.f_ext);
+  timing_.constraints += seconds(t1, Clock::now());
+  updateKinematics();
+  for (std::size_t i = 0; i < sd_.v.size(); ++i) {
+    if (!std::isfinite(sd_.v[i])) {
+      throw util::NumericalError(fmt::format(
+          "non-finite velocity at node {} at cycle {}, time {:.6g}", sd_.node_id[i / 3], cycle_,
+          time_));
+    }
+  }
+}
+
+Energies Solver::energies() const {
+  Energies e;
+  for (const auto& blk : sd_.solid_blocks)
+    for (std::size_t k = 0; k < blk.size(); ++k) {
+      e.internal += blk.e_int[k];
+      e.hourglass += blk.e_hg[k];
+    }
+  for (std::size_t n = 0; n < sd_.numNodes(); ++n) {
+    const double* v = &sd_.v[3 * n];
+    // Kinetic energy of the physical mass; mass added by scaling is reported separately.
+    const double m = sd_.mass[n] - sd_.mass_added[n];
+    e.kinetic += 0.5 * m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  }
+  e.kinetic += boundary_.wallKineticEnergy();
+  const auto sums = comm_.sumOrdered({e.kinetic, e.internal, e.hourglass});
+  e.kinetic = sums[0];
+  e.internal = sums[1];
+  e.hourglass = sums[2];
+  e.external_work = external_work_;
+  e.rigidwall = rigidwall_energy_;
+  e.total = e.kinetic + e.internal + e.hourglass + e.contact + e.rigidwall;
+  e.initial = initial_energy_;
+  const double reference = initial_energy_ + e.external_work;
+  e.ratio = reference != 0.0 ? e.total / reference : 1.0;
+  return e;
+}
+
+std::vector<PartSums> Solver::partSums() const {
+  std::vector<PartSums> out;
+  std::vector<double> node_share(sd_.numNodes(), 0.0);
+  for (const auto& blk : sd_.solid_blocks) {
+    PartSums p;
+    p.part_id = blk.part_id;
+    for (std::size_t k = 0; k < blk.size(); ++k) {
+      p.internal += blk.e_int[k];
+      p.hourglass += blk.e_hg[k];
+      // Kinetic energy and momentum of a part: each corner carries rho0 V0 / 8 at the velocity
+      // of its node, which splits shared nodes between parts by the mass each part gives them.
+      const double corner_mass = blk.rho0 * blk.vol0[k] / 8.0;
+      for (int a = 0; a < 8; ++a) {
+        const double* v = &sd_.v[3 * static_cast<std::size_t>(blk.conn[k][a])];
+        p.kinetic += 0.5 * corner_mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        for (int c = 0; c < 3; ++c) p.momentum[c] += corner_mass * v[c];
+      }
+    }
+    out.push_back(p);
+  }
+  return out;
+}
+
+}  // namespace crumple::solver

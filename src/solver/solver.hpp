@@ -1,0 +1,95 @@
+// The explicit cycle of DYNA3D (Hallquist, DYNA3D User Manual, UCRL-MA-107254, sec. 2):
+// central differences on a lumped mass, element by element, no matrix inversion.
+//
+//   computeInternalForces   element kernels write corner forces to their slots
+//   gatherNodalForces       nodes sum their slots in global element order
+//   computeExternalForces   nodal loads, follower pressure, gravity
+//   updateKinematics        a = F/m, v(n+1/2), SPC, prescribed motion, rigid walls, x(n+1)
+//   stableTimeStep          TSSFAC x min over elements, global minimum
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "comm/communicator.hpp"
+#include "constraints/boundary.hpp"
+#include "domain/subdomain.hpp"
+#include "elements/hex8.hpp"
+#include "model/model.hpp"
+
+namespace crumple::solver {
+
+struct Energies {
+  double kinetic = 0, internal = 0, hourglass = 0, contact = 0, external_work = 0;
+  double rigidwall = 0;  // energy absorbed by stonewalls
+  double total = 0, initial = 0, ratio = 1;
+};
+
+// Per-part sums for matsum.
+struct PartSums {
+  int64_t part_id = 0;
+  double kinetic = 0, internal = 0, hourglass = 0;
+  double momentum[3] = {0, 0, 0};
+};
+
+struct Timing {
+  double elements = 0, contact = 0, constraints = 0, communication = 0, output = 0, other = 0;
+};
+
+class Solver {
+ public:
+  Solver(const model::Model& model, domain::Subdomain& sd, comm::Communicator& comm);
+
+  // Masses (with mass scaling), initial velocities, the first stable time step.
+  void initialize();
+  // Advances one cycle: t(n) -> t(n+1).
+  void step();
+
+  double time() const { return time_; }
+  int64_t cycle() const { return cycle_; }
+  double dt() const { return dt_; }            // the step just taken, dt(n+1/2)
+  double endTime() const { return end_time_; }
+  void setEndTime(double t) { end_time_ = t; }
+  bool finished() const;
+
+  Energies energies() const;
+  std::vector<PartSums> partSums() const;
+  double addedMass() const { return added_mass_; }
+  double totalMass() const { return total_mass_; }
+  double initialDt() const { return dt_initial_; }
+  int64_t initialDtElement() const { return dt_initial_elem_; }  // user element id
+  int64_t erodedElements() const { return eroded_; }
+  const Timing& timing() const { return timing_; }
+  Timing& timing() { return timing_; }
+  const domain::Subdomain& subdomain() const { return sd_; }
+  const constraints::Boundary& boundary() const { return boundary_; }
+
+ private:
+  void computeInternalForces();
+  void gatherNodalForces(std::vector<double>& out, int components) const;
+  void updateKinematics();
+  void applyMassScaling(const std::vector<double>& dt_elem_by_block);
+
+  const model::Model& model_;
+  domain::Subdomain& sd_;
+  comm::Communicator& comm_;
+  constraints::Boundary boundary_;
+  elements::BulkViscosity bv_;
+
+  double time_ = 0.0, end_time_ = 0.0;
+  int64_t cycle_ = 0;
+  double dt_ = 0.0;        // dt(n-1/2): the step that brought the state to time_
+  double dt_next_ = 0.0;   // dt(n+1/2) from the latest element pass
+  double dt_initial_ = 0.0;
+  int64_t dt_initial_elem_ = 0;
+  int64_t dt_elem_ = 0;
+  double total_mass_ = 0.0, added_mass_ = 0.0;
+  int64_t eroded_ = 0;
+
+  double external_work_ = 0.0, rigidwall_energy_ = 0.0, initial_energy_ = 0.0;
+  domain::NodeVector v_old_;
+  Timing timing_;
+};
+
+}  // namespace crumple::solver

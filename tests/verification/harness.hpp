@@ -1,0 +1,108 @@
+// Runs a deck through the library (reader -> model -> subdomain -> solver) for verification
+// tests, and writes small block-mesh decks for them.
+#pragma once
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "comm/communicator.hpp"
+#include "domain/subdomain.hpp"
+#include "model/build.hpp"
+#include "solver/solver.hpp"
+
+namespace crumple::testing {
+
+class Simulation {
+ public:
+  explicit Simulation(const std::filesystem::path& deck)
+      : model(model::readModel(deck)), sd(domain::buildSerialSubdomain(model)) {
+    solver = std::make_unique<solver::Solver>(model, sd, comm::world());
+    solver->initialize();
+  }
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  // Writes `text` to a fresh file under the test temp folder and reads it.
+  static std::unique_ptr<Simulation> fromText(const std::string& name, const std::string& text) {
+    const auto dir = std::filesystem::temp_directory_path() / "crumple_verification";
+    std::filesystem::create_directories(dir);
+    const auto path = dir / (name + ".k");
+    std::ofstream(path) << text;
+    return std::make_unique<Simulation>(path);
+  }
+
+  void run(const std::function<void(const solver::Solver&)>& each_cycle = {}) {
+    while (!solver->finished()) {
+      solver->step();
+      if (each_cycle) each_cycle(*solver);
+    }
+  }
+
+  // Node's current position / velocity component by user id.
+  double x(int64_t node_id, int c) const { return sd.x[3 * local(node_id) + std::size_t(c)]; }
+  double x0(int64_t node_id, int c) const { return sd.x0[3 * local(node_id) + std::size_t(c)]; }
+  double v(int64_t node_id, int c) const { return sd.v[3 * local(node_id) + std::size_t(c)]; }
+  std::size_t local(int64_t node_id) const {
+    return static_cast<std::size_t>(model.nodeIndex(node_id));  // serial: local == model index
+  }
+  double momentum(int c) const {
+    double p = 0.0;
+    for (std::size_t n = 0; n < sd.numNodes(); ++n) p += sd.mass[n] * sd.v[3 * n + std::size_t(c)];
+    return p;
+  }
+
+  model::Model model;
+  domain::Subdomain sd;
+  std::unique_ptr<solver::Solver> solver;
+};
+
+// A brick of nx x ny x nz hexes on [0,lx]x[0,ly]x[0,lz], part 1, node (i,j,k) has id
+// 1 + i + (nx+1) j + (nx+1)(ny+1) k. `extra` holds the material, controls and loads.
+inline std::string brickDeck(int nx, int ny, int nz, double lx, double ly, double lz,
+                             const std::string& extra) {
+  std::string s = "*KEYWORD\n*TITLE\nverification brick\n" + extra;
+  s += "*PART\nbrick\n         1         1         1\n*SECTION_SOLID\n         1         1\n*NODE\n";
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i)
+        s += fmt::format("{:8d}{:16.9g}{:16.9g}{:16.9g}\n", 1 + i + (nx + 1) * (j + (ny + 1) * k),
+                         lx * i / nx, ly * j / ny, lz * k / nz);
+  s += "*ELEMENT_SOLID\n";
+  auto id = [&](int i, int j, int k) { return 1 + i + (nx + 1) * (j + (ny + 1) * k); };
+  int e = 1;
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        s += fmt::format("{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}\n", e++, 1, id(i, j, k),
+                         id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k), id(i, j, k + 1),
+                         id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1));
+  return s + "*END\n";
+}
+
+// *SET_NODE_LIST of the brick nodes selected by pred(i, j, k).
+template <class Pred>
+std::string brickNodeSet(int set_id, int nx, int ny, int nz, Pred pred) {
+  std::string s = fmt::format("*SET_NODE_LIST\n{:10d}\n", set_id);
+  int col = 0;
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i)
+        if (pred(i, j, k)) {
+          s += fmt::format("{:10d}", 1 + i + (nx + 1) * (j + (ny + 1) * k));
+          if (++col == 8) {
+            s += "\n";
+            col = 0;
+          }
+        }
+  if (col) s += "\n";
+  return s;
+}
+
+inline std::filesystem::path sourceDir() { return CRUMPLE_SOURCE_DIR; }
+
+}  // namespace crumple::testing

@@ -1,0 +1,113 @@
+"""Small generators of LS-DYNA-style keyword decks for Crumple's examples and tests.
+
+Standard library only. Meshes are hexahedra in LS-DYNA node order (1-4 one face, 5-8 the
+opposite face, right-handed). Every function returns deck text; nothing here runs a solver.
+"""
+
+from __future__ import annotations
+
+import math
+
+
+class Mesh:
+    """Nodes and 8-node solids with 1-based ids."""
+
+    def __init__(self) -> None:
+        self.nodes: list[tuple[float, float, float]] = []
+        self.solids: list[tuple[int, list[int]]] = []  # (part id, 8 node ids)
+
+    def add_node(self, x: float, y: float, z: float) -> int:
+        self.nodes.append((x, y, z))
+        return len(self.nodes)
+
+    def add_solid(self, part: int, nodes: list[int]) -> int:
+        self.solids.append((part, nodes))
+        return len(self.solids)
+
+    def node_ids(self, pred) -> list[int]:
+        return [i + 1 for i, p in enumerate(self.nodes) if pred(*p)]
+
+    def keyword_text(self) -> str:
+        out = ["*NODE"]
+        for i, (x, y, z) in enumerate(self.nodes, start=1):
+            out.append(f"{i:8d}{x:16.9g}{y:16.9g}{z:16.9g}{0:8d}{0:8d}")
+        out.append("*ELEMENT_SOLID")
+        for e, (part, ns) in enumerate(self.solids, start=1):
+            out.append(f"{e:8d}{part:8d}" + "".join(f"{n:8d}" for n in ns))
+        return "\n".join(out) + "\n"
+
+
+def block(mesh: Mesh, part: int, origin, size, divisions) -> dict:
+    """A structured brick of nx*ny*nz hexes; returns the grid of node ids keyed (i, j, k)."""
+    (x0, y0, z0), (lx, ly, lz), (nx, ny, nz) = origin, size, divisions
+    grid = {}
+    for k in range(nz + 1):
+        for j in range(ny + 1):
+            for i in range(nx + 1):
+                grid[i, j, k] = mesh.add_node(x0 + lx * i / nx, y0 + ly * j / ny, z0 + lz * k / nz)
+    for k in range(nz):
+        for j in range(ny):
+            for i in range(nx):
+                mesh.add_solid(part, [grid[i, j, k], grid[i + 1, j, k], grid[i + 1, j + 1, k],
+                                      grid[i, j + 1, k], grid[i, j, k + 1], grid[i + 1, j, k + 1],
+                                      grid[i + 1, j + 1, k + 1], grid[i, j + 1, k + 1]])
+    return grid
+
+
+def quarter_cylinder(mesh: Mesh, part: int, radius: float, length: float, n_core: int,
+                     n_ring: int, n_axial: int) -> None:
+    """A quarter cylinder (x >= 0, y >= 0, 0 <= z <= length) as a butterfly (O-grid) mesh:
+    a square core of n_core x n_core cells and a ring of n_ring layers out to the circle."""
+    core = 0.55 * radius
+
+    def section_point(a: int, b: int, r: int):
+        """Point of the cross-section: a, b index the core square (0..n_core); r = ring layer.
+        For r > 0 the point lies on the ray from the core edge to the circle."""
+        if r == 0:
+            return core * a / n_core, core * b / n_core
+        # Ring points: boundary of the core (a == n_core or b == n_core) blended to the arc.
+        if a == n_core:
+            t = b / n_core  # along the core's right edge, angle 0 .. 45 deg
+            inner = (core, core * t)
+            ang = 0.25 * math.pi * t
+        else:
+            t = a / n_core  # along the core's top edge, angle 90 .. 45 deg
+            inner = (core * t, core)
+            ang = 0.5 * math.pi - 0.25 * math.pi * t
+        outer = (radius * math.cos(ang), radius * math.sin(ang))
+        s = r / n_ring
+        return inner[0] + s * (outer[0] - inner[0]), inner[1] + s * (outer[1] - inner[1])
+
+    # Cross-section node table: core nodes (a, b, 0) and ring nodes along the core boundary.
+    section = {}
+    for a in range(n_core + 1):
+        for b in range(n_core + 1):
+            section[a, b, 0] = section_point(a, b, 0)
+    boundary = [(n_core, b) for b in range(n_core + 1)] + [(a, n_core) for a in range(n_core - 1, -1, -1)]
+    for (a, b) in boundary:
+        for r in range(1, n_ring + 1):
+            section[a, b, r] = section_point(a, b, r)
+    # Quads of the cross-section (counter-clockwise seen from +z).
+    quads = []
+    for a in range(n_core):
+        for b in range(n_core):
+            quads.append([(a, b, 0), (a + 1, b, 0), (a + 1, b + 1, 0), (a, b + 1, 0)])
+    for s in range(len(boundary) - 1):
+        p, q = boundary[s], boundary[s + 1]
+        for r in range(n_ring):
+            quads.append([(p[0], p[1], r), (p[0], p[1], r + 1), (q[0], q[1], r + 1), (q[0], q[1], r)])
+    ids = {}
+    for k in range(n_axial + 1):
+        z = length * k / n_axial
+        for key, (x, y) in section.items():
+            ids[key, k] = mesh.add_node(x, y, z)
+    for k in range(n_axial):
+        for q in quads:
+            mesh.add_solid(part, [ids[c, k] for c in q] + [ids[c, k + 1] for c in q])
+
+
+def node_set(set_id: int, nodes: list[int], title: str = "") -> str:
+    out = ["*SET_NODE_LIST_TITLE", title or f"set {set_id}", f"{set_id:10d}"]
+    for i in range(0, len(nodes), 8):
+        out.append("".join(f"{n:10d}" for n in nodes[i:i + 8]))
+    return "\n".join(out) + "\n"
