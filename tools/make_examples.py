@@ -39,7 +39,7 @@ $   dtinit    tssfac
        0.0       0.9
 *CONTROL_HOURGLASS
 $      ihq        qh
-         4      0.05
+         2       0.1
 *CONTROL_ENERGY
 $     hgen      rwen
          2         2

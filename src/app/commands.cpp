@@ -24,7 +24,9 @@ namespace crumple::app {
 namespace {
 
 std::atomic<bool> g_interrupted{false};
-extern "C" void onSignal(int) { g_interrupted = true; }
+extern "C" void onSignal(int) {
+  g_interrupted = true;
+}
 
 const char* lawName(const model::MaterialLaw& law) {
   struct Visitor {
@@ -51,8 +53,8 @@ std::string modelSummary(const model::Model& m, const solver::Solver& s) {
     const auto& part = m.parts[static_cast<std::size_t>(p)];
     const auto& mat = m.materials[static_cast<std::size_t>(part.material)];
     out += fmt::format("  part {}{}: {} solids, {} {} (density {:g})\n", part.id,
-                       part.title.empty() ? "" : " \"" + part.title + "\"", count,
-                       lawName(mat.law), mat.id, mat.rho);
+                       part.title.empty() ? "" : " \"" + part.title + "\"", count, lawName(mat.law),
+                       mat.id, mat.rho);
   }
   out += fmt::format("total mass: {:.6g}\n", s.totalMass());
   if (s.addedMass() > 0.0)
@@ -66,15 +68,16 @@ std::string modelSummary(const model::Model& m, const solver::Solver& s) {
 
 std::string warningsText(const model::Model& m) {
   std::string out;
-  if (!m.unsupported.empty()) out += "keywords read but not acted on:\n" + model::formatUnsupported(m);
-  for (const auto& f : m.ignored)
-    out += fmt::format("{}: {} field {} ignored: {}\n", f.where.str(), f.keyword, f.field, f.reason);
+  if (!m.unsupported.empty())
+    out += "keywords read but not acted on:\n" + model::formatUnsupported(m);
+  if (!m.ignored.empty()) out += "fields read but not honoured:\n" + model::formatIgnored(m);
   return out;
 }
 
 std::string timingTable(const solver::Timing& t, double output_s, double wall) {
   auto row = [&](const char* name, double v) {
-    return fmt::format("  {:<14} {:10.3f} s {:6.1f}%\n", name, v, wall > 0 ? 100.0 * v / wall : 0.0);
+    return fmt::format("  {:<14} {:10.3f} s {:6.1f}%\n", name, v,
+                       wall > 0 ? 100.0 * v / wall : 0.0);
   };
   const double other =
       std::max(0.0, wall - t.elements - t.contact - t.constraints - t.communication - output_s);
@@ -86,13 +89,37 @@ std::string timingTable(const solver::Timing& t, double output_s, double wall) {
 }  // namespace
 
 int checkCommand(const CheckOptions& opt, std::FILE* out) {
+  // First the strict read a run would do; if it refuses the deck, read again tolerantly so
+  // the user still gets the whole list of what is not supported.
+  std::string refusal;
+  model::Model m;
   try {
-    const model::Model m = model::readModel(opt.deck);
+    m = model::readModel(opt.deck);
+  } catch (const util::InputError& e) {
+    refusal = e.what();
+    try {
+      m = model::readModel(opt.deck, model::ReadOptions{.allow_unsupported = true});
+    } catch (const std::exception& e2) {
+      std::fprintf(stderr, "crumple: error: %s\n", e2.what());
+      return 1;
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "crumple: error: %s\n", e.what());
+    return 1;
+  }
+  try {
+    const std::string warn = warningsText(m);
+    if (!refusal.empty()) {
+      std::fprintf(out, "deck: %s\nnodes: %zu\nsolid elements: %zu\n", m.deck_path.c_str(),
+                   m.nodes.size(), m.solids.size());
+      std::fputs(warn.c_str(), out);
+      std::fprintf(stderr, "crumple: error: this deck cannot run yet: %s\n", refusal.c_str());
+      return 1;
+    }
     auto sd = domain::buildSerialSubdomain(m);
     solver::Solver s(m, sd, comm::world());
     s.initialize();
     std::fputs(modelSummary(m, s).c_str(), out);
-    const std::string warn = warningsText(m);
     std::fputs(warn.empty() ? "everything in the deck is supported\n" : warn.c_str(), out);
     if (opt.strict && !m.unsupported.empty()) {
       std::fprintf(stderr, "crumple: error: --strict: the deck uses %zu unsupported keyword(s)\n",
@@ -121,7 +148,8 @@ int runCommand(const RunOptions& opt) {
                              model::formatUnsupported(m));
     }
     if (!(m.controls.end_time > 0.0) && m.controls.end_cycle <= 0)
-      throw util::InputError(opt.deck + ": *CONTROL_TERMINATION gives no end time (ENDTIM) or "
+      throw util::InputError(opt.deck +
+                             ": *CONTROL_TERMINATION gives no end time (ENDTIM) or "
                              "cycle count (ENDCYC); pass --endtime to run anyway");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "crumple: error: %s\n", e.what());
@@ -129,8 +157,9 @@ int runCommand(const RunOptions& opt) {
   }
 
   const std::filesystem::path dir =
-      opt.output_dir.empty() ? std::filesystem::path(std::filesystem::path(opt.deck).stem().string() + ".out")
-                             : std::filesystem::path(opt.output_dir);
+      opt.output_dir.empty()
+          ? std::filesystem::path(std::filesystem::path(opt.deck).stem().string() + ".out")
+          : std::filesystem::path(opt.output_dir);
   try {
     output::prepareResultsDir(dir, opt.overwrite);
   } catch (const std::exception& e) {
@@ -143,7 +172,8 @@ int runCommand(const RunOptions& opt) {
     log << text;
     log.flush();
   };
-  say(fmt::format("crumple {} — {} rank(s), {} thread(s)\n", CRUMPLE_VERSION, comm.size(), threads));
+  say(fmt::format("crumple {} — {} rank(s), {} thread(s)\n", CRUMPLE_VERSION, comm.size(),
+                  threads));
   const std::string warn = warningsText(m);
   if (!warn.empty()) {
     std::fputs(warn.c_str(), stderr);
@@ -172,7 +202,8 @@ int runCommand(const RunOptions& opt) {
       s.step();
       writer->write(s);
       // The energy sums cost a pass over every node and element: refresh them sparingly.
-      if (show && s.cycle() % 64 == 0) progress.update(s.cycle(), s.time(), s.dt(), s.energies().ratio);
+      if (show && s.cycle() % 64 == 0)
+        progress.update(s.cycle(), s.time(), s.dt(), s.energies().ratio);
       if (g_interrupted) {
         info.termination = "signal";
         info.message = "interrupted by a signal; the last state was written";
@@ -209,7 +240,8 @@ int runCommand(const RunOptions& opt) {
   if (s.cycle() > 0 && info.wall_s > 0.0)
     say(fmt::format("{:.3g} element-cycles per second\n",
                     double(m.solids.size()) * double(s.cycle()) / info.wall_s));
-  if (!opt.quiet) std::printf("%s termination; results in %s\n", info.termination.c_str(), dir.c_str());
+  if (!opt.quiet)
+    std::printf("%s termination; results in %s\n", info.termination.c_str(), dir.c_str());
   return status;
 }
 

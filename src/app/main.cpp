@@ -24,8 +24,11 @@ int main(int argc, char** argv) {
 
   crumple::app::CheckOptions check;
   auto* check_cmd = app.add_subcommand(
-      "check", "Read and validate a deck; print its contents, mass, time step and what is unsupported");
-  check_cmd->add_option("deck", check.deck, "Keyword deck (.k)")->required()->check(CLI::ExistingFile);
+      "check",
+      "Read and validate a deck; print its contents, mass, time step and what is unsupported");
+  check_cmd->add_option("deck", check.deck, "Keyword deck (.k)")
+      ->required()
+      ->check(CLI::ExistingFile);
   check_cmd->add_flag("--strict", check.strict, "Exit with an error if anything is unsupported");
 
   try {

@@ -10,7 +10,9 @@ namespace {
 const model::Curve* curveOf(const model::Model& m, int32_t index) {
   return index == model::kNone ? nullptr : &m.curves[static_cast<std::size_t>(index)];
 }
-double curveValue(const model::Curve* c, double t) { return c ? c->value(t) : 1.0; }
+double curveValue(const model::Curve* c, double t) {
+  return c ? c->value(t) : 1.0;
+}
 
 // Local index of a model node in the subdomain, or kNone if the rank does not hold it.
 int32_t localOf(const domain::Subdomain& sd, int32_t model_node) {
@@ -19,7 +21,9 @@ int32_t localOf(const domain::Subdomain& sd, int32_t model_node) {
   return static_cast<int32_t>(it - sd.node_model.begin());
 }
 
-double dot(const model::Vec3& a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double dot(const model::Vec3& a, const double* b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
 
 }  // namespace
 
@@ -87,7 +91,8 @@ void Boundary::externalForces(double t, const domain::Subdomain& sd,
     const int corners = triangle ? 3 : 4;
     const double share = -pr / corners;
     for (int k = 0; k < corners; ++k)
-      for (int c = 0; c < 3; ++c) f_ext[3 * static_cast<std::size_t>(p.nodes[k]) + c] += share * area[c];
+      for (int c = 0; c < 3; ++c)
+        f_ext[3 * static_cast<std::size_t>(p.nodes[k]) + c] += share * area[c];
   }
 
   // Base acceleration: body force -m a on every node.
@@ -150,7 +155,8 @@ double Boundary::applyRigidWalls(double dt_n, double dt_half, domain::Subdomain&
     w.normal_force = 0.0;
     model::Vec3 m_axis{};
     if (d.finite) {
-      m_axis = {nrm[1] * d.l_axis[2] - nrm[2] * d.l_axis[1], nrm[2] * d.l_axis[0] - nrm[0] * d.l_axis[2],
+      m_axis = {nrm[1] * d.l_axis[2] - nrm[2] * d.l_axis[1],
+                nrm[2] * d.l_axis[0] - nrm[0] * d.l_axis[2],
                 nrm[0] * d.l_axis[1] - nrm[1] * d.l_axis[0]};
     }
     for (int32_t node : w.nodes) {

@@ -57,7 +57,7 @@ struct Subdomain {
   std::vector<int32_t> node_model;
   std::vector<int64_t> node_id;  // user ids, for output
   NodeVector x0, x, v, a, f, f_ext;
-  std::vector<double> mass;     // lumped nodal mass (incl. mass added by scaling)
+  std::vector<double> mass;  // lumped nodal mass (incl. mass added by scaling)
   std::vector<double> mass_added;
 
   std::vector<SolidBlock> solid_blocks;

@@ -101,6 +101,19 @@ materials::Moduli moduliOf(const materials::Law& law) {
   return std::visit([](const auto& m) { return m.moduli; }, law);
 }
 
+// Jaumann rotation of a symmetric tensor over one step: t += W t - t W, with the spin
+// increments W_xy, W_yz, W_zx (times dt) and W skew.
+inline void rotateJaumann(double (&t)[6][kBatch], int l, double wxy, double wyz, double wzx) {
+  const double txx = t[0][l], tyy = t[1][l], tzz = t[2][l];
+  const double txy = t[3][l], tyz = t[4][l], tzx = t[5][l];
+  t[0][l] = txx + 2.0 * (wxy * txy - wzx * tzx);
+  t[1][l] = tyy + 2.0 * (-wxy * txy + wyz * tyz);
+  t[2][l] = tzz + 2.0 * (wzx * tzx - wyz * tyz);
+  t[3][l] = txy + wxy * (tyy - txx) - wzx * tyz + wyz * tzx;
+  t[4][l] = tyz + wyz * (tzz - tyy) - wxy * tzx + wzx * txy;
+  t[5][l] = tzx + wzx * (txx - tzz) - wyz * txy + wxy * tyz;
+}
+
 // Scratch for one batch, kept per thread.
 struct BatchScratch {
   NodalBatch x, v, xm, b, f;
@@ -163,15 +176,9 @@ BlockStatus solidBlockForces(const Law& law, domain::SolidBlock& blk, const doma
         const double wxy = 0.5 * (L[0][1][l] - L[1][0][l]) * dt;
         const double wyz = 0.5 * (L[1][2][l] - L[2][1][l]) * dt;
         const double wzx = 0.5 * (L[2][0][l] - L[0][2][l]) * dt;
-        // sigma += W sigma - sigma W (W skew: W_yx = -W_xy, W_xz = -W_zx, W_zy = -W_yz).
-        const double sxx = w.s[0][l], syy = w.s[1][l], szz = w.s[2][l];
-        const double sxy = w.s[3][l], syz = w.s[4][l], szx = w.s[5][l];
-        w.s[0][l] = sxx + 2.0 * (wxy * sxy - wzx * szx);
-        w.s[1][l] = syy + 2.0 * (-wxy * sxy + wyz * syz);
-        w.s[2][l] = szz + 2.0 * (wzx * szx - wyz * syz);
-        w.s[3][l] = sxy + wxy * (syy - sxx) - wzx * syz + wyz * szx;
-        w.s[4][l] = syz + wyz * (szz - syy) - wxy * szx + wzx * sxy;
-        w.s[5][l] = szx + wzx * (sxx - szz) - wyz * sxy + wxy * syz;
+        rotateJaumann(w.s, l, wxy, wyz, wzx);
+        // The back stress is a tensor in the same frame: it rotates with the stress.
+        if constexpr (Law::kKinematic) rotateJaumann(w.alpha, l, wxy, wyz, wzx);
         w.de[0][l] = L[0][0][l] * dt;
         w.de[1][l] = L[1][1][l] * dt;
         w.de[2][l] = L[2][2][l] * dt;
@@ -211,7 +218,8 @@ BlockStatus solidBlockForces(const Law& law, domain::SolidBlock& blk, const doma
         // Bulk viscosity (von Neumann-Richtmyer quadratic + Landshoff linear), compression only;
         // LS-DYNA Theory Manual "Bulk viscosity".
         q[l] = trace_d[l] < 0.0
-                   ? rho[l] * len[l] * (bv.q1 * len[l] * trace_d[l] * trace_d[l] - bv.q2 * c[l] * trace_d[l])
+                   ? rho[l] * len[l] *
+                         (bv.q1 * len[l] * trace_d[l] * trace_d[l] - bv.q2 * c[l] * trace_d[l])
                    : 0.0;
         cbrt_vol[l] = std::cbrt(v_safe);
       }
@@ -220,7 +228,8 @@ BlockStatus solidBlockForces(const Law& law, domain::SolidBlock& blk, const doma
       LaneArray de_int;
       for (int l = 0; l < kBatch; ++l) {
         double p = 0.0;
-        for (int k = 0; k < 6; ++k) p += (k < 3 ? 0.5 : 1.0) * (w.s_old[k][l] + w.s[k][l]) * w.de[k][l];
+        for (int k = 0; k < 6; ++k)
+          p += (k < 3 ? 0.5 : 1.0) * (w.s_old[k][l] + w.s[k][l]) * w.de[k][l];
         de_int[l] = (p - q[l] * trace_d[l] * dt) * vol_mid[l];
       }
 
@@ -245,9 +254,10 @@ BlockStatus solidBlockForces(const Law& law, domain::SolidBlock& blk, const doma
           for (int cc = 0; cc < 3; ++cc)
             for (int a = 0; a < 8; ++a) s += w.b[cc][a][l] * w.b[cc][a][l];
           bb[l] = s;
-          // Viscous: a_h = QM rho V^(2/3) c / 4. Stiffness: QM (lambda + 2 mu) B:B / V, the FB
-          // stiffness scaled like the element's own stiffness, integrated incrementally.
-          coef[l] = stiffness_hg ? qm * lam2mu * bb[l] / vol[l] * dt
+          // Viscous: a_h = QM rho V^(2/3) c / 4 on the unnormalised vectors (LS-DYNA).
+          // Stiffness: QM (lambda + 2 mu) B:B / V per mode, integrated incrementally; FB
+          // normalise the hourglass vectors by 1/sqrt(8), hence the 1/8 on the +-1 vectors.
+          coef[l] = stiffness_hg ? 0.125 * qm * lam2mu * bb[l] / vol[l] * dt
                                  : 0.25 * qm * rho[l] * cbrt_vol[l] * cbrt_vol[l] * c[l];
         }
         for (int alpha = 0; alpha < 4; ++alpha) {
@@ -261,23 +271,26 @@ BlockStatus solidBlockForces(const Law& law, domain::SolidBlock& blk, const doma
               for (int cc = 0; cc < 3; ++cc)
                 for (int a = 0; a < 8; ++a) h[cc] += w.x[cc][a][l] * kGamma[alpha][a];
               for (int a = 0; a < 8; ++a)
-                g[a][l] -= (h[0] * w.b[0][a][l] + h[1] * w.b[1][a][l] + h[2] * w.b[2][a][l]) / vol[l];
+                g[a][l] -=
+                    (h[0] * w.b[0][a][l] + h[1] * w.b[1][a][l] + h[2] * w.b[2][a][l]) / vol[l];
             }
           }
           for (int i = 0; i < 3; ++i)
             for (int l = 0; l < kBatch; ++l) {
               double qdot = 0.0;
               for (int a = 0; a < 8; ++a) qdot += w.v[i][a][l] * g[a][l];
-              double force;
+              double force, mean_force;
               if (stiffness_hg) {
                 const std::size_t e = laneElement(first, n, l);
-                force = blk.hgq[static_cast<std::size_t>(3 * alpha + i)][e] + coef[l] * qdot;
+                const double old = blk.hgq[static_cast<std::size_t>(3 * alpha + i)][e];
+                force = old + coef[l] * qdot;
+                mean_force = 0.5 * (old + force);  // trapezoidal work, as for the stress
                 if (l < n) blk.hgq[static_cast<std::size_t>(3 * alpha + i)][e] = force;
               } else {
-                force = coef[l] * qdot;
+                force = mean_force = coef[l] * qdot;
               }
               for (int a = 0; a < 8; ++a) w.f[i][a][l] -= force * g[a][l];
-              de_hg[l] += force * qdot * dt;
+              de_hg[l] += mean_force * qdot * dt;
             }
         }
       }
@@ -290,7 +303,8 @@ BlockStatus solidBlockForces(const Law& law, domain::SolidBlock& blk, const doma
           std::fill(slot, slot + 24, 0.0);
           continue;
         }
-        if (vol[l] <= 0.0 && (st.bad_elem < 0 || blk.elem[e] < st.bad_elem)) st.bad_elem = blk.elem[e];
+        if (vol[l] <= 0.0 && (st.bad_elem < 0 || blk.elem[e] < st.bad_elem))
+          st.bad_elem = blk.elem[e];
         for (int k = 0; k < 6; ++k) blk.sig[k][e] = w.s[k][l];
         if constexpr (Law::kPlastic) blk.eps_p[e] = w.eps_p[l];
         if constexpr (Law::kKinematic)
@@ -321,8 +335,8 @@ BlockStatus solidBlockForces(const Law& law, domain::SolidBlock& blk, const doma
   // Merge in batch order: the result does not depend on the thread count.
   BlockStatus total;
   for (const auto& s : status) {
-    if (s.dt_elem >= 0 && (s.dt_min < total.dt_min ||
-                           (s.dt_min == total.dt_min && s.dt_elem < total.dt_elem))) {
+    if (s.dt_elem >= 0 &&
+        (s.dt_min < total.dt_min || (s.dt_min == total.dt_min && s.dt_elem < total.dt_elem))) {
       total.dt_min = s.dt_min;
       total.dt_elem = s.dt_elem;
     }
@@ -352,8 +366,8 @@ BlockStatus computeSolidForces(domain::SolidBlock& block, const domain::NodeVect
       block.law);
 }
 
-BlockStatus initializeSolids(domain::SolidBlock& blk, const domain::NodeVector& x0,
-                             double* slots, std::vector<double>& element_dt) {
+BlockStatus initializeSolids(domain::SolidBlock& blk, const domain::NodeVector& x0, double* slots,
+                             std::vector<double>& element_dt) {
   const materials::Moduli mod = moduliOf(blk.law);
   const double c = std::sqrt((mod.bulk + 4.0 / 3.0 * mod.shear) / blk.rho0);
   BlockStatus st;

@@ -31,10 +31,10 @@ struct BulkViscosity {
 
 // What one pass over a block found; merged over blocks by the solver.
 struct BlockStatus {
-  double dt_min = 1e300;              // smallest stable element step (before TSSFAC)
-  int32_t dt_elem = -1;               // model index of the controlling element
-  int32_t bad_elem = -1;              // model index of an element with volume <= 0
-  int32_t eroded = 0;                 // elements eroded in this pass
+  double dt_min = 1e300;  // smallest stable element step (before TSSFAC)
+  int32_t dt_elem = -1;   // model index of the controlling element
+  int32_t bad_elem = -1;  // model index of an element with volume <= 0
+  int32_t eroded = 0;     // elements eroded in this pass
 };
 
 // One cycle for a block of solids: strain rate at the mid-step geometry
@@ -48,8 +48,8 @@ BlockStatus computeSolidForces(domain::SolidBlock& block, const domain::NodeVect
 // Initial volumes and the stable step of a block; writes each corner's lumped mass
 // (rho0 V0 / 8) into the x component of its force slot, so that nodal masses are assembled by
 // the same ordered gather as forces.
-BlockStatus initializeSolids(domain::SolidBlock& block, const domain::NodeVector& x0,
-                             double* slots, std::vector<double>& element_dt);
+BlockStatus initializeSolids(domain::SolidBlock& block, const domain::NodeVector& x0, double* slots,
+                             std::vector<double>& element_dt);
 
 // Stable time step of one element from its characteristic length (volume / largest face
 // area, LS-DYNA Theory Manual sec. 22 "Time step control") and the dilatational wave speed,

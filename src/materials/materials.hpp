@@ -21,11 +21,11 @@ namespace crumple::materials {
 struct PointBatch {
   int n = 0;
   double dt = 0.0;
-  double* s[6] = {};         // stress, in/out
-  const double* de[6] = {};  // strain increment D*dt, in
-  double* eps_p = nullptr;   // effective plastic strain, in/out (laws with plasticity)
-  double* alpha[6] = {};     // back stress, in/out (laws with kinematic hardening)
-  uint8_t* failed = nullptr; // out: set to 1 when the point reaches the failure strain
+  double* s[6] = {};          // stress, in/out
+  const double* de[6] = {};   // strain increment D*dt, in
+  double* eps_p = nullptr;    // effective plastic strain, in/out (laws with plasticity)
+  double* alpha[6] = {};      // back stress, in/out (laws with kinematic hardening)
+  uint8_t* failed = nullptr;  // out: set to 1 when the point reaches the failure strain
 };
 
 // Elastic moduli every law exposes for wave speeds and hourglass control.

@@ -3,13 +3,32 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 #include "model/model.hpp"
 
 namespace crumple::model {
 
+struct ReadOptions {
+  // false (crumple run): util::InputError for anything the solution would need that Crumple
+  // does not support (a solid element whose part uses *MAT_RIGID, an unsupported option of a
+  // supported keyword, a *DEFINE_TABLE hardening curve, ...).
+  // true (crumple check): those are recorded in Model::unsupported instead and reading goes
+  // on, so that everything can be listed. Such a Model may hold parts without a material or
+  // section (kNone) and must not be run.
+  bool allow_unsupported = false;
+};
+
 // Reads the deck at `path` (following *INCLUDE) and builds the validated Model.
 // Throws util::InputError whose message names file:line, keyword, card and field.
 Model readModel(const std::filesystem::path& path);
+Model readModel(const std::filesystem::path& path, const ReadOptions& options);
+
+// Model::unsupported as a table, one line per keyword: keyword, count, first file:line,
+// reason. Empty string when there is nothing to report.
+std::string formatUnsupported(const Model& model);
+
+// Model::ignored as a list, one line per field: file:line, keyword, field, reason.
+std::string formatIgnored(const Model& model);
 
 }  // namespace crumple::model

@@ -45,9 +45,15 @@ void fill(std::unordered_map<int64_t, int32_t>& m, const Ids& ids) {
 }
 }  // namespace
 
-int32_t Model::nodeIndex(int64_t id) const { return find(node_index_, id); }
-int32_t Model::partIndex(int64_t id) const { return find(part_index_, id); }
-int32_t Model::curveIndex(int64_t id) const { return find(curve_index_, id); }
+int32_t Model::nodeIndex(int64_t id) const {
+  return find(node_index_, id);
+}
+int32_t Model::partIndex(int64_t id) const {
+  return find(part_index_, id);
+}
+int32_t Model::curveIndex(int64_t id) const {
+  return find(curve_index_, id);
+}
 
 void Model::finalize() {
   fill(node_index_, nodes.id);

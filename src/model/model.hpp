@@ -21,7 +21,8 @@ namespace crumple::model {
 using Vec3 = std::array<double, 3>;
 inline constexpr int32_t kNone = -1;
 
-// *DEFINE_CURVE after SFA/SFO/OFFA/OFFO have been applied: x = SFA*a + OFFA, y = SFO*o + OFFO.
+// *DEFINE_CURVE after SFA/SFO/OFFA/OFFO have been applied; LS-DYNA scales after offsetting:
+// x = SFA*(a + OFFA), y = SFO*(o + OFFO).
 struct Curve {
   int64_t id = 0;
   std::vector<double> x, y;
@@ -37,16 +38,16 @@ struct ElasticLaw {  // *MAT_ELASTIC (001)
 };
 struct PlasticKinematicLaw {  // *MAT_PLASTIC_KINEMATIC (003)
   double E = 0, nu = 0, sigy = 0, etan = 0;
-  double beta = 0;         // 0 kinematic, 1 isotropic hardening, in between mixed
-  double src = 0, srp = 0; // Cowper-Symonds C and P; 0 = rate independent
-  double fs = 0;           // effective plastic strain at failure (erosion); 0 = none
+  double beta = 0;          // 0 kinematic, 1 isotropic hardening, in between mixed
+  double src = 0, srp = 0;  // Cowper-Symonds C and P; 0 = rate independent
+  double fs = 0;            // effective plastic strain at failure (erosion); 0 = none
 };
 struct PiecewiseLinearLaw {  // *MAT_PIECEWISE_LINEAR_PLASTICITY (024)
   double E = 0, nu = 0, sigy = 0, etan = 0;
-  double fail = 0;          // effective plastic strain at failure (erosion); 0 = none
-  double c = 0, p = 0;      // Cowper-Symonds rate parameters; 0 = rate independent
-  int32_t lcss = kNone;     // curve index: yield stress vs effective plastic strain
-  double tdel = 0;          // minimum time step for automatic element deletion
+  double fail = 0;       // effective plastic strain at failure (erosion); 0 = none
+  double c = 0, p = 0;   // Cowper-Symonds rate parameters; 0 = rate independent
+  int32_t lcss = kNone;  // curve index: yield stress vs effective plastic strain
+  double tdel = 0;       // minimum time step for automatic element deletion
 };
 using MaterialLaw = std::variant<ElasticLaw, PlasticKinematicLaw, PiecewiseLinearLaw>;
 
@@ -148,38 +149,38 @@ struct BodyLoad {
 
 // *RIGIDWALL_PLANAR (stonewall), fixed or _MOVING, infinite or _FINITE.
 struct RigidWallPlanar {
-  int64_t id = 0;                 // 1-based order of definition unless the deck gives one
-  std::vector<int32_t> nodes;     // slave nodes (NSID; empty in the deck = all nodes)
-  Vec3 tail{};                    // point on the wall
-  Vec3 normal{};                  // unit normal pointing into the allowed half-space
-  double fric = 0.0;              // Coulomb friction coefficient (FRIC)
-  bool finite = false;            // _FINITE: a rectangle of lengths lenl (along l) x lenm
-  Vec3 l_axis{};                  // unit edge direction (from XHEV..ZHEV), finite walls only
+  int64_t id = 0;              // 1-based order of definition unless the deck gives one
+  std::vector<int32_t> nodes;  // slave nodes (NSID; empty in the deck = all nodes)
+  Vec3 tail{};                 // point on the wall
+  Vec3 normal{};               // unit normal pointing into the allowed half-space
+  double fric = 0.0;           // Coulomb friction coefficient (FRIC)
+  bool finite = false;         // _FINITE: a rectangle of lengths lenl (along l) x lenm
+  Vec3 l_axis{};               // unit edge direction (from XHEV..ZHEV), finite walls only
   double lenl = 0, lenm = 0;
-  bool moving = false;            // _MOVING: a wall of mass `mass` with initial speed v0
-  double mass = 0, v0 = 0;        //   along its normal
+  bool moving = false;      // _MOVING: a wall of mass `mass` with initial speed v0
+  double mass = 0, v0 = 0;  //   along its normal
   util::SourceLoc where;
 };
 
 // *CONTROL_* values after LS-DYNA defaulting (blank/zero fields mean "default").
 struct Controls {
-  double end_time = 0.0;           // *CONTROL_TERMINATION ENDTIM
-  int64_t end_cycle = 0;           // ENDCYC; 0 = none
-  double dt_min_ratio = 0.0;       // DTMIN (fraction of the initial step); 0 = none
-  double end_mass_ratio = 0.0;     // ENDMAS (% mass increase for termination); 0 = none
-  double tssfac = 0.9;             // *CONTROL_TIMESTEP
-  double dt_init = 0.0;            // DTINIT; 0 = from the elements
-  double dt2ms = 0.0;              // mass scaling; negative: only elements below |DT2MS|
-  int32_t dt_max_curve = kNone;    // LCTM
-  double q_quadratic = 1.5;        // *CONTROL_BULK_VISCOSITY Q1
-  double q_linear = 0.06;          // Q2
-  int hourglass_ihq = 1;           // *CONTROL_HOURGLASS IHQ
-  double hourglass_qh = 0.1;       // QH
-  bool hourglass_energy = false;   // *CONTROL_ENERGY HGEN == 2
-  bool rigidwall_energy = true;    // RWEN == 2 (default)
-  bool erode_on_dtmin = false;     // derived from TDEL of any material
-  double d3plot_dt = 0.0;          // *DATABASE_BINARY_D3PLOT DT; 0 = first and last state
-  double glstat_dt = 0.0;          // *DATABASE_GLSTAT; 0 = not requested
+  double end_time = 0.0;          // *CONTROL_TERMINATION ENDTIM
+  int64_t end_cycle = 0;          // ENDCYC; 0 = none
+  double dt_min_ratio = 0.0;      // DTMIN (fraction of the initial step); 0 = none
+  double end_mass_ratio = 0.0;    // ENDMAS (% mass increase for termination); 0 = none
+  double tssfac = 0.9;            // *CONTROL_TIMESTEP
+  double dt_init = 0.0;           // DTINIT; 0 = from the elements
+  double dt2ms = 0.0;             // mass scaling; negative: only elements below |DT2MS|
+  int32_t dt_max_curve = kNone;   // LCTM
+  double q_quadratic = 1.5;       // *CONTROL_BULK_VISCOSITY Q1
+  double q_linear = 0.06;         // Q2
+  int hourglass_ihq = 1;          // *CONTROL_HOURGLASS IHQ
+  double hourglass_qh = 0.1;      // QH
+  bool hourglass_energy = false;  // *CONTROL_ENERGY HGEN == 2
+  bool rigidwall_energy = true;   // RWEN == 2 (default)
+  bool erode_on_dtmin = false;    // derived from TDEL of any material
+  double d3plot_dt = 0.0;         // *DATABASE_BINARY_D3PLOT DT; 0 = first and last state
+  double glstat_dt = 0.0;         // *DATABASE_GLSTAT; 0 = not requested
   double matsum_dt = 0.0;
   double nodout_dt = 0.0;
   double rwforc_dt = 0.0;
@@ -187,8 +188,8 @@ struct Controls {
 
 // A keyword the reader saw but Crumple does not act on, reported once (ARCHITECTURE "Errors").
 struct UnsupportedKeyword {
-  std::string keyword;     // as written, upper case, options folded as in the deck
-  std::string reason;      // e.g. "not supported", "output not written yet", "implicit only"
+  std::string keyword;  // as written, upper case, options folded as in the deck
+  std::string reason;   // e.g. "not supported", "output not written yet", "implicit only"
   int count = 0;
   util::SourceLoc first;
 };
@@ -205,7 +206,7 @@ struct Model {
 
   Nodes nodes;
   Solids solids;
-  std::vector<Part> parts;                    // ascending id
+  std::vector<Part> parts;  // ascending id
   std::vector<SectionSolid> solid_sections;
   std::vector<Material> materials;
   std::vector<Hourglass> hourglass;

@@ -21,6 +21,7 @@ class CsvWriter {
   // One row; `values` must have as many entries as the header. Integers print exactly.
   void row(const std::vector<double>& values);
   void flush() { out_.flush(); }
+
  private:
   std::ofstream out_;
   std::size_t columns_ = 0;
@@ -30,10 +31,16 @@ class CsvWriter {
 // (ascending global node id), as 64 lowercase hex characters. x and v are packed xyz.
 std::string stateDigest(const std::vector<double>& x, const std::vector<double>& v);
 
+// The subfolder of the results folder that holds the VTU/PVTU pieces of the plot states (the
+// .pvd stays at the top so ParaView users find one file to open).
+inline constexpr const char* kStatesFolder = "states";
+
 // Makes `dir` ready for a run's results. If it already holds results of an earlier run
 // (summary.json, results.pvd, glstat.csv or run.log) and `overwrite` is false, throws
 // util::InputError telling the user to pass --overwrite or choose another -o; with
 // `overwrite`, only those result files and the VTU pieces are removed. Creates `dir`.
+// Every file a run writes (the ARCHITECTURE.md output files, partition.json, *.vtu and *.pvtu
+// at the top and in kStatesFolder) counts as a result; nothing else is ever touched.
 void prepareResultsDir(const std::filesystem::path& dir, bool overwrite);
 
 // The progress line: refreshed in place (\r) when `interactive` (a terminal), otherwise one
@@ -43,6 +50,7 @@ class Progress {
   Progress(std::FILE* stream, bool interactive, double end_time);
   void update(int64_t cycle, double time, double dt, double energy_ratio);
   void finish(int64_t cycle, double time, double dt, double energy_ratio);
+
  private:
   std::FILE* stream_;
   bool interactive_;

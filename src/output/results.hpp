@@ -17,7 +17,7 @@ struct RunInfo {
   int ranks = 1;
   int threads = 1;
   std::string termination = "normal";  // "normal", "error", "signal"
-  std::string message;                  // the error, if any
+  std::string message;                 // the error, if any
   double wall_s = 0.0;
 };
 
@@ -35,7 +35,9 @@ class ResultsWriter {
   struct Schedule {
     double interval = 0.0;
     double next = 0.0;
-    bool due(double t, bool last) const { return interval > 0.0 && (last || t >= next * (1 - 1e-9)); }
+    bool due(double t, bool last) const {
+      return interval > 0.0 && (last || t >= next * (1 - 1e-9));
+    }
     void advance(double t) {
       while (next <= t * (1 + 1e-9)) next += interval;
     }

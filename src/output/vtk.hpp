@@ -15,9 +15,9 @@ namespace crumple::output {
 // VTK_HEXAHEDRON, VTK_WEDGE or VTK_TETRA as the node pattern says, so ParaView draws them right.
 struct MeshView {
   std::size_t num_points = 0;
-  const double* points = nullptr;       // packed xyz, 3*num_points (current coordinates)
+  const double* points = nullptr;  // packed xyz, 3*num_points (current coordinates)
   std::size_t num_cells = 0;
-  const int32_t* hex_nodes = nullptr;   // 8*num_cells indices into points
+  const int32_t* hex_nodes = nullptr;  // 8*num_cells indices into points
 };
 
 enum class Association { Point, Cell };
@@ -27,7 +27,7 @@ struct FieldView {
   std::string name;
   Association where = Association::Point;
   int components = 1;
-  const double* f64 = nullptr;    // exactly one of f64 / i64 is set
+  const double* f64 = nullptr;  // exactly one of f64 / i64 is set
   const int64_t* i64 = nullptr;
 };
 
@@ -46,6 +46,7 @@ class PvdWriter {
  public:
   explicit PvdWriter(std::filesystem::path path);
   void addState(double time, const std::string& file_relative_to_pvd);
+
  private:
   void flush() const;
   std::filesystem::path path_;

@@ -154,7 +154,8 @@ void Solver::computeInternalForces() {
   }
   double dt_new = model_.controls.tssfac * comm_.minAll(dt_min);
   if (model_.controls.dt_max_curve != model::kNone)
-    dt_new = std::min(dt_new, model_.curves[static_cast<std::size_t>(model_.controls.dt_max_curve)].value(time_));
+    dt_new = std::min(
+        dt_new, model_.curves[static_cast<std::size_t>(model_.controls.dt_max_curve)].value(time_));
   if (!(dt_new > 0.0) || !std::isfinite(dt_new)) {
     throw util::NumericalError(fmt::format(
         "time step collapsed to {:.3g} at cycle {}, time {:.6g} (controlling element {})", dt_new,
@@ -228,9 +229,9 @@ void Solver::step() {
   updateKinematics();
   for (std::size_t i = 0; i < sd_.v.size(); ++i) {
     if (!std::isfinite(sd_.v[i])) {
-      throw util::NumericalError(fmt::format(
-          "non-finite velocity at node {} at cycle {}, time {:.6g}", sd_.node_id[i / 3], cycle_,
-          time_));
+      throw util::NumericalError(
+          fmt::format("non-finite velocity at node {} at cycle {}, time {:.6g}", sd_.node_id[i / 3],
+                      cycle_, time_));
     }
   }
 }
@@ -242,8 +243,13 @@ Energies Solver::energies() const {
       e.internal += blk.e_int[k];
       e.hourglass += blk.e_hg[k];
     }
+  // Energies are reported at t(n), the time level of the stresses from the last element pass
+  // and of the work integrals: the kinetic energy uses v(n) = (v(n-1/2) + v(n+1/2)) / 2.
+  const bool stepped = v_old_.size() == sd_.v.size();
   for (std::size_t n = 0; n < sd_.numNodes(); ++n) {
-    const double* v = &sd_.v[3 * n];
+    double v[3];
+    for (int c = 0; c < 3; ++c)
+      v[c] = stepped ? 0.5 * (v_old_[3 * n + c] + sd_.v[3 * n + c]) : sd_.v[3 * n + c];
     // Kinetic energy of the physical mass; mass added by scaling is reported separately.
     const double m = sd_.mass[n] - sd_.mass_added[n];
     e.kinetic += 0.5 * m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);

@@ -48,7 +48,7 @@ class Solver {
 
   double time() const { return time_; }
   int64_t cycle() const { return cycle_; }
-  double dt() const { return dt_; }            // the step just taken, dt(n+1/2)
+  double dt() const { return dt_; }  // the step just taken, dt(n+1/2)
   double endTime() const { return end_time_; }
   void setEndTime(double t) { end_time_ = t; }
   bool finished() const;
@@ -79,8 +79,8 @@ class Solver {
 
   double time_ = 0.0, end_time_ = 0.0;
   int64_t cycle_ = 0;
-  double dt_ = 0.0;        // dt(n-1/2): the step that brought the state to time_
-  double dt_next_ = 0.0;   // dt(n+1/2) from the latest element pass
+  double dt_ = 0.0;       // dt(n-1/2): the step that brought the state to time_
+  double dt_next_ = 0.0;  // dt(n+1/2) from the latest element pass
   double dt_initial_ = 0.0;
   int64_t dt_initial_elem_ = 0;
   int64_t dt_elem_ = 0;

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <span>
 
 #include "domain/subdomain.hpp"
 #include "elements/hex8.hpp"
@@ -163,8 +164,9 @@ TEST_P(Hex8Patch, UniformStrainIsExactAndInteriorForcesBalance) {
   EXPECT_NEAR(blk.sig[0][0], lambda * tr + 2 * mu * G[0][0] * dt, 1e-12);
   EXPECT_NEAR(blk.sig[3][0], mu * (G[0][1] + G[1][0]) * dt, 1e-12);
   // No hourglass work for a linear field on the FB-projected forms.
-  if (GetParam() >= 2)
+  if (GetParam() >= 2) {
     for (std::size_t e = 0; e < blk.size(); ++e) EXPECT_NEAR(blk.e_hg[e], 0.0, 1e-20);
+  }
 
   // Gather and check the interior node (13) is in equilibrium.
   std::vector<double> f(3 * sd.numNodes(), 0.0);

@@ -66,7 +66,8 @@ class Simulation {
 inline std::string brickDeck(int nx, int ny, int nz, double lx, double ly, double lz,
                              const std::string& extra) {
   std::string s = "*KEYWORD\n*TITLE\nverification brick\n" + extra;
-  s += "*PART\nbrick\n         1         1         1\n*SECTION_SOLID\n         1         1\n*NODE\n";
+  s +=
+      "*PART\nbrick\n         1         1         1\n*SECTION_SOLID\n         1         1\n*NODE\n";
   for (int k = 0; k <= nz; ++k)
     for (int j = 0; j <= ny; ++j)
       for (int i = 0; i <= nx; ++i)
@@ -78,9 +79,10 @@ inline std::string brickDeck(int nx, int ny, int nz, double lx, double ly, doubl
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i)
-        s += fmt::format("{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}\n", e++, 1, id(i, j, k),
-                         id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k), id(i, j, k + 1),
-                         id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1));
+        s +=
+            fmt::format("{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}\n", e++, 1, id(i, j, k),
+                        id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k), id(i, j, k + 1),
+                        id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1));
   return s + "*END\n";
 }
 
@@ -103,6 +105,8 @@ std::string brickNodeSet(int set_id, int nx, int ny, int nz, Pred pred) {
   return s;
 }
 
-inline std::filesystem::path sourceDir() { return CRUMPLE_SOURCE_DIR; }
+inline std::filesystem::path sourceDir() {
+  return CRUMPLE_SOURCE_DIR;
+}
 
 }  // namespace crumple::testing

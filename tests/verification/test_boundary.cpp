@@ -13,28 +13,33 @@ using crumple::testing::brickNodeSet;
 using crumple::testing::Simulation;
 
 // Steel in mm, ms, kg, GPa.
-const std::string kSteel =
-    "*MAT_ELASTIC\n         1   7.85e-6     210.0       0.3\n";
+const std::string kSteel = "*MAT_ELASTIC\n         1   7.85e-6     210.0       0.3\n";
 
-std::string termination(double t) { return fmt::format("*CONTROL_TERMINATION\n{:10.6g}\n", t); }
+std::string termination(double t) {
+  return fmt::format("*CONTROL_TERMINATION\n{:10.6g}\n", t);
+}
 
 // A free brick under gravity: no internal forces arise, every node falls as -g t^2 / 2 and
 // central differences integrate a constant acceleration exactly.
 TEST(VerificationLoads, GravityFreeFall) {
   const double g = 9.81e-3, t_end = 0.5;  // mm/ms^2
   auto sim = Simulation::fromText(
-      "gravity", brickDeck(2, 2, 2, 10, 10, 10,
-                           kSteel + termination(t_end) +
-                               "*DEFINE_CURVE\n         1\n                 0.0                 1.0\n"
-                               "               100.0                 1.0\n"
-                               "*LOAD_BODY_Z\n         1   9.81e-3\n"));
+      "gravity",
+      brickDeck(2, 2, 2, 10, 10, 10,
+                kSteel + termination(t_end) +
+                    "*DEFINE_CURVE\n         1\n                 0.0                 1.0\n"
+                    "               100.0                 1.0\n"
+                    "*LOAD_BODY_Z\n         1   9.81e-3\n"));
   sim->run();
   const double t = sim->solver->time();
   ASSERT_NEAR(t, t_end, 1e-12);
-  for (int64_t id : {1, 14, 27}) EXPECT_NEAR(sim->x(id, 2) - sim->x0(id, 2), -0.5 * g * t * t, 1e-9);
+  for (int64_t id : {1, 14, 27})
+    EXPECT_NEAR(sim->x(id, 2) - sim->x0(id, 2), -0.5 * g * t * t, 1e-9);
   const auto e = sim->solver->energies();
   EXPECT_NEAR(e.internal, 0.0, 1e-12);
-  EXPECT_NEAR(e.ratio, 1.0, 1e-6);  // kinetic energy = work of gravity
+  // Kinetic energy = work of gravity, up to the first-order start-up error of the staggered
+  // work sum, about 1/(2 n) after n cycles (575 here).
+  EXPECT_NEAR(e.ratio, 1.0, 2.0 / sim->solver->cycle());
 }
 
 // A free brick pushed by nodal forces: momentum = impulse exactly (Newton's second law).
@@ -50,8 +55,11 @@ TEST(VerificationLoads, NodalForceImpulse) {
                              "*LOAD_NODE_SET\n$     nsid       dof      lcid        sf\n"
                              "         1         1         1       0.5\n"));
   sim->run();
+  // Central differences carry velocity at half steps: the momentum at hand is that of
+  // t - dt/2, so the impulse to compare is F (t - dt/2).
   const double nodes_loaded = (n + 1) * (n + 1);
-  EXPECT_NEAR(sim->momentum(0), nodes_loaded * F * sim->solver->time(), 1e-9);
+  const double t_half = sim->solver->time() - 0.5 * sim->solver->dt();
+  EXPECT_NEAR(sim->momentum(0), nodes_loaded * F * t_half, 1e-12);
   EXPECT_NEAR(sim->momentum(1), 0.0, 1e-12);
   EXPECT_NEAR(sim->solver->energies().ratio, 1.0, 0.01);
 }
@@ -68,14 +76,18 @@ TEST(VerificationLoads, PressureSegmentImpulse) {
       segs += fmt::format("{:10d}{:10d}{:10d}{:10d}\n", id(j, k), id(j, k + 1), id(j + 1, k + 1),
                           id(j + 1, k));
   auto sim = Simulation::fromText(
-      "pressure", brickDeck(2, 2, 2, 10, 10, 10,
-                            kSteel + termination(t_end) + segs +
-                                "*DEFINE_CURVE\n         1\n                 0.0                 1.0\n"
-                                "               100.0                 1.0\n"
-                                "*LOAD_SEGMENT_SET\n$     ssid      lcid        sf\n"
-                                "         1         1      0.01\n"));
+      "pressure",
+      brickDeck(2, 2, 2, 10, 10, 10,
+                kSteel + termination(t_end) + segs +
+                    "*DEFINE_CURVE\n         1\n                 0.0                 1.0\n"
+                    "               100.0                 1.0\n"
+                    "*LOAD_SEGMENT_SET\n$     ssid      lcid        sf\n"
+                    "         1         1      0.01\n"));
   sim->run();
-  EXPECT_NEAR(sim->momentum(0), p * A * sim->solver->time(), 1e-6 * p * A * t_end);
+  // The loaded face spreads sideways (Poisson) under the follower pressure, so its area, and
+  // the impulse, grow by the lateral strain: ~3e-5 here.
+  const double t_half = sim->solver->time() - 0.5 * sim->solver->dt();
+  EXPECT_NEAR(sim->momentum(0), p * A * t_half, 1e-4 * p * A * t_end);
   EXPECT_NEAR(sim->momentum(1), 0.0, 1e-12);
   EXPECT_NEAR(sim->momentum(2), 0.0, 1e-12);
 }
@@ -93,7 +105,8 @@ TEST(VerificationConstraints, PrescribedVelocityAgainstSpc) {
                 kSteel + termination(t_end) + driven + fixed +
                     "*DEFINE_CURVE\n         1\n                 0.0                 1.0\n"
                     "               100.0                 1.0\n"
-                    "*BOUNDARY_PRESCRIBED_MOTION_SET\n$     nsid       dof       vad      lcid        sf\n"
+                    "*BOUNDARY_PRESCRIBED_MOTION_SET\n$     nsid       dof       vad      lcid     "
+                    "   sf\n"
                     "         1         3         0         1       0.5\n"
                     "*BOUNDARY_SPC_SET\n         2         0         1         1         1\n"));
   sim->run();
@@ -109,47 +122,46 @@ TEST(VerificationConstraints, PrescribedVelocityAgainstSpc) {
 // Prescribed displacement follows its curve exactly at every cycle.
 TEST(VerificationConstraints, PrescribedDisplacementFollowsCurve) {
   const double t_end = 0.1;
-  const std::string driven = brickNodeSet(1, 1, 1, 1, [](int, int, int k) { return k == 1; });
+  const std::string driven = brickNodeSet(1, 2, 2, 2, [](int, int, int k) { return k == 2; });
   auto sim = Simulation::fromText(
       "displacement",
-      brickDeck(1, 1, 1, 10, 10, 10,
+      brickDeck(2, 2, 2, 10, 10, 10,
                 kSteel + termination(t_end) + driven +
                     "*DEFINE_CURVE\n         1\n                 0.0                 0.0\n"
                     "                 0.1                0.05\n"
-                    "*BOUNDARY_PRESCRIBED_MOTION_SET\n         1         3         2         1       1.0\n"));
+                    "*BOUNDARY_PRESCRIBED_MOTION_SET\n         1         3         2         1     "
+                    "  1.0\n"));
   double worst = 0.0;
   sim->run([&](const auto& s) {
     const double expected = 0.5 * s.time();  // the curve: 0.05 at t = 0.1
-    worst = std::max(worst, std::abs(sim->x(5, 2) - sim->x0(5, 2) - expected));
+    worst = std::max(worst, std::abs(sim->x(23, 2) - sim->x0(23, 2) - expected));
   });
   EXPECT_LT(worst, 1e-12);
 }
 
-// Elastic free vibration of a cantilever block: total energy (kinetic + internal +
-// hourglass) stays within 1% of the initial kinetic energy over many periods.
+// Elastic free vibration: a bar held axially at x = 0, started with v_x = v0 x / L, rings in
+// its axial modes. Total energy (kinetic + internal + hourglass) stays within 1% of the initial
+// kinetic energy over several periods (period 4L/c0 = 0.062 ms here; 0.6 ms run).
 TEST(VerificationEnergy, ElasticFreeVibrationConservesEnergy) {
-  const int nx = 8;
-  const double L = 80.0;
-  const std::string fixed = brickNodeSet(1, nx, 2, 2, [](int i, int, int) { return i == 0; });
+  const int nx = 16;
+  const double L = 80.0, v0 = 2.0;
+  const std::string held = brickNodeSet(1, nx, 2, 2, [](int i, int, int) { return i == 0; });
   std::string vel = "*INITIAL_VELOCITY_NODE\n";
   for (int k = 0; k <= 2; ++k)
     for (int j = 0; j <= 2; ++j)
-      for (int i = 0; i <= nx; ++i) {
-        const double xi = double(i) / nx;
-        vel += fmt::format("{:8d}{:16.9g}{:16.9g}{:16.9g}\n", 1 + i + (nx + 1) * (j + 3 * k), 0.0,
-                           0.0, 2.0 * xi * xi);
-      }
-  // First bending period of this 80 x 10 x 10 mm cantilever is ~0.1 ms: run several.
+      for (int i = 0; i <= nx; ++i)
+        vel += fmt::format("{:10d}{:10.6g}{:10.6g}{:10.6g}\n", 1 + i + (nx + 1) * (j + 3 * k),
+                           v0 * i / nx, 0.0, 0.0);
   auto sim = Simulation::fromText(
-      "vibration", brickDeck(nx, 2, 2, L, 10, 10,
-                             kSteel + termination(0.6) + fixed + vel +
-                                 "*BOUNDARY_SPC_SET\n         1         0         1         1         1\n"
-                                 "*CONTROL_HOURGLASS\n         4       0.05\n"));
+      "vibration",
+      brickDeck(nx, 2, 2, L, 10, 10,
+                kSteel + termination(0.6) + held + vel +
+                    "*BOUNDARY_SPC_SET\n         1         0         1         0         0\n"));
   const double e0 = sim->solver->energies().kinetic;
   ASSERT_GT(e0, 0.0);
   double worst = 0.0, max_internal = 0.0;
   sim->run([&](const auto& s) {
-    if (s.cycle() % 20) return;
+    if (s.cycle() % 10) return;
     const auto e = s.energies();
     worst = std::max(worst, std::abs(e.total - e0) / e0);
     max_internal = std::max(max_internal, e.internal);

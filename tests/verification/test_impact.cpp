@@ -21,7 +21,9 @@ TEST(VerificationImpact, ElasticBarOnRigidWall) {
   const double c0 = std::sqrt(E / rho);
   const double stress = rho * c0 * v0, duration = 2.0 * L / c0;
   std::vector<std::pair<double, double>> force;  // (time, wall normal force)
-  sim.run([&](const auto& s) { force.emplace_back(s.time(), s.boundary().walls().at(0).normal_force); });
+  sim.run([&](const auto& s) {
+    force.emplace_back(s.time(), s.boundary().walls().at(0).normal_force);
+  });
 
   double peak = 0.0;
   for (const auto& [t, f] : force) peak = std::max(peak, f);

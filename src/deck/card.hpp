@@ -1,0 +1,102 @@
+// Typed reading of one card against its CardSpec, in fixed (standard, I10, long) or free
+// (comma separated) format, with *PARAMETER references (&name, -&name) resolved. Every error
+// names file:line, keyword, card, field number and field name, e.g.
+//   deck.k:123: *MAT_ELASTIC card 1 field 3 (E): 'abc' is not a number
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "deck/deck.hpp"
+#include "deck/layout.hpp"
+#include "util/source_loc.hpp"
+
+namespace crumple::deck {
+
+// A field that was read with a value different from its default but that the code using
+// the keyword did not look at: reported so the user learns it is not honoured.
+struct UnusedValue {
+  std::string keyword, field, value;
+  util::SourceLoc where;
+};
+
+class Card {
+ public:
+  // Parses `line` (nullptr: a card absent from the deck, all fields default). Throws
+  // util::InputError for a value that is not of the field's type.
+  Card(const CardSpec& spec, const DataLine* line, const Keyword& keyword, const Deck& deck);
+
+  // Values after defaulting: a blank field, or 0 in a kZeroIsDefault field, gives the default.
+  int64_t integer(std::string_view field) const;
+  double real(std::string_view field) const;
+  std::string text(std::string_view field) const;  // trimmed
+  // True when the field was left blank (or the card is absent).
+  bool blank(std::string_view field) const;
+  bool allBlank() const;
+
+  // "deck.k:12: *PART card 2 field 3 (MID)"
+  std::string context(std::string_view field) const;
+  [[noreturn]] void fail(std::string_view field, std::string_view message) const;
+  util::SourceLoc where() const;
+  int32_t fileIndex() const { return file_; }
+  int32_t lineNumber() const { return line_; }
+  const Keyword& keyword() const { return *keyword_; }
+
+  // Fields not read through the accessors above whose value differs from the default.
+  std::vector<UnusedValue> unusedValues() const;
+
+ private:
+  struct Value {
+    bool blank = true;
+    double num = 0.0;
+    int64_t inum = 0;
+    std::string text;
+  };
+  std::size_t index(std::string_view field) const;
+  void parseField(std::size_t i, std::string_view raw);
+
+  const CardSpec* spec_;
+  const Keyword* keyword_;
+  const Deck* deck_;
+  int32_t file_ = 0, line_ = 0;
+  std::vector<Value> values_;
+  mutable std::vector<bool> used_;
+};
+
+// Walks the data lines of one keyword, card by card.
+class CardCursor {
+ public:
+  CardCursor(const Keyword& keyword, const Deck& deck) : keyword_(&keyword), deck_(&deck) {}
+
+  bool atEnd() const { return next_ >= keyword_->lines.size(); }
+  std::size_t remaining() const { return keyword_->lines.size() - next_; }
+  // The next line (precondition: !atEnd()).
+  const DataLine& peek() const { return keyword_->lines[next_]; }
+  bool nextIsBlank() const;
+  // Skips blank lines: list-type keywords (*NODE, *SET_..._LIST) have no meaning for them.
+  void skipBlankLines();
+
+  // The next card; throws util::InputError when the keyword has no more lines.
+  const Card& read(const CardSpec& spec);
+  // The next card, or an all-default card when the keyword has no more lines (trailing
+  // optional cards).
+  const Card& readOptional(const CardSpec& spec);
+
+  // Hands back the unused non-default values of the cards read since the last call and
+  // forgets those cards (list keywords call it per record to keep memory flat).
+  std::vector<UnusedValue> flush();
+
+  const Keyword& keyword() const { return *keyword_; }
+  const Deck& deck() const { return *deck_; }
+
+ private:
+  const Keyword* keyword_;
+  const Deck* deck_;
+  std::size_t next_ = 0;
+  std::deque<Card> cards_;
+};
+
+}  // namespace crumple::deck

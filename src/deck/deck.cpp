@@ -1,0 +1,362 @@
+#include "deck/deck.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <optional>
+
+#include "deck/card.hpp"
+#include "deck/expression.hpp"
+#include "deck/number.hpp"
+#include "util/error.hpp"
+
+namespace crumple::deck {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string upper(std::string_view s) {
+  std::string u(s);
+  std::transform(u.begin(), u.end(), u.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  return u;
+}
+
+bool startsWith(std::string_view s, std::string_view prefix) {
+  return s.substr(0, prefix.size()) == prefix;
+}
+
+std::optional<Format> formatSuffix(char c) {
+  if (c == '+') return Format::Long;
+  if (c == '-') return Format::Standard;
+  if (c == '%') return Format::I10;
+  return std::nullopt;
+}
+
+struct KeywordLine {
+  std::string name, trailing;
+  std::optional<Format> format;  // from a + - % suffix
+};
+
+// "*NODE +", "*NODE+", "*TITLE CID=1", "*KEYWORD MEMORY=20M": the name is the first word; a
+// format suffix may be glued to it or be the next word (Keyword Manual, "*KEYWORD").
+KeywordLine parseKeywordLine(std::string_view line) {
+  KeywordLine k;
+  line = trim(line);
+  const std::size_t end = line.find_first_of(" \t");
+  std::string_view name = line.substr(0, end);
+  std::string_view rest =
+      end == std::string_view::npos ? std::string_view{} : trim(line.substr(end));
+  if (name.size() > 1 && (k.format = formatSuffix(name.back()))) {
+    name.remove_suffix(1);
+  } else if (!rest.empty() && (rest.size() == 1 || rest[1] == ' ' || rest[1] == '\t') &&
+             (k.format = formatSuffix(rest[0]))) {
+    rest = trim(rest.substr(1));
+  }
+  k.name = upper(name);
+  k.trailing = std::string(rest);
+  return k;
+}
+
+bool isComment(std::string_view line) {
+  const auto first = line.find_first_not_of(" \t");
+  return first != std::string_view::npos && line[first] == '$';
+}
+
+// "CID=3" on a keyword line makes the keyword belong to load case 3 only (*CASE).
+bool hasCaseId(std::string_view trailing) {
+  const std::string u = upper(trailing);
+  const auto p = u.find("CID=");
+  return p != std::string::npos && (p == 0 || u[p - 1] == ' ' || u[p - 1] == '\t');
+}
+
+class Reader {
+ public:
+  explicit Reader(Deck& deck) : deck_(deck) {}
+
+  void readFile(const fs::path& path, const std::string& display, Format format, int depth);
+
+ private:
+  struct FileState {
+    fs::path dir;          // for opening files
+    fs::path display_dir;  // for naming them
+    Format format;
+  };
+
+  void finish(Keyword& kw, FileState& file, int depth);
+  void include(const Keyword& kw, FileState& file, int depth);
+  void includePath(const Keyword& kw, const FileState& file);
+  void parameters(const Keyword& kw);
+  void parameterExpressions(const Keyword& kw);
+  void parameterDuplication(const Keyword& kw);
+  void define(const Card& card, std::string_view field, char type, const std::string& name,
+              Parameter p);
+
+  Deck& deck_;
+  struct SearchDir {
+    fs::path dir, display;
+  };
+  std::vector<SearchDir> search_;
+  int dflag_ = 1;
+  std::string case_block_;
+};
+
+void Reader::readFile(const fs::path& path, const std::string& display, Format format, int depth) {
+  std::ifstream in(path);
+  if (!in) throw util::InputError(display + ": cannot open the file");
+  const auto file_index = static_cast<int32_t>(deck_.files.size());
+  deck_.files.push_back(display);
+  FileState file{path.parent_path(), fs::path(display).parent_path(), format};
+
+  std::optional<Keyword> current;
+  std::string text;
+  int32_t line_no = 0;
+  while (std::getline(in, text)) {
+    ++line_no;
+    if (!text.empty() && text.back() == '\r') text.pop_back();
+    if (isComment(text)) continue;
+    if (text.empty() || text[0] != '*') {
+      // Lines before the first keyword (a header) are not part of any keyword.
+      if (current) current->lines.push_back({std::move(text), file_index, line_no});
+      continue;
+    }
+    if (current) finish(*current, file, depth);
+    current.reset();
+    KeywordLine k = parseKeywordLine(text);
+    if (k.name == "*END") return;  // the rest of this file is not read (Keyword Manual, *END)
+    if (k.name == "*KEYWORD") {
+      // LONG=Y: 20-character fields; LONG=S: standard; I10=Y: at least 10 characters.
+      const std::string t = upper(k.trailing);
+      if (t.find("LONG=Y") != std::string::npos) file.format = Format::Long;
+      if (t.find("LONG=S") != std::string::npos) file.format = Format::Standard;
+      if (t.find("I10=Y") != std::string::npos) file.format = Format::I10;
+      if (t.find("I10=N") != std::string::npos) file.format = Format::Standard;
+      continue;
+    }
+    if (startsWith(k.name, "*CASE_BEGIN")) {
+      case_block_ = k.name;
+      continue;
+    }
+    if (startsWith(k.name, "*CASE_END")) {
+      case_block_.clear();
+      continue;
+    }
+    current.emplace();
+    current->name = std::move(k.name);
+    current->trailing = std::move(k.trailing);
+    current->format = k.format.value_or(file.format);
+    current->file = file_index;
+    current->line = line_no;
+    if (!case_block_.empty())
+      current->case_block = case_block_;
+    else if (hasCaseId(current->trailing))
+      current->case_block = current->trailing;
+  }
+  if (current) finish(*current, file, depth);
+}
+
+void Reader::finish(Keyword& kw, FileState& file, int depth) {
+  if (!kw.case_block.empty()) {
+    deck_.keywords.push_back(std::move(kw));
+    return;
+  }
+  if (kw.name == "*INCLUDE") return include(kw, file, depth);
+  if (kw.name == "*INCLUDE_PATH" || kw.name == "*INCLUDE_PATH_RELATIVE")
+    return includePath(kw, file);
+  if (kw.name == "*PARAMETER") return parameters(kw);
+  if (kw.name == "*PARAMETER_EXPRESSION") return parameterExpressions(kw);
+  if (kw.name == "*PARAMETER_DUPLICATION") return parameterDuplication(kw);
+  deck_.keywords.push_back(std::move(kw));
+}
+
+void Reader::include(const Keyword& kw, FileState& file, int depth) {
+  const CardSpec& spec = keywordSpec("*INCLUDE").card("card 1");
+  CardCursor cur(kw, deck_);
+  cur.skipBlankLines();
+  while (!cur.atEnd()) {
+    const Card& card = cur.read(spec);
+    // A name longer than a line continues on the next line after a trailing " +"
+    // (Keyword Manual, *INCLUDE).
+    std::string name = card.text("FILENAME");
+    while (name.size() >= 2 && name.substr(name.size() - 2) == " +" && !cur.atEnd()) {
+      name.resize(name.size() - 2);
+      name += cur.read(spec).text("FILENAME");
+    }
+    if (depth > 40)
+      card.fail("FILENAME", "*INCLUDE nested more than 40 deep (does a file include itself?)");
+    const fs::path p(name);
+    std::vector<SearchDir> candidates;
+    if (p.is_absolute()) {
+      candidates.push_back({{}, {}});
+    } else {
+      candidates.push_back({file.dir, file.display_dir});
+      candidates.insert(candidates.end(), search_.begin(), search_.end());
+    }
+    bool found = false;
+    std::string tried;
+    for (const auto& c : candidates) {
+      const fs::path full = p.is_absolute() ? p : c.dir / p;
+      std::error_code ec;
+      if (fs::is_regular_file(full, ec)) {
+        const std::string display =
+            p.is_absolute() ? p.string() : (c.display / p).lexically_normal().string();
+        readFile(full, display, kw.format, depth + 1);
+        found = true;
+        break;
+      }
+      if (!tried.empty()) tried += ", ";
+      tried += (c.display / p).lexically_normal().string();
+    }
+    if (!found)
+      throw util::InputError(deck_.loc(kw).str() + ": " + kw.name + ": cannot open '" + name +
+                             "' (tried " + tried + ")");
+    cur.flush();
+    cur.skipBlankLines();
+  }
+}
+
+// Directories searched for *INCLUDE files after the including file's own folder, in order
+// (Keyword Manual, *INCLUDE_PATH). Relative entries are taken relative to the file that
+// holds the *INCLUDE_PATH, which is what _RELATIVE asks for and the most useful reading of
+// the plain form.
+void Reader::includePath(const Keyword& kw, const FileState& file) {
+  const CardSpec& spec = keywordSpec("*INCLUDE_PATH").card("card 1");
+  CardCursor cur(kw, deck_);
+  cur.skipBlankLines();
+  while (!cur.atEnd()) {
+    const fs::path p(cur.read(spec).text("PATH"));
+    if (p.is_absolute())
+      search_.push_back({p, p});
+    else
+      search_.push_back({file.dir / p, (file.display_dir / p).lexically_normal()});
+    cur.flush();
+    cur.skipBlankLines();
+  }
+}
+
+// *PARAMETER_DUPLICATION DFLAG (Keyword Manual, *PARAMETER_DUPLICATION): 1 warn and keep the
+// first definition (default), 2 warn and take the new one, 3 error, 4 take the new one
+// silently, 5 keep the first silently.
+void Reader::define(const Card& card, std::string_view field, char type, const std::string& name,
+                    Parameter p) {
+  p.type = type;
+  p.where = card.where();
+  auto it = deck_.parameters.find(name);
+  if (it == deck_.parameters.end()) {
+    deck_.parameters.emplace(name, std::move(p));
+    return;
+  }
+  const std::string first = it->second.where.str();
+  switch (dflag_) {
+    case 3:
+      card.fail(field, "parameter '" + name + "' is already defined at " + first +
+                           " (*PARAMETER_DUPLICATION DFLAG=3)");
+    case 2:
+    case 4:
+      if (dflag_ == 2)
+        deck_.notes.push_back({card.keyword().name, name,
+                               "duplicate definition replaces the one at " + first +
+                                   " (*PARAMETER_DUPLICATION DFLAG=2)",
+                               card.where()});
+      it->second = std::move(p);
+      return;
+    case 5:
+      return;
+    default:
+      deck_.notes.push_back({card.keyword().name, name,
+                             "duplicate definition ignored, the one at " + first +
+                                 " is kept (*PARAMETER_DUPLICATION DFLAG=1)",
+                             card.where()});
+      return;
+  }
+}
+
+namespace {
+// PRMR: the type letter R, I or C, then the name ("R vel", "I  n"; Keyword Manual *PARAMETER).
+std::pair<char, std::string> typeAndName(const Card& card, std::string_view field) {
+  const std::string s = card.text(field);
+  const char t = static_cast<char>(std::toupper(static_cast<unsigned char>(s[0])));
+  if (t != 'R' && t != 'I' && t != 'C')
+    card.fail(field, "'" + s + "' does not start with the type R, I or C");
+  std::string name(trim(std::string_view(s).substr(1)));
+  if (name.empty()) card.fail(field, "'" + s + "' has no parameter name after the type");
+  return {t, name};
+}
+}  // namespace
+
+void Reader::parameters(const Keyword& kw) {
+  const CardSpec& spec = keywordSpec("*PARAMETER").card("card 1");
+  CardCursor cur(kw, deck_);
+  cur.skipBlankLines();
+  while (!cur.atEnd()) {
+    const Card& card = cur.read(spec);
+    for (int k = 1; k <= 4; ++k) {
+      const std::string prmr = "PRMR" + std::to_string(k), val = "VAL" + std::to_string(k);
+      if (card.blank(prmr)) continue;
+      const auto [type, name] = typeAndName(card, prmr);
+      Parameter p;
+      p.text = card.text(val);
+      if (type == 'R') {
+        const auto v = parseReal(p.text);
+        if (!v) card.fail(val, "'" + p.text + "' is not a number");
+        p.value = *v;
+      } else if (type == 'I') {
+        const auto v = parseInteger(p.text);
+        if (!v) card.fail(val, "'" + p.text + "' is not an integer");
+        p.value = static_cast<double>(*v);
+      }
+      define(card, prmr, type, name, std::move(p));
+    }
+    cur.flush();
+    cur.skipBlankLines();
+  }
+}
+
+void Reader::parameterExpressions(const Keyword& kw) {
+  const CardSpec& spec = keywordSpec("*PARAMETER_EXPRESSION").card("card 1");
+  CardCursor cur(kw, deck_);
+  cur.skipBlankLines();
+  const ParameterLookup lookup = [this](std::string_view n) -> std::optional<double> {
+    auto it = deck_.parameters.find(std::string(n));
+    if (it == deck_.parameters.end() || it->second.type == 'C') return std::nullopt;
+    return it->second.value;
+  };
+  while (!cur.atEnd()) {
+    const Card& card = cur.read(spec);
+    const auto [type, name] = typeAndName(card, "PRMR");
+    Parameter p;
+    p.text = card.text("EXPRESSION");
+    if (type != 'C') {
+      try {
+        p.value = evaluateExpression(p.text, lookup);
+      } catch (const ExpressionError& e) {
+        card.fail("EXPRESSION", e.what());
+      }
+      // An integer parameter takes the integer part, as a Fortran INT() would.
+      if (type == 'I') p.value = std::trunc(p.value);
+    }
+    define(card, "PRMR", type, name, std::move(p));
+    cur.flush();
+    cur.skipBlankLines();
+  }
+}
+
+void Reader::parameterDuplication(const Keyword& kw) {
+  CardCursor cur(kw, deck_);
+  cur.skipBlankLines();
+  const Card& card = cur.readOptional(keywordSpec("*PARAMETER_DUPLICATION").card("card 1"));
+  dflag_ = static_cast<int>(card.integer("DFLAG"));
+  if (dflag_ < 1 || dflag_ > 5) card.fail("DFLAG", std::to_string(dflag_) + " is not 1 to 5");
+}
+
+}  // namespace
+
+Deck readDeck(const std::filesystem::path& path) {
+  Deck deck;
+  Reader(deck).readFile(path, path.string(), Format::Standard, 0);
+  return deck;
+}
+
+}  // namespace crumple::deck

@@ -1,0 +1,292 @@
+// Card layouts of every keyword Crumple reads, transcribed from the LS-DYNA Keyword User's
+// Manual, Vol. I (R10-R14), one entry per keyword, in the manual's field order. Defaults are
+// the manual's; kZeroIsDefault marks fields where the manual says 0 selects the default.
+// kQuiet marks fields without influence on the solution, which are never reported as ignored.
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "deck/layout.hpp"
+
+namespace crumple::deck {
+
+namespace {
+
+constexpr uint8_t Z = kZeroIsDefault;
+constexpr uint8_t Q = kQuiet;
+using Pairs = std::initializer_list<std::pair<std::string_view, std::string_view>>;
+
+// Title line of the _TITLE option and of *TITLE / *PART (the whole line, A80).
+CardSpec titleCard(std::string_view label = "title card") {
+  return {label, {A("TITLE", 80, {}, Q)}};
+}
+// Heading line of the _ID option of boundary conditions and rigid walls: ID (I10), HEADING (A70).
+CardSpec idCard() {
+  return {"id card", {I("ID"), A("HEADING", 70)}};
+}
+// Card 1 shared by the *SET_ keywords: SID DA1..DA4 SOLVER.
+CardSpec setCard() {
+  return {"card 1",
+          {I("SID"), R("DA1", 0, Q), R("DA2", 0, Q), R("DA3", 0, Q), R("DA4", 0, Q),
+           A("SOLVER", 10, "MECH", Q), A("ITS", 10, {}, Q)}};
+}
+// Eight ids per card (I10), named PREFIX1..PREFIX8.
+CardSpec idList(std::string_view label, std::string_view n1, std::string_view n2,
+                std::string_view n3, std::string_view n4, std::string_view n5, std::string_view n6,
+                std::string_view n7, std::string_view n8) {
+  return {label, {I(n1), I(n2), I(n3), I(n4), I(n5), I(n6), I(n7), I(n8)}};
+}
+CardSpec rangeCard() {
+  return {"range card", {I("B1"), I("E1"), I("B2"), I("E2"), I("B3"), I("E3"), I("B4"), I("E4")}};
+}
+// *DATABASE_<ascii file> (GLSTAT, MATSUM, NODOUT, RWFORC, ...): DT BINARY LCUR IOOPT.
+std::vector<CardSpec> asciiDatabase() {
+  return {{"card 1", {R("DT"), I("BINARY", 0, Q), I("LCUR"), I("IOOPT", 0, Q)}}};
+}
+
+std::vector<KeywordSpec> makeTables() {
+  std::vector<KeywordSpec> t;
+  // ---- reader-level keywords (src/deck/deck.cpp) --------------------------------------------
+  t.push_back({"*PARAMETER",
+               {{"card 1",
+                 {A("PRMR1"), A("VAL1"), A("PRMR2"), A("VAL2"), A("PRMR3"), A("VAL3"), A("PRMR4"),
+                  A("VAL4")}}}});
+  t.push_back({"*PARAMETER_EXPRESSION", {{"card 1", {A("PRMR"), A("EXPRESSION", 70)}}}});
+  t.push_back({"*PARAMETER_DUPLICATION", {{"card 1", {I("DFLAG", 1, Z)}}}});
+  t.push_back({"*INCLUDE", {{"card 1", {A("FILENAME", 80)}}}});
+  t.push_back({"*INCLUDE_PATH", {{"card 1", {A("PATH", 80)}}}});
+  // ---- general --------------------------------------------------------------------------------
+  t.push_back({"*TITLE", {titleCard("card 1")}});
+  // ---- mesh: *NODE I8,3E16,2I8 and *ELEMENT_SOLID 10I8 (the manual's narrow formats) ---------
+  t.push_back({"*NODE",
+               {{"card 1",
+                 {I("NID", 0, 0, 8), R("X", 0, 0, 16), R("Y", 0, 0, 16), R("Z", 0, 0, 16),
+                  I("TC", 0, 0, 8), I("RC", 0, 0, 8)}}}});
+  t.push_back({"*ELEMENT_SOLID",
+               {{"card 1",
+                 {I("EID", 0, 0, 8), I("PID", 0, 0, 8), I("N1", 0, 0, 8), I("N2", 0, 0, 8),
+                  I("N3", 0, 0, 8), I("N4", 0, 0, 8), I("N5", 0, 0, 8), I("N6", 0, 0, 8),
+                  I("N7", 0, 0, 8), I("N8", 0, 0, 8)}},
+                // Two-card form written by most pre-processors ("ten node format").
+                {"card 2",
+                 {I("N1", 0, 0, 8), I("N2", 0, 0, 8), I("N3", 0, 0, 8), I("N4", 0, 0, 8),
+                  I("N5", 0, 0, 8), I("N6", 0, 0, 8), I("N7", 0, 0, 8), I("N8", 0, 0, 8),
+                  I("N9", 0, 0, 8), I("N10", 0, 0, 8)}}}});
+  // ---- parts, sections, materials -----------------------------------------------------------
+  t.push_back({"*PART",
+               {{"card 1", {A("HEADING", 70)}},
+                {"card 2",
+                 {I("PID"), I("SECID"), I("MID"), I("EOSID"), I("HGID"), I("GRAV"), I("ADPOPT"),
+                  I("TMID")}}}});
+  t.push_back({"*SECTION_SOLID",
+               {titleCard(),
+                {"card 1",
+                 {I("SECID"), I("ELFORM", 1), I("AET"), A("UNUSED1", 10, {}, Q),
+                  A("UNUSED2", 10, {}, Q), A("UNUSED3", 10, {}, Q), R("COHOFF"), R("GASKETT")}}}});
+  t.push_back(
+      {"*MAT_ELASTIC",
+       {titleCard(), {"card 1", {I("MID"), R("RO"), R("E"), R("PR"), R("DA"), R("DB"), R("K")}}}});
+  t.push_back({"*MAT_PLASTIC_KINEMATIC",
+               {titleCard(),
+                {"card 1", {I("MID"), R("RO"), R("E"), R("PR"), R("SIGY"), R("ETAN"), R("BETA")}},
+                {"card 2", {R("SRC"), R("SRP"), R("FS"), R("VP")}}}});
+  t.push_back(
+      {"*MAT_PIECEWISE_LINEAR_PLASTICITY",
+       {titleCard(),
+        {"card 1",
+         {I("MID"), R("RO"), R("E"), R("PR"), R("SIGY"), R("ETAN"), R("FAIL"), R("TDEL")}},
+        {"card 2", {R("C"), R("P"), I("LCSS"), I("LCSR"), R("VP")}},
+        {"card 3",
+         {R("EPS1"), R("EPS2"), R("EPS3"), R("EPS4"), R("EPS5"), R("EPS6"), R("EPS7"), R("EPS8")}},
+        {"card 4",
+         {R("ES1"), R("ES2"), R("ES3"), R("ES4"), R("ES5"), R("ES6"), R("ES7"), R("ES8")}}}});
+  t.push_back({"*HOURGLASS",
+               {titleCard(),
+                {"card 1",
+                 {I("HGID"), I("IHQ", 1, Z), R("QM", 0.1, Z), I("IBQ"), R("Q1", 1.5, Z),
+                  R("Q2", 0.06, Z), R("QB"), R("QW")}}}});
+  // ---- controls -------------------------------------------------------------------------------
+  t.push_back(
+      {"*CONTROL_TERMINATION",
+       {{"card 1",
+         {R("ENDTIM"), I("ENDCYC"), R("DTMIN"), R("ENDENG"), R("ENDMAS", 1e8, Z), I("NOSOL")}}}});
+  t.push_back({"*CONTROL_TIMESTEP",
+               {{"card 1",
+                 {R("DTINIT"), R("TSSFAC", 0.9, Z), I("ISDO"), R("TSLIMT"), R("DT2MS"), I("LCTM"),
+                  I("ERODE"), I("MS1ST")}},
+                {"card 2",
+                 {R("DT2MSF"), I("DT2MSLC"), I("IMSCL"), A("UNUSED1", 10, {}, Q),
+                  A("UNUSED2", 10, {}, Q), R("RMSCL"), R("EMSCL"), I("IHDO")}}}});
+  t.push_back({"*CONTROL_HOURGLASS", {{"card 1", {I("IHQ", 1, Z), R("QH", 0.1, Z)}}}});
+  t.push_back({"*CONTROL_BULK_VISCOSITY",
+               {{"card 1", {R("Q1", 1.5, Z), R("Q2", 0.06, Z), I("TYPE", 1, Z), I("BTYPE")}}}});
+  t.push_back(
+      {"*CONTROL_ENERGY",
+       {{"card 1", {I("HGEN", 1, Z), I("RWEN", 2, Z), I("SLNTEN", 1, Z), I("RYLEN", 1, Z)}}}});
+  t.push_back({"*CONTROL_SOLID",
+               {{"card 1",
+                 {I("ESORT"), I("FMATRX"), I("NIPTETS", 4, Z), I("SWLOCL", 1, Z), I("PSFAIL"),
+                  R("T10JTOL"), I("ICOH"), I("TET13K")}},
+                {"card 2",
+                 {I("PM1", 0, 0, 8), I("PM2", 0, 0, 8), I("PM3", 0, 0, 8), I("PM4", 0, 0, 8),
+                  I("PM5", 0, 0, 8), I("PM6", 0, 0, 8), I("PM7", 0, 0, 8), I("PM8", 0, 0, 8),
+                  I("PM9", 0, 0, 8), I("PM10", 0, 0, 8)}}}});
+  t.push_back({"*CONTROL_ACCURACY",
+               {{"card 1", {I("OSU"), I("INN", 1, Z), I("PIDOSU"), I("IACC"), R("EXACC")}}}});
+  // Printed-output controls of LS-DYNA itself (d3hsp, messag): no influence on the solution.
+  t.push_back({"*CONTROL_OUTPUT",
+               {{"card 1",
+                 {I("NPOPT", 0, Q), I("NEECHO", 0, Q), I("NREFUP", 0, Q), I("IACCOP", 0, Q),
+                  R("OPIFS", 0, Q), I("IPNINT", 0, Q), I("IKEDIT", 0, Q), I("IFLUSH", 0, Q)}}}});
+  t.push_back({"*CONTROL_SHELL",
+               {{"card 1",
+                 {R("WRPANG", 20, Z), I("ESORT"), I("IRNXX", -1, Z), I("ISTUPD"), I("THEORY", 2, Z),
+                  I("BWC", 2, Z), I("MITER", 1, Z), I("PROJ")}}}});
+  t.push_back({"*CONTROL_CONTACT",
+               {{"card 1",
+                 {R("SLSFAC", 0.1, Z), R("RWPNAL"), I("ISLCHK", 1, Z), I("SHLTHK"),
+                  I("PENOPT", 1, Z), I("THKCHG"), I("ORIEN", 1, Z), I("ENMASS")}},
+                {"card 2",
+                 {I("USRSTR"), I("USRFAC"), I("NSBCS"), I("INTERM"), R("XPENE", 4, Z), I("SSTHK"),
+                  I("ECDT"), I("TIEDPRJ")}}}});
+  t.push_back(
+      {"*CONTROL_SOLUTION", {{"card 1", {I("SOLN"), I("NLQ"), I("ISNAN"), I("LCINT", 100, Z)}}}});
+  // ---- database -----------------------------------------------------------------------------
+  for (std::string_view name :
+       {"*DATABASE_GLSTAT", "*DATABASE_MATSUM", "*DATABASE_NODOUT", "*DATABASE_RWFORC"})
+    t.push_back({name, asciiDatabase()});
+  t.push_back({"*DATABASE_BINARY_D3PLOT",
+               {{"card 1", {R("DT"), I("LCDT"), I("BEAM", 0, Q), I("NPLTC"), I("PSETID")}},
+                {"card 2", {I("IOOPT", 0, Q)}}}});
+  t.push_back({"*DATABASE_EXTENT_BINARY",
+               {{"card 1",
+                 {I("NEIPH"), I("NEIPS"), I("MAXINT", 3, Z), I("STRFLG"), I("SIGFLG", 1, Z),
+                  I("EPSFLG", 1, Z), I("RLTFLG", 1, Z), I("ENGFLG", 1, Z)}},
+                {"card 2",
+                 {I("CMPFLG"), I("IEVERP"), I("BEAMIP"), I("DCOMP", 1, Z), I("SHGE", 1, Z),
+                  I("STSSZ", 1, Z), I("N3THDT", 2, Z), I("IALEMAT", 1, Z)}},
+                {"card 3",
+                 {I("NINTSLD"), I("PKP_SEN"), R("SCLP", 1, Z), I("HYDRO"), I("MSSCL"), I("THERM"),
+                  A("INTOUT"), A("NODOUT")}}}});
+  t.push_back({"*DATABASE_HISTORY_NODE",
+               {idList("card 1", "ID1", "ID2", "ID3", "ID4", "ID5", "ID6", "ID7", "ID8"),
+                {"id card", {I("ID"), A("HEADING", 70)}}}});
+  t.push_back({"*DATABASE_HISTORY_NODE_SET",
+               {idList("card 1", "ID1", "ID2", "ID3", "ID4", "ID5", "ID6", "ID7", "ID8")}});
+  // ---- definitions ----------------------------------------------------------------------------
+  t.push_back({"*DEFINE_CURVE",
+               {titleCard(),
+                {"card 1",
+                 {I("LCID"), I("SIDR"), R("SFA", 1, Z), R("SFO", 1, Z), R("OFFA"), R("OFFO"),
+                  I("DATTYP"), I("LCINT")}},
+                {"point card", {R("A1", 0, 0, 20), R("O1", 0, 0, 20)}}}});
+  t.push_back(
+      {"*DEFINE_BOX",
+       {titleCard(),
+        {"card 1", {I("BOXID"), R("XMN"), R("XMX"), R("YMN"), R("YMX"), R("ZMN"), R("ZMX")}}}});
+  t.push_back(
+      {"*DEFINE_COORDINATE_SYSTEM",
+       {titleCard(),
+        {"card 1", {I("CID"), R("XO"), R("YO"), R("ZO"), R("XL"), R("YL"), R("ZL"), I("CIDL")}},
+        {"card 2", {R("XP"), R("YP"), R("ZP")}}}});
+  // ---- sets -----------------------------------------------------------------------------------
+  t.push_back({"*SET_NODE_LIST",
+               {titleCard(), setCard(),
+                idList("card 2", "NID1", "NID2", "NID3", "NID4", "NID5", "NID6", "NID7", "NID8"),
+                rangeCard()}});
+  t.push_back(
+      {"*SET_NODE_GENERAL",
+       {titleCard(),
+        setCard(),
+        {"card 2", {A("OPTION"), I("E1"), I("E2"), I("E3"), I("E4"), I("E5"), I("E6"), I("E7")}}}});
+  t.push_back({"*SET_PART_LIST",
+               {titleCard(), setCard(),
+                idList("card 2", "PID1", "PID2", "PID3", "PID4", "PID5", "PID6", "PID7", "PID8"),
+                rangeCard()}});
+  t.push_back({"*SET_SEGMENT",
+               {titleCard(),
+                setCard(),
+                {"card 2",
+                 {I("N1"), I("N2"), I("N3"), I("N4"), R("A1", 0, Q), R("A2", 0, Q), R("A3", 0, Q),
+                  R("A4", 0, Q)}}}});
+  // ---- boundary conditions, loads, initial conditions, rigid walls --------------------------
+  // The _NODE and _SET forms differ only in the name of the first field (NID or NSID).
+  for (auto [name, first] : Pairs{{"*BOUNDARY_SPC", "NID"}, {"*BOUNDARY_SPC_SET", "NSID"}})
+    t.push_back({name,
+                 {idCard(),
+                  {"card 1",
+                   {I(first), I("CID"), I("DOFX"), I("DOFY"), I("DOFZ"), I("DOFRX"), I("DOFRY"),
+                    I("DOFRZ")}}}});
+  for (auto [name, first] :
+       Pairs{{"*BOUNDARY_PRESCRIBED_MOTION", "NID"}, {"*BOUNDARY_PRESCRIBED_MOTION_SET", "NSID"}})
+    t.push_back({name,
+                 {idCard(),
+                  {"card 1",
+                   {I(first), I("DOF"), I("VAD"), I("LCID"), R("SF", 1, Z), I("VID"),
+                    R("DEATH", 1e28, Z), R("BIRTH")}}}});
+  t.push_back({"*INITIAL_VELOCITY",
+               {{"card 1", {I("NSID"), I("NSIDEX"), I("BOXID"), I("IRIGID"), I("ICID")}},
+                {"card 2", {R("VX"), R("VY"), R("VZ"), R("VXR"), R("VYR"), R("VZR")}},
+                {"card 3", {R("VXE"), R("VYE"), R("VZE"), R("VXRE"), R("VYRE"), R("VZRE")}}}});
+  t.push_back({"*INITIAL_VELOCITY_NODE",
+               {{"card 1",
+                 {I("NID"), R("VX"), R("VY"), R("VZ"), R("VXR"), R("VYR"), R("VZR"), I("ICID")}}}});
+  t.push_back(
+      {"*INITIAL_VELOCITY_GENERATION",
+       {{"card 1",
+         {I("ID"), I("STYP"), R("OMEGA"), R("VX"), R("VY"), R("VZ"), I("IVATN"), I("ICID")}},
+        {"card 2",
+         {R("XC"), R("YC"), R("ZC"), R("NX"), R("NY"), R("NZ"), I("PHASE"), I("IRIGID")}}}});
+  for (auto [name, first] : Pairs{{"*LOAD_NODE", "NID"}, {"*LOAD_NODE_SET", "NSID"}})
+    t.push_back(
+        {name,
+         {{"card 1",
+           {I(first), I("DOF"), I("LCID"), R("SF", 1, Z), I("CID"), I("M1"), I("M2"), I("M3")}}}});
+  t.push_back(
+      {"*LOAD_SEGMENT",
+       {{"card 1",
+         {I("LCID"), R("SF", 1, Z), R("AT"), I("N1"), I("N2"), I("N3"), I("N4"), I("N5")}}}});
+  t.push_back({"*LOAD_SEGMENT_SET", {{"card 1", {I("SSID"), I("LCID"), R("SF", 1, Z), R("AT")}}}});
+  t.push_back(
+      {"*LOAD_BODY",
+       {{"card 1", {I("LCID"), R("SF", 1, Z), I("LCIDDR"), R("XC"), R("YC"), R("ZC"), I("CID")}}}});
+  t.push_back(
+      {"*RIGIDWALL_PLANAR",
+       {idCard(),
+        {"card 1",
+         {I("NSID"), I("NSIDEX"), I("BOXID"), R("OFFSET"), R("BIRTH"), R("DEATH", 1e20, Z),
+          R("RWKSF", 1, Z)}},
+        {"card 2", {R("XT"), R("YT"), R("ZT"), R("XH"), R("YH"), R("ZH"), R("FRIC"), R("WVEL")}},
+        {"finite card", {R("XHEV"), R("YHEV"), R("ZHEV"), R("LENL"), R("LENM")}},
+        {"moving card", {R("MASS"), R("V0")}}}});
+  // The id of a definition Crumple does not support (*MAT_RIGID, *SECTION_SHELL, ...): the
+  // first field of its first card, kept so that a reference to it can say what it is.
+  t.push_back({"*UNSUPPORTED_DEFINITION", {{"card 1", {I("ID")}}}});
+  std::sort(t.begin(), t.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+  return t;
+}
+
+const std::vector<KeywordSpec>& tables() {
+  static const std::vector<KeywordSpec> t = makeTables();
+  return t;
+}
+
+}  // namespace
+
+const CardSpec& KeywordSpec::card(std::string_view label) const {
+  for (const auto& c : cards)
+    if (c.label == label) return c;
+  throw std::logic_error("no " + std::string(label) + " in the table of " + std::string(name));
+}
+
+const KeywordSpec& keywordSpec(std::string_view name) {
+  const auto& t = tables();
+  auto it = std::lower_bound(t.begin(), t.end(), name,
+                             [](const KeywordSpec& k, std::string_view n) { return k.name < n; });
+  if (it == t.end() || it->name != name)
+    throw std::logic_error("no card table for " + std::string(name));
+  return *it;
+}
+
+}  // namespace crumple::deck

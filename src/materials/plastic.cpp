@@ -1,0 +1,289 @@
+// J2 (von Mises) plasticity with radial return: *MAT_PLASTIC_KINEMATIC (003) and
+// *MAT_PIECEWISE_LINEAR_PLASTICITY (024).
+//
+// Both laws use the classical elastic-predictor / radial-return algorithm (Wilkins 1964;
+// Krieg & Key 1976; Simo & Hughes, Computational Inelasticity, 1998, Box 3.2 for linear
+// combined isotropic/kinematic hardening; LS-DYNA Theory Manual, material models 3 and 24).
+//
+// Notation (tensor shear components throughout, Voigt order xx yy zz xy yz zx):
+//   t      trial stress  s + lambda tr(de) I + 2 G de
+//   xi     relative stress  dev(t) - alpha  (alpha, the back stress, is deviatoric)
+//   q      von Mises norm  sqrt(3/2 xi:xi)
+//   n      flow direction  3/2 xi / q, so that the plastic strain increment is deps * n and
+//          deps is the effective plastic strain increment (sqrt(2/3 n:n) = 1)
+// With Prager's rule dalpha = 2/3 Hk deps n and isotropic modulus Hi, the relative stress
+// shrinks radially: q_new = q - (3 G + Hk) deps, while the yield stress grows by Hi deps, so
+//   deps = f / (3 G + Hk + Hi),  f = q - sigma_y.
+// For MAT_003, Hk = (1 - beta) Ep and Hi = beta Ep with Ep = E Etan / (E - Etan), so the
+// uniaxial stress-strain slope after yield is E Ep / (E + Ep) = Etan for every beta.
+//
+// Loops are written per point without any cross-point data so that a point's result does
+// not depend on its position in the batch (vector body and scalar remainder execute the same
+// IEEE operations; the build disables FMA contraction).
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "materials/materials.hpp"
+#include "materials/soa.hpp"
+
+namespace crumple::materials {
+
+namespace {
+
+constexpr double kThird = 1.0 / 3.0;
+
+// Young's modulus from the bulk and shear moduli the laws store.
+double youngOf(const Moduli& m) {
+  return 9.0 * m.bulk * m.shear / (3.0 * m.bulk + m.shear);
+}
+
+// Plastic hardening modulus of a bilinear curve with tangent Etan: dsigma/deps_p.
+// Precondition Etan < E (checked by makeLaw).
+double plasticModulus(double E, double etan) {
+  return E * etan / (E - etan);
+}
+
+// Cowper-Symonds dynamic factor 1 + (rate / C)^(1/P), with the effective total strain rate
+// sqrt(2/3 dev(de):dev(de)) / dt (LS-DYNA keyword manual, MAT_003 and MAT_024).
+inline double cowperSymonds(double d0, double d1, double d2, double d3, double d4, double d5,
+                            double tr, double inv_dt, double C, double inv_P) {
+  const double e0 = d0 - tr * kThird;
+  const double e1 = d1 - tr * kThird;
+  const double e2 = d2 - tr * kThird;
+  const double ee = e0 * e0 + e1 * e1 + e2 * e2 + 2.0 * (d3 * d3 + d4 * d4 + d5 * d5);
+  const double rate = std::sqrt(2.0 / 3.0 * ee) * inv_dt;
+  return 1.0 + std::pow(rate / C, inv_P);
+}
+
+struct LinearHardening {
+  double G = 0, lam = 0;
+  double sigy = 0;  // initial yield stress
+  double Hi = 0;    // isotropic plastic modulus
+  double Hk = 0;    // kinematic plastic modulus
+  double C = 0, inv_P = 0;
+};
+
+// Elastic predictor and radial return for linear mixed hardening; exact for linear hardening
+// (the return is along the trial direction, which the back stress update preserves).
+// The return has no branch: deps = max(f, 0) / (...) is zero for elastic points and the
+// corrections then subtract exact zeros, so elastic points keep the trial stress bit for bit
+// (the selects are if-converted; with -fno-math-errno -fno-trapping-math, which change no
+// result, GCC vectorises this loop).
+template <bool kKinematic, bool kRate>
+void linearHardeningKernel(detail::Soa a, int n, double dt, const LinearHardening& P) {
+  const double G2 = 2.0 * P.G, G3 = 3.0 * P.G;
+  const double inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;
+  for (int i = 0; i < n; ++i) {
+    // Elastic predictor (same expression as Elastic::update).
+    const double tr = a.d0[i] + a.d1[i] + a.d2[i];
+    const double lt = P.lam * tr;
+    const double t0 = a.s0[i] + (lt + G2 * a.d0[i]);
+    const double t1 = a.s1[i] + (lt + G2 * a.d1[i]);
+    const double t2 = a.s2[i] + (lt + G2 * a.d2[i]);
+    const double t3 = a.s3[i] + G2 * a.d3[i];
+    const double t4 = a.s4[i] + G2 * a.d4[i];
+    const double t5 = a.s5[i] + G2 * a.d5[i];
+    double rf = 1.0;
+    if constexpr (kRate) {
+      rf = cowperSymonds(a.d0[i], a.d1[i], a.d2[i], a.d3[i], a.d4[i], a.d5[i], tr, inv_dt, P.C,
+                         P.inv_P);
+    }
+    // Relative deviatoric stress and its von Mises norm.
+    const double p = (t0 + t1 + t2) * kThird;
+    double x0 = t0 - p, x1 = t1 - p, x2 = t2 - p, x3 = t3, x4 = t4, x5 = t5;
+    if constexpr (kKinematic) {
+      x0 -= a.a0[i];
+      x1 -= a.a1[i];
+      x2 -= a.a2[i];
+      x3 -= a.a3[i];
+      x4 -= a.a4[i];
+      x5 -= a.a5[i];
+    }
+    const double j2 = 0.5 * (x0 * x0 + x1 * x1 + x2 * x2) + (x3 * x3 + x4 * x4 + x5 * x5);
+    const double q = std::sqrt(3.0 * j2);
+    const double e = a.ep[i];
+    // sigma_y = rf (sigy + Hi eps_p): the rate factor scales the isotropic yield stress only
+    // (LS-DYNA MAT_003), so consistency at eps_p + deps gives 3G + Hk + rf Hi below; this
+    // reduces to 3G + Ep when rf = 1 and lands exactly on the surface otherwise.
+    const double f = q - rf * (P.sigy + P.Hi * e);
+    const double deps = (f > 0.0 ? f : 0.0) / (G3 + P.Hk + rf * P.Hi);
+    // ds = -2 G deps n = -3 G deps xi / q; dalpha = 2/3 Hk deps n = Hk deps xi / q.
+    const double c = deps / (q > 0.0 ? q : 1.0);
+    const double cs = G3 * c;
+    a.s0[i] = t0 - cs * x0;
+    a.s1[i] = t1 - cs * x1;
+    a.s2[i] = t2 - cs * x2;
+    a.s3[i] = t3 - cs * x3;
+    a.s4[i] = t4 - cs * x4;
+    a.s5[i] = t5 - cs * x5;
+    if constexpr (kKinematic) {
+      const double ca = P.Hk * c;
+      a.a0[i] += ca * x0;
+      a.a1[i] += ca * x1;
+      a.a2[i] += ca * x2;
+      a.a3[i] += ca * x3;
+      a.a4[i] += ca * x4;
+      a.a5[i] += ca * x5;
+    }
+    a.ep[i] = e + deps;
+  }
+}
+
+template <bool kKinematic, bool kRate>
+void linearHardeningUpdate(PointBatch& b, const LinearHardening& P) {
+  linearHardeningKernel<kKinematic, kRate>(detail::soaOf(b), b.n, b.dt, P);
+}
+
+// Failure by effective plastic strain: the flag is only ever raised; the caller erodes.
+void markFailed(PointBatch& b, double limit) {
+  if (!(limit > 0.0) || b.failed == nullptr) return;
+  const double* __restrict ep = b.eps_p;
+  uint8_t* __restrict failed = b.failed;
+  for (int i = 0; i < b.n; ++i) failed[i] |= static_cast<uint8_t>(ep[i] >= limit ? 1 : 0);
+}
+
+// ---- piecewise-linear yield curve ---------------------------------------------------------
+// Same segment search and interpolation as model::Curve::valueExtrapolated: segment k holds
+// [x[k], x[k+1]), clamped to the first and last segments (linear extrapolation beyond).
+std::size_t segmentOf(const std::vector<double>& x, double t) {
+  auto it = std::upper_bound(x.begin(), x.end(), t);
+  std::size_t k = it == x.begin() ? 0 : static_cast<std::size_t>(it - x.begin()) - 1;
+  return std::min(k, x.size() - 2);
+}
+
+double onSegment(const std::vector<double>& x, const std::vector<double>& y, std::size_t k,
+                 double t) {
+  const double dx = x[k + 1] - x[k];
+  if (dx <= 0.0) return y[k + 1];
+  return y[k] + (y[k + 1] - y[k]) * (t - x[k]) / dx;
+}
+
+// Effective plastic strain increment that returns a trial stress of von Mises norm q > the
+// current flow stress to the piecewise-linear curve h scaled by rf:
+//   g(deps) = q - 3 G deps - rf h(eps_p + deps) = 0.
+// g is piecewise linear and decreasing (for slopes above -3G/rf), so walking the segments
+// from eps_p and solving linearly in the segment where g changes sign is exact (it is the
+// Newton iteration on the piecewise-linear curve, converged in one step per segment crossed).
+double returnToCurve(const std::vector<double>& x, const std::vector<double>& y, double G3,
+                     double rf, double q, double eps) {
+  const std::size_t m = x.size();
+  if (m == 1) return (q - rf * y[0]) / G3;  // constant flow stress: perfect plasticity
+  std::size_t k = segmentOf(x, eps);
+  double xa = eps, ha = onSegment(x, y, k, eps);
+  for (;;) {
+    const double ga = q - G3 * (xa - eps) - rf * ha;
+    const double dx = x[k + 1] - x[k];
+    const double H = dx > 0.0 ? (y[k + 1] - y[k]) / dx : 0.0;
+    if (k + 2 == m) return (xa - eps) + ga / (G3 + rf * H);  // last segment: unbounded
+    const double xb = x[k + 1], hb = y[k + 1];
+    const double gb = q - G3 * (xb - eps) - rf * hb;
+    if (gb <= 0.0) {
+      // Root in [xa, xb]; on a zero-length segment (a step up in the curve) the stress stops
+      // on the riser, at the step's plastic strain.
+      return dx > 0.0 ? (xa - eps) + ga / (G3 + rf * H) : xa - eps;
+    }
+    ++k;
+    xa = std::max(xa, xb);
+    ha = hb;
+  }
+}
+
+// MAT_024 with a yield curve: isotropic hardening only, so the return is radial on dev(t).
+// Elastic points take the same correction code with deps = 0 (exact no-op).
+template <bool kRate>
+void curveHardeningUpdate(PointBatch& b, const PiecewiseLinear& law) {
+  const double G = law.moduli.shear;
+  const double lam = law.moduli.bulk - 2.0 * G / 3.0;
+  const double G2 = 2.0 * G, G3 = 3.0 * G;
+  const double inv_dt = b.dt > 0.0 ? 1.0 / b.dt : 0.0;
+  const double inv_P = kRate ? 1.0 / law.p : 0.0;
+  const std::vector<double>& cx = law.curve_eps;
+  const std::vector<double>& cy = law.curve_sig;
+  for (int i = 0; i < b.n; ++i) {
+    const double d0 = b.de[0][i], d1 = b.de[1][i], d2 = b.de[2][i];
+    const double d3 = b.de[3][i], d4 = b.de[4][i], d5 = b.de[5][i];
+    const double tr = d0 + d1 + d2;
+    const double lt = lam * tr;
+    const double t0 = b.s[0][i] + (lt + G2 * d0);
+    const double t1 = b.s[1][i] + (lt + G2 * d1);
+    const double t2 = b.s[2][i] + (lt + G2 * d2);
+    const double t3 = b.s[3][i] + G2 * d3;
+    const double t4 = b.s[4][i] + G2 * d4;
+    const double t5 = b.s[5][i] + G2 * d5;
+    double rf = 1.0;
+    if constexpr (kRate) rf = cowperSymonds(d0, d1, d2, d3, d4, d5, tr, inv_dt, law.c, inv_P);
+    const double p = (t0 + t1 + t2) * kThird;
+    const double x0 = t0 - p, x1 = t1 - p, x2 = t2 - p;
+    const double j2 = 0.5 * (x0 * x0 + x1 * x1 + x2 * x2) + (t3 * t3 + t4 * t4 + t5 * t5);
+    const double q = std::sqrt(3.0 * j2);
+    const double e = b.eps_p[i];
+    const double f = q - rf * law.yieldStress(e);
+    const double deps = f > 0.0 ? returnToCurve(cx, cy, G3, rf, q, e) : 0.0;
+    const double cs = G3 * deps / (q > 0.0 ? q : 1.0);
+    b.s[0][i] = t0 - cs * x0;
+    b.s[1][i] = t1 - cs * x1;
+    b.s[2][i] = t2 - cs * x2;
+    b.s[3][i] = t3 - cs * t3;
+    b.s[4][i] = t4 - cs * t4;
+    b.s[5][i] = t5 - cs * t5;
+    b.eps_p[i] = e + deps;
+  }
+}
+
+}  // namespace
+
+void PlasticKinematic::update(PointBatch& b) const {
+  LinearHardening P;
+  P.G = moduli.shear;
+  P.lam = moduli.bulk - 2.0 * moduli.shear / 3.0;
+  P.sigy = sigy;
+  const double Ep = plasticModulus(youngOf(moduli), etan);
+  P.Hi = beta * Ep;
+  P.Hk = (1.0 - beta) * Ep;
+  if (src > 0.0 && srp > 0.0) {
+    P.C = src;
+    P.inv_P = 1.0 / srp;
+    linearHardeningUpdate<true, true>(b, P);
+  } else {
+    linearHardeningUpdate<true, false>(b, P);
+  }
+  markFailed(b, fs);
+}
+
+double PiecewiseLinear::yieldStress(double eps_p) const {
+  if (curve_eps.empty()) return sigy + plasticModulus(youngOf(moduli), etan) * eps_p;
+  if (curve_eps.size() == 1) return curve_sig.front();
+  return onSegment(curve_eps, curve_sig, segmentOf(curve_eps, eps_p), eps_p);
+}
+
+void PiecewiseLinear::update(PointBatch& b) const {
+  const bool rate = c > 0.0 && p > 0.0;
+  if (!curve_eps.empty()) {
+    if (rate) {
+      curveHardeningUpdate<true>(b, *this);
+    } else {
+      curveHardeningUpdate<false>(b, *this);
+    }
+  } else {
+    // Bilinear: purely isotropic linear hardening, i.e. MAT_003 with beta = 1 and no back
+    // stress (b.alpha is not required for this law).
+    LinearHardening P;
+    P.G = moduli.shear;
+    P.lam = moduli.bulk - 2.0 * moduli.shear / 3.0;
+    P.sigy = sigy;
+    P.Hi = plasticModulus(youngOf(moduli), etan);
+    if (rate) {
+      P.C = c;
+      P.inv_P = 1.0 / p;
+      linearHardeningUpdate<false, true>(b, P);
+    } else {
+      linearHardeningUpdate<false, false>(b, P);
+    }
+  }
+  markFailed(b, fail);
+}
+
+}  // namespace crumple::materials

@@ -1,0 +1,346 @@
+// Meaning of boundary conditions, loads, initial conditions and rigid walls:
+// *BOUNDARY_SPC, *BOUNDARY_PRESCRIBED_MOTION, *INITIAL_VELOCITY(_NODE, _GENERATION),
+// *LOAD_NODE, *LOAD_SEGMENT(_SET), *LOAD_BODY_X/Y/Z, *RIGIDWALL_PLANAR (LS-DYNA Keyword
+// Manual Vol. I).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "model/build_context.hpp"
+
+namespace crumple::model::build {
+
+namespace {
+
+using deck::Card;
+using deck::CardCursor;
+using deck::keywordSpec;
+
+Vec3 sub(const Vec3& a, const Vec3& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double dot(const Vec3& a, const Vec3& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+Vec3 unit(const Vec3& a) {
+  const double n = std::sqrt(dot(a, a));
+  return n == 0.0 ? Vec3{} : Vec3{a[0] / n, a[1] / n, a[2] / n};
+}
+
+std::vector<int32_t> allNodes(const Model& m) {
+  std::vector<int32_t> v(m.nodes.size());
+  std::iota(v.begin(), v.end(), 0);
+  return v;
+}
+
+// The nodes a _NODE or _SET card names in its first field.
+std::vector<int32_t> nodesOf(Context& ctx, const Card& c, std::string_view field, bool set) {
+  const int64_t id = c.integer(field);
+  if (set) return ctx.nodeSet(c, field, id);
+  return {ctx.node(c, field, id)};
+}
+
+void checkNoLocalSystem(Context& ctx, const Card& c, std::string_view field) {
+  if (c.integer(field) != 0)
+    ctx.reject(c, field, "a local coordinate system is not supported here");
+}
+
+}  // namespace
+
+void readSpc(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const bool set = opts.has("SET");
+  const auto& spec = keywordSpec(set ? "*BOUNDARY_SPC_SET" : "*BOUNDARY_SPC");
+  const std::string_view first = set ? "NSID" : "NID";
+  CardCursor cur(kw, ctx.deck);
+  if (opts.has("ID")) cur.read(spec.card("id card"));
+  static constexpr std::string_view kDof[6] = {"DOFX", "DOFY", "DOFZ", "DOFRX", "DOFRY", "DOFRZ"};
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec.card("card 1"));
+    checkNoLocalSystem(ctx, c, "CID");
+    DofMask mask = 0;
+    for (int k = 0; k < 6; ++k) {
+      const int64_t v = c.integer(kDof[k]);
+      if (v != 0 && v != 1) c.fail(kDof[k], "must be 0 (free) or 1 (constrained)");
+      if (v) mask = static_cast<DofMask>(mask | (1u << k));
+    }
+    for (int32_t n : nodesOf(ctx, c, first, set)) ctx.spc_masks[n] |= mask;
+    ctx.collect(cur);
+  }
+}
+
+void readPrescribedMotion(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const bool set = opts.has("SET");
+  const auto& spec =
+      keywordSpec(set ? "*BOUNDARY_PRESCRIBED_MOTION_SET" : "*BOUNDARY_PRESCRIBED_MOTION");
+  const std::string_view first = set ? "NSID" : "NID";
+  CardCursor cur(kw, ctx.deck);
+  if (opts.has("ID")) cur.read(spec.card("id card"));
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec.card("card 1"));
+    PrescribedMotion pm;
+    // DOF 1-3: x, y, z translation. The others (motion along a vector, rotations, radial
+    // motion) are not supported.
+    const int64_t dof = c.integer("DOF");
+    if (dof < 1 || dof > 3) {
+      ctx.reject(c, "DOF", "DOF " + std::to_string(dof) + " is not supported (1, 2, 3 are)");
+      ctx.collect(cur);
+      continue;
+    }
+    pm.dof = static_cast<int>(dof - 1);
+    // VAD 0 velocity, 1 acceleration, 2 displacement.
+    const int64_t vad = c.integer("VAD");
+    if (vad < 0 || vad > 2) {
+      ctx.reject(c, "VAD", "VAD " + std::to_string(vad) + " is not supported (0, 1, 2 are)");
+      ctx.collect(cur);
+      continue;
+    }
+    pm.kind = static_cast<MotionKind>(vad);
+    pm.curve = ctx.curve(c, "LCID", c.integer("LCID"));
+    pm.sf = c.real("SF");
+    c.integer("VID");  // the direction vector of DOF 4 and 8; not used by DOF 1-3
+    const double death = c.real("DEATH");
+    pm.death = death >= 1e28 ? std::numeric_limits<double>::infinity() : death;
+    pm.birth = c.real("BIRTH");
+    if (pm.birth >= pm.death) c.fail("DEATH", "the motion ends before it begins (BIRTH)");
+    for (int32_t n : nodesOf(ctx, c, first, set)) {
+      pm.node = n;
+      ctx.model.prescribed.push_back(pm);
+    }
+    ctx.collect(cur);
+  }
+}
+
+// NSID 0 means all nodes; the nodes of NSIDEX take the velocities of card 3 instead
+// (Keyword Manual, *INITIAL_VELOCITY). Rotational velocities have no meaning for solid nodes.
+void readInitialVelocity(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*INITIAL_VELOCITY");
+  CardCursor cur(kw, ctx.deck);
+  const Card& c = cur.read(spec.card("card 1"));
+  const Card& c2 = cur.readOptional(spec.card("card 2"));
+  const int64_t nsid = c.integer("NSID"), nsidex = c.integer("NSIDEX");
+  const Card& c3 = nsidex != 0 ? cur.readOptional(spec.card("card 3")) : c2;
+  checkNoLocalSystem(ctx, c, "ICID");
+  std::vector<int32_t> nodes = nsid == 0 ? allNodes(ctx.model) : ctx.nodeSet(c, "NSID", nsid);
+  std::vector<char> exempt(ctx.model.nodes.size(), 0);
+  if (nsidex != 0)
+    for (int32_t n : ctx.nodeSet(c, "NSIDEX", nsidex)) exempt[n] = 1;
+  const Box* box = nullptr;
+  if (const int64_t b = c.integer("BOXID"); b != 0) box = &ctx.box(c, "BOXID", b);
+  const Vec3 v{c2.real("VX"), c2.real("VY"), c2.real("VZ")};
+  const Vec3 ve = nsidex != 0 ? Vec3{c3.real("VXE"), c3.real("VYE"), c3.real("VZE")} : v;
+  for (int32_t n : nodes) {
+    if (box && !box->contains(ctx.model.nodes.x[n])) continue;
+    ctx.model.initial_velocity[n] = exempt[n] ? ve : v;
+  }
+  ctx.collect(cur);
+}
+
+void readInitialVelocityNode(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*INITIAL_VELOCITY_NODE").card("card 1");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec);
+    checkNoLocalSystem(ctx, c, "ICID");
+    ctx.model.initial_velocity[ctx.node(c, "NID", c.integer("NID"))] = {c.real("VX"), c.real("VY"),
+                                                                        c.real("VZ")};
+    ctx.collect(cur);
+  }
+}
+
+// v = (VX, VY, VZ) + OMEGA n x (x - xc), n the unit axis through (XC, YC, ZC)
+// (Keyword Manual, *INITIAL_VELOCITY_GENERATION); STYP 1 part set, 2 part, 3 node set.
+void readInitialVelocityGeneration(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*INITIAL_VELOCITY_GENERATION");
+  CardCursor cur(kw, ctx.deck);
+  const Card& c = cur.read(spec.card("card 1"));
+  const Card& c2 = cur.readOptional(spec.card("card 2"));
+  checkNoLocalSystem(ctx, c, "ICID");
+  const int64_t id = c.integer("ID");
+  std::vector<int32_t> nodes;
+  switch (c.integer("STYP")) {
+    case 1:
+      for (int32_t p : ctx.partSet(c, "ID", id)) {
+        const auto& pn = ctx.partNodes(p);
+        nodes.insert(nodes.end(), pn.begin(), pn.end());
+      }
+      break;
+    case 2:
+      nodes = ctx.partNodes(ctx.part(c, "ID", id));
+      break;
+    case 3:
+      nodes = ctx.nodeSet(c, "ID", id);
+      break;
+    default:
+      c.fail("STYP", "must be 1 (part set), 2 (part) or 3 (node set)");
+  }
+  const double omega = c.real("OMEGA");
+  const Vec3 vt{c.real("VX"), c.real("VY"), c.real("VZ")};
+  const Vec3 xc{c2.real("XC"), c2.real("YC"), c2.real("ZC")};
+  const Vec3 axis = unit({c2.real("NX"), c2.real("NY"), c2.real("NZ")});
+  if (omega != 0.0 && dot(axis, axis) == 0.0)
+    c2.fail("NX", "the rotation axis (NX, NY, NZ) is zero");
+  for (int32_t n : nodes) {
+    const Vec3 w = cross(axis, sub(ctx.model.nodes.x[n], xc));
+    ctx.model.initial_velocity[n] = {vt[0] + omega * w[0], vt[1] + omega * w[1],
+                                     vt[2] + omega * w[2]};
+  }
+  ctx.collect(cur);
+}
+
+// DOF 1-3: force along x, y, z, or along the local axis of CID (split into global
+// components, which is exact for a load of fixed direction).
+void readLoadNode(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const bool set = opts.has("SET");
+  const auto& spec = keywordSpec(set ? "*LOAD_NODE_SET" : "*LOAD_NODE").card("card 1");
+  const std::string_view first = set ? "NSID" : "NID";
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec);
+    const int64_t dof = c.integer("DOF");
+    if (dof < 1 || dof > 3) {
+      ctx.reject(c, "DOF", "DOF " + std::to_string(dof) + " is not supported (1, 2, 3 are)");
+      ctx.collect(cur);
+      continue;
+    }
+    const int32_t curve = ctx.curve(c, "LCID", c.integer("LCID"));
+    const double sf = c.real("SF");
+    Vec3 dir{};
+    dir[dof - 1] = 1.0;
+    if (const int64_t cid = c.integer("CID"); cid != 0)
+      dir = ctx.frame(c, "CID", cid).axis[dof - 1];
+    for (int32_t n : nodesOf(ctx, c, first, set))
+      for (int i = 0; i < 3; ++i)
+        if (dir[i] != 0.0) ctx.model.nodal_loads.push_back({n, i, curve, sf * dir[i]});
+    ctx.collect(cur);
+  }
+}
+
+namespace {
+std::array<int32_t, 4> segmentNodes(Context& ctx, const Card& c) {
+  static constexpr std::string_view kN[4] = {"N1", "N2", "N3", "N4"};
+  std::array<int32_t, 4> s{};
+  for (int k = 0; k < 4; ++k) {
+    int64_t id = c.integer(kN[k]);
+    if (k == 3 && id == 0) id = c.integer("N3");  // triangle: N4 = N3
+    if (id == 0) c.fail(kN[k], "node id missing");
+    s[k] = ctx.node(c, kN[k], id);
+  }
+  return s;
+}
+}  // namespace
+
+void readLoadSegment(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*LOAD_SEGMENT").card("card 1");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec);
+    PressureLoad p;
+    p.curve = ctx.curve(c, "LCID", c.integer("LCID"));
+    p.sf = c.real("SF");
+    p.at = c.real("AT");
+    p.nodes = segmentNodes(ctx, c);
+    ctx.model.pressure_loads.push_back(p);
+    ctx.collect(cur);
+  }
+}
+
+void readLoadSegmentSet(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*LOAD_SEGMENT_SET").card("card 1");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec);
+    PressureLoad p;
+    p.curve = ctx.curve(c, "LCID", c.integer("LCID"));
+    p.sf = c.real("SF");
+    p.at = c.real("AT");
+    for (const auto& s : ctx.segmentSet(c, "SSID", c.integer("SSID"))) {
+      p.nodes = s;
+      ctx.model.pressure_loads.push_back(p);
+    }
+    ctx.collect(cur);
+  }
+}
+
+void readLoadBody(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const int dof = opts.has("X") ? 0 : opts.has("Y") ? 1 : opts.has("Z") ? 2 : -1;
+  if (dof < 0 || opts.words.size() != 1) {
+    ctx.rejectKeyword(kw, "give exactly one direction: *LOAD_BODY_X, _Y or _Z");
+    return;
+  }
+  const auto& spec = keywordSpec("*LOAD_BODY").card("card 1");
+  CardCursor cur(kw, ctx.deck);
+  cur.skipBlankLines();
+  const Card& c = cur.read(spec);
+  checkNoLocalSystem(ctx, c, "CID");
+  ctx.model.body_loads.push_back({dof, ctx.curve(c, "LCID", c.integer("LCID")), c.real("SF")});
+  ctx.collect(cur);
+}
+
+// Cards in the manual's order: _ID heading, cards 1-2, the _FINITE card, the _MOVING card
+// (Keyword Manual, *RIGIDWALL_PLANAR).
+void readRigidWallPlanar(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*RIGIDWALL_PLANAR");
+  CardCursor cur(kw, ctx.deck);
+  RigidWallPlanar w;
+  ++ctx.rigid_wall_count;
+  w.id = ctx.rigid_wall_count;
+  if (opts.has("ID")) {
+    const Card& id = cur.read(spec.card("id card"));
+    if (!id.blank("ID")) w.id = id.integer("ID");
+  }
+  const Card& c = cur.read(spec.card("card 1"));
+  const Card& c2 = cur.read(spec.card("card 2"));
+  w.where = c.where();
+  const Model& m = ctx.model;
+  const int64_t nsid = c.integer("NSID"), nsidex = c.integer("NSIDEX");
+  std::vector<char> take(m.nodes.size(), nsid == 0 ? 1 : 0);
+  if (nsid != 0)
+    for (int32_t n : ctx.nodeSet(c, "NSID", nsid)) take[n] = 1;
+  if (nsidex != 0)
+    for (int32_t n : ctx.nodeSet(c, "NSIDEX", nsidex)) take[n] = 0;
+  const Box* box = nullptr;
+  if (const int64_t b = c.integer("BOXID"); b != 0) box = &ctx.box(c, "BOXID", b);
+  for (std::size_t n = 0; n < take.size(); ++n)
+    if (take[n] && (!box || box->contains(m.nodes.x[n])))
+      w.nodes.push_back(static_cast<int32_t>(n));
+  w.tail = {c2.real("XT"), c2.real("YT"), c2.real("ZT")};
+  w.normal = unit(sub({c2.real("XH"), c2.real("YH"), c2.real("ZH")}, w.tail));
+  if (dot(w.normal, w.normal) == 0.0)
+    c2.fail("XH", "the head of the normal coincides with its tail");
+  w.fric = c2.real("FRIC");
+  if (w.fric < 0) c2.fail("FRIC", "must not be negative");
+  if (opts.has("FINITE")) {
+    const Card& f = cur.read(spec.card("finite card"));
+    Vec3 l = sub({f.real("XHEV"), f.real("YHEV"), f.real("ZHEV")}, w.tail);
+    // The edge lies in the wall: keep the part of l normal to the wall normal.
+    const double ln = dot(l, w.normal);
+    l = unit({l[0] - ln * w.normal[0], l[1] - ln * w.normal[1], l[2] - ln * w.normal[2]});
+    if (dot(l, l) == 0.0) f.fail("XHEV", "the edge vector l is zero or along the normal");
+    w.finite = true;
+    w.l_axis = l;
+    w.lenl = f.real("LENL");
+    w.lenm = f.real("LENM");
+    if (w.lenl <= 0) f.fail("LENL", "must be positive");
+    if (w.lenm <= 0) f.fail("LENM", "must be positive");
+  }
+  if (opts.has("MOVING")) {
+    const Card& mv = cur.read(spec.card("moving card"));
+    w.moving = true;
+    w.mass = mv.real("MASS");
+    w.v0 = mv.real("V0");
+    if (w.mass <= 0) mv.fail("MASS", "must be positive");
+  }
+  ctx.model.rigid_walls.push_back(std::move(w));
+  ctx.collect(cur);
+}
+
+void finishConditions(Context& ctx) {
+  for (const auto& [node, mask] : ctx.spc_masks)
+    if (mask) ctx.model.spcs.push_back({node, mask});
+}
+
+}  // namespace crumple::model::build

@@ -1,0 +1,205 @@
+// Shared state of the Deck -> Model build (build.cpp drives it; build_*.cpp give keywords
+// their meaning). Internal to src/model.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <set>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "deck/card.hpp"
+#include "deck/deck.hpp"
+#include "model/build.hpp"
+#include "model/model.hpp"
+
+namespace crumple::model::build {
+
+// The options of a keyword after its base name: *SET_NODE_LIST_GENERATE_TITLE on the base
+// *SET_NODE gives {LIST, GENERATE, TITLE}.
+struct KeywordOptions {
+  std::set<std::string, std::less<>> words;
+  bool has(std::string_view w) const { return words.count(w) > 0; }
+};
+
+// Entities that other keywords refer to by id.
+enum class Kind : uint8_t {
+  Material,
+  Section,
+  Hourglass,
+  Curve,
+  NodeSet,
+  PartSet,
+  SegmentSet,
+  Box,
+  CoordinateSystem,
+};
+std::string_view kindName(Kind kind);  // "material", "node set", ...
+
+// *DEFINE_BOX
+struct Box {
+  Vec3 lo{}, hi{};
+  bool contains(const Vec3& x) const {
+    for (int i = 0; i < 3; ++i)
+      if (x[i] < lo[i] || x[i] > hi[i]) return false;
+    return true;
+  }
+};
+
+// *DEFINE_COORDINATE_SYSTEM: orthonormal local axes (rows) in global components.
+struct Frame {
+  std::array<Vec3, 3> axis{};
+};
+
+class Context {
+ public:
+  Context(const deck::Deck& d, Model& m, ReadOptions o) : deck(d), model(m), options(o) {}
+
+  const deck::Deck& deck;
+  Model& model;
+  const ReadOptions options;
+
+  // ---- reporting ------------------------------------------------------------------------
+  // A keyword not acted on: counted once per keyword name and reason.
+  void reportUnsupported(const deck::Keyword& kw, std::string_view reason);
+  // Something the solution needs but Crumple does not support: an InputError at the field,
+  // or with ReadOptions::allow_unsupported an entry in Model::unsupported.
+  void reject(const deck::Card& card, std::string_view field, const std::string& message);
+  // A keyword option of that kind (no field to name).
+  void rejectKeyword(const deck::Keyword& kw, const std::string& message);
+  // Read but not honoured.
+  void ignore(std::string keyword, std::string_view field, std::string reason,
+              util::SourceLoc where);
+  // Moves the cursor's unused non-default values into Model::ignored.
+  void collect(deck::CardCursor& cursor);
+
+  // ---- definitions and references -----------------------------------------------------------
+  // Records that `id` of `kind` is defined by the card's field; a second definition is an
+  // InputError naming the first.
+  void define(Kind kind, int64_t id, const deck::Card& card, std::string_view field);
+  // Records that `id` of `kind` is defined by a keyword Crumple does not support, so that a
+  // reference to it can say so.
+  void defineUnsupported(Kind kind, int64_t id, std::string what, util::SourceLoc where);
+  // "*MAT_RIGID (material 2 at ball.k:92)" for an id defined by an unsupported keyword.
+  std::string unsupportedDefinition(Kind kind, int64_t id) const;
+  // Records that `id` of `kind` was read but cannot be used (a set naming a node that does
+  // not exist): an error only if something refers to it.
+  void defineBroken(Kind kind, int64_t id, std::string message);
+  // The message for a reference to an id that has no supported definition: "material 7 is
+  // not defined" or "curve 5 is defined by *DEFINE_TABLE (t.k:9), which is not supported".
+  std::string undefinedMessage(Kind kind, int64_t id) const;
+  bool isUnsupported(Kind kind, int64_t id) const;
+
+  // Model index of the node (InputError at the field if it is not defined).
+  int32_t node(const deck::Card& card, std::string_view field, int64_t id) const;
+  int32_t part(const deck::Card& card, std::string_view field, int64_t id) const;
+  // Curve index; `id` 0 is an error ("a curve is required").
+  int32_t curve(const deck::Card& card, std::string_view field, int64_t id) const;
+  const std::vector<int32_t>& nodeSet(const deck::Card& card, std::string_view field,
+                                      int64_t id) const;
+  const std::vector<int32_t>& partSet(const deck::Card& card, std::string_view field,
+                                      int64_t id) const;
+  const std::vector<std::array<int32_t, 4>>& segmentSet(const deck::Card& card,
+                                                        std::string_view field, int64_t id) const;
+  const Box& box(const deck::Card& card, std::string_view field, int64_t id) const;
+  const Frame& frame(const deck::Card& card, std::string_view field, int64_t id) const;
+  // Nodes of the solid elements of a part, ascending.
+  const std::vector<int32_t>& partNodes(int32_t part);
+
+  // ---- build state -------------------------------------------------------------------------
+  std::unordered_map<int64_t, int32_t> material_index, section_index, hourglass_index;
+  std::map<int64_t, Box> boxes;
+  std::map<int64_t, Frame> frames;
+  // Per part index: empty, or why a solid element of the part cannot be run ("part 2 uses
+  // *MAT_RIGID (material 2, ball.k:92), which is not supported yet").
+  std::vector<std::string> part_problem;
+  // Raw inputs collected before sorting.
+  struct NodeInput {
+    int64_t id;
+    Vec3 x;
+    int tc, rc;
+    int32_t file, line;
+  };
+  std::vector<NodeInput> node_input;
+  struct SolidInput {
+    int64_t id;
+    int32_t part;
+    std::array<int32_t, 8> nodes;
+    int32_t file, line;
+  };
+  std::vector<SolidInput> solid_input;
+  std::map<int32_t, DofMask> spc_masks;
+  int64_t d3plot_npltc = 0;
+  int64_t erode_flag = 0;  // *CONTROL_TIMESTEP ERODE
+  int rigid_wall_count = 0;
+
+ private:
+  std::map<std::pair<Kind, int64_t>, util::SourceLoc> defined_;
+  std::map<std::pair<Kind, int64_t>, std::pair<std::string, util::SourceLoc>> unsupported_;
+  std::map<std::pair<std::string, std::string>, std::size_t> unsupported_row_;
+  std::map<std::pair<Kind, int64_t>, std::string> broken_;
+  std::unordered_map<int32_t, std::vector<int32_t>> part_nodes_;
+};
+
+// ---- keyword meanings (one function per keyword family) ------------------------------------
+using Handler = void (*)(Context&, const deck::Keyword&, const KeywordOptions&);
+
+// build_mesh.cpp
+void readNodes(Context&, const deck::Keyword&, const KeywordOptions&);
+void readSolids(Context&, const deck::Keyword&, const KeywordOptions&);
+void readParts(Context&, const deck::Keyword&, const KeywordOptions&);
+void readSectionSolid(Context&, const deck::Keyword&, const KeywordOptions&);
+void readMatElastic(Context&, const deck::Keyword&, const KeywordOptions&);
+void readMatPlasticKinematic(Context&, const deck::Keyword&, const KeywordOptions&);
+void readMatPiecewiseLinear(Context&, const deck::Keyword&, const KeywordOptions&);
+void readHourglass(Context&, const deck::Keyword&, const KeywordOptions&);
+// Definitions Crumple does not support (*MAT_RIGID, *SECTION_SHELL, *DEFINE_TABLE, ...):
+// reported, and their id remembered so that a use of it can say what it is.
+void readUnsupportedDefinition(Context&, const deck::Keyword&, Kind kind);
+void finishNodes(Context&);
+void finishDefinitions(Context&);
+void finishParts(Context&);
+void finishSolids(Context&);
+
+// build_sets.cpp
+void readCurve(Context&, const deck::Keyword&, const KeywordOptions&);
+void readBox(Context&, const deck::Keyword&, const KeywordOptions&);
+void readCoordinateSystem(Context&, const deck::Keyword&, const KeywordOptions&);
+void readNodeSetList(Context&, const deck::Keyword&, const KeywordOptions&);
+void readNodeSetGeneral(Context&, const deck::Keyword&, const KeywordOptions&);
+void readPartSetList(Context&, const deck::Keyword&, const KeywordOptions&);
+void readSegmentSet(Context&, const deck::Keyword&, const KeywordOptions&);
+void finishCurves(Context&);
+
+// build_conditions.cpp
+void readSpc(Context&, const deck::Keyword&, const KeywordOptions&);
+void readPrescribedMotion(Context&, const deck::Keyword&, const KeywordOptions&);
+void readInitialVelocity(Context&, const deck::Keyword&, const KeywordOptions&);
+void readInitialVelocityNode(Context&, const deck::Keyword&, const KeywordOptions&);
+void readInitialVelocityGeneration(Context&, const deck::Keyword&, const KeywordOptions&);
+void readLoadNode(Context&, const deck::Keyword&, const KeywordOptions&);
+void readLoadSegment(Context&, const deck::Keyword&, const KeywordOptions&);
+void readLoadSegmentSet(Context&, const deck::Keyword&, const KeywordOptions&);
+void readLoadBody(Context&, const deck::Keyword&, const KeywordOptions&);
+void readRigidWallPlanar(Context&, const deck::Keyword&, const KeywordOptions&);
+void finishConditions(Context&);
+
+// build_controls.cpp
+void readTitle(Context&, const deck::Keyword&, const KeywordOptions&);
+void readControlTermination(Context&, const deck::Keyword&, const KeywordOptions&);
+void readControlTimestep(Context&, const deck::Keyword&, const KeywordOptions&);
+void readControlHourglass(Context&, const deck::Keyword&, const KeywordOptions&);
+void readControlBulkViscosity(Context&, const deck::Keyword&, const KeywordOptions&);
+void readControlEnergy(Context&, const deck::Keyword&, const KeywordOptions&);
+// Keywords read only to report their non-default fields (*CONTROL_SOLID, ...).
+void readIgnoredControl(Context&, const deck::Keyword&, const KeywordOptions&);
+void readDatabaseAscii(Context&, const deck::Keyword&, const KeywordOptions&);
+void readDatabaseD3plot(Context&, const deck::Keyword&, const KeywordOptions&);
+void readHistoryNode(Context&, const deck::Keyword&, const KeywordOptions&);
+void readHistoryNodeSet(Context&, const deck::Keyword&, const KeywordOptions&);
+void finishControls(Context&);
+
+}  // namespace crumple::model::build

@@ -1,0 +1,175 @@
+// Meaning of *TITLE, the *CONTROL_ keywords and the *DATABASE_ output requests Crumple
+// honours (LS-DYNA Keyword Manual Vol. I). Keywords read only so that their non-default
+// fields can be reported go through readIgnoredControl.
+#include <algorithm>
+
+#include "model/build_context.hpp"
+
+namespace crumple::model::build {
+
+namespace {
+using deck::Card;
+using deck::CardCursor;
+using deck::keywordSpec;
+}  // namespace
+
+void readTitle(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  CardCursor cur(kw, ctx.deck);
+  const Card& c = cur.readOptional(keywordSpec("*TITLE").card("card 1"));
+  // The first *TITLE wins; a deck has one (case-specific ones are skipped by the reader).
+  if (ctx.model.title.empty()) ctx.model.title = c.text("TITLE");
+  ctx.collect(cur);
+}
+
+void readControlTermination(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  CardCursor cur(kw, ctx.deck);
+  const Card& c = cur.readOptional(keywordSpec("*CONTROL_TERMINATION").card("card 1"));
+  Controls& k = ctx.model.controls;
+  k.end_time = c.real("ENDTIM");
+  if (k.end_time < 0) c.fail("ENDTIM", "must not be negative");
+  k.end_cycle = c.integer("ENDCYC");
+  k.dt_min_ratio = c.real("DTMIN");
+  // ENDMAS defaults to 1e8 (%), i.e. no check; Controls keeps 0 for "none".
+  const double endmas = c.real("ENDMAS");
+  k.end_mass_ratio = endmas >= 1e8 ? 0.0 : endmas;
+  ctx.collect(cur);
+}
+
+void readControlTimestep(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*CONTROL_TIMESTEP");
+  CardCursor cur(kw, ctx.deck);
+  const Card& c = cur.readOptional(spec.card("card 1"));
+  cur.readOptional(spec.card("card 2"));
+  Controls& k = ctx.model.controls;
+  k.dt_init = c.real("DTINIT");
+  k.tssfac = c.real("TSSFAC");
+  if (k.tssfac <= 0 || k.tssfac > 1) c.fail("TSSFAC", "must lie in (0, 1]");
+  k.dt2ms = c.real("DT2MS");
+  if (const int64_t lctm = c.integer("LCTM"); lctm != 0)
+    k.dt_max_curve = ctx.curve(c, "LCTM", lctm);
+  ctx.erode_flag = c.integer("ERODE");
+  ctx.collect(cur);
+}
+
+void readControlHourglass(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  CardCursor cur(kw, ctx.deck);
+  const Card& c = cur.readOptional(keywordSpec("*CONTROL_HOURGLASS").card("card 1"));
+  Controls& k = ctx.model.controls;
+  const int64_t ihq = c.integer("IHQ");
+  if (ihq < 1 || ihq > 5)
+    ctx.reject(c, "IHQ", "IHQ " + std::to_string(ihq) + " is not supported (1 to 5 are)");
+  else
+    k.hourglass_ihq = static_cast<int>(ihq);
+  k.hourglass_qh = c.real("QH");
+  if (k.hourglass_qh < 0) c.fail("QH", "must not be negative");
+  ctx.collect(cur);
+}
+
+void readControlBulkViscosity(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  CardCursor cur(kw, ctx.deck);
+  const Card& c = cur.readOptional(keywordSpec("*CONTROL_BULK_VISCOSITY").card("card 1"));
+  Controls& k = ctx.model.controls;
+  k.q_quadratic = c.real("Q1");
+  k.q_linear = c.real("Q2");
+  if (k.q_quadratic < 0) c.fail("Q1", "must not be negative");
+  if (k.q_linear < 0) c.fail("Q2", "must not be negative");
+  ctx.collect(cur);
+}
+
+// HGEN 2 and RWEN 2 include hourglass and rigid-wall energy in the energy balance.
+void readControlEnergy(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  CardCursor cur(kw, ctx.deck);
+  const Card& c = cur.readOptional(keywordSpec("*CONTROL_ENERGY").card("card 1"));
+  Controls& k = ctx.model.controls;
+  k.hourglass_energy = c.integer("HGEN") == 2;
+  k.rigidwall_energy = c.integer("RWEN") == 2;
+  ctx.collect(cur);
+}
+
+void readIgnoredControl(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec(kw.name);
+  CardCursor cur(kw, ctx.deck);
+  for (const auto& card : spec.cards) {
+    if (cur.atEnd()) break;
+    cur.read(card);
+  }
+  ctx.collect(cur);
+}
+
+void readDatabaseAscii(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  CardCursor cur(kw, ctx.deck);
+  const Card& c = cur.readOptional(keywordSpec(kw.name).card("card 1"));
+  Controls& k = ctx.model.controls;
+  const double dt = c.real("DT");
+  if (dt < 0) c.fail("DT", "must not be negative");
+  if (kw.name == "*DATABASE_GLSTAT") k.glstat_dt = dt;
+  if (kw.name == "*DATABASE_MATSUM") k.matsum_dt = dt;
+  if (kw.name == "*DATABASE_NODOUT") k.nodout_dt = dt;
+  if (kw.name == "*DATABASE_RWFORC") k.rwforc_dt = dt;
+  ctx.collect(cur);
+}
+
+void readDatabaseD3plot(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*DATABASE_BINARY_D3PLOT");
+  CardCursor cur(kw, ctx.deck);
+  const Card& c = cur.readOptional(spec.card("card 1"));
+  cur.readOptional(spec.card("card 2"));
+  ctx.model.controls.d3plot_dt = c.real("DT");
+  if (ctx.model.controls.d3plot_dt < 0) c.fail("DT", "must not be negative");
+  // NPLTC: the number of plot states, DT = ENDTIM / NPLTC when DT is not given.
+  ctx.d3plot_npltc = c.integer("NPLTC");
+  ctx.collect(cur);
+}
+
+void readHistoryNode(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*DATABASE_HISTORY_NODE");
+  CardCursor cur(kw, ctx.deck);
+  auto add = [&](int32_t n) {
+    auto& h = ctx.model.history_nodes;
+    if (std::find(h.begin(), h.end(), n) == h.end()) h.push_back(n);
+  };
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    if (opts.has("ID")) {
+      // One node per card with its heading.
+      const Card& c = cur.read(spec.card("id card"));
+      add(ctx.node(c, "ID", c.integer("ID")));
+    } else {
+      const Card& c = cur.read(spec.card("card 1"));
+      for (int k = 1; k <= 8; ++k) {
+        const std::string f = "ID" + std::to_string(k);
+        if (const int64_t id = c.integer(f); id != 0) add(ctx.node(c, f, id));
+      }
+    }
+    ctx.collect(cur);
+  }
+}
+
+void readHistoryNodeSet(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*DATABASE_HISTORY_NODE_SET").card("card 1");
+  CardCursor cur(kw, ctx.deck);
+  auto& h = ctx.model.history_nodes;
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec);
+    for (int k = 1; k <= 8; ++k) {
+      const std::string f = "ID" + std::to_string(k);
+      if (const int64_t id = c.integer(f); id != 0)
+        for (int32_t n : ctx.nodeSet(c, f, id))
+          if (std::find(h.begin(), h.end(), n) == h.end()) h.push_back(n);
+    }
+    ctx.collect(cur);
+  }
+}
+
+void finishControls(Context& ctx) {
+  Controls& k = ctx.model.controls;
+  if (k.d3plot_dt == 0.0 && ctx.d3plot_npltc > 0 && k.end_time > 0)
+    k.d3plot_dt = k.end_time / static_cast<double>(ctx.d3plot_npltc);
+  // Elements are eroded when their step falls below DTMIN with ERODE=1 (*CONTROL_TIMESTEP),
+  // or below a material's TDEL (*MAT_024).
+  k.erode_on_dtmin = ctx.erode_flag == 1 && k.dt_min_ratio > 0;
+  for (const auto& m : ctx.model.materials)
+    if (const auto* p = std::get_if<PiecewiseLinearLaw>(&m.law); p && p->tdel > 0)
+      k.erode_on_dtmin = true;
+}
+
+}  // namespace crumple::model::build

@@ -1,0 +1,416 @@
+// Meaning of the mesh and its definitions: *NODE, *ELEMENT_SOLID, *PART, *SECTION_SOLID,
+// *MAT_ELASTIC (001), *MAT_PLASTIC_KINEMATIC (003), *MAT_PIECEWISE_LINEAR_PLASTICITY (024),
+// *HOURGLASS (LS-DYNA Keyword Manual Vol. I and II).
+#include <algorithm>
+#include <numeric>
+
+#include "model/build_context.hpp"
+#include "util/error.hpp"
+
+namespace crumple::model::build {
+
+namespace {
+
+using deck::Card;
+using deck::CardCursor;
+using deck::keywordSpec;
+
+// *NODE TC/RC codes (Keyword Manual, *NODE): 1 x, 2 y, 3 z, 4 x+y, 5 y+z, 6 z+x, 7 all.
+DofMask codeMask(int code) {
+  static constexpr DofMask masks[8] = {0, 1, 2, 4, 3, 6, 5, 7};
+  return masks[code];
+}
+
+int64_t positiveId(const Card& c, std::string_view field) {
+  const int64_t id = c.integer(field);
+  if (id <= 0) c.fail(field, "the id must be a positive integer, not " + std::to_string(id));
+  return id;
+}
+
+// Order of `ids` ascending (stable for equal ids, so the first definition comes first).
+template <class Get>
+std::vector<std::size_t> ascending(std::size_t n, Get id) {
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return id(a) < id(b); });
+  return order;
+}
+
+std::string title(CardCursor& cur, const deck::KeywordSpec& spec, const KeywordOptions& opts) {
+  return opts.has("TITLE") ? cur.read(spec.card("title card")).text("TITLE") : std::string{};
+}
+
+// MID, RO, E, PR of card 1, shared by the three materials, checked as LS-DYNA requires.
+Material readMaterialBase(Context& ctx, const Card& c, std::string t) {
+  Material m;
+  m.id = positiveId(c, "MID");
+  ctx.define(Kind::Material, m.id, c, "MID");
+  m.title = std::move(t);
+  m.where = c.where();
+  m.rho = c.real("RO");
+  if (m.rho <= 0) c.fail("RO", "the density must be positive");
+  return m;
+}
+
+void checkElastic(const Card& c, double E, double nu) {
+  if (E <= 0) c.fail("E", "Young's modulus must be positive");
+  if (!(nu > -1.0 && nu < 0.5)) c.fail("PR", "Poisson's ratio must lie in (-1, 0.5)");
+}
+
+void checkYield(const Card& c, double E, double sigy, double etan) {
+  if (sigy <= 0) c.fail("SIGY", "the yield stress must be positive");
+  if (etan < 0 || etan >= E) c.fail("ETAN", "the tangent modulus must lie in [0, E)");
+}
+
+}  // namespace
+
+void readNodes(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*NODE").card("card 1");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const auto& c = cur.read(spec);
+    const int64_t id = positiveId(c, "NID");
+    const auto tc = c.integer("TC"), rc = c.integer("RC");
+    if (tc < 0 || tc > 7) c.fail("TC", "must be 0 to 7");
+    if (rc < 0 || rc > 7) c.fail("RC", "must be 0 to 7");
+    ctx.node_input.push_back({id,
+                              {c.real("X"), c.real("Y"), c.real("Z")},
+                              static_cast<int>(tc),
+                              static_cast<int>(rc),
+                              c.fileIndex(),
+                              c.lineNumber()});
+    ctx.collect(cur);
+  }
+}
+
+void finishNodes(Context& ctx) {
+  auto& in = ctx.node_input;
+  const auto order = ascending(in.size(), [&](std::size_t i) { return in[i].id; });
+  Nodes& nodes = ctx.model.nodes;
+  nodes.id.reserve(in.size());
+  nodes.x.reserve(in.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const auto& n = in[order[k]];
+    if (k > 0 && in[order[k - 1]].id == n.id) {
+      const auto& first = in[order[k - 1]];
+      throw util::InputError(ctx.deck.loc(n.file, n.line).str() +
+                             ": *NODE card 1 field 1 (NID): node " + std::to_string(n.id) +
+                             " is already defined at " +
+                             ctx.deck.loc(first.file, first.line).str());
+    }
+    const auto index = static_cast<int32_t>(nodes.id.size());
+    nodes.id.push_back(n.id);
+    nodes.x.push_back(n.x);
+    // TC/RC constrain the node like *BOUNDARY_SPC_NODE (Keyword Manual, *NODE).
+    const DofMask mask = static_cast<DofMask>(codeMask(n.tc) | (codeMask(n.rc) << 3));
+    if (mask) ctx.spc_masks[index] |= mask;
+  }
+  in.clear();
+  in.shrink_to_fit();
+  ctx.model.initial_velocity.assign(nodes.size(), Vec3{});
+  ctx.model.finalize();
+}
+
+void readSolids(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*ELEMENT_SOLID");
+  static constexpr std::string_view kN[10] = {"N1", "N2", "N3", "N4", "N5",
+                                              "N6", "N7", "N8", "N9", "N10"};
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec.card("card 1"));
+    const int64_t eid = positiveId(c, "EID");
+    const int32_t part = ctx.part(c, "PID", c.integer("PID"));
+    if (!ctx.part_problem[part].empty()) ctx.reject(c, "PID", ctx.part_problem[part]);
+    // Card 1 with EID and PID only: the nodes follow on a second card of ten 8-character
+    // fields (Keyword Manual, *ELEMENT_SOLID, the format of 10-node tetrahedra that
+    // pre-processors also use for hexahedra).
+    const bool two_cards = std::all_of(kN, kN + 8, [&](auto n) { return c.blank(n); });
+    const Card* nc = &c;
+    if (two_cards) {
+      if (cur.atEnd()) c.fail("N1", "the element has no nodes");
+      nc = &cur.read(spec.card("card 2"));
+      for (auto n : {kN[8], kN[9]})
+        if (nc->integer(n) != 0)
+          ctx.reject(*nc, n, "10-node tetrahedra are not supported (8-node solids only)");
+    }
+    std::array<int64_t, 8> ids{};
+    for (int i = 0; i < 8; ++i) ids[i] = nc->integer(kN[i]);
+    // A tetrahedron given by N1..N4 alone: LS-DYNA's degenerate form repeats N4 (n4=...=n8).
+    if (ids[3] != 0 && std::all_of(ids.begin() + 4, ids.end(), [](int64_t n) { return n == 0; }))
+      std::fill(ids.begin() + 4, ids.end(), ids[3]);
+    Context::SolidInput s{eid, part, {}, c.fileIndex(), c.lineNumber()};
+    for (int i = 0; i < 8; ++i) {
+      if (ids[i] == 0) nc->fail(kN[i], "node id missing");
+      s.nodes[i] = ctx.node(*nc, kN[i], ids[i]);
+    }
+    ctx.solid_input.push_back(s);
+    ctx.collect(cur);
+  }
+}
+
+void finishSolids(Context& ctx) {
+  auto& in = ctx.solid_input;
+  const auto order = ascending(in.size(), [&](std::size_t i) { return in[i].id; });
+  Solids& solids = ctx.model.solids;
+  solids.id.reserve(in.size());
+  solids.part.reserve(in.size());
+  solids.nodes.reserve(in.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const auto& e = in[order[k]];
+    if (k > 0 && in[order[k - 1]].id == e.id) {
+      const auto& first = in[order[k - 1]];
+      throw util::InputError(ctx.deck.loc(e.file, e.line).str() +
+                             ": *ELEMENT_SOLID card 1 field 1 (EID): element " +
+                             std::to_string(e.id) + " is already defined at " +
+                             ctx.deck.loc(first.file, first.line).str());
+    }
+    solids.id.push_back(e.id);
+    solids.part.push_back(e.part);
+    solids.nodes.push_back(e.nodes);
+  }
+  in.clear();
+  in.shrink_to_fit();
+}
+
+void readParts(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*PART");
+  CardCursor cur(kw, ctx.deck);
+  // One keyword may hold several parts, each a heading card and card 2.
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const std::string heading = cur.read(spec.card("card 1")).text("HEADING");
+    const Card& c = cur.read(spec.card("card 2"));
+    Part p;
+    p.id = positiveId(c, "PID");
+    p.title = heading;
+    p.where = c.where();
+    std::string problem;
+    auto resolve = [&](std::string_view field, Kind kind,
+                       const std::unordered_map<int64_t, int32_t>& index) -> int32_t {
+      const int64_t id = c.integer(field);
+      if (id == 0) c.fail(field, "a " + std::string(kindName(kind)) + " id is required");
+      auto it = index.find(id);
+      if (it != index.end()) return it->second;
+      if (!ctx.isUnsupported(kind, id)) c.fail(field, ctx.undefinedMessage(kind, id));
+      if (problem.empty())
+        problem = "part " + std::to_string(p.id) + " uses " + ctx.unsupportedDefinition(kind, id) +
+                  ", which is not supported yet";
+      return kNone;
+    };
+    p.section = resolve("SECID", Kind::Section, ctx.section_index);
+    p.material = resolve("MID", Kind::Material, ctx.material_index);
+    if (const int64_t hg = c.integer("HGID"); hg != 0) {
+      auto it = ctx.hourglass_index.find(hg);
+      if (it == ctx.hourglass_index.end())
+        c.fail("HGID", ctx.undefinedMessage(Kind::Hourglass, hg));
+      p.hourglass = it->second;
+    }
+    if (const int64_t eos = c.integer("EOSID"); eos != 0)
+      ctx.ignore(kw.name, "EOSID",
+                 "equation of state " + std::to_string(eos) +
+                     " is not used: the supported materials have their own pressure response",
+                 c.where());
+    ctx.model.parts.push_back(std::move(p));
+    ctx.part_problem.push_back(std::move(problem));
+    ctx.collect(cur);
+  }
+}
+
+void finishParts(Context& ctx) {
+  auto& parts = ctx.model.parts;
+  const auto order = ascending(parts.size(), [&](std::size_t i) { return parts[i].id; });
+  std::vector<Part> sorted;
+  std::vector<std::string> problems;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const Part& p = parts[order[k]];
+    if (k > 0 && parts[order[k - 1]].id == p.id)
+      throw util::InputError(p.where.str() + ": *PART card 2 field 1 (PID): part " +
+                             std::to_string(p.id) + " is already defined at " +
+                             parts[order[k - 1]].where.str());
+    sorted.push_back(p);
+    problems.push_back(ctx.part_problem[order[k]]);
+  }
+  parts = std::move(sorted);
+  ctx.part_problem = std::move(problems);
+  ctx.model.finalize();
+}
+
+void readSectionSolid(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*SECTION_SOLID");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    title(cur, spec, opts);
+    const Card& c = cur.read(spec.card("card 1"));
+    SectionSolid s;
+    s.id = positiveId(c, "SECID");
+    s.where = c.where();
+    const auto elform = c.integer("ELFORM");
+    // ELFORM (Keyword Manual, *SECTION_SOLID): 1 constant stress (default), 2 fully
+    // integrated selective-reduced; 0 is the one-point corotational form of
+    // *MAT_MODIFIED_HONEYCOMB and -1/-2 the fully integrated forms for poor aspect ratios,
+    // run here as their nearest supported relative.
+    if (elform == 1 || elform == 2) {
+      s.elform = static_cast<int>(elform);
+    } else if (elform == 0 || elform == -1 || elform == -2) {
+      s.elform = elform == 0 ? 1 : 2;
+      ctx.ignore(
+          kw.name, "ELFORM",
+          "ELFORM " + std::to_string(elform) + " is run as ELFORM " + std::to_string(s.elform),
+          c.where());
+    } else {
+      // A definition Crumple cannot run: an error only when an element uses it.
+      ctx.define(Kind::Section, s.id, c, "SECID");
+      ctx.defineUnsupported(Kind::Section, s.id, kw.name + " ELFORM=" + std::to_string(elform),
+                            c.where());
+      ctx.reportUnsupported(kw, "ELFORM " + std::to_string(elform) +
+                                    " not supported (1 and 2 are; 0 runs as 1, -1 and -2 as 2)");
+      ctx.collect(cur);
+      continue;
+    }
+    ctx.define(Kind::Section, s.id, c, "SECID");
+    ctx.model.solid_sections.push_back(s);
+    ctx.collect(cur);
+  }
+}
+
+void readMatElastic(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*MAT_ELASTIC");
+  CardCursor cur(kw, ctx.deck);
+  std::string t = title(cur, spec, opts);
+  const Card& c = cur.read(spec.card("card 1"));
+  Material m = readMaterialBase(ctx, c, std::move(t));
+  ElasticLaw law{c.real("E"), c.real("PR")};
+  checkElastic(c, law.E, law.nu);
+  m.law = law;
+  ctx.model.materials.push_back(std::move(m));
+  ctx.collect(cur);
+}
+
+void readMatPlasticKinematic(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*MAT_PLASTIC_KINEMATIC");
+  CardCursor cur(kw, ctx.deck);
+  std::string t = title(cur, spec, opts);
+  const Card& c = cur.read(spec.card("card 1"));
+  const Card& c2 = cur.readOptional(spec.card("card 2"));
+  Material m = readMaterialBase(ctx, c, std::move(t));
+  PlasticKinematicLaw law;
+  law.E = c.real("E");
+  law.nu = c.real("PR");
+  checkElastic(c, law.E, law.nu);
+  law.sigy = c.real("SIGY");
+  law.etan = c.real("ETAN");
+  checkYield(c, law.E, law.sigy, law.etan);
+  law.beta = c.real("BETA");
+  if (law.beta < 0 || law.beta > 1) c.fail("BETA", "must lie in [0, 1]");
+  law.src = c2.real("SRC");
+  law.srp = c2.real("SRP");
+  if (law.src < 0) c2.fail("SRC", "must not be negative");
+  if (law.srp < 0) c2.fail("SRP", "must not be negative");
+  law.fs = c2.real("FS");
+  if (law.fs < 0)
+    ctx.reject(c2, "FS", "a negative FS (failure by *MAT_ADD_EROSION) is not supported");
+  m.law = law;
+  ctx.model.materials.push_back(std::move(m));
+  ctx.collect(cur);
+}
+
+void readMatPiecewiseLinear(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*MAT_PIECEWISE_LINEAR_PLASTICITY");
+  CardCursor cur(kw, ctx.deck);
+  std::string t = title(cur, spec, opts);
+  const Card& c = cur.read(spec.card("card 1"));
+  const Card& c2 = cur.readOptional(spec.card("card 2"));
+  const Card& c3 = cur.readOptional(spec.card("card 3"));
+  const Card& c4 = cur.readOptional(spec.card("card 4"));
+  Material m = readMaterialBase(ctx, c, std::move(t));
+  PiecewiseLinearLaw law;
+  law.E = c.real("E");
+  law.nu = c.real("PR");
+  checkElastic(c, law.E, law.nu);
+  law.sigy = c.real("SIGY");
+  law.etan = c.real("ETAN");
+  law.fail = c.real("FAIL");
+  if (law.fail < 0) {
+    ctx.reject(c, "FAIL", "a user failure subroutine (FAIL < 0) is not supported");
+    law.fail = 0;
+  }
+  law.tdel = c.real("TDEL");
+  law.c = c2.real("C");
+  law.p = c2.real("P");
+  if (c2.integer("LCSR") != 0)
+    ctx.reject(c2, "LCSR", "a strain-rate scaling curve (LCSR) is not supported");
+  // Hardening (Keyword Manual, *MAT_024): LCSS, else the EPS/ES pairs of cards 3-4, else
+  // SIGY and ETAN.
+  const int64_t lcss = c2.integer("LCSS");
+  std::vector<double> eps, es;
+  for (int i = 1; i <= 8; ++i) {
+    const std::string e = "EPS" + std::to_string(i), s = "ES" + std::to_string(i);
+    const double ev = c3.real(e), sv = c4.real(s);
+    if (i > 1 && c3.blank(e) && c4.blank(s)) break;
+    if (i > 1 && ev == 0.0 && sv == 0.0) break;
+    eps.push_back(ev);
+    es.push_back(sv);
+  }
+  const bool table = es.size() >= 2 || (es.size() == 1 && es[0] != 0.0);
+  if (lcss != 0) {
+    if (ctx.model.curveIndex(lcss) == kNone && ctx.isUnsupported(Kind::Curve, lcss))
+      ctx.reject(c2, "LCSS", ctx.undefinedMessage(Kind::Curve, lcss));
+    else
+      law.lcss = ctx.curve(c2, "LCSS", lcss);
+  } else if (table) {
+    if (es.size() < 2) c4.fail("ES2", "at least two points (EPS1/ES1, EPS2/ES2) are needed");
+    for (std::size_t i = 1; i < eps.size(); ++i)
+      if (eps[i] <= eps[i - 1])
+        c3.fail("EPS" + std::to_string(i + 1), "the plastic strains must increase");
+    // A curve of its own, id -MID, so that the solver sees one hardening representation.
+    Curve curve;
+    curve.id = -m.id;
+    curve.x = eps;
+    curve.y = es;
+    law.lcss = static_cast<int32_t>(ctx.model.curves.size());
+    ctx.model.curves.push_back(std::move(curve));
+  } else {
+    checkYield(c, law.E, law.sigy, law.etan);
+  }
+  m.law = law;
+  ctx.model.materials.push_back(std::move(m));
+  ctx.collect(cur);
+}
+
+void readHourglass(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*HOURGLASS");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    title(cur, spec, opts);
+    const Card& c = cur.read(spec.card("card 1"));
+    Hourglass h;
+    h.id = positiveId(c, "HGID");
+    ctx.define(Kind::Hourglass, h.id, c, "HGID");
+    h.ihq = static_cast<int>(c.integer("IHQ"));
+    if (h.ihq < 1 || h.ihq > 5)
+      ctx.reject(c, "IHQ", "IHQ " + std::to_string(h.ihq) + " is not supported (1 to 5 are)");
+    h.qm = c.real("QM");
+    if (h.qm < 0) c.fail("QM", "must not be negative");
+    // QB and QW default to QM (Keyword Manual, *HOURGLASS); Crumple uses QM throughout.
+    for (std::string_view f : {"QB", "QW"}) {
+      const double v = c.real(f);
+      if (v != 0.0 && v != h.qm)
+        ctx.ignore(kw.name, f, "value " + std::to_string(v) + " is read but QM is used", c.where());
+    }
+    ctx.model.hourglass.push_back(h);
+    ctx.collect(cur);
+  }
+}
+
+void finishDefinitions(Context& ctx) {
+  auto sortById = [](auto& v, auto& index) {
+    std::stable_sort(v.begin(), v.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
+    index.clear();
+    for (std::size_t i = 0; i < v.size(); ++i) index.emplace(v[i].id, static_cast<int32_t>(i));
+  };
+  sortById(ctx.model.materials, ctx.material_index);
+  sortById(ctx.model.solid_sections, ctx.section_index);
+  sortById(ctx.model.hourglass, ctx.hourglass_index);
+}
+
+}  // namespace crumple::model::build

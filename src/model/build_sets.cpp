@@ -1,0 +1,294 @@
+// Meaning of the definitions other keywords refer to: *DEFINE_CURVE, *DEFINE_BOX,
+// *DEFINE_COORDINATE_SYSTEM, *SET_NODE_LIST, *SET_NODE_GENERAL, *SET_PART_LIST,
+// *SET_SEGMENT (LS-DYNA Keyword Manual Vol. I).
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+#include "model/build_context.hpp"
+
+namespace crumple::model::build {
+
+namespace {
+
+using deck::Card;
+using deck::CardCursor;
+using deck::keywordSpec;
+
+constexpr std::string_view kRange[8] = {"B1", "E1", "B2", "E2", "B3", "E3", "B4", "E4"};
+
+Vec3 sub(const Vec3& a, const Vec3& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double norm(const Vec3& a) {
+  return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+}
+
+void sortUnique(std::vector<int32_t>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+// Card 1 of a *SET_ keyword (after the _TITLE line): its SID, defined once.
+int64_t readSetId(Context& ctx, CardCursor& cur, const deck::KeywordSpec& spec,
+                  const KeywordOptions& opts, Kind kind) {
+  if (opts.has("TITLE")) cur.read(spec.card("title card"));
+  const Card& c = cur.read(spec.card("card 1"));
+  const int64_t sid = c.integer("SID");
+  if (sid <= 0) c.fail("SID", "the set id must be a positive integer");
+  ctx.define(kind, sid, c, "SID");
+  return sid;
+}
+
+// _GENERATE: the ids between B and E (inclusive) that exist, from the ascending id list.
+template <class Ids, class Add>
+void generate(const Card& c, const Ids& ids, Add add) {
+  for (int k = 0; k < 8; k += 2) {
+    const int64_t b = c.integer(kRange[k]), e = c.integer(kRange[k + 1]);
+    if (b == 0 && e == 0) continue;
+    if (b > e) c.fail(kRange[k + 1], "the range ends before it begins");
+    for (auto it = std::lower_bound(ids.begin(), ids.end(), b); it != ids.end() && *it <= e; ++it)
+      add(static_cast<int32_t>(it - ids.begin()));
+  }
+}
+
+// Members of a set that name a node or part that does not exist make the set unusable, not
+// the deck: exported decks carry such leftovers (contact surfaces of deleted meshes), and
+// LS-DYNA too only needs the sets something uses. The first bad member is remembered and
+// reported if the set is used.
+class Members {
+ public:
+  Members(Context& ctx, Kind kind, int64_t sid) : ctx_(ctx), kind_(kind), sid_(sid) {}
+  // Index of node or part `id`, or kNone after recording the problem.
+  int32_t resolve(const Card& c, std::string_view field, int64_t id, bool part) {
+    const int32_t i = part ? ctx_.model.partIndex(id) : ctx_.model.nodeIndex(id);
+    if (i == kNone && problem_.empty())
+      problem_ = c.context(field) + ": " + (part ? "part " : "node ") + std::to_string(id) +
+                 " is not defined";
+    return i;
+  }
+  // True if the set can be stored; otherwise it is recorded as broken.
+  bool finish(const deck::Keyword& kw) {
+    if (problem_.empty()) return true;
+    ctx_.defineBroken(kind_, sid_, problem_);
+    ctx_.ignore(kw.name, "SID",
+                std::string(kindName(kind_)) + " " + std::to_string(sid_) +
+                    " is skipped (an error if something uses it): " + problem_,
+                ctx_.deck.loc(kw));
+    return false;
+  }
+
+ private:
+  Context& ctx_;
+  Kind kind_;
+  int64_t sid_;
+  std::string problem_;
+};
+
+}  // namespace
+
+void readCurve(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*DEFINE_CURVE");
+  CardCursor cur(kw, ctx.deck);
+  if (opts.has("TITLE")) cur.read(spec.card("title card"));
+  const Card& c = cur.read(spec.card("card 1"));
+  Curve curve;
+  curve.id = c.integer("LCID");
+  if (curve.id <= 0) c.fail("LCID", "the curve id must be a positive integer");
+  ctx.define(Kind::Curve, curve.id, c, "LCID");
+  const double sfa = c.real("SFA"), sfo = c.real("SFO"), offa = c.real("OFFA"),
+               offo = c.real("OFFO");
+  // Keyword Manual, *DEFINE_CURVE, remarks: the values are scaled after the offsets are
+  // applied, x = SFA (a + OFFA), y = SFO (o + OFFO); SFA and SFO of 0 mean 1.
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& p = cur.read(spec.card("point card"));
+    const double x = sfa * (p.real("A1") + offa);
+    if (!curve.x.empty() && x < curve.x.back())
+      p.fail("A1", "the abscissa values must not decrease");
+    curve.x.push_back(x);
+    curve.y.push_back(sfo * (p.real("O1") + offo));
+  }
+  if (curve.x.empty()) c.fail("LCID", "the curve has no points");
+  ctx.model.curves.push_back(std::move(curve));
+  ctx.collect(cur);
+}
+
+void finishCurves(Context& ctx) {
+  auto& curves = ctx.model.curves;
+  std::stable_sort(curves.begin(), curves.end(),
+                   [](const Curve& a, const Curve& b) { return a.id < b.id; });
+  ctx.model.finalize();
+}
+
+void readBox(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*DEFINE_BOX");
+  CardCursor cur(kw, ctx.deck);
+  if (opts.has("TITLE")) cur.read(spec.card("title card"));
+  const Card& c = cur.read(spec.card("card 1"));
+  const int64_t id = c.integer("BOXID");
+  if (id <= 0) c.fail("BOXID", "the box id must be a positive integer");
+  ctx.define(Kind::Box, id, c, "BOXID");
+  Box b{{c.real("XMN"), c.real("YMN"), c.real("ZMN")},
+        {c.real("XMX"), c.real("YMX"), c.real("ZMX")}};
+  static constexpr std::string_view kMax[3] = {"XMX", "YMX", "ZMX"};
+  for (int i = 0; i < 3; ++i)
+    if (b.hi[i] < b.lo[i]) c.fail(kMax[i], "the maximum is below the minimum");
+  ctx.boxes.emplace(id, b);
+  ctx.collect(cur);
+}
+
+// Local x along O->L, z normal to the plane O, L, P, y = z x x (Keyword Manual,
+// *DEFINE_COORDINATE_SYSTEM).
+void readCoordinateSystem(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*DEFINE_COORDINATE_SYSTEM");
+  CardCursor cur(kw, ctx.deck);
+  if (opts.has("TITLE")) cur.read(spec.card("title card"));
+  const Card& c = cur.read(spec.card("card 1"));
+  const Card& c2 = cur.read(spec.card("card 2"));
+  const int64_t id = c.integer("CID");
+  if (id <= 0) c.fail("CID", "the coordinate system id must be a positive integer");
+  ctx.define(Kind::CoordinateSystem, id, c, "CID");
+  if (c.integer("CIDL") != 0)
+    ctx.reject(c, "CIDL", "points given in another local system (CIDL) are not supported");
+  const Vec3 o{c.real("XO"), c.real("YO"), c.real("ZO")};
+  const Vec3 ex = sub({c.real("XL"), c.real("YL"), c.real("ZL")}, o);
+  const Vec3 ez = cross(ex, sub({c2.real("XP"), c2.real("YP"), c2.real("ZP")}, o));
+  if (norm(ex) == 0.0) c.fail("XL", "the point on the local x axis coincides with the origin");
+  if (norm(ez) == 0.0) c2.fail("XP", "the point in the local xy plane lies on the local x axis");
+  Frame f;
+  for (int i = 0; i < 3; ++i) {
+    f.axis[0][i] = ex[i] / norm(ex);
+    f.axis[2][i] = ez[i] / norm(ez);
+  }
+  f.axis[1] = cross(f.axis[2], f.axis[0]);
+  ctx.frames.emplace(id, f);
+  ctx.collect(cur);
+}
+
+void readNodeSetList(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*SET_NODE_LIST");
+  CardCursor cur(kw, ctx.deck);
+  const int64_t sid = readSetId(ctx, cur, spec, opts, Kind::NodeSet);
+  Members members(ctx, Kind::NodeSet, sid);
+  std::vector<int32_t> nodes;
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    if (opts.has("GENERATE")) {
+      generate(cur.read(spec.card("range card")), ctx.model.nodes.id,
+               [&](int32_t i) { nodes.push_back(i); });
+    } else {
+      const Card& c = cur.read(spec.card("card 2"));
+      for (int k = 1; k <= 8; ++k) {
+        const std::string f = "NID" + std::to_string(k);
+        if (const int64_t id = c.integer(f); id != 0)
+          nodes.push_back(members.resolve(c, f, id, false));
+      }
+    }
+    ctx.collect(cur);
+  }
+  if (!members.finish(kw)) return;
+  sortUnique(nodes);
+  ctx.model.node_sets[sid] = std::move(nodes);
+}
+
+void readPartSetList(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*SET_PART_LIST");
+  CardCursor cur(kw, ctx.deck);
+  const int64_t sid = readSetId(ctx, cur, spec, opts, Kind::PartSet);
+  Members members(ctx, Kind::PartSet, sid);
+  std::vector<int64_t> part_ids;
+  for (const auto& p : ctx.model.parts) part_ids.push_back(p.id);
+  std::vector<int32_t> parts;
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    if (opts.has("GENERATE")) {
+      generate(cur.read(spec.card("range card")), part_ids, [&](int32_t i) { parts.push_back(i); });
+    } else {
+      const Card& c = cur.read(spec.card("card 2"));
+      for (int k = 1; k <= 8; ++k) {
+        const std::string f = "PID" + std::to_string(k);
+        if (const int64_t id = c.integer(f); id != 0)
+          parts.push_back(members.resolve(c, f, id, true));
+      }
+    }
+    ctx.collect(cur);
+  }
+  if (!members.finish(kw)) return;
+  sortUnique(parts);
+  ctx.model.part_sets[sid] = std::move(parts);
+}
+
+void readSegmentSet(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*SET_SEGMENT");
+  CardCursor cur(kw, ctx.deck);
+  const int64_t sid = readSetId(ctx, cur, spec, opts, Kind::SegmentSet);
+  Members members(ctx, Kind::SegmentSet, sid);
+  std::vector<std::array<int32_t, 4>> segments;
+  static constexpr std::string_view kN[4] = {"N1", "N2", "N3", "N4"};
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec.card("card 2"));
+    std::array<int32_t, 4> s{};
+    for (int k = 0; k < 4; ++k) {
+      int64_t id = c.integer(kN[k]);
+      // A triangle repeats N3 as N4 (Keyword Manual, *SET_SEGMENT).
+      if (k == 3 && id == 0) id = c.integer("N3");
+      if (id == 0) c.fail(kN[k], "node id missing");
+      s[k] = members.resolve(c, kN[k], id, false);
+    }
+    segments.push_back(s);
+    ctx.collect(cur);
+  }
+  if (!members.finish(kw)) return;
+  ctx.model.segment_sets[sid] = std::move(segments);
+}
+
+// Options rows (Keyword Manual, *SET_NODE_GENERAL) applied in order: ALL, NODE, PART, BOX,
+// SET add nodes; DNODE, DPART, DBOX remove them.
+void readNodeSetGeneral(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*SET_NODE_GENERAL");
+  CardCursor cur(kw, ctx.deck);
+  const int64_t sid = readSetId(ctx, cur, spec, opts, Kind::NodeSet);
+  const Model& m = ctx.model;
+  std::vector<char> in(m.nodes.size(), 0);
+  static constexpr std::string_view kE[7] = {"E1", "E2", "E3", "E4", "E5", "E6", "E7"};
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec.card("card 2"));
+    std::string option = c.text("OPTION");
+    std::transform(option.begin(), option.end(), option.begin(),
+                   [](unsigned char ch) { return static_cast<char>(std::toupper(ch)); });
+    const bool remove = option.size() > 1 && option[0] == 'D' && option != "DALL";
+    const std::string what = remove ? option.substr(1) : option;
+    const char value = remove ? 0 : 1;
+    if (what == "ALL" && !remove) {
+      std::fill(in.begin(), in.end(), 1);
+    } else if (what == "NODE" || what == "PART" || what == "BOX" || (what == "SET" && !remove)) {
+      for (auto e : kE) {
+        const int64_t id = c.integer(e);
+        if (id == 0) continue;
+        if (what == "NODE") {
+          in[ctx.node(c, e, id)] = value;
+        } else if (what == "PART") {
+          for (int32_t n : ctx.partNodes(ctx.part(c, e, id))) in[n] = value;
+        } else if (what == "BOX") {
+          const Box& b = ctx.box(c, e, id);
+          for (std::size_t n = 0; n < m.nodes.size(); ++n)
+            if (b.contains(m.nodes.x[n])) in[n] = value;
+        } else {
+          for (int32_t n : ctx.nodeSet(c, e, id)) in[n] = value;
+        }
+      }
+    } else {
+      ctx.reject(c, "OPTION",
+                 "option '" + option +
+                     "' is not supported (ALL, NODE, PART, BOX, SET, DNODE, DPART, DBOX are)");
+    }
+    ctx.collect(cur);
+  }
+  std::vector<int32_t> nodes;
+  for (std::size_t n = 0; n < in.size(); ++n)
+    if (in[n]) nodes.push_back(static_cast<int32_t>(n));
+  ctx.model.node_sets[sid] = std::move(nodes);
+}
+
+}  // namespace crumple::model::build

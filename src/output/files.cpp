@@ -1,0 +1,242 @@
+#include "output/files.hpp"
+
+#include <openssl/evp.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <system_error>
+
+#include <fmt/format.h>
+
+#include "util/error.hpp"
+
+namespace crumple::output {
+
+namespace fs = std::filesystem;
+
+CsvWriter::CsvWriter(const fs::path& path, const std::vector<std::string>& columns)
+    : out_(path, std::ios::trunc), columns_(columns.size()) {
+  if (!out_) throw std::runtime_error(fmt::format("cannot open '{}' for writing", path.string()));
+  fmt::memory_buffer line;
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    if (i > 0) line.push_back(',');
+    line.append(columns[i]);
+  }
+  line.push_back('\n');
+  out_.write(line.data(), static_cast<std::streamsize>(line.size()));
+}
+
+void CsvWriter::row(const std::vector<double>& values) {
+  if (values.size() != columns_) {
+    throw std::invalid_argument(fmt::format("CSV row has {} values but the header has {} columns",
+                                            values.size(), columns_));
+  }
+  // "{}" is fmt's shortest representation that reads back to the same double: every value
+  // round-trips (like %.17g) without %.17g's noise (0.1 stays 0.1), and integral values such as
+  // cycle numbers print as integers (12, not 12.000).
+  fmt::memory_buffer line;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i > 0) line.push_back(',');
+    fmt::format_to(std::back_inserter(line), "{}", values[i]);
+  }
+  line.push_back('\n');
+  out_.write(line.data(), static_cast<std::streamsize>(line.size()));
+}
+
+namespace {
+
+void hashDoubles(EVP_MD_CTX* ctx, const std::vector<double>& values) {
+  if constexpr (std::endian::native == std::endian::little) {
+    if (!values.empty() &&
+        EVP_DigestUpdate(ctx, values.data(), values.size() * sizeof(double)) != 1) {
+      throw std::runtime_error("SHA-256 update failed");
+    }
+  } else {
+    // The digest is defined on little-endian bytes so it compares across machines.
+    std::array<unsigned char, sizeof(double)> bytes;
+    for (double v : values) {
+      const auto bits = std::bit_cast<uint64_t>(v);
+      for (std::size_t b = 0; b < bytes.size(); ++b)
+        bytes[b] = static_cast<unsigned char>(bits >> (8 * b));
+      if (EVP_DigestUpdate(ctx, bytes.data(), bytes.size()) != 1) {
+        throw std::runtime_error("SHA-256 update failed");
+      }
+    }
+  }
+}
+
+}  // namespace
+
+std::string stateDigest(const std::vector<double>& x, const std::vector<double>& v) {
+  std::unique_ptr<EVP_MD_CTX, decltype(&EVP_MD_CTX_free)> ctx(EVP_MD_CTX_new(), &EVP_MD_CTX_free);
+  if (!ctx || EVP_DigestInit_ex(ctx.get(), EVP_sha256(), nullptr) != 1) {
+    throw std::runtime_error("SHA-256 initialisation failed");
+  }
+  hashDoubles(ctx.get(), x);
+  hashDoubles(ctx.get(), v);
+  std::array<unsigned char, EVP_MAX_MD_SIZE> digest{};
+  unsigned int length = 0;
+  if (EVP_DigestFinal_ex(ctx.get(), digest.data(), &length) != 1) {
+    throw std::runtime_error("SHA-256 finalisation failed");
+  }
+  std::string hex;
+  hex.reserve(2 * length);
+  for (unsigned int i = 0; i < length; ++i)
+    fmt::format_to(std::back_inserter(hex), "{:02x}", digest[i]);
+  return hex;
+}
+
+namespace {
+
+// Files a run (or `crumple partition`) writes at the top of the results folder.
+// results.pvd.tmp is what a run killed while rewriting the collection leaves (vtk.cpp writes
+// through a temporary file); it is ours as much as results.pvd.
+constexpr std::array<const char*, 10> kResultFiles = {
+    "summary.json", "results.pvd", "glstat.csv", "run.log",        "matsum.csv",
+    "nodout.csv",   "rcforc.csv",  "rwforc.csv", "partition.json", "results.pvd.tmp"};
+
+// A piece, or the temporary file of a piece whose writing was interrupted.
+bool isPieceFile(fs::path p) {
+  if (p.extension() == ".tmp") p = p.stem();
+  return p.extension() == ".vtu" || p.extension() == ".pvtu";
+}
+
+bool isRegularFileOrLink(const fs::path& p) {
+  std::error_code ec;
+  const fs::file_status s = fs::symlink_status(p, ec);
+  return !ec && (fs::is_regular_file(s) || fs::is_symlink(s));
+}
+
+// VTU/PVTU files directly in `folder`, sorted so messages and removal order are reproducible.
+std::vector<fs::path> pieceFiles(const fs::path& folder) {
+  std::vector<fs::path> found;
+  std::error_code ec;
+  if (!fs::is_directory(fs::symlink_status(folder, ec))) return found;
+  for (const fs::directory_entry& e : fs::directory_iterator(folder, ec)) {
+    if (isPieceFile(e.path()) && isRegularFileOrLink(e.path())) found.push_back(e.path());
+  }
+  if (ec) {
+    throw util::InputError(
+        fmt::format("cannot list results folder '{}': {}", folder.string(), ec.message()));
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+// Every result file of an earlier run in `dir`, markers first.
+std::vector<fs::path> earlierResults(const fs::path& dir) {
+  std::vector<fs::path> found;
+  for (const char* name : kResultFiles) {
+    if (isRegularFileOrLink(dir / name)) found.push_back(dir / name);
+  }
+  for (const fs::path& p : pieceFiles(dir)) found.push_back(p);
+  for (const fs::path& p : pieceFiles(dir / kStatesFolder)) found.push_back(p);
+  return found;
+}
+
+}  // namespace
+
+void prepareResultsDir(const fs::path& dir, bool overwrite) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(dir, ec);
+  if (fs::exists(status) && !fs::is_directory(status)) {
+    throw util::InputError(fmt::format(
+        "results folder '{}' exists and is not a folder; use -o to choose another", dir.string()));
+  }
+  const std::vector<fs::path> earlier = earlierResults(dir);
+  if (!earlier.empty() && !overwrite) {
+    throw util::InputError(fmt::format(
+        "results folder '{}' already holds results of an earlier run ({}); pass --overwrite to "
+        "replace them or -o to choose another folder",
+        dir.string(), earlier.front().lexically_relative(dir).generic_string()));
+  }
+  for (const fs::path& p : earlier) {
+    if (!fs::remove(p, ec) && ec) {
+      throw util::InputError(
+          fmt::format("cannot remove '{}' from the results folder: {}", p.string(), ec.message()));
+    }
+  }
+  // The states folder goes only if it is now empty: anything else in it is not ours.
+  const fs::path states = dir / kStatesFolder;
+  if (fs::is_directory(fs::symlink_status(states, ec)) && fs::is_empty(states, ec)) {
+    fs::remove(states, ec);
+  }
+  fs::create_directories(dir, ec);
+  if (ec) {
+    throw util::InputError(
+        fmt::format("cannot create results folder '{}': {}", dir.string(), ec.message()));
+  }
+}
+
+Progress::Progress(std::FILE* stream, bool interactive, double end_time)
+    : stream_(stream),
+      interactive_(interactive),
+      end_time_(end_time),
+      start_(std::chrono::steady_clock::now()),
+      // Backdated so the first update draws at once.
+      last_draw_(start_ - std::chrono::seconds(1)) {}
+
+namespace {
+
+double fractionDone(double time, double end_time) {
+  if (!(end_time > 0.0)) return 1.0;
+  const double f = time / end_time;
+  if (!(f > 0.0)) return 0.0;  // also catches NaN
+  return std::min(f, 1.0);
+}
+
+std::string hms(double seconds) {
+  const auto s = static_cast<int64_t>(std::llround(seconds));
+  return fmt::format("{}:{:02}:{:02}", s / 3600, (s / 60) % 60, s % 60);
+}
+
+}  // namespace
+
+std::string Progress::line(int64_t cycle, double time, double dt, double energy_ratio) const {
+  const double f = fractionDone(time, end_time_);
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  // The remaining time assumes the rest of the run goes at the average speed so far; before any
+  // progress there is nothing to extrapolate from.
+  const double remaining = elapsed * (1.0 - f) / f;
+  const std::string eta = f > 0.0 && std::isfinite(remaining) ? hms(remaining) : "-:--:--";
+  return fmt::format("cycle {}  t {:.3e}  dt {:.1e}  {:.1f}%  ETA {}  energy ratio {:.4f}", cycle,
+                     time, dt, 100.0 * f, eta, energy_ratio);
+}
+
+void Progress::update(int64_t cycle, double time, double dt, double energy_ratio) {
+  if (stream_ == nullptr) return;
+  if (interactive_) {
+    // A terminal redraws the same line; five times a second is smooth and costs nothing.
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_draw_ < std::chrono::milliseconds(200)) return;
+    last_draw_ = now;
+    // \033[K clears what a longer previous line left to the right.
+    std::fprintf(stream_, "\r%s\033[K", line(cycle, time, dt, energy_ratio).c_str());
+    std::fflush(stream_);
+    return;
+  }
+  // Logs get one line per decile crossed; the 100% line is finish()'s, so it is never doubled.
+  const double f = fractionDone(time, end_time_);
+  if (next_decile_ > 9 || 10.0 * f < next_decile_) return;
+  while (next_decile_ <= 9 && 10.0 * f >= next_decile_) ++next_decile_;
+  std::fprintf(stream_, "%s\n", line(cycle, time, dt, energy_ratio).c_str());
+  std::fflush(stream_);
+}
+
+void Progress::finish(int64_t cycle, double time, double dt, double energy_ratio) {
+  if (stream_ == nullptr) return;
+  const std::string text = line(cycle, time, dt, energy_ratio);
+  if (interactive_) {
+    std::fprintf(stream_, "\r%s\033[K\n", text.c_str());
+  } else {
+    std::fprintf(stream_, "%s\n", text.c_str());
+  }
+  std::fflush(stream_);
+}
+
+}  // namespace crumple::output

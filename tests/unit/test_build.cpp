@@ -1,0 +1,426 @@
+// Deck -> Model (src/model/build*.cpp): ordering, defaulting, curves, sets, conditions,
+// unsupported and ignored reports, exact error messages, and the real decks in ../shared.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+
+#include "model/build.hpp"
+#include "util/error.hpp"
+
+namespace fs = std::filesystem;
+using crumple::model::Model;
+using crumple::model::readModel;
+using crumple::util::InputError;
+
+namespace {
+
+class TempDir {
+ public:
+  TempDir() {
+    static std::atomic<int> counter{0};
+    dir_ = fs::temp_directory_path() /
+           ("crumple_test_build_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+    fs::create_directories(dir_);
+  }
+  ~TempDir() { fs::remove_all(dir_); }
+  fs::path write(const std::string& name, const std::string& text) const {
+    const fs::path p = dir_ / name;
+    std::ofstream(p) << text;
+    return p;
+  }
+  const fs::path& path() const { return dir_; }
+
+ private:
+  fs::path dir_;
+};
+
+template <class F>
+std::string errorOf(F f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Two unit hexahedra along x, nodes and elements given in descending id order.
+const std::string kMesh = R"(*KEYWORD
+*NODE
+30,2,1,1
+29,2,0,1
+28,2,1,0
+27,2,0,0
+8,0,1,1
+7,1,1,1
+6,1,0,1
+5,0,0,1
+4,0,1,0
+3,1,1,0
+2,1,0,0
+1,0,0,0
+*ELEMENT_SOLID
+20,1,2,27,28,3,6,29,30,7
+10,1,1,2,3,4,5,6,7,8
+*PART
+block
+1,1,1
+*SECTION_SOLID
+1,2
+*MAT_ELASTIC
+1,7.8e-9,2.0e5,0.3
+)";
+
+Model build(const TempDir& t, const std::string& extra, const std::string& name = "d.k") {
+  return readModel(t.write(name, kMesh + extra));
+}
+
+}  // namespace
+
+TEST(BuildModel, IndicesAscendingByUserId) {
+  TempDir t;
+  const Model m = build(t, "");
+  ASSERT_EQ(m.nodes.size(), 12u);
+  EXPECT_EQ(m.nodes.id.front(), 1);
+  EXPECT_EQ(m.nodes.id.back(), 30);
+  ASSERT_EQ(m.solids.size(), 2u);
+  EXPECT_EQ(m.solids.id[0], 10);
+  EXPECT_EQ(m.solids.id[1], 20);
+  EXPECT_EQ(m.solids.nodes[0][0], m.nodeIndex(1));
+  EXPECT_EQ(m.solids.nodes[1][1], m.nodeIndex(27));
+  EXPECT_EQ(m.solids.part[0], m.partIndex(1));
+  EXPECT_EQ(m.parts.at(0).title, "block");
+  EXPECT_EQ(m.solid_sections.at(0).elform, 2);
+  EXPECT_EQ(m.parts[0].material, 0);
+  EXPECT_EQ(m.parts[0].hourglass, crumple::model::kNone);
+  EXPECT_EQ(m.initial_velocity.size(), 12u);
+  EXPECT_TRUE(m.unsupported.empty());
+}
+
+TEST(BuildModel, TwoCardElementsTetsAndWedges) {
+  TempDir t;
+  const Model m =
+      build(t,
+            "*ELEMENT_SOLID\n"
+            "      30       1\n"
+            "       1       2       3       5\n"
+            "      31       1       1       2       3       5\n"
+            "      32       1       1       2       3       3       5       6       7       7\n");
+  ASSERT_EQ(m.solids.size(), 5u);
+  const auto n = [&](int64_t id) { return m.nodeIndex(id); };
+  const std::array<int32_t, 8> tet{n(1), n(2), n(3), n(5), n(5), n(5), n(5), n(5)};
+  EXPECT_EQ(m.solids.nodes[2], tet);
+  EXPECT_EQ(m.solids.nodes[3], tet);
+  const std::array<int32_t, 8> wedge{n(1), n(2), n(3), n(3), n(5), n(6), n(7), n(7)};
+  EXPECT_EQ(m.solids.nodes[4], wedge);
+}
+
+TEST(BuildModel, ZeroOrBlankMeansDefault) {
+  TempDir t;
+  const Model m = build(t,
+                        "*CONTROL_TIMESTEP\n0.0,0.0\n"
+                        "*CONTROL_BULK_VISCOSITY\n0,0\n"
+                        "*CONTROL_HOURGLASS\n0,0\n"
+                        "*CONTROL_TERMINATION\n0.5,0,0,0,0\n"
+                        "*HOURGLASS\n7,0,0\n"
+                        "*DEFINE_CURVE\n1\n0,0\n1,1\n"
+                        "*BOUNDARY_PRESCRIBED_MOTION_NODE\n1,3,2,1,0,0,0,0\n");
+  const auto& c = m.controls;
+  EXPECT_DOUBLE_EQ(c.tssfac, 0.9);
+  EXPECT_DOUBLE_EQ(c.q_quadratic, 1.5);
+  EXPECT_DOUBLE_EQ(c.q_linear, 0.06);
+  EXPECT_EQ(c.hourglass_ihq, 1);
+  EXPECT_DOUBLE_EQ(c.hourglass_qh, 0.1);
+  EXPECT_DOUBLE_EQ(c.end_time, 0.5);
+  EXPECT_DOUBLE_EQ(c.end_mass_ratio, 0.0);
+  ASSERT_EQ(m.hourglass.size(), 1u);
+  EXPECT_EQ(m.hourglass[0].ihq, 1);
+  EXPECT_DOUBLE_EQ(m.hourglass[0].qm, 0.1);
+  ASSERT_EQ(m.prescribed.size(), 1u);
+  const auto& pm = m.prescribed[0];
+  EXPECT_EQ(pm.dof, 2);
+  EXPECT_EQ(pm.kind, crumple::model::MotionKind::Displacement);
+  EXPECT_DOUBLE_EQ(pm.sf, 1.0);
+  EXPECT_EQ(pm.death, std::numeric_limits<double>::infinity());
+}
+
+TEST(BuildModel, CurveScaleAndOffset) {
+  TempDir t;
+  // x = SFA (a + OFFA), y = SFO (o + OFFO); SFO 0 means 1.
+  const Model m = build(t,
+                        "*DEFINE_CURVE_TITLE\nramp\n"
+                        "         5         0       2.0       0.0       1.0      10.0\n"
+                        "                 0.0                 1.0\n"
+                        "\n"
+                        "                 1.0                 3.0\n");
+  ASSERT_EQ(m.curves.size(), 1u);
+  const auto& c = m.curves[m.curveIndex(5)];
+  ASSERT_EQ(c.x.size(), 2u);
+  EXPECT_DOUBLE_EQ(c.x[0], 2.0);
+  EXPECT_DOUBLE_EQ(c.x[1], 4.0);
+  EXPECT_DOUBLE_EQ(c.y[0], 11.0);
+  EXPECT_DOUBLE_EQ(c.y[1], 13.0);
+}
+
+TEST(BuildModel, SetsListsGenerateGeneralAndSegments) {
+  TempDir t;
+  const Model m = build(t,
+                        "*DEFINE_BOX\n3,1.5,2.5,-1,2,-1,2\n"
+                        "*SET_NODE_LIST_TITLE\nends\n1\n30,1,0,0,0,0,0,0\n"
+                        "*SET_NODE_LIST_GENERATE\n2\n2,5,27,100\n"
+                        "*SET_PART_LIST_GENERATE\n4\n1,9\n"
+                        "*SET_PART\n5\n1\n"
+                        "*SET_NODE_GENERAL\n6\nPART,1\nDNODE,1,2\nDBOX,3\n"
+                        "*SET_NODE_GENERAL\n7\nALL\n"
+                        "*SET_NODE_GENERAL\n8\nSET,1,2\n"
+                        "*SET_SEGMENT\n9\n1,2,3,4\n5,6,7\n");
+  const auto n = [&](int64_t id) { return m.nodeIndex(id); };
+  EXPECT_EQ(m.node_sets.at(1), (std::vector<int32_t>{n(1), n(30)}));
+  EXPECT_EQ(m.node_sets.at(2),
+            (std::vector<int32_t>{n(2), n(3), n(4), n(5), n(27), n(28), n(29), n(30)}));
+  EXPECT_EQ(m.part_sets.at(4), std::vector<int32_t>{0});
+  EXPECT_EQ(m.part_sets.at(5), std::vector<int32_t>{0});
+  EXPECT_EQ(m.node_sets.at(6), (std::vector<int32_t>{n(3), n(4), n(5), n(6), n(7), n(8)}));
+  EXPECT_EQ(m.node_sets.at(7).size(), 12u);
+  EXPECT_EQ(m.node_sets.at(8).size(), 9u);
+  const auto& seg = m.segment_sets.at(9);
+  ASSERT_EQ(seg.size(), 2u);
+  EXPECT_EQ(seg[1], (std::array<int32_t, 4>{n(5), n(6), n(7), n(7)}));
+}
+
+TEST(BuildModel, BoundaryConditionsLoadsAndInitialVelocity) {
+  TempDir t;
+  const Model m = build(t,
+                        "*DEFINE_CURVE\n1\n0,0\n1,1\n"
+                        "*SET_NODE_LIST\n1\n1,2\n"
+                        "*SET_PART_LIST\n2\n1\n"
+                        "*BOUNDARY_SPC_SET\n1,0,1,0,1\n"
+                        "*BOUNDARY_SPC_NODE\n1,0,0,1\n"
+                        "*BOUNDARY_PRESCRIBED_MOTION_SET_ID\n1,pm\n1,1,0,1,2.0,0,5.0,1.0\n"
+                        "*LOAD_NODE_POINT\n3,2,1,4.0\n"
+                        "*DEFINE_COORDINATE_SYSTEM\n9,0,0,0,0,1,0\n0,0,1\n"
+                        "*LOAD_NODE_SET\n1,1,1,2.0,9\n"
+                        "*LOAD_SEGMENT\n1,3.0,0.5,1,2,3,4\n"
+                        "*SET_SEGMENT\n4\n5,6,7,8\n"
+                        "*LOAD_SEGMENT_SET\n4,1,0,0.1\n"
+                        "*LOAD_BODY_Z\n1,9.81\n"
+                        "*INITIAL_VELOCITY\n0\n1,2,3\n"
+                        "*INITIAL_VELOCITY_GENERATION\n2,1,2.0,0,0,10\n0,0,0,0,0,1\n");
+  const auto n = [&](int64_t id) { return m.nodeIndex(id); };
+  ASSERT_EQ(m.spcs.size(), 2u);
+  EXPECT_EQ(m.spcs[0].node, n(1));
+  EXPECT_EQ(m.spcs[0].dofs, 0b111);
+  EXPECT_EQ(m.spcs[1].dofs, 0b101);
+  ASSERT_EQ(m.prescribed.size(), 2u);
+  EXPECT_EQ(m.prescribed[0].dof, 0);
+  EXPECT_DOUBLE_EQ(m.prescribed[0].sf, 2.0);
+  EXPECT_DOUBLE_EQ(m.prescribed[0].death, 5.0);
+  EXPECT_DOUBLE_EQ(m.prescribed[0].birth, 1.0);
+  // Load along local x of system 9, which is global y: one global component.
+  ASSERT_EQ(m.nodal_loads.size(), 3u);
+  EXPECT_EQ(m.nodal_loads[0].dof, 1);
+  EXPECT_DOUBLE_EQ(m.nodal_loads[0].sf, 4.0);
+  EXPECT_EQ(m.nodal_loads[1].dof, 1);
+  EXPECT_DOUBLE_EQ(m.nodal_loads[1].sf, 2.0);
+  ASSERT_EQ(m.pressure_loads.size(), 2u);
+  EXPECT_DOUBLE_EQ(m.pressure_loads[0].sf, 3.0);
+  EXPECT_DOUBLE_EQ(m.pressure_loads[0].at, 0.5);
+  EXPECT_DOUBLE_EQ(m.pressure_loads[1].sf, 1.0);
+  ASSERT_EQ(m.body_loads.size(), 1u);
+  EXPECT_EQ(m.body_loads[0].dof, 2);
+  EXPECT_DOUBLE_EQ(m.body_loads[0].sf, 9.81);
+  // Generation (part set 2 = part 1, every node) after *INITIAL_VELOCITY: rotation about z
+  // at omega 2 plus vz 10; node 2 at (1,0,0) moves with omega z x r = (0, 2, 0).
+  const auto& v2 = m.initial_velocity[n(2)];
+  EXPECT_DOUBLE_EQ(v2[0], 0.0);
+  EXPECT_DOUBLE_EQ(v2[1], 2.0);
+  EXPECT_DOUBLE_EQ(v2[2], 10.0);
+}
+
+TEST(BuildModel, RigidWallPlanarFiniteMovingWithId) {
+  TempDir t;
+  const Model m =
+      build(t,
+            "*SET_NODE_LIST\n1\n1,2,3\n"
+            "*RIGIDWALL_PLANAR\n0,1\n0,0,-1,0,0,1,0.2\n"
+            "*RIGIDWALL_PLANAR_FINITE_MOVING_ID\n7,wall\n1\n0,0,-1,0,0,-2\n1,0,-1,3,4\n100,2.5\n");
+  ASSERT_EQ(m.rigid_walls.size(), 2u);
+  const auto& a = m.rigid_walls[0];
+  EXPECT_EQ(a.id, 1);
+  EXPECT_EQ(a.nodes.size(), 9u);  // all nodes except set 1
+  EXPECT_DOUBLE_EQ(a.normal[2], 1.0);
+  EXPECT_DOUBLE_EQ(a.fric, 0.2);
+  const auto& b = m.rigid_walls[1];
+  EXPECT_EQ(b.id, 7);
+  EXPECT_EQ(b.nodes.size(), 3u);
+  EXPECT_DOUBLE_EQ(b.normal[2], -1.0);
+  EXPECT_TRUE(b.finite);
+  EXPECT_DOUBLE_EQ(b.l_axis[0], 1.0);
+  EXPECT_DOUBLE_EQ(b.lenl, 3.0);
+  EXPECT_TRUE(b.moving);
+  EXPECT_DOUBLE_EQ(b.mass, 100.0);
+  EXPECT_DOUBLE_EQ(b.v0, 2.5);
+}
+
+TEST(BuildModel, PiecewiseLinearPointsBecomeACurve) {
+  TempDir t;
+  const Model m = readModel(
+      t.write("d.k", kMesh + "*MAT_PIECEWISE_LINEAR_PLASTICITY\n2,7.8e-9,2e5,0.3,250\n0,0,0\n"
+                             "0,0.1,0.5\n250,300,400\n*PART\np2\n2,1,2\n"));
+  const auto& law = std::get<crumple::model::PiecewiseLinearLaw>(m.materials.at(1).law);
+  ASSERT_NE(law.lcss, crumple::model::kNone);
+  const auto& c = m.curves.at(law.lcss);
+  EXPECT_EQ(c.id, -2);
+  EXPECT_EQ(c.x, (std::vector<double>{0, 0.1, 0.5}));
+  EXPECT_EQ(c.y, (std::vector<double>{250, 300, 400}));
+}
+
+TEST(BuildErrors, ExactMessages) {
+  TempDir t;
+  auto err = [&](const std::string& extra, const std::string& name = "e.k") {
+    const auto p = t.write(name, kMesh + extra);
+    return errorOf([&] { readModel(p); });
+  };
+  const std::string file = (t.path() / "e.k").string();
+  auto at = [&](int line) { return file + ":" + std::to_string(line) + ": "; };
+  // Lines 1-24 are kMesh.
+  EXPECT_EQ(err("*PART\nsecond\n2,1,7\n"),
+            at(27) + "*PART card 2 field 3 (MID): material 7 is not defined");
+  EXPECT_EQ(err("*ELEMENT_SOLID\n3,1,1,2,3,4,5,6,7,99\n"),
+            at(26) + "*ELEMENT_SOLID card 1 field 10 (N8): node 99 is not defined");
+  EXPECT_EQ(err("*NODE\n7,0,0,0\n"),
+            at(26) + "*NODE card 1 field 1 (NID): node 7 is already defined at " + file + ":8");
+  EXPECT_EQ(err("*MAT_ELASTIC\n2,0,1,0.3\n"),
+            at(26) + "*MAT_ELASTIC card 1 field 2 (RO): the density must be positive");
+  EXPECT_EQ(err("*MAT_ELASTIC\n2,1,1,0.5\n"),
+            at(26) + "*MAT_ELASTIC card 1 field 4 (PR): Poisson's ratio must lie in (-1, 0.5)");
+  EXPECT_EQ(err("*MAT_ELASTIC\n1,1,1,0.3\n"),
+            at(26) + "*MAT_ELASTIC card 1 field 1 (MID): material 1 is already defined at " + file +
+                ":24");
+  EXPECT_EQ(err("*RIGIDWALL_PLANAR_ORTHO\n0\n0,0,0,0,0,1\n"),
+            at(25) + "*RIGIDWALL_PLANAR_ORTHO: option _ORTHO is not supported");
+  EXPECT_EQ(err("*BOUNDARY_SPC_NODE\n1,5,1\n"),
+            at(26) +
+                "*BOUNDARY_SPC_NODE card 1 field 2 (CID): a local coordinate system is not "
+                "supported here");
+  EXPECT_EQ(
+      err("*BOUNDARY_PRESCRIBED_MOTION_NODE\n1,1,0,3\n"),
+      at(26) + "*BOUNDARY_PRESCRIBED_MOTION_NODE card 1 field 4 (LCID): curve 3 is not defined");
+  // An unsupported section is an error only when an element uses it.
+  EXPECT_EQ(err("*SECTION_SOLID\n2,10\n*PART\nother\n2,2,1\n"), "");
+  EXPECT_EQ(err("*SECTION_SOLID\n2,10\n*PART\nother\n2,2,1\n*ELEMENT_SOLID\n3,2,1,2,3,4,5,6,7,8\n"),
+            at(31) +
+                "*ELEMENT_SOLID card 1 field 2 (PID): part 2 uses *SECTION_SOLID ELFORM=10 "
+                "(section 2 at " +
+                file + ":26), which is not supported yet");
+  const auto empty = t.write("n.k", "*KEYWORD\n*NODE\n1,0,0,0\n");
+  EXPECT_EQ(errorOf([&] { readModel(empty); }),
+            empty.string() + ": the deck defines no elements Crumple can run (*ELEMENT_SOLID)");
+}
+
+TEST(BuildErrors, TableHardeningAndRigidParts) {
+  TempDir t;
+  const auto p = t.write("r.k", kMesh +
+                                    "*MAT_RIGID\n2,7.8e-9,2e5,0.3\n"
+                                    "*PART\nrigid\n2,1,2\n"
+                                    "*ELEMENT_SOLID\n3,2,1,2,3,4,5,6,7,8\n"
+                                    "*DEFINE_TABLE\n5\n"
+                                    "*MAT_024\n3,1,1,0.3,1\n0,0,5\n");
+  EXPECT_EQ(errorOf([&] { readModel(p); }),
+            p.string() +
+                ":36: *MAT_024 card 2 field 3 (LCSS): curve 5 is defined by *DEFINE_TABLE (" +
+                p.string() + ":32), which is not supported yet");
+  crumple::model::ReadOptions lenient;
+  lenient.allow_unsupported = true;
+  const Model m = readModel(p, lenient);
+  EXPECT_EQ(m.solids.size(), 3u);
+  EXPECT_EQ(m.parts[m.partIndex(2)].material, crumple::model::kNone);
+  const std::string report = crumple::model::formatUnsupported(m);
+  EXPECT_NE(report.find("part 2 uses *MAT_RIGID (material 2 at " + p.string() + ":25)"),
+            std::string::npos)
+      << report;
+}
+
+TEST(BuildUnsupported, CountsFirstLocationsReasonsAndIgnoredFields) {
+  TempDir t;
+  const auto p = t.write("u.k", kMesh +
+                                    "*CONTACT_AUTOMATIC_SINGLE_SURFACE\n1\n"
+                                    "*DATABASE_ELOUT\n0.1\n"
+                                    "*contact_automatic_single_surface\n2\n"
+                                    "*CONTROL_IMPLICIT_GENERAL\n1\n"
+                                    "*CONTROL_MPP_IO_NODUMP\n"
+                                    "*CONTROL_THERMAL_SOLVER\n1\n"
+                                    "*CONTROL_SOLID\n1\n"
+                                    "*SECTION_SOLID\n3,1,1\n");
+  const Model m = readModel(p);
+  ASSERT_EQ(m.unsupported.size(), 5u);
+  EXPECT_EQ(m.unsupported[0].keyword, "*CONTACT_AUTOMATIC_SINGLE_SURFACE");
+  EXPECT_EQ(m.unsupported[0].count, 2);
+  EXPECT_EQ(m.unsupported[0].first.line, 25);
+  EXPECT_EQ(m.unsupported[0].reason, "not supported");
+  EXPECT_EQ(m.unsupported[1].reason, "output not written yet");
+  EXPECT_EQ(m.unsupported[2].reason, "implicit analysis only");
+  EXPECT_EQ(m.unsupported[3].reason, "ignored: MPP/SMP option");
+  EXPECT_EQ(m.unsupported[4].reason, "thermal analysis not supported");
+  ASSERT_EQ(m.ignored.size(), 2u);
+  // Definitions are read before controls, so the section comes first.
+  EXPECT_EQ(m.ignored[0].keyword, "*SECTION_SOLID");
+  EXPECT_EQ(m.ignored[0].field, "AET");
+  EXPECT_EQ(m.ignored[1].keyword, "*CONTROL_SOLID");
+  EXPECT_EQ(m.ignored[1].field, "ESORT");
+  const std::string table = crumple::model::formatUnsupported(m);
+  const std::string loc = p.string() + ":25";
+  EXPECT_EQ(table.rfind("keyword ", 0), 0u) << table;
+  EXPECT_NE(table.find("*CONTACT_AUTOMATIC_SINGLE_SURFACE      2  " + loc + "  not supported\n"),
+            std::string::npos)
+      << table;
+}
+
+// The real decks in ../shared/decks, read to the end.
+TEST(BuildRealDecks, ReadToTheEnd) {
+  const fs::path decks = fs::path(CRUMPLE_SHARED_DIR) / "decks";
+  if (!fs::exists(decks)) GTEST_SKIP() << decks << " is absent";
+  const auto ball = decks / "ball_plate_pydyna/examples/Explicit/output/ball_plate.k";
+  const auto projectile =
+      decks / "projectile_plate_lstc/tests/testfiles/run/case-keywords/projectile.k";
+  const auto block = decks / "wb_lsdyna_block/tests/testfiles/keywords/test_node_sets.k";
+
+  // The ball is *MAT_RIGID: a run must refuse it, a check must list everything.
+  EXPECT_NE(errorOf([&] { readModel(ball); }).find("part 2 uses *MAT_RIGID"), std::string::npos);
+  crumple::model::ReadOptions lenient;
+  lenient.allow_unsupported = true;
+  const Model b = readModel(ball, lenient);
+  EXPECT_EQ(b.solids.size(), 1512u);
+  EXPECT_EQ(b.nodes.size(), 1940u);
+  EXPECT_EQ(b.node_sets.at(1).size(), 64u);
+  bool shells_reported = false;
+  for (const auto& u : b.unsupported) shells_reported |= u.keyword == "*ELEMENT_SHELL";
+  EXPECT_TRUE(shells_reported);
+
+  const Model p = readModel(projectile);
+  EXPECT_EQ(p.solids.size(), 5664u);
+  EXPECT_EQ(p.parts.size(), 2u);
+  EXPECT_DOUBLE_EQ(p.controls.end_time, 70.0);
+  EXPECT_DOUBLE_EQ(p.controls.d3plot_dt, 5.0);
+  // Part 1 (the projectile) starts at (0.1246, 0, -0.03339); the case-block values are not
+  // applied.
+  const int32_t node = p.solids.nodes[0][0];
+  EXPECT_DOUBLE_EQ(p.initial_velocity[node][0], 0.1246);
+  EXPECT_DOUBLE_EQ(p.initial_velocity[node][2], -0.03339);
+
+  const Model w = readModel(block);
+  EXPECT_EQ(w.solids.size(), 5680u);
+  EXPECT_EQ(w.nodes.size(), 6724u);
+  EXPECT_EQ(w.prescribed.size(), 3u * w.node_sets.at(1).size());
+  EXPECT_EQ(w.controls.hourglass_ihq, 5);
+  EXPECT_TRUE(w.controls.erode_on_dtmin);
+  ASSERT_FALSE(w.nodal_loads.empty());
+  EXPECT_EQ(w.nodal_loads[0].dof, 1);  // local y of system 23 is global y
+}

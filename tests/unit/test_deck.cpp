@@ -1,0 +1,325 @@
+// The keyword reader (src/deck): numbers, expressions, card formats, comments, parameters,
+// includes, *END, *CASE blocks and the exact form of its error messages.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <utility>
+
+#include "deck/card.hpp"
+#include "deck/deck.hpp"
+#include "deck/expression.hpp"
+#include "deck/number.hpp"
+#include "model/build.hpp"
+#include "util/error.hpp"
+
+namespace fs = std::filesystem;
+using crumple::util::InputError;
+
+namespace {
+
+// A scratch folder per test, removed afterwards.
+class TempDir {
+ public:
+  TempDir() {
+    static std::atomic<int> counter{0};
+    dir_ = fs::temp_directory_path() /
+           ("crumple_test_deck_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+    fs::create_directories(dir_);
+  }
+  ~TempDir() { fs::remove_all(dir_); }
+  fs::path write(const std::string& name, const std::string& text) const {
+    const fs::path p = dir_ / name;
+    fs::create_directories(p.parent_path());
+    std::ofstream(p) << text;
+    return p;
+  }
+  const fs::path& path() const { return dir_; }
+
+ private:
+  fs::path dir_;
+};
+
+// The message of the InputError that `f` throws ("" if none).
+template <class F>
+std::string errorOf(F f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Fixed-format card text: each value right-aligned in its width.
+std::string cols(std::initializer_list<std::pair<std::string, int>> fields) {
+  std::string line;
+  for (const auto& [v, w] : fields)
+    line += std::string(static_cast<std::size_t>(w) - v.size(), ' ') + v;
+  return line + "\n";
+}
+
+// A one-element model around `extra` keywords (free format keeps the tests short).
+const char* kCube = R"(*KEYWORD
+*NODE
+1,0,0,0
+2,1,0,0
+3,1,1,0
+4,0,1,0
+5,0,0,1
+6,1,0,1
+7,1,1,1
+8,0,1,1
+*ELEMENT_SOLID
+1,1,1,2,3,4,5,6,7,8
+*PART
+cube
+1,1,1
+*SECTION_SOLID
+1,1
+)";
+
+}  // namespace
+
+TEST(DeckNumber, FortranAndCForms) {
+  using crumple::deck::parseInteger;
+  using crumple::deck::parseReal;
+  EXPECT_DOUBLE_EQ(*parseReal("2.00000-3"), 2e-3);
+  EXPECT_DOUBLE_EQ(*parseReal("1.5+2"), 150.0);
+  EXPECT_DOUBLE_EQ(*parseReal("1.d-3"), 1e-3);
+  EXPECT_DOUBLE_EQ(*parseReal("1.0D+02"), 100.0);
+  EXPECT_DOUBLE_EQ(*parseReal(" 7.83000E-6 "), 7.83e-6);
+  EXPECT_DOUBLE_EQ(*parseReal("+.5"), 0.5);
+  EXPECT_DOUBLE_EQ(*parseReal("-3."), -3.0);
+  EXPECT_DOUBLE_EQ(*parseReal("-1-3"), -1e-3);
+  for (const char* bad : {"abc", "", "1e", "inf", "nan", "1.2.3", "1,0", "--1"})
+    EXPECT_FALSE(parseReal(bad)) << bad;
+  EXPECT_EQ(*parseInteger("42"), 42);
+  EXPECT_EQ(*parseInteger("+5"), 5);
+  EXPECT_EQ(*parseInteger("1.0"), 1);
+  EXPECT_EQ(*parseInteger("1e3"), 1000);
+  EXPECT_EQ(*parseInteger("2.+1"), 20);
+  EXPECT_FALSE(parseInteger("1.5"));
+  EXPECT_FALSE(parseInteger("x"));
+}
+
+TEST(DeckExpression, OperatorsFunctionsAndParameters) {
+  using crumple::deck::evaluateExpression;
+  auto none = [](std::string_view) -> std::optional<double> { return std::nullopt; };
+  auto params = [](std::string_view n) -> std::optional<double> {
+    if (n == "a") return 3.0;
+    if (n == "b") return 4.0;
+    return std::nullopt;
+  };
+  EXPECT_DOUBLE_EQ(evaluateExpression("1 + 2 * 3", none), 7.0);
+  EXPECT_DOUBLE_EQ(evaluateExpression("(1 + 2) * 3", none), 9.0);
+  EXPECT_DOUBLE_EQ(evaluateExpression("2 ** 3 ** 2", none), 512.0);  // right associative
+  EXPECT_DOUBLE_EQ(evaluateExpression("-2**2", none), -4.0);
+  EXPECT_DOUBLE_EQ(evaluateExpression("10 / 4 - 1", none), 1.5);
+  EXPECT_DOUBLE_EQ(evaluateExpression("sqrt(a*a + b*b)", params), 5.0);
+  EXPECT_DOUBLE_EQ(evaluateExpression("max(a, b, 2) + min(a, b)", params), 7.0);
+  EXPECT_DOUBLE_EQ(evaluateExpression("&a * 2", params), 6.0);
+  EXPECT_DOUBLE_EQ(evaluateExpression("abs(-2) + exp(0) + log(1) + sin(0) + cos(0) + tan(0)", none),
+                   4.0);
+  EXPECT_DOUBLE_EQ(evaluateExpression("1.5e2 + 1.d1", none), 160.0);
+  using crumple::deck::ExpressionError;
+  EXPECT_THROW(evaluateExpression("c + 1", params), ExpressionError);
+  EXPECT_THROW(evaluateExpression("1 / 0", none), ExpressionError);
+  EXPECT_THROW(evaluateExpression("(1 + 2", none), ExpressionError);
+  EXPECT_THROW(evaluateExpression("foo(1)", none), ExpressionError);
+  EXPECT_THROW(evaluateExpression("1 2", none), ExpressionError);
+}
+
+TEST(DeckFormat, FixedNodeWidthsRunsOfDigitsAndFortranReals) {
+  TempDir t;
+  // *NODE is I8, 3E16, 2I8: fields touch without blanks between them.
+  const auto p = t.write("d.k", std::string(kCube) +
+                                    "*MAT_ELASTIC\n"
+                                    "         17.83000E-6     207.0       0.3\n"
+                                    "*NODE\n" +
+                                    cols({{"10", 8},
+                                          {"1.50000000", 16},
+                                          {"2.00000-3", 16},
+                                          {"-4.0", 16},
+                                          {"1", 8},
+                                          {"7", 8}}));
+  const auto m = crumple::model::readModel(p);
+  ASSERT_EQ(m.nodes.size(), 9u);
+  EXPECT_EQ(m.nodes.id.back(), 10);
+  EXPECT_DOUBLE_EQ(m.nodes.x.back()[0], 1.5);
+  EXPECT_DOUBLE_EQ(m.nodes.x.back()[1], 2e-3);
+  EXPECT_DOUBLE_EQ(m.nodes.x.back()[2], -4.0);
+  EXPECT_DOUBLE_EQ(m.materials.at(0).rho, 7.83e-6);
+  ASSERT_EQ(m.spcs.size(), 1u);  // TC 1 (x) and RC 7 (all rotations)
+  EXPECT_EQ(m.spcs[0].node, 8);
+  EXPECT_EQ(m.spcs[0].dofs, 0b111001);
+}
+
+TEST(DeckFormat, LongFormatBySuffixAndKeywordLine) {
+  TempDir t;
+  const std::string node20 =
+      "                  11                 1.5                 2.5                 3.5\n";
+  const auto a = t.write("a.k", std::string(kCube) + "*MAT_ELASTIC\n1,1,1,0.3\n*NODE +\n" + node20);
+  EXPECT_DOUBLE_EQ(crumple::model::readModel(a).nodes.x.back()[2], 3.5);
+  // LONG=Y for the whole file, "-" forcing the standard widths for one keyword.
+  const auto b = t.write(
+      "b.k", std::string("*KEYWORD LONG=Y\n") + (kCube + 9) + "*MAT_ELASTIC\n1,1,1,0.3\n*NODE\n" +
+                 node20 + "*NODE -\n      12             1.0             2.0             3.0\n");
+  const auto m = crumple::model::readModel(b);
+  EXPECT_DOUBLE_EQ(m.nodes.x[m.nodeIndex(11)][1], 2.5);
+  EXPECT_DOUBLE_EQ(m.nodes.x[m.nodeIndex(12)][2], 3.0);
+}
+
+TEST(DeckFormat, FreeFormatCommentsBlankFieldsAndCase) {
+  TempDir t;
+  const auto p = t.write("d.k", std::string(kCube) +
+                                    "$ a comment before\n"
+                                    "*mat_elastic_title\n"
+                                    "$ a comment between the title and card 1\n"
+                                    "steel, with a comma in the title\n"
+                                    "  $ an indented comment\n"
+                                    "1,7.8e-9,,0.3\n");
+  // E blank -> 0 -> error, proving that an empty free-format entry is a blank field.
+  EXPECT_EQ(
+      errorOf([&] { crumple::model::readModel(p); }),
+      p.string() + ":23: *MAT_ELASTIC_TITLE card 1 field 3 (E): Young's modulus must be positive");
+  const auto q = t.write(
+      "e.k", std::string(kCube) + "*MAT_ELASTIC_TITLE\nsteel, with a comma\n1,7.8e-9,2e5,0.3\n");
+  const auto m = crumple::model::readModel(q);
+  EXPECT_EQ(m.materials.at(0).title, "steel, with a comma");
+  EXPECT_DOUBLE_EQ(std::get<crumple::model::ElasticLaw>(m.materials.at(0).law).E, 2e5);
+}
+
+TEST(DeckErrors, BadNumberNamesFileLineKeywordCardAndField) {
+  TempDir t;
+  const auto p = t.write("deck.k", std::string(kCube) +
+                                       "*MAT_ELASTIC\n"
+                                       "         1       7.8       abc       0.3\n");
+  EXPECT_EQ(errorOf([&] { crumple::model::readModel(p); }),
+            p.string() + ":19: *MAT_ELASTIC card 1 field 3 (E): 'abc' is not a number");
+  const auto q = t.write(
+      "int.k", std::string(kCube) + "*MAT_ELASTIC\n       1.5       7.8       1.0       0.3\n");
+  EXPECT_EQ(errorOf([&] { crumple::model::readModel(q); }),
+            q.string() + ":19: *MAT_ELASTIC card 1 field 1 (MID): '1.5' is not an integer");
+}
+
+TEST(DeckParameters, ValuesReferencesAndExpressions) {
+  TempDir t;
+  const auto p =
+      t.write("d.k", std::string("*KEYWORD\n"
+                                 "*PARAMETER\n"
+                                 "R E       2.0+5     I mid     1         R nu      0.3\n"
+                                 "*PARAMETER_EXPRESSION\n"
+                                 "R rho     sqrt(4.0)*&nu*max(1, 2)\n"
+                                 "I half    mid * 3 / 2\n") +
+                         (kCube + 9) +
+                         "*MAT_ELASTIC\n"
+                         "      &mid      &rho        &E       &nu\n"
+                         "*NODE\n" +
+                         cols({{"9", 8}, {"-&E", 16}, {"0.0", 16}, {"0.0", 16}}) +
+                         "*INITIAL_VELOCITY_NODE\n"
+                         "&half,1,2,3\n");
+  const auto m = crumple::model::readModel(p);
+  const auto& mat = m.materials.at(0);
+  EXPECT_EQ(mat.id, 1);
+  EXPECT_DOUBLE_EQ(mat.rho, 1.2);
+  EXPECT_DOUBLE_EQ(std::get<crumple::model::ElasticLaw>(mat.law).E, 2e5);
+  EXPECT_DOUBLE_EQ(m.nodes.x[m.nodeIndex(9)][0], -2e5);
+  EXPECT_DOUBLE_EQ(m.initial_velocity[m.nodeIndex(1)][2], 3.0);  // half = int(1.5) = 1
+  const auto q = t.write("u.k", std::string(kCube) + "*MAT_ELASTIC\n1,&rho,1,0.3\n");
+  EXPECT_EQ(errorOf([&] { crumple::model::readModel(q); }),
+            q.string() + ":19: *MAT_ELASTIC card 1 field 2 (RO): parameter 'rho' is not defined");
+}
+
+TEST(DeckParameters, DuplicationFlag) {
+  TempDir t;
+  auto deckWith = [&](const std::string& name, const std::string& dflag) {
+    return t.write(name, "*KEYWORD\n" + dflag +
+                             "*PARAMETER\nR ro      1.0\n*PARAMETER\nR ro      2.0\n" +
+                             (kCube + 9) + "*MAT_ELASTIC\n1,&ro,1,0.3\n");
+  };
+  // Default (1): the first definition is kept, with a note.
+  const auto m1 = crumple::model::readModel(deckWith("d1.k", ""));
+  EXPECT_DOUBLE_EQ(m1.materials.at(0).rho, 1.0);
+  ASSERT_FALSE(m1.ignored.empty());
+  EXPECT_EQ(m1.ignored[0].field, "ro");
+  EXPECT_DOUBLE_EQ(
+      crumple::model::readModel(deckWith("d2.k", "*PARAMETER_DUPLICATION\n2\n")).materials[0].rho,
+      2.0);
+  EXPECT_DOUBLE_EQ(
+      crumple::model::readModel(deckWith("d4.k", "*PARAMETER_DUPLICATION\n4\n")).materials[0].rho,
+      2.0);
+  EXPECT_DOUBLE_EQ(
+      crumple::model::readModel(deckWith("d5.k", "*PARAMETER_DUPLICATION\n5\n")).materials[0].rho,
+      1.0);
+  const auto p3 = deckWith("d3.k", "*PARAMETER_DUPLICATION\n3\n");
+  EXPECT_EQ(errorOf([&] { crumple::model::readModel(p3); }),
+            p3.string() +
+                ":7: *PARAMETER card 1 field 1 (PRMR1): parameter 'ro' is already defined at " +
+                p3.string() + ":5 (*PARAMETER_DUPLICATION DFLAG=3)");
+}
+
+TEST(DeckInclude, NestedRelativePathsAndSearchDirs) {
+  TempDir t;
+  t.write("mesh/nodes.k", "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n*INCLUDE\nmore/top.k\n");
+  t.write("mesh/more/top.k", "*NODE\n5,0,0,1\n6,1,0,1\n7,1,1,1\n8,0,1,1\n");
+  t.write("lib/mat.k", "*MAT_ELASTIC\n1,1,1,0.3\n*END\nthis is not read\n");
+  const auto p =
+      t.write("main.k",
+              "*KEYWORD\n*INCLUDE_PATH\nlib\n*INCLUDE\nmesh/nodes.k\n*INCLUDE\nmat.k\n"
+              "*ELEMENT_SOLID\n1,1,1,2,3,4,5,6,7,8\n*PART\ncube\n1,1,1\n*SECTION_SOLID\n1\n");
+  const auto m = crumple::model::readModel(p);
+  EXPECT_EQ(m.nodes.size(), 8u);
+  EXPECT_EQ(m.materials.size(), 1u);
+  EXPECT_EQ(m.materials[0].where.file, (t.path() / "lib/mat.k").string());
+  const auto q = t.write("missing.k", "*KEYWORD\n*INCLUDE\nnope.k\n");
+  EXPECT_EQ(errorOf([&] { crumple::model::readModel(q); }),
+            q.string() + ":2: *INCLUDE: cannot open 'nope.k' (tried " +
+                (t.path() / "nope.k").string() + ")");
+  EXPECT_EQ(errorOf([&] { crumple::model::readModel(t.path() / "absent.k"); }),
+            (t.path() / "absent.k").string() + ": cannot open the file");
+}
+
+TEST(DeckCase, KeywordsInCaseBlocksAreSkippedAndReported) {
+  TempDir t;
+  const auto p =
+      t.write("d.k", std::string(kCube) +
+                         "*MAT_ELASTIC\n1,1,1,0.3\n"
+                         "*TITLE\nbase\n*TITLE CID=1\ncase one\n"
+                         "*CASE\n101 LOW\n"
+                         "*CASE_BEGIN_1\n*INITIAL_VELOCITY_NODE\n1,5,0,0\n*CASE_END_1\n");
+  const auto m = crumple::model::readModel(p);
+  EXPECT_EQ(m.title, "base");
+  EXPECT_DOUBLE_EQ(m.initial_velocity[0][0], 0.0);
+  ASSERT_EQ(m.unsupported.size(), 3u);
+  EXPECT_EQ(m.unsupported[0].keyword, "*TITLE");
+  EXPECT_EQ(m.unsupported[0].reason, "inside *CASE block (CID=1), not supported");
+  EXPECT_EQ(m.unsupported[1].keyword, "*CASE");
+  EXPECT_EQ(m.unsupported[2].keyword, "*INITIAL_VELOCITY_NODE");
+  EXPECT_EQ(m.unsupported[2].first.line, 27);
+}
+
+TEST(DeckCard, CursorReadsTypedFieldsAndReportsUnusedValues) {
+  using namespace crumple::deck;
+  Deck deck;
+  deck.files = {"x.k"};
+  Keyword kw;
+  kw.name = "*CONTROL_SOLID";
+  kw.line = 4;
+  kw.lines = {{"         1         0         0         2", 0, 5}};
+  CardCursor cur(kw, deck);
+  const Card& c = cur.read(keywordSpec("*CONTROL_SOLID").card("card 1"));
+  EXPECT_EQ(c.integer("NIPTETS"), 4);  // 0 -> default 4
+  const auto unused = cur.flush();
+  ASSERT_EQ(unused.size(), 2u);  // ESORT 1 and SWLOCL 2 differ from their defaults
+  EXPECT_EQ(unused[0].field, "ESORT");
+  EXPECT_EQ(unused[1].field, "SWLOCL");
+  EXPECT_EQ(unused[1].where.str(), "x.k:5");
+  EXPECT_TRUE(cur.atEnd());
+  EXPECT_EQ(errorOf([&] { cur.read(keywordSpec("*CONTROL_SOLID").card("card 2")); }),
+            "x.k:4: *CONTROL_SOLID card 2 is missing");
+}

@@ -1,0 +1,580 @@
+// Constitutive laws: exact elastic answers, uniaxial-stress hardening slopes, Bauschinger
+// effect, plastic incompressibility, consistency (return onto the yield surface), yield
+// curves, Cowper-Symonds scaling, failure flags and batch-position independence.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <random>
+#include <variant>
+#include <vector>
+
+#include "materials/materials.hpp"
+#include "model/model.hpp"
+#include "util/error.hpp"
+
+namespace m = crumple::materials;
+namespace model = crumple::model;
+
+namespace {
+
+// One integration point with all the state any law needs.
+struct Point {
+  std::array<double, 6> s{};
+  std::array<double, 6> alpha{};
+  double eps_p = 0.0;
+  uint8_t failed = 0;
+};
+
+using Strain = std::array<double, 6>;
+
+void update(const m::Law& law, m::PointBatch& b) {
+  std::visit([&](const auto& l) { l.update(b); }, law);
+}
+
+// Advances a single point by one step through a batch of one.
+void step(const m::Law& law, Point& p, const Strain& de, double dt = 0.0) {
+  m::PointBatch b;
+  b.n = 1;
+  b.dt = dt;
+  for (int k = 0; k < 6; ++k) {
+    b.s[k] = &p.s[k];
+    b.de[k] = &de[k];
+    b.alpha[k] = &p.alpha[k];
+  }
+  b.eps_p = &p.eps_p;
+  b.failed = &p.failed;
+  update(law, b);
+}
+
+m::Moduli moduliOf(const m::Law& law) {
+  return std::visit([](const auto& l) { return l.moduli; }, law);
+}
+
+// Uniaxial stress: one axial strain increment, with the (equal) lateral strain increments
+// found by secant iteration so that s_yy = s_zz = 0 at the end of the step.
+void uniaxialStep(const m::Law& law, Point& p, double dex) {
+  const m::Moduli mod = moduliOf(law);
+  const double nu = (3.0 * mod.bulk - 2.0 * mod.shear) / (2.0 * (3.0 * mod.bulk + mod.shear));
+  auto trial = [&](double lat) {
+    Point c = p;
+    step(law, c, Strain{dex, lat, lat, 0, 0, 0});
+    return c;
+  };
+  double x0 = -nu * dex, x1 = -0.5 * dex;
+  Point c0 = trial(x0), c1 = trial(x1);
+  for (int it = 0; it < 100; ++it) {
+    const double r0 = c0.s[1], r1 = c1.s[1];
+    if (std::abs(r1) <= 1e-13 * std::max(1.0, std::abs(c1.s[0])) || r1 == r0) break;
+    const double x2 = x1 - r1 * (x1 - x0) / (r1 - r0);
+    x0 = x1;
+    c0 = c1;
+    x1 = x2;
+    c1 = trial(x1);
+  }
+  ASSERT_LE(std::abs(c1.s[1]), 1e-9 * std::max(1.0, std::abs(c1.s[0])));
+  ASSERT_EQ(c1.s[1], c1.s[2]);  // symmetric lateral response
+  p = c1;
+}
+
+// von Mises norm of dev(s) - alpha.
+double vonMises(const Point& p, bool kinematic) {
+  const double pr = (p.s[0] + p.s[1] + p.s[2]) / 3.0;
+  double x[6];
+  for (int k = 0; k < 6; ++k) x[k] = p.s[k] - (k < 3 ? pr : 0.0) - (kinematic ? p.alpha[k] : 0.0);
+  const double j2 =
+      0.5 * (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) + x[3] * x[3] + x[4] * x[4] + x[5] * x[5];
+  return std::sqrt(3.0 * j2);
+}
+
+// Cowper-Symonds factor computed independently from the strain increment.
+double csFactor(const Strain& de, double dt, double C, double P) {
+  const double tr = de[0] + de[1] + de[2];
+  double ee = 0.0;
+  for (int k = 0; k < 3; ++k) ee += (de[k] - tr / 3.0) * (de[k] - tr / 3.0);
+  for (int k = 3; k < 6; ++k) ee += 2.0 * de[k] * de[k];
+  const double rate = std::sqrt(2.0 / 3.0 * ee) / dt;
+  return 1.0 + std::pow(rate / C, 1.0 / P);
+}
+
+constexpr double kE = 210000.0, kNu = 0.3, kSigy = 250.0, kEtan = 2100.0;
+
+m::PlasticKinematic makePK(double beta, double src = 0, double srp = 0, double fs = 0) {
+  m::PlasticKinematic pk;
+  pk.moduli = m::moduliFromYoung(kE, kNu);
+  pk.sigy = kSigy;
+  pk.etan = kEtan;
+  pk.beta = beta;
+  pk.src = src;
+  pk.srp = srp;
+  pk.fs = fs;
+  return pk;
+}
+
+// 3-point yield curve (aluminium-like) for MAT_024.
+m::PiecewiseLinear makePLCurve(double c = 0, double p = 0, double fail = 0) {
+  m::PiecewiseLinear pl;
+  pl.moduli = m::moduliFromYoung(70000.0, 0.33);
+  pl.curve_eps = {0.0, 0.05, 0.2};
+  pl.curve_sig = {200.0, 300.0, 360.0};
+  pl.sigy = 200.0;
+  pl.c = c;
+  pl.p = p;
+  pl.fail = fail;
+  return pl;
+}
+
+// The curve above, written out independently (extrapolated with the last slope).
+double curveStress(double e) {
+  if (e < 0.05) return 200.0 + 2000.0 * e;
+  return 300.0 + 400.0 * (e - 0.05);
+}
+
+Strain randomStrain(std::mt19937_64& rng, double scale) {
+  std::uniform_real_distribution<double> u(-scale, scale);
+  Strain d;
+  for (double& v : d) v = u(rng);
+  return d;
+}
+
+}  // namespace
+
+// ---- elastic -------------------------------------------------------------------------------
+
+TEST(MaterialsElastic, ModuliFromYoung) {
+  const m::Moduli mod = m::moduliFromYoung(200.0, 0.25);
+  EXPECT_DOUBLE_EQ(mod.bulk, 200.0 / 1.5);
+  EXPECT_DOUBLE_EQ(mod.shear, 80.0);
+}
+
+TEST(MaterialsElastic, UniaxialStrainIsExact) {
+  const m::Law law = m::Elastic{m::moduliFromYoung(kE, kNu)};
+  const double lam = kE * kNu / ((1 + kNu) * (1 - 2 * kNu)), G = kE / (2 * (1 + kNu));
+  Point p;
+  const double d = 1e-4;
+  step(law, p, Strain{d, 0, 0, 0, 0, 0});
+  EXPECT_NEAR(p.s[0], (lam + 2 * G) * d, 1e-12 * (lam + 2 * G) * d);
+  EXPECT_NEAR(p.s[1], lam * d, 1e-12 * lam * d);
+  EXPECT_NEAR(p.s[2], lam * d, 1e-12 * lam * d);
+  EXPECT_EQ(p.s[3], 0.0);
+  EXPECT_EQ(p.s[4], 0.0);
+  EXPECT_EQ(p.s[5], 0.0);
+  EXPECT_EQ(p.eps_p, 0.0);
+}
+
+TEST(MaterialsElastic, PureShearUsesTensorComponents) {
+  const m::Moduli mod = m::moduliFromYoung(kE, kNu);
+  const m::Law law = m::Elastic{mod};
+  Point p;
+  const double g = 2e-4;  // tensor shear D_xy dt (engineering gamma would be 2g)
+  step(law, p, Strain{0, 0, 0, g, 0, 0});
+  step(law, p, Strain{0, 0, 0, 0, -g, 0});
+  step(law, p, Strain{0, 0, 0, 0, 0, 0.5 * g});
+  EXPECT_EQ(p.s[0], 0.0);
+  EXPECT_EQ(p.s[1], 0.0);
+  EXPECT_EQ(p.s[2], 0.0);
+  EXPECT_DOUBLE_EQ(p.s[3], 2 * mod.shear * g);
+  EXPECT_DOUBLE_EQ(p.s[4], -2 * mod.shear * g);
+  EXPECT_DOUBLE_EQ(p.s[5], mod.shear * g);
+}
+
+// ---- MAT_003 -------------------------------------------------------------------------------
+
+// Uniaxial stress after yield follows sigma = sigy + Etan (eps - sigy/E) for any beta.
+TEST(MaterialsPlasticKinematic, UniaxialStressFollowsTangentModulus) {
+  for (double beta : {0.0, 0.5, 1.0}) {
+    SCOPED_TRACE(beta);
+    const m::Law law = makePK(beta);
+    Point p;
+    double eps = 0.0;
+    for (int i = 0; i < 100; ++i) {
+      const double d = 2e-4;
+      uniaxialStep(law, p, d);
+      eps += d;
+      const double expected = eps <= kSigy / kE ? kE * eps : kSigy + kEtan * (eps - kSigy / kE);
+      EXPECT_NEAR(p.s[0], expected, 1e-6 * expected) << "eps " << eps;
+      EXPECT_NEAR(p.eps_p, std::max(0.0, eps - p.s[0] / kE), 1e-9);
+    }
+    EXPECT_GT(p.eps_p, 0.015);
+  }
+}
+
+// Load to eps_max, then reverse: reverse yielding at sigma_max - 2 R where R is the yield
+// radius at eps_max: sigy (kinematic, Bauschinger), sigma_max (isotropic), in between mixed.
+TEST(MaterialsPlasticKinematic, CyclicBauschingerAndIsotropicReversal) {
+  const double Ep = kE * kEtan / (kE - kEtan);
+  for (double beta : {0.0, 0.5, 1.0}) {
+    SCOPED_TRACE(beta);
+    const m::Law law = makePK(beta);
+    Point p;
+    const double d = 2e-4;
+    const int n_up = 50;
+    for (int i = 0; i < n_up; ++i) uniaxialStep(law, p, d);
+    const double eps_max = n_up * d;
+    const double sig_max = kSigy + kEtan * (eps_max - kSigy / kE);
+    ASSERT_NEAR(p.s[0], sig_max, 1e-6 * sig_max);
+    const double R = kSigy + beta * Ep * p.eps_p;
+    const double sig_rev = sig_max - 2.0 * R;
+    if (beta == 0.0) {
+      EXPECT_NEAR(sig_rev, sig_max - 2 * kSigy, 1e-9);  // Bauschinger
+    }
+    if (beta == 1.0) {
+      EXPECT_NEAR(sig_rev, -sig_max, 1e-9);  // isotropic: the surface grew to sigma_max
+    }
+    const double eps_rev = eps_max - (sig_max - sig_rev) / kE;
+    const double eps_p_max = p.eps_p;
+    double eps = eps_max;
+    for (int i = 0; i < 100; ++i) {
+      uniaxialStep(law, p, -d);
+      eps -= d;
+      if (eps > eps_rev) {
+        EXPECT_NEAR(p.s[0], sig_max - kE * (eps_max - eps), 1e-6 * kSigy) << "eps " << eps;
+        EXPECT_EQ(p.eps_p, eps_p_max) << "eps " << eps;
+      } else {
+        EXPECT_NEAR(p.s[0], sig_rev + kEtan * (eps - eps_rev), 1e-6 * kSigy) << "eps " << eps;
+        EXPECT_NEAR(p.eps_p, eps_p_max + (eps_rev - eps) - (sig_rev - p.s[0]) / kE, 1e-9);
+      }
+    }
+  }
+}
+
+// Plastic flow is deviatoric: the mean stress is K times the volumetric strain, whatever the
+// plastic history; and every plastic step ends on the (rate-scaled) yield surface.
+TEST(MaterialsPlasticKinematic, IncompressibleFlowAndConsistency) {
+  const double Ep = kE * kEtan / (kE - kEtan);
+  const double C = 40.4, P = 5.0, dt = 1e-6;
+  for (bool rate : {false, true}) {
+    for (double beta : {0.0, 0.3, 1.0}) {
+      SCOPED_TRACE(beta);
+      const m::Law law = rate ? makePK(beta, C, P) : makePK(beta);
+      const m::Moduli mod = moduliOf(law);
+      std::mt19937_64 rng(42);
+      Point p;
+      double vol = 0.0;
+      int plastic_steps = 0;
+      for (int i = 0; i < 300; ++i) {
+        const Strain de = randomStrain(rng, 1.5e-3);
+        const double ep0 = p.eps_p;
+        step(law, p, de, dt);
+        vol += de[0] + de[1] + de[2];
+        const double pr = (p.s[0] + p.s[1] + p.s[2]) / 3.0;
+        EXPECT_NEAR(pr, mod.bulk * vol, 1e-12 * mod.bulk * 1e-2);
+        if (p.eps_p > ep0) {
+          ++plastic_steps;
+          const double rf = rate ? csFactor(de, dt, C, P) : 1.0;
+          const double sy = rf * (kSigy + beta * Ep * p.eps_p);
+          EXPECT_NEAR(vonMises(p, true), sy, 1e-11 * sy);
+        } else {
+          EXPECT_LE(vonMises(p, true), (rate ? csFactor(de, dt, C, P) : 1.0) *
+                                           (kSigy + beta * Ep * p.eps_p) * (1 + 1e-12));
+        }
+        // The back stress stays deviatoric.
+        EXPECT_NEAR(p.alpha[0] + p.alpha[1] + p.alpha[2], 0.0, 1e-12 * kSigy);
+      }
+      EXPECT_GT(plastic_steps, 100);
+    }
+  }
+}
+
+// Cowper-Symonds: first yield at (1 + (rate/C)^(1/P)) sigy for a deviatoric strain path.
+TEST(MaterialsPlasticKinematic, CowperSymondsScalesFirstYield) {
+  const double C = 40.4, P = 5.0, dt = 1e-5, d = 0.01;
+  const Strain de{d, -0.5 * d, -0.5 * d, 0, 0, 0};  // effective rate d/dt = 1000/s
+  const double rf = 1.0 + std::pow(1000.0 / C, 1.0 / P);
+  m::PlasticKinematic pk = makePK(0.0, C, P);
+  pk.etan = 0.0;  // perfectly plastic: the surface stays at rf sigy
+  Point p;
+  step(pk, p, de, dt);
+  EXPECT_GT(p.eps_p, 0.0);
+  EXPECT_NEAR(vonMises(p, false), rf * kSigy, 1e-12 * rf * kSigy);
+  EXPECT_NEAR(std::abs(p.s[0] - p.s[1]), rf * kSigy, 1e-12 * rf * kSigy);
+
+  // An elastic trial between sigy and rf sigy at that rate does not yield.
+  const double G = pk.moduli.shear;
+  const double d_el = 0.5 * (1.0 + rf) * kSigy / (3.0 * G);  // q_trial = 3 G d
+  Point p2;
+  step(pk, p2, Strain{d_el, -0.5 * d_el, -0.5 * d_el, 0, 0, 0}, d_el / 1000.0);
+  EXPECT_EQ(p2.eps_p, 0.0);
+  EXPECT_NEAR(vonMises(p2, false), 3.0 * G * d_el, 1e-12 * kSigy);
+
+  // Without a time step there is no rate: plain sigy.
+  Point p3;
+  step(pk, p3, de, 0.0);
+  EXPECT_NEAR(vonMises(p3, false), kSigy, 1e-12 * kSigy);
+}
+
+TEST(MaterialsPlasticKinematic, FailureFlagAtFailureStrain) {
+  const double fs = 0.012;
+  const m::Law law = makePK(0.5, 0, 0, fs);
+  Point p;
+  bool seen = false;
+  for (int i = 0; i < 60; ++i) {
+    uniaxialStep(law, p, 5e-4);
+    EXPECT_EQ(p.failed, p.eps_p >= fs ? 1 : 0) << "eps_p " << p.eps_p;
+    seen = seen || p.failed;
+  }
+  EXPECT_TRUE(seen);
+
+  const m::Law no_fail = makePK(0.5);  // fs = 0: never
+  Point q;
+  for (int i = 0; i < 60; ++i) uniaxialStep(no_fail, q, 5e-4);
+  EXPECT_GT(q.eps_p, fs);
+  EXPECT_EQ(q.failed, 0);
+}
+
+// ---- MAT_024 -------------------------------------------------------------------------------
+
+// Uniaxial stress reproduces the yield curve, including steps that cross a breakpoint or
+// the end of the curve, and the extrapolation beyond it.
+TEST(MaterialsPiecewiseLinear, UniaxialStressReproducesCurve) {
+  const m::PiecewiseLinear pl = makePLCurve();
+  const double E = 70000.0;
+  EXPECT_DOUBLE_EQ(pl.yieldStress(0.0), 200.0);
+  EXPECT_DOUBLE_EQ(pl.yieldStress(0.05), 300.0);
+  EXPECT_NEAR(pl.yieldStress(0.3), 400.0, 1e-12);  // extrapolated
+  for (double d : {0.0004, 0.0131, 0.047}) {
+    SCOPED_TRACE(d);
+    Point p;
+    double eps = 0.0;
+    while (eps < 0.35) {
+      uniaxialStep(pl, p, d);
+      eps += d;
+      if (eps <= 200.0 / E) {
+        EXPECT_NEAR(p.s[0], E * eps, 1e-9 * E * eps);
+        EXPECT_EQ(p.eps_p, 0.0);
+      } else {
+        // Plastic axial strain = effective plastic strain in uniaxial stress.
+        EXPECT_NEAR(p.eps_p, eps - p.s[0] / E, 1e-9);
+        EXPECT_NEAR(p.s[0], curveStress(p.eps_p), 1e-6 * p.s[0]) << "eps " << eps;
+      }
+    }
+    EXPECT_GT(p.eps_p, 0.2);  // went past the last point
+  }
+}
+
+TEST(MaterialsPiecewiseLinear, BilinearMatchesTangentModulus) {
+  m::PiecewiseLinear pl;
+  pl.moduli = m::moduliFromYoung(kE, kNu);
+  pl.sigy = kSigy;
+  pl.etan = kEtan;
+  Point p;
+  double eps = 0.0;
+  for (int i = 0; i < 60; ++i) {
+    uniaxialStep(pl, p, 3e-4);
+    eps += 3e-4;
+    const double expected = eps <= kSigy / kE ? kE * eps : kSigy + kEtan * (eps - kSigy / kE);
+    EXPECT_NEAR(p.s[0], expected, 1e-6 * expected);
+  }
+  EXPECT_NEAR(pl.yieldStress(0.01), kSigy + kE * kEtan / (kE - kEtan) * 0.01, 1e-9);
+}
+
+TEST(MaterialsPiecewiseLinear, IncompressibleFlowAndReturnOnCurve) {
+  const double C = 100.0, P = 4.0, dt = 1e-6;
+  for (bool rate : {false, true}) {
+    SCOPED_TRACE(rate);
+    const m::PiecewiseLinear pl = rate ? makePLCurve(C, P) : makePLCurve();
+    std::mt19937_64 rng(7);
+    Point p;
+    double vol = 0.0;
+    int plastic_steps = 0;
+    for (int i = 0; i < 400; ++i) {
+      const Strain de = randomStrain(rng, 4e-3);
+      const double ep0 = p.eps_p;
+      step(pl, p, de, dt);
+      vol += de[0] + de[1] + de[2];
+      const double pr = (p.s[0] + p.s[1] + p.s[2]) / 3.0;
+      EXPECT_NEAR(pr, pl.moduli.bulk * vol, 1e-12 * pl.moduli.bulk * 1e-1);
+      if (p.eps_p > ep0) {
+        ++plastic_steps;
+        const double sy = (rate ? csFactor(de, dt, C, P) : 1.0) * curveStress(p.eps_p);
+        EXPECT_NEAR(vonMises(p, false), sy, 1e-11 * sy);
+      }
+    }
+    EXPECT_GT(plastic_steps, 100);
+    EXPECT_GT(p.eps_p, 0.05);  // the walk crossed the breakpoint
+  }
+}
+
+TEST(MaterialsPiecewiseLinear, CowperSymondsScalesFirstYield) {
+  const double C = 40.0, P = 5.0, dt = 1e-5, d = 0.01;
+  const Strain de{d, -0.5 * d, -0.5 * d, 0, 0, 0};
+  const double rf = 1.0 + std::pow(1000.0 / C, 1.0 / P);
+  m::PiecewiseLinear pl = makePLCurve(C, P);
+  pl.curve_eps = {0.0};  // single point: perfectly plastic at 200
+  pl.curve_sig = {200.0};
+  Point p;
+  step(pl, p, de, dt);
+  EXPECT_GT(p.eps_p, 0.0);
+  EXPECT_NEAR(vonMises(p, false), rf * 200.0, 1e-12 * rf * 200.0);
+
+  m::PiecewiseLinear bl;  // bilinear with Etan = 0
+  bl.moduli = pl.moduli;
+  bl.sigy = 200.0;
+  bl.c = C;
+  bl.p = P;
+  Point q;
+  step(bl, q, de, dt);
+  EXPECT_NEAR(vonMises(q, false), rf * 200.0, 1e-12 * rf * 200.0);
+}
+
+TEST(MaterialsPiecewiseLinear, FailureFlagAtFailureStrain) {
+  const double fail = 0.03;
+  const m::Law law = makePLCurve(0, 0, fail);
+  Point p;
+  bool seen = false;
+  for (int i = 0; i < 40; ++i) {
+    uniaxialStep(law, p, 1e-3);
+    EXPECT_EQ(p.failed, p.eps_p >= fail ? 1 : 0) << "eps_p " << p.eps_p;
+    seen = seen || p.failed;
+  }
+  EXPECT_TRUE(seen);
+}
+
+// ---- batch independence --------------------------------------------------------------------
+
+// The same point gives bitwise identical results alone in a batch of 1 and at positions 0, 5
+// and 12 of a batch of 13 (vectorised body versus scalar remainder).
+TEST(MaterialsBatch, ResultsIndependentOfPositionInBatch) {
+  m::PiecewiseLinear bilinear;
+  bilinear.moduli = m::moduliFromYoung(kE, kNu);
+  bilinear.sigy = kSigy;
+  bilinear.etan = kEtan;
+  bilinear.c = 40.0;
+  bilinear.p = 5.0;
+  const std::vector<m::Law> laws{m::Elastic{m::moduliFromYoung(kE, kNu)},
+                                 makePK(0.3),
+                                 makePK(0.7, 40.4, 5.0, 0.01),
+                                 makePLCurve(),
+                                 makePLCurve(40.0, 5.0, 0.05),
+                                 bilinear};
+  for (std::size_t l = 0; l < laws.size(); ++l) {
+    SCOPED_TRACE(l);
+    for (int pos : {0, 5, 12}) {
+      SCOPED_TRACE(pos);
+      const int N = 13;
+      std::mt19937_64 rng(1234);
+      // SoA storage for the batch of 13 and the lone point.
+      std::vector<double> s(6 * N), a(6 * N), de(6 * N), ep(N, 0.0);
+      std::vector<uint8_t> failed(N, 0);
+      std::uniform_real_distribution<double> u(-300.0, 300.0);
+      for (double& v : s) v = u(rng);
+      Point lone;
+      for (int k = 0; k < 6; ++k) lone.s[k] = s[k * N + pos];
+      m::PointBatch big, one;
+      big.n = N;
+      one.n = 1;
+      Strain lone_de{};
+      for (int k = 0; k < 6; ++k) {
+        big.s[k] = &s[k * N];
+        big.de[k] = &de[k * N];
+        big.alpha[k] = &a[k * N];
+        one.s[k] = &lone.s[k];
+        one.de[k] = &lone_de[k];
+        one.alpha[k] = &lone.alpha[k];
+      }
+      big.eps_p = ep.data();
+      big.failed = failed.data();
+      one.eps_p = &lone.eps_p;
+      one.failed = &lone.failed;
+      for (int st = 0; st < 40; ++st) {
+        const double dt = 1e-6 * (1 + st % 3);
+        big.dt = one.dt = dt;
+        for (double& v : de) v = std::uniform_real_distribution<double>(-2e-3, 2e-3)(rng);
+        for (int k = 0; k < 6; ++k) lone_de[k] = de[k * N + pos];
+        update(laws[l], big);
+        update(laws[l], one);
+      }
+      for (int k = 0; k < 6; ++k) {
+        EXPECT_EQ(std::memcmp(&s[k * N + pos], &lone.s[k], sizeof(double)), 0) << k;
+        EXPECT_EQ(std::memcmp(&a[k * N + pos], &lone.alpha[k], sizeof(double)), 0) << k;
+      }
+      EXPECT_EQ(std::memcmp(&ep[pos], &lone.eps_p, sizeof(double)), 0);
+      EXPECT_EQ(failed[pos], lone.failed);
+      if (l > 0) {
+        EXPECT_GT(lone.eps_p, 0.0);
+      }
+    }
+  }
+}
+
+// ---- makeLaw -------------------------------------------------------------------------------
+
+TEST(MaterialsMakeLaw, BuildsEachLawFromTheModel) {
+  model::Model mdl;
+  model::Curve c;
+  c.id = 7;
+  c.x = {0.0, 0.1, 0.5};
+  c.y = {180.0, 260.0, 300.0};
+  mdl.curves.push_back(c);
+
+  model::Material el;
+  el.law = model::ElasticLaw{200.0, 0.25};
+  const m::Law l1 = m::makeLaw(el, mdl);
+  ASSERT_TRUE(std::holds_alternative<m::Elastic>(l1));
+  EXPECT_DOUBLE_EQ(std::get<m::Elastic>(l1).moduli.shear, 80.0);
+
+  model::Material pk;
+  pk.law = model::PlasticKinematicLaw{kE, kNu, kSigy, kEtan, 0.5, 40.4, 5.0, 0.2};
+  const m::Law l2 = m::makeLaw(pk, mdl);
+  ASSERT_TRUE(std::holds_alternative<m::PlasticKinematic>(l2));
+  const auto& p2 = std::get<m::PlasticKinematic>(l2);
+  EXPECT_EQ(p2.sigy, kSigy);
+  EXPECT_EQ(p2.etan, kEtan);
+  EXPECT_EQ(p2.beta, 0.5);
+  EXPECT_EQ(p2.src, 40.4);
+  EXPECT_EQ(p2.srp, 5.0);
+  EXPECT_EQ(p2.fs, 0.2);
+  EXPECT_DOUBLE_EQ(p2.moduli.bulk, kE / (3 * (1 - 2 * kNu)));
+
+  model::Material pl;
+  model::PiecewiseLinearLaw pll;
+  pll.E = kE;
+  pll.nu = kNu;
+  pll.sigy = 999.0;  // ignored when LCSS is given
+  pll.fail = 0.3;
+  pll.c = 10.0;
+  pll.p = 2.0;
+  pll.lcss = 0;
+  pl.law = pll;
+  const m::Law l3 = m::makeLaw(pl, mdl);
+  ASSERT_TRUE(std::holds_alternative<m::PiecewiseLinear>(l3));
+  const auto& p3 = std::get<m::PiecewiseLinear>(l3);
+  EXPECT_EQ(p3.sigy, 180.0);
+  EXPECT_EQ(p3.curve_eps, c.x);
+  EXPECT_EQ(p3.curve_sig, c.y);
+  EXPECT_EQ(p3.fail, 0.3);
+  EXPECT_EQ(p3.c, 10.0);
+  EXPECT_EQ(p3.p, 2.0);
+  EXPECT_DOUBLE_EQ(p3.yieldStress(0.3), 280.0);
+
+  pll.lcss = model::kNone;
+  pll.sigy = 300.0;
+  pll.etan = 1000.0;
+  pl.law = pll;
+  const m::Law l4 = m::makeLaw(pl, mdl);
+  const auto& p4 = std::get<m::PiecewiseLinear>(l4);
+  EXPECT_TRUE(p4.curve_eps.empty());
+  EXPECT_EQ(p4.sigy, 300.0);
+  EXPECT_EQ(p4.etan, 1000.0);
+}
+
+TEST(MaterialsMakeLaw, RejectsUnusableParameters) {
+  model::Model mdl;
+  model::Material mat;
+  model::PiecewiseLinearLaw pll;
+  pll.E = kE;
+  pll.nu = kNu;
+  pll.sigy = kSigy;
+  pll.lcss = 3;  // no such curve
+  mat.law = pll;
+  EXPECT_THROW(m::makeLaw(mat, mdl), crumple::util::InputError);
+  mat.law = model::PlasticKinematicLaw{kE, kNu, kSigy, kE, 0, 0, 0, 0};  // Etan = E
+  EXPECT_THROW(m::makeLaw(mat, mdl), crumple::util::InputError);
+  mat.law = model::PlasticKinematicLaw{kE, kNu, kSigy, kEtan, 1.5, 0, 0, 0};  // BETA > 1
+  EXPECT_THROW(m::makeLaw(mat, mdl), crumple::util::InputError);
+  mat.law = model::ElasticLaw{kE, 0.5};
+  EXPECT_THROW(m::makeLaw(mat, mdl), crumple::util::InputError);
+}
