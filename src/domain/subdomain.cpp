@@ -7,16 +7,18 @@
 namespace crumple::domain {
 
 void SolidBlock::resize(std::size_t n, bool plastic, bool kinematic, bool stiffness_hourglass) {
-  for (auto& s : sig) s.assign(n, 0.0);
-  eps_p.assign(plastic ? n : 0, 0.0);
-  for (auto& s : alpha) s.assign(kinematic ? n : 0, 0.0);
-  for (auto& s : hgq) s.assign(stiffness_hourglass ? n : 0, 0.0);
-  vol0.assign(n, 0.0);
-  vol.assign(n, 0.0);
-  e_int.assign(n, 0.0);
-  e_hg.assign(n, 0.0);
-  active.assign(n, 1);
-  failed.assign(n, 0);
+  const std::size_t padded = (n + kSolidBatch - 1) / kSolidBatch * kSolidBatch;
+  for (auto& s : sig) s.assign(padded, 0.0);
+  eps_p.assign(plastic ? padded : 0, 0.0);
+  for (auto& s : alpha) s.assign(kinematic ? padded : 0, 0.0);
+  for (auto& s : hgq) s.assign(stiffness_hourglass ? padded : 0, 0.0);
+  // Padding lanes get a unit volume so that densities stay finite there.
+  vol0.assign(padded, 1.0);
+  vol.assign(padded, 1.0);
+  e_int.assign(padded, 0.0);
+  e_hg.assign(padded, 0.0);
+  active.assign(padded, 1);
+  failed.assign(padded, 0);
 }
 
 namespace {

@@ -21,6 +21,11 @@ struct HourglassParams {
   double qm = 0.1;  // coefficient
 };
 
+// Elements are processed in batches of this many; a block's per-element state arrays are
+// padded to whole batches so that kernels load and store them as contiguous vectors (padding
+// lanes compute on copies of real data and are never read back).
+inline constexpr int kSolidBatch = 16;
+
 // Elements of one part: one element type x one material x one section. State is a structure
 // of arrays owned by the block; element e of the block is global (model) element elem[e].
 struct SolidBlock {
@@ -43,9 +48,13 @@ struct SolidBlock {
   std::vector<double> e_int, e_hg;           // internal and hourglass energy
   std::vector<uint8_t> active;               // 0 once eroded
   std::vector<uint8_t> failed;               // material reports failure this cycle
-  std::vector<double> mass_scale;            // mass scaling factor (>= 1), empty if none
+  std::vector<double> mass_scale;            // mass scaling factor (>= 1), padded; empty if none
 
   std::size_t size() const { return elem.size(); }
+  // Elements plus padding: a whole number of batches.
+  std::size_t paddedSize() const {
+    return (elem.size() + kSolidBatch - 1) / kSolidBatch * kSolidBatch;
+  }
   void resize(std::size_t n, bool plastic, bool kinematic, bool stiffness_hourglass);
 };
 

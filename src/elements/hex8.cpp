@@ -155,22 +155,24 @@ BlockStatus solidBlockForces(const Law& law, domain::SolidBlock& blk, const doma
       LaneArray vol_mid;
       volumeOf(w.xm, w.b, vol_mid);
       double L[3][3][kBatch];  // velocity gradient dv_i/dx_j
+      LaneArray inv_vol_mid;
+      for (int l = 0; l < kBatch; ++l) inv_vol_mid[l] = 1.0 / vol_mid[l];
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
           for (int l = 0; l < kBatch; ++l) {
             double s = 0.0;
             for (int a = 0; a < 8; ++a) s += w.v[i][a][l] * w.b[j][a][l];
-            L[i][j][l] = s / vol_mid[l];
+            L[i][j][l] = s * inv_vol_mid[l];
           }
 
       // --- stress: Jaumann rotation, then the material law ------------------------------------
       for (int k = 0; k < 6; ++k)
-        for (int l = 0; l < kBatch; ++l) w.s[k][l] = blk.sig[k][laneElement(first, n, l)];
+        for (int l = 0; l < kBatch; ++l) w.s[k][l] = blk.sig[k][first + l];
       if constexpr (Law::kPlastic)
-        for (int l = 0; l < kBatch; ++l) w.eps_p[l] = blk.eps_p[laneElement(first, n, l)];
+        for (int l = 0; l < kBatch; ++l) w.eps_p[l] = blk.eps_p[first + l];
       if constexpr (Law::kKinematic)
         for (int k = 0; k < 6; ++k)
-          for (int l = 0; l < kBatch; ++l) w.alpha[k][l] = blk.alpha[k][laneElement(first, n, l)];
+          for (int l = 0; l < kBatch; ++l) w.alpha[k][l] = blk.alpha[k][first + l];
       LaneArray trace_d;
       for (int l = 0; l < kBatch; ++l) {
         const double wxy = 0.5 * (L[0][1][l] - L[1][0][l]) * dt;
@@ -208,7 +210,7 @@ BlockStatus solidBlockForces(const Law& law, domain::SolidBlock& blk, const doma
       volumeOf(w.x, w.b, vol);
       maxFaceArea(w.x, area);
       for (int l = 0; l < kBatch; ++l) {
-        const std::size_t e = laneElement(first, n, l);
+        const std::size_t e = first + static_cast<std::size_t>(l);
         const double v_safe = vol[l] > 0.0 ? vol[l] : 1.0;
         rho[l] = blk.rho0 * blk.vol0[e] / v_safe;
         c[l] = std::sqrt(lam2mu / rho[l]);
@@ -221,7 +223,8 @@ BlockStatus solidBlockForces(const Law& law, domain::SolidBlock& blk, const doma
                    ? rho[l] * len[l] *
                          (bv.q1 * len[l] * trace_d[l] * trace_d[l] - bv.q2 * c[l] * trace_d[l])
                    : 0.0;
-        cbrt_vol[l] = std::cbrt(v_safe);
+        // V^(2/3) for the viscous hourglass coefficient only (cbrt is not cheap).
+        cbrt_vol[l] = stiffness_hg ? 0.0 : std::cbrt(v_safe);
       }
 
       // --- internal energy: midpoint rule on the stress power, plus bulk viscosity work ------
@@ -245,19 +248,20 @@ BlockStatus solidBlockForces(const Law& law, domain::SolidBlock& blk, const doma
         }
 
       // --- hourglass control (FB 1981 sec. 4; LS-DYNA Theory Manual "Hourglass control") -----
+      // Every loop below runs over lanes innermost so it vectorises.
       LaneArray de_hg;
       for (int l = 0; l < kBatch; ++l) de_hg[l] = 0.0;
       if (qm > 0.0) {
-        LaneArray coef, bb;
+        LaneArray coef, inv_vol;
         for (int l = 0; l < kBatch; ++l) {
-          double s = 0.0;
+          double bb = 0.0;
           for (int cc = 0; cc < 3; ++cc)
-            for (int a = 0; a < 8; ++a) s += w.b[cc][a][l] * w.b[cc][a][l];
-          bb[l] = s;
+            for (int a = 0; a < 8; ++a) bb += w.b[cc][a][l] * w.b[cc][a][l];
+          inv_vol[l] = 1.0 / vol[l];
           // Viscous: a_h = QM rho V^(2/3) c / 4 on the unnormalised vectors (LS-DYNA).
           // Stiffness: QM (lambda + 2 mu) B:B / V per mode, integrated incrementally; FB
           // normalise the hourglass vectors by 1/sqrt(8), hence the 1/8 on the +-1 vectors.
-          coef[l] = stiffness_hg ? 0.125 * qm * lam2mu * bb[l] / vol[l] * dt
+          coef[l] = stiffness_hg ? 0.125 * qm * lam2mu * bb * inv_vol[l] * dt
                                  : 0.25 * qm * rho[l] * cbrt_vol[l] * cbrt_vol[l] * c[l];
         }
         for (int alpha = 0; alpha < 4; ++alpha) {
@@ -266,36 +270,56 @@ BlockStatus solidBlockForces(const Law& law, domain::SolidBlock& blk, const doma
             for (int l = 0; l < kBatch; ++l) g[a][l] = kGamma[alpha][a];
           if (projected_hg) {
             // gamma_a = Gamma_a - (1/V) (sum_b x_b Gamma_b) . B_a: orthogonal to linear fields.
-            for (int l = 0; l < kBatch; ++l) {
-              double h[3] = {0.0, 0.0, 0.0};
-              for (int cc = 0; cc < 3; ++cc)
-                for (int a = 0; a < 8; ++a) h[cc] += w.x[cc][a][l] * kGamma[alpha][a];
+            double h[3][kBatch];
+            for (int cc = 0; cc < 3; ++cc) {
+              for (int l = 0; l < kBatch; ++l) h[cc][l] = 0.0;
               for (int a = 0; a < 8; ++a)
-                g[a][l] -=
-                    (h[0] * w.b[0][a][l] + h[1] * w.b[1][a][l] + h[2] * w.b[2][a][l]) / vol[l];
+                for (int l = 0; l < kBatch; ++l) h[cc][l] += w.x[cc][a][l] * kGamma[alpha][a];
+              for (int l = 0; l < kBatch; ++l) h[cc][l] *= inv_vol[l];
             }
+            for (int a = 0; a < 8; ++a)
+              for (int l = 0; l < kBatch; ++l)
+                g[a][l] -= h[0][l] * w.b[0][a][l] + h[1][l] * w.b[1][a][l] + h[2][l] * w.b[2][a][l];
           }
-          for (int i = 0; i < 3; ++i)
-            for (int l = 0; l < kBatch; ++l) {
-              double qdot = 0.0;
-              for (int a = 0; a < 8; ++a) qdot += w.v[i][a][l] * g[a][l];
-              double force, mean_force;
-              if (stiffness_hg) {
-                const std::size_t e = laneElement(first, n, l);
-                const double old = blk.hgq[static_cast<std::size_t>(3 * alpha + i)][e];
-                force = old + coef[l] * qdot;
-                mean_force = 0.5 * (old + force);  // trapezoidal work, as for the stress
-                if (l < n) blk.hgq[static_cast<std::size_t>(3 * alpha + i)][e] = force;
-              } else {
-                force = mean_force = coef[l] * qdot;
+          for (int i = 0; i < 3; ++i) {
+            double qdot[kBatch], force[kBatch], mean_force[kBatch];
+            for (int l = 0; l < kBatch; ++l) qdot[l] = 0.0;
+            for (int a = 0; a < 8; ++a)
+              for (int l = 0; l < kBatch; ++l) qdot[l] += w.v[i][a][l] * g[a][l];
+            if (stiffness_hg) {
+              std::vector<double>& stored = blk.hgq[static_cast<std::size_t>(3 * alpha + i)];
+              for (int l = 0; l < kBatch; ++l) {
+                const double old = stored[first + static_cast<std::size_t>(l)];
+                force[l] = old + coef[l] * qdot[l];
+                mean_force[l] = 0.5 * (old + force[l]);  // trapezoidal work, as for the stress
               }
-              for (int a = 0; a < 8; ++a) w.f[i][a][l] -= force * g[a][l];
-              de_hg[l] += mean_force * qdot * dt;
+              for (int l = 0; l < kBatch; ++l)
+                stored[first + static_cast<std::size_t>(l)] = force[l];
+            } else {
+              for (int l = 0; l < kBatch; ++l) force[l] = mean_force[l] = coef[l] * qdot[l];
             }
+            for (int a = 0; a < 8; ++a)
+              for (int l = 0; l < kBatch; ++l) w.f[i][a][l] -= force[l] * g[a][l];
+            for (int l = 0; l < kBatch; ++l) de_hg[l] += mean_force[l] * qdot[l] * dt;
+          }
         }
       }
 
-      // --- store state, forces, stable step ---------------------------------------------------
+      // --- store state (whole batch, contiguous), then per element: forces and stable step --
+      const uint8_t* alive = &blk.active[first];
+      for (int k = 0; k < 6; ++k)
+        for (int l = 0; l < kBatch; ++l) blk.sig[k][first + l] = alive[l] ? w.s[k][l] : 0.0;
+      if constexpr (Law::kPlastic)
+        for (int l = 0; l < kBatch; ++l)
+          blk.eps_p[first + l] = alive[l] ? w.eps_p[l] : blk.eps_p[first + l];
+      if constexpr (Law::kKinematic)
+        for (int k = 0; k < 6; ++k)
+          for (int l = 0; l < kBatch; ++l) blk.alpha[k][first + l] = w.alpha[k][l];
+      for (int l = 0; l < kBatch; ++l) {
+        blk.vol[first + l] = vol[l];
+        blk.e_int[first + l] += alive[l] ? de_int[l] : 0.0;
+        blk.e_hg[first + l] += alive[l] ? de_hg[l] : 0.0;
+      }
       for (int l = 0; l < n; ++l) {
         const std::size_t e = first + static_cast<std::size_t>(l);
         double* slot = slots + 3 * (blk.slot_offset + 8 * e);
@@ -305,13 +329,6 @@ BlockStatus solidBlockForces(const Law& law, domain::SolidBlock& blk, const doma
         }
         if (vol[l] <= 0.0 && (st.bad_elem < 0 || blk.elem[e] < st.bad_elem))
           st.bad_elem = blk.elem[e];
-        for (int k = 0; k < 6; ++k) blk.sig[k][e] = w.s[k][l];
-        if constexpr (Law::kPlastic) blk.eps_p[e] = w.eps_p[l];
-        if constexpr (Law::kKinematic)
-          for (int k = 0; k < 6; ++k) blk.alpha[k][e] = w.alpha[k][l];
-        blk.vol[e] = vol[l];
-        blk.e_int[e] += de_int[l];
-        blk.e_hg[e] += de_hg[l];
         if (w.failed[l]) {
           // Erosion: the element is removed once its integration point fails (LS-DYNA FAIL).
           blk.active[e] = 0;

@@ -14,7 +14,7 @@
 
 namespace crumple::elements {
 
-inline constexpr int kBatch = 16;
+inline constexpr int kBatch = domain::kSolidBatch;
 
 // Coordinates or velocities of the 8 nodes of a batch: v[component][node][lane].
 using NodalBatch = double[3][8][kBatch];

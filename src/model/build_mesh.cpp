@@ -245,25 +245,22 @@ void readSectionSolid(Context& ctx, const deck::Keyword& kw, const KeywordOption
     s.id = positiveId(c, "SECID");
     s.where = c.where();
     const auto elform = c.integer("ELFORM");
-    // ELFORM (Keyword Manual, *SECTION_SOLID): 1 constant stress (default), 2 fully
-    // integrated selective-reduced; 0 is the one-point corotational form of
-    // *MAT_MODIFIED_HONEYCOMB and -1/-2 the fully integrated forms for poor aspect ratios,
-    // run here as their nearest supported relative.
-    if (elform == 1 || elform == 2) {
-      s.elform = static_cast<int>(elform);
-    } else if (elform == 0 || elform == -1 || elform == -2) {
-      s.elform = elform == 0 ? 1 : 2;
-      ctx.ignore(
-          kw.name, "ELFORM",
-          "ELFORM " + std::to_string(elform) + " is run as ELFORM " + std::to_string(s.elform),
-          c.where());
+    // ELFORM (Keyword Manual, *SECTION_SOLID): 1 constant stress (default); 0 is the one-point
+    // corotational form of *MAT_MODIFIED_HONEYCOMB, run here as 1 with a note. The fully
+    // integrated forms (2, -1, -2) are not implemented yet: a deck that uses them is refused
+    // rather than silently run with one-point elements.
+    if (elform == 1) {
+      s.elform = 1;
+    } else if (elform == 0) {
+      s.elform = 1;
+      ctx.ignore(kw.name, "ELFORM", "ELFORM 0 is run as ELFORM 1", c.where());
     } else {
       // A definition Crumple cannot run: an error only when an element uses it.
       ctx.define(Kind::Section, s.id, c, "SECID");
       ctx.defineUnsupported(Kind::Section, s.id, kw.name + " ELFORM=" + std::to_string(elform),
                             c.where());
-      ctx.reportUnsupported(kw, "ELFORM " + std::to_string(elform) +
-                                    " not supported (1 and 2 are; 0 runs as 1, -1 and -2 as 2)");
+      ctx.reportUnsupported(
+          kw, "ELFORM " + std::to_string(elform) + " not supported yet (1 is; 0 runs as 1)");
       ctx.collect(cur);
       continue;
     }

@@ -74,7 +74,7 @@ void Solver::initialize() {
     bool any = false;
     for (std::size_t ib = 0; ib < sd_.solid_blocks.size(); ++ib) {
       auto& blk = sd_.solid_blocks[ib];
-      blk.mass_scale.assign(blk.size(), 1.0);
+      blk.mass_scale.assign(blk.paddedSize(), 1.0);
       for (std::size_t e = 0; e < blk.size(); ++e) {
         double* slot = sd_.slots.data() + 3 * (blk.slot_offset + 8 * e);
         const double step = ctl.tssfac * element_dt[ib][e];
