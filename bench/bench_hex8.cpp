@@ -76,8 +76,9 @@ void runKernel(benchmark::State& state, model::MaterialLaw law, int ihq) {
 #pragma omp parallel for schedule(static)
     for (std::size_t n = 0; n < nn; ++n) {
       double s[3] = {0, 0, 0};
-      for (int32_t k = sd.gather_ptr[n]; k < sd.gather_ptr[n + 1]; ++k)
-        for (int c = 0; c < 3; ++c) s[c] += sd.slots[3 * std::size_t(sd.gather_slot[k]) + c];
+      for (int32_t k = sd.internal.ptr[n]; k < sd.internal.ptr[n + 1]; ++k)
+        for (int c = 0; c < 3; ++c)
+          s[c] += sd.slots[3 * std::size_t(sd.internal.slot[std::size_t(k)]) + c];
       for (int c = 0; c < 3; ++c) sd.f[3 * n + c] = s[c];
     }
     benchmark::DoNotOptimize(sd.f.data());

@@ -14,9 +14,12 @@
 #include "comm/communicator.hpp"
 #include "domain/subdomain.hpp"
 #include "model/build.hpp"
+#include "model/serialize.hpp"
 #include "output/files.hpp"
 #include "output/results.hpp"
+#include "partition/partition.hpp"
 #include "solver/solver.hpp"
+#include "util/archive.hpp"
 #include "util/error.hpp"
 
 namespace crumple::app {
@@ -133,14 +136,39 @@ int checkCommand(const CheckOptions& opt, std::FILE* out) {
   }
 }
 
+namespace {
+
+// Runs `step` on rank 0 and tells every rank whether it succeeded; on failure rank 0 prints
+// the message and every rank gets false (so all end together, with one message).
+template <class F>
+bool rootStep(const comm::Communicator& comm, F&& step) {
+  std::string error;
+  if (comm.isRoot()) {
+    try {
+      step();
+    } catch (const std::exception& e) {
+      error = e.what();
+      if (error.empty()) error = "unknown error";
+    }
+  }
+  const bool failed = comm.anyAll(!error.empty());
+  if (failed && comm.isRoot()) std::fprintf(stderr, "crumple: error: %s\n", error.c_str());
+  return !failed;
+}
+
+}  // namespace
+
 int runCommand(const RunOptions& opt) {
   const auto wall0 = std::chrono::steady_clock::now();
   auto& comm = comm::world();
+  const bool root = comm.isRoot();
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
   const int threads = omp_get_max_threads();
 
+  // Rank 0 reads and validates the deck and partitions it; the others receive the result.
   model::Model m;
-  try {
+  std::vector<int32_t> elem_rank;
+  const bool read_ok = rootStep(comm, [&] {
     m = model::readModel(opt.deck);
     if (opt.end_time) m.controls.end_time = *opt.end_time;
     if (opt.strict && !m.unsupported.empty()) {
@@ -151,36 +179,59 @@ int runCommand(const RunOptions& opt) {
       throw util::InputError(opt.deck +
                              ": *CONTROL_TERMINATION gives no end time (ENDTIM) or "
                              "cycle count (ENDCYC); pass --endtime to run anyway");
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "crumple: error: %s\n", e.what());
-    return 1;
+    partition::Options popt;
+    popt.method = partition::parseMethod(opt.partition);
+    elem_rank = partition::partitionElements(m, comm.size(), popt);
+  });
+  if (!read_ok) return 1;
+  if (comm.distributed()) {
+    std::vector<char> bytes;
+    if (root) {
+      bytes = model::serialize(m);
+      util::ArchiveWriter w;
+      w.put(elem_rank);
+      bytes.insert(bytes.end(), w.bytes().begin(), w.bytes().end());
+    }
+    comm.broadcast(bytes);
+    if (!root) {
+      // The model's bytes come first, then the partition.
+      m = model::deserialize(bytes);
+      const auto tail = model::serialize(m).size();
+      std::vector<char> rest(bytes.begin() + long(tail), bytes.end());
+      util::ArchiveReader r(rest);
+      r.get(elem_rank);
+    }
   }
 
   const std::filesystem::path dir =
       opt.output_dir.empty()
           ? std::filesystem::path(std::filesystem::path(opt.deck).stem().string() + ".out")
           : std::filesystem::path(opt.output_dir);
-  try {
-    output::prepareResultsDir(dir, opt.overwrite);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "crumple: error: %s\n", e.what());
-    return 1;
-  }
+  if (!rootStep(comm, [&] { output::prepareResultsDir(dir, opt.overwrite); })) return 1;
 
-  std::ofstream log(dir / "run.log");
+  std::ofstream log;
+  if (root) log.open(dir / "run.log");
   auto say = [&](const std::string& text) {
+    if (!root) return;
     log << text;
     log.flush();
   };
-  say(fmt::format("crumple {} — {} rank(s), {} thread(s)\n", CRUMPLE_VERSION, comm.size(),
-                  threads));
+  say(fmt::format("crumple {} — {} rank(s), {} thread(s) per rank, partition {}\n", CRUMPLE_VERSION,
+                  comm.size(), threads, opt.partition));
   const std::string warn = warningsText(m);
-  if (!warn.empty()) {
+  if (!warn.empty() && root) {
     std::fputs(warn.c_str(), stderr);
     say(warn);
   }
 
-  auto sd = domain::buildSerialSubdomain(m);
+  domain::Subdomain sd;
+  try {
+    sd = domain::buildSubdomain(m, elem_rank, comm.rank(), comm.size());
+  } catch (const std::exception& e) {
+    // Every rank sees the same model and partition, so every rank fails alike.
+    if (root) std::fprintf(stderr, "crumple: error: %s\n", e.what());
+    return 1;
+  }
   solver::Solver s(m, sd, comm);
   output::RunInfo info;
   info.deck = opt.deck;
@@ -191,20 +242,23 @@ int runCommand(const RunOptions& opt) {
 
   std::unique_ptr<output::ResultsWriter> writer;
   int status = 0;
+  const bool show = !opt.quiet && root;
   try {
     s.initialize();
     say(modelSummary(m, s));
-    writer = std::make_unique<output::ResultsWriter>(dir, m, s);
-    output::Progress progress(stdout, !opt.quiet && isatty(STDOUT_FILENO), s.endTime());
-    const bool show = !opt.quiet;
+    writer = std::make_unique<output::ResultsWriter>(dir, m, s, comm);
+    output::Progress progress(stdout, show && isatty(STDOUT_FILENO), s.endTime());
     writer->write(s);
     while (!s.finished()) {
       s.step();
       writer->write(s);
       // The energy sums cost a pass over every node and element: refresh them sparingly.
-      if (show && s.cycle() % 64 == 0)
-        progress.update(s.cycle(), s.time(), s.dt(), s.energies().ratio);
-      if (g_interrupted) {
+      if (s.cycle() % 64 == 0) {
+        const double ratio = s.energies().ratio;
+        if (show) progress.update(s.cycle(), s.time(), s.dt(), ratio);
+      }
+      // A signal may reach only some ranks: stop together.
+      if (comm.anyAll(g_interrupted)) {
         info.termination = "signal";
         info.message = "interrupted by a signal; the last state was written";
         status = 1;
@@ -212,12 +266,14 @@ int runCommand(const RunOptions& opt) {
       }
     }
     writer->write(s, true);
-    if (show) progress.finish(s.cycle(), s.time(), s.dt(), s.energies().ratio);
-  } catch (const std::exception& e) {
+    const double ratio = s.energies().ratio;
+    if (show) progress.finish(s.cycle(), s.time(), s.dt(), ratio);
+  } catch (const util::NumericalError& e) {
+    // Numerical failures are detected collectively: every rank is here together.
     info.termination = "error";
     info.message = e.what();
     status = 1;
-    std::fprintf(stderr, "crumple: error: %s\n", e.what());
+    if (root) std::fprintf(stderr, "crumple: error: %s\n", e.what());
     say(fmt::format("error termination: {}\n", e.what()));
     if (writer) {
       try {
@@ -226,6 +282,14 @@ int runCommand(const RunOptions& opt) {
         say(fmt::format("could not write the last state: {}\n", e2.what()));
       }
     }
+  } catch (const std::exception& e) {
+    // Anything else (an I/O failure on one rank) may leave the others waiting in a
+    // collective: end them all.
+    std::fprintf(stderr, "crumple: error (rank %d): %s\n", comm.rank(), e.what());
+    if (comm.distributed()) comm.abort(1);
+    info.termination = "error";
+    info.message = e.what();
+    status = 1;
   }
   info.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   const double output_s = writer ? writer->seconds() : 0.0;
@@ -240,8 +304,7 @@ int runCommand(const RunOptions& opt) {
   if (s.cycle() > 0 && info.wall_s > 0.0)
     say(fmt::format("{:.3g} element-cycles per second\n",
                     double(m.solids.size()) * double(s.cycle()) / info.wall_s));
-  if (!opt.quiet)
-    std::printf("%s termination; results in %s\n", info.termination.c_str(), dir.c_str());
+  if (show) std::printf("%s termination; results in %s\n", info.termination.c_str(), dir.c_str());
   return status;
 }
 

@@ -9,12 +9,13 @@ namespace crumple::app {
 
 struct RunOptions {
   std::string deck;
-  std::string output_dir;          // empty: <deck stem>.out next to the working directory
-  int threads = 0;                 // 0: OpenMP default
-  std::optional<double> end_time;  // overrides *CONTROL_TERMINATION ENDTIM
-  bool strict = false;             // unsupported keywords are errors
-  bool overwrite = false;          // replace results of an earlier run in the folder
-  bool quiet = false;              // no progress line
+  std::string output_dir;           // empty: <deck stem>.out next to the working directory
+  int threads = 0;                  // 0: OpenMP default
+  std::optional<double> end_time;   // overrides *CONTROL_TERMINATION ENDTIM
+  bool strict = false;              // unsupported keywords are errors
+  bool overwrite = false;           // replace results of an earlier run in the folder
+  bool quiet = false;               // no progress line
+  std::string partition = "metis";  // element partitioner for distributed runs: metis or rcb
 };
 
 // Exit status: 0 normal termination, 1 error termination (ARCHITECTURE.md, Commands).

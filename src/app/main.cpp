@@ -2,8 +2,23 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"
+#include "app/partition_command.hpp"
+#include "comm/communicator.hpp"
+
+namespace {
+int dispatch(int argc, char** argv);
+}
 
 int main(int argc, char** argv) {
+  // MPI starts only under mpirun; a plain run is one serial rank.
+  crumple::comm::initialize(&argc, &argv);
+  const int status = dispatch(argc, argv);
+  crumple::comm::finalize();
+  return status;
+}
+
+namespace {
+int dispatch(int argc, char** argv) {
   CLI::App app{"Crumple: parallel explicit finite-element code for crash and impact", "crumple"};
   app.set_version_flag("--version", std::string("crumple ") + CRUMPLE_VERSION);
   app.require_subcommand(1);
@@ -21,6 +36,8 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--overwrite", run.overwrite,
                     "Replace the results of an earlier run in the results folder");
   run_cmd->add_flag("-q,--quiet", run.quiet, "No progress line");
+  run_cmd->add_option("--partition", run.partition, "Element partitioner under mpirun")
+      ->check(CLI::IsMember({"metis", "rcb"}));
 
   crumple::app::CheckOptions check;
   auto* check_cmd = app.add_subcommand(
@@ -31,14 +48,33 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   check_cmd->add_flag("--strict", check.strict, "Exit with an error if anything is unsupported");
 
+  std::string part_deck, part_dir, part_method = "metis";
+  int part_count = 0;
+  auto* part_cmd = app.add_subcommand("partition", crumple::app::kPartitionHelp);
+  part_cmd->add_option("deck", part_deck, "Keyword deck (.k)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  part_cmd->add_option("-n,--parts", part_count, "Number of ranks")
+      ->required()
+      ->check(CLI::PositiveNumber);
+  part_cmd->add_option("-o,--output", part_dir, "Output folder (default: <deck stem>.partition)");
+  part_cmd->add_option("--partition", part_method, "Partitioner")
+      ->check(CLI::IsMember({"metis", "rcb"}));
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
+    if (!crumple::comm::world().isRoot()) return e.get_exit_code() == 0 ? 0 : 2;
     const int code = app.exit(e);
     // CLI11 returns 0 for --help/--version; every real usage error is exit status 2.
     return code == 0 ? 0 : 2;
   }
   if (*run_cmd) return crumple::app::runCommand(run);
+  // check and partition are serial tools: under mpirun only rank 0 works.
+  if (!crumple::comm::world().isRoot()) return 0;
   if (*check_cmd) return crumple::app::checkCommand(check, stdout);
+  if (*part_cmd)
+    return crumple::app::partitionCommand(part_deck, part_count, part_dir, part_method, stdout);
   return 2;
 }
+}  // namespace

@@ -1,23 +1,222 @@
 #include "comm/communicator.hpp"
 
+#include <mpi.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+
 namespace crumple::comm {
 
+namespace {
+
+// Times a communication call into Communicator::seconds_.
+class Timed {
+ public:
+  explicit Timed(double& sink) : sink_(sink), start_(std::chrono::steady_clock::now()) {}
+  ~Timed() {
+    sink_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+  Timed(const Timed&) = delete;
+  Timed& operator=(const Timed&) = delete;
+
+ private:
+  double& sink_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+void check(int code, const char* what) {
+  if (code != MPI_SUCCESS) throw std::runtime_error(std::string("MPI failure in ") + what);
+}
+
+template <class T>
+std::vector<T> gatherAll(const std::vector<T>& local, MPI_Datatype type, int size, double& t) {
+  Timed timer(t);
+  int n = static_cast<int>(local.size());
+  std::vector<int> counts(static_cast<std::size_t>(size)), displs(static_cast<std::size_t>(size));
+  check(MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD), "Allgather");
+  int total = 0;
+  for (int r = 0; r < size; ++r) {
+    displs[static_cast<std::size_t>(r)] = total;
+    total += counts[static_cast<std::size_t>(r)];
+  }
+  std::vector<T> out(static_cast<std::size_t>(total));
+  check(MPI_Allgatherv(local.data(), n, type, out.data(), counts.data(), displs.data(), type,
+                       MPI_COMM_WORLD),
+        "Allgatherv");
+  return out;
+}
+
+}  // namespace
+
 double Communicator::minAll(double local) const {
-  return local;
+  if (!mpi_) return local;
+  Timed t(seconds_);
+  double out = local;
+  check(MPI_Allreduce(&local, &out, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD), "Allreduce(min)");
+  return out;
 }
+
+int64_t Communicator::minAll(int64_t local) const {
+  if (!mpi_) return local;
+  Timed t(seconds_);
+  int64_t out = local;
+  check(MPI_Allreduce(&local, &out, 1, MPI_INT64_T, MPI_MIN, MPI_COMM_WORLD), "Allreduce(min)");
+  return out;
+}
+
+int64_t Communicator::maxAll(int64_t local) const {
+  if (!mpi_) return local;
+  Timed t(seconds_);
+  int64_t out = local;
+  check(MPI_Allreduce(&local, &out, 1, MPI_INT64_T, MPI_MAX, MPI_COMM_WORLD), "Allreduce(max)");
+  return out;
+}
+
 long long Communicator::sumAll(long long local) const {
-  return local;
+  if (!mpi_) return local;
+  Timed t(seconds_);
+  long long out = local;
+  check(MPI_Allreduce(&local, &out, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD), "Allreduce(sum)");
+  return out;
 }
+
 std::vector<double> Communicator::sumOrdered(const std::vector<double>& local) const {
-  return local;
+  if (!mpi_) return local;
+  // Gather every rank's partials and add them in rank order: MPI_SUM may associate in any
+  // order, which would make diagnostics differ from run to run.
+  const auto all = gatherAll(local, MPI_DOUBLE, size_, seconds_);
+  std::vector<double> out(local.size(), 0.0);
+  for (int r = 0; r < size_; ++r)
+    for (std::size_t i = 0; i < local.size(); ++i) out[i] += all[r * local.size() + i];
+  return out;
 }
+
 bool Communicator::anyAll(bool local) const {
-  return local;
+  if (!mpi_) return local;
+  Timed t(seconds_);
+  int in = local ? 1 : 0, out = 0;
+  check(MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD), "Allreduce(any)");
+  return out != 0;
+}
+
+std::vector<double> Communicator::allGather(const std::vector<double>& local) const {
+  if (!mpi_) return local;
+  return gatherAll(local, MPI_DOUBLE, size_, seconds_);
+}
+
+std::vector<int64_t> Communicator::allGather(const std::vector<int64_t>& local) const {
+  if (!mpi_) return local;
+  return gatherAll(local, MPI_INT64_T, size_, seconds_);
+}
+
+std::vector<char> Communicator::gatherToRoot(const std::vector<char>& local) const {
+  if (!mpi_) return local;
+  Timed t(seconds_);
+  const auto n = static_cast<long long>(local.size());
+  std::vector<long long> counts(static_cast<std::size_t>(size_));
+  check(MPI_Gather(&n, 1, MPI_LONG_LONG, counts.data(), 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD),
+        "Gather");
+  std::vector<char> out;
+  if (rank_ == 0) {
+    out = local;
+    for (int r = 1; r < size_; ++r) {
+      std::vector<char> buf(static_cast<std::size_t>(counts[static_cast<std::size_t>(r)]));
+      check(MPI_Recv(buf.data(), static_cast<int>(buf.size()), MPI_CHAR, r, 7, MPI_COMM_WORLD,
+                     MPI_STATUS_IGNORE),
+            "Recv");
+      out.insert(out.end(), buf.begin(), buf.end());
+    }
+  } else {
+    check(MPI_Send(local.data(), static_cast<int>(local.size()), MPI_CHAR, 0, 7, MPI_COMM_WORLD),
+          "Send");
+  }
+  return out;
+}
+
+void Communicator::broadcast(std::vector<char>& bytes) const {
+  if (!mpi_) return;
+  Timed t(seconds_);
+  long long n = static_cast<long long>(bytes.size());
+  check(MPI_Bcast(&n, 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD), "Bcast");
+  bytes.resize(static_cast<std::size_t>(n));
+  // In chunks: an MPI count is an int.
+  constexpr long long kChunk = 1 << 30;
+  for (long long off = 0; off < n; off += kChunk) {
+    const int len = static_cast<int>(std::min(kChunk, n - off));
+    check(MPI_Bcast(bytes.data() + off, len, MPI_CHAR, 0, MPI_COMM_WORLD), "Bcast");
+  }
+}
+
+void Communicator::exchangeBegin(const std::vector<Message>& sends,
+                                 const std::vector<Message>& recvs) {
+  if (!mpi_) return;
+  Timed t(seconds_);
+  auto post = [&](MPI_Request req) {
+    const auto* p = reinterpret_cast<const std::byte*>(&req);
+    requests_.insert(requests_.end(), p, p + sizeof(MPI_Request));
+  };
+  for (const auto& m : recvs) {
+    MPI_Request req;
+    check(
+        MPI_Irecv(m.data, static_cast<int>(m.count), MPI_DOUBLE, m.peer, 11, MPI_COMM_WORLD, &req),
+        "Irecv");
+    post(req);
+  }
+  for (const auto& m : sends) {
+    MPI_Request req;
+    check(
+        MPI_Isend(m.data, static_cast<int>(m.count), MPI_DOUBLE, m.peer, 11, MPI_COMM_WORLD, &req),
+        "Isend");
+    post(req);
+  }
+}
+
+void Communicator::exchangeEnd() {
+  if (!mpi_ || requests_.empty()) return;
+  Timed t(seconds_);
+  std::vector<MPI_Request> reqs(requests_.size() / sizeof(MPI_Request));
+  std::memcpy(reqs.data(), requests_.data(), requests_.size());
+  check(MPI_Waitall(static_cast<int>(reqs.size()), reqs.data(), MPI_STATUSES_IGNORE), "Waitall");
+  requests_.clear();
+}
+
+void Communicator::barrier() const {
+  if (!mpi_) return;
+  Timed t(seconds_);
+  MPI_Barrier(MPI_COMM_WORLD);
+}
+
+void Communicator::abort(int code) const {
+  if (mpi_) MPI_Abort(MPI_COMM_WORLD, code);
+  std::exit(code);
 }
 
 Communicator& world() {
   static Communicator instance;
   return instance;
+}
+
+void initialize(int* argc, char*** argv) {
+  const bool launched = std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") ||
+                        std::getenv("PMIX_RANK") || std::getenv("CRUMPLE_FORCE_MPI");
+  if (!launched) return;
+  int provided = 0;
+  // Threads compute between MPI calls, never inside them: FUNNELED is enough.
+  MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
+  auto& w = world();
+  MPI_Comm_rank(MPI_COMM_WORLD, &w.rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &w.size_);
+  w.mpi_ = true;
+}
+
+void finalize() {
+  auto& w = world();
+  if (w.mpi_) {
+    MPI_Finalize();
+    w.mpi_ = false;
+  }
 }
 
 }  // namespace crumple::comm

@@ -1,33 +1,76 @@
-// The only place that will call MPI. Physics code talks to this interface; a serial run is
-// one rank and every call below is then a local no-op or identity.
+// The only place that calls MPI. Physics code talks to this interface; a serial run is one
+// rank, and every call below is then a local identity. MPI is initialised only when the
+// process was started by mpirun (or when forced), so plain runs never touch it.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
+#include <string>
 #include <vector>
 
 namespace crumple::comm {
+
+// One message to or from a neighbour rank in a point-to-point exchange.
+struct Message {
+  int peer = 0;
+  double* data = nullptr;
+  std::size_t count = 0;  // doubles
+};
 
 class Communicator {
  public:
   int rank() const { return rank_; }
   int size() const { return size_; }
   bool isRoot() const { return rank_ == 0; }
+  bool distributed() const { return size_ > 1; }
 
   // Exact global minimum (min is order-independent, so this is deterministic).
   double minAll(double local) const;
-  // Global sum of integers.
+  int64_t minAll(int64_t local) const;
+  int64_t maxAll(int64_t local) const;
   long long sumAll(long long local) const;
   // Element-wise sums of per-rank partial diagnostics, added in rank order on every rank so
   // the result does not depend on message arrival order.
   std::vector<double> sumOrdered(const std::vector<double>& local) const;
   // True on every rank if any rank passes true (used to end all ranks on one rank's error).
   bool anyAll(bool local) const;
+  // Every rank's vector, concatenated in rank order, on every rank.
+  std::vector<double> allGather(const std::vector<double>& local) const;
+  std::vector<int64_t> allGather(const std::vector<int64_t>& local) const;
+  // Every rank's bytes, concatenated in rank order, on the root only (empty elsewhere).
+  std::vector<char> gatherToRoot(const std::vector<char>& local) const;
+  // The root's bytes on every rank.
+  void broadcast(std::vector<char>& bytes) const;
+  // Point-to-point exchange: posts every receive and send, then waits for all (the
+  // non-blocking halves let the caller overlap work between begin and end).
+  void exchangeBegin(const std::vector<Message>& sends, const std::vector<Message>& recvs);
+  void exchangeEnd();
+  void barrier() const;
+  // Ends every rank at once after an error only this rank saw (no collective possible).
+  [[noreturn]] void abort(int code) const;
+
+  // Seconds spent inside communication calls (waiting included), for the timing table.
+  double seconds() const { return seconds_; }
+
+  // Initialised by initialize(); world() before that is a single serial rank.
+  bool usesMpi() const { return mpi_; }
 
  private:
+  friend void initialize(int* argc, char*** argv);
+  friend void finalize();
   int rank_ = 0;
   int size_ = 1;
+  bool mpi_ = false;
+  mutable double seconds_ = 0.0;
+  std::vector<std::byte> requests_;  // MPI_Request handles, kept opaque outside communicator.cpp
 };
 
-// The communicator of this process (serial: a single rank).
+// The communicator of this process.
 Communicator& world();
+
+// Starts MPI when the process was launched by mpirun (OMPI_COMM_WORLD_SIZE, PMI_SIZE or
+// CRUMPLE_FORCE_MPI in the environment); otherwise world() stays serial.
+void initialize(int* argc, char*** argv);
+void finalize();
 
 }  // namespace crumple::comm

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace crumple::constraints {
 
@@ -41,14 +42,11 @@ Boundary::Boundary(const model::Model& m, const domain::Subdomain& sd) {
     const int32_t n = localOf(sd, l.node);
     if (n != model::kNone) loads_.push_back({n, l.dof, curveOf(m, l.curve), l.sf});
   }
-  for (const auto& p : m.pressure_loads) {
-    Pressure q{{}, curveOf(m, p.curve), p.sf, p.at};
-    bool held = true;
-    for (int k = 0; k < 4; ++k) {
-      q.nodes[k] = localOf(sd, p.nodes[k]);
-      held = held && q.nodes[k] != model::kNone;
-    }
-    if (held) pressure_.push_back(q);
+  for (std::size_t k = 0; k < sd.pressure_segments.size(); ++k) {
+    const auto& p = m.pressure_loads[static_cast<std::size_t>(sd.pressure_segments[k])];
+    Pressure q{{}, curveOf(m, p.curve), p.sf, p.at, sd.pressure_slot_offset + 4 * k};
+    for (int c = 0; c < 4; ++c) q.nodes[c] = localOf(sd, p.nodes[c]);
+    pressure_.push_back(q);
   }
   for (const auto& b : m.body_loads) body_.push_back({b.dof, curveOf(m, b.curve), b.sf});
   for (const auto& w : m.rigid_walls) {
@@ -65,16 +63,13 @@ Boundary::Boundary(const model::Model& m, const domain::Subdomain& sd) {
   }
 }
 
-void Boundary::externalForces(double t, const domain::Subdomain& sd,
-                              domain::NodeVector& f_ext) const {
-  std::fill(f_ext.begin(), f_ext.end(), 0.0);
-  for (const auto& l : loads_)
-    f_ext[3 * static_cast<std::size_t>(l.node) + l.dof] += l.sf * curveValue(l.curve, t);
-
+void Boundary::pressureForces(double t, domain::Subdomain& sd) const {
   // Follower pressure on the current geometry: F = -p A, A = (x3 - x1) x (x4 - x2) / 2 the
   // area vector along the right-hand normal of n1..n4 (LS-DYNA: positive pressure pushes
   // against the segment normal). Triangles (n3 == n4) share it in thirds.
   for (const auto& p : pressure_) {
+    double* slot = &sd.slots[3 * p.first_slot];
+    std::fill(slot, slot + 12, 0.0);
     if (t < p.at) continue;
     const double pr = p.sf * curveValue(p.curve, t - p.at);
     if (pr == 0.0) continue;
@@ -91,10 +86,14 @@ void Boundary::externalForces(double t, const domain::Subdomain& sd,
     const int corners = triangle ? 3 : 4;
     const double share = -pr / corners;
     for (int k = 0; k < corners; ++k)
-      for (int c = 0; c < 3; ++c)
-        f_ext[3 * static_cast<std::size_t>(p.nodes[k]) + c] += share * area[c];
+      for (int c = 0; c < 3; ++c) slot[3 * k + c] = share * area[c];
   }
+}
 
+void Boundary::externalForces(double t, const domain::Subdomain& sd,
+                              domain::NodeVector& f_ext) const {
+  for (const auto& l : loads_)
+    f_ext[3 * static_cast<std::size_t>(l.node) + l.dof] += l.sf * curveValue(l.curve, t);
   // Base acceleration: body force -m a on every node.
   for (const auto& b : body_) {
     const double acc = b.sf * curveValue(b.curve, t);
@@ -111,7 +110,7 @@ double Boundary::applyKinematics(double t, double dt_n, double dt_half, domain::
   auto impose = [&](std::size_t i, double v_new) {
     const double m = sd.mass[i / 3];
     const double dv = v_new - sd.v[i];
-    work += m * dv * 0.5 * (v_old[i] + v_new);
+    if (sd.node_owned[i / 3]) work += m * dv * 0.5 * (v_old[i] + v_new);
     sd.v[i] = v_new;
   };
   for (const auto& [n, mask] : spc_)
@@ -146,13 +145,15 @@ double Boundary::applyKinematics(double t, double dt_n, double dt_half, domain::
 }
 
 double Boundary::applyRigidWalls(double dt_n, double dt_half, domain::Subdomain& sd,
-                                 const domain::NodeVector& v_old) {
+                                 const domain::NodeVector& v_old, const comm::Communicator& comm) {
   double absorbed = 0.0;
   for (auto& w : walls_) {
     const auto& d = *w.def;
     const model::Vec3& nrm = d.normal;
-    w.force = {0.0, 0.0, 0.0};
-    w.normal_force = 0.0;
+    // Forces of the owned nodes in contact, as (global node id, fx, fy, fz), to be summed in
+    // ascending node id over all ranks.
+    std::vector<int64_t> ids;
+    std::vector<double> forces;
     model::Vec3 m_axis{};
     if (d.finite) {
       m_axis = {nrm[1] * d.l_axis[2] - nrm[2] * d.l_axis[1],
@@ -187,18 +188,20 @@ double Boundary::applyRigidWalls(double dt_n, double dt_half, domain::Subdomain&
         const double scale = vt_mag > limit ? limit / vt_mag : 1.0;
         for (int c = 0; c < 3; ++c) v_new[c] -= scale * vt[c];
       }
-      double f[3];
+      const bool owned = sd.node_owned[n] != 0;
+      if (owned) ids.push_back(sd.node_id[n]);
       for (int c = 0; c < 3; ++c) {
         const double dv = v_new[c] - v[c];
-        f[c] = dt_n > 0.0 ? m * dv / dt_n : 0.0;
         // Energy taken out of the node, less the work the wall's own motion did on it.
         const double vmean = 0.5 * (v_old[3 * n + c] + v_new[c]);
-        absorbed -= m * dv * (vmean - w.velocity * nrm[c]);
-        w.force[c] += f[c];
+        if (owned) {
+          absorbed -= m * dv * (vmean - w.velocity * nrm[c]);
+          forces.push_back(dt_n > 0.0 ? m * dv / dt_n : 0.0);
+        }
         v[c] = v_new[c];
       }
-      w.normal_force += dot(nrm, f);
     }
+    sumWallForce(w, ids, forces, comm);
     if (d.moving && d.mass > 0.0) {
       // The structure pushes back on a wall of finite mass (Newton's third law).
       w.velocity -= dt_n * w.normal_force / d.mass;
@@ -206,6 +209,20 @@ double Boundary::applyRigidWalls(double dt_n, double dt_half, domain::Subdomain&
     w.displacement += dt_half * w.velocity;
   }
   return absorbed;
+}
+
+void Boundary::sumWallForce(WallState& w, const std::vector<int64_t>& ids,
+                            const std::vector<double>& forces, const comm::Communicator& comm) {
+  const auto all_ids = comm.allGather(ids);
+  const auto all_forces = comm.allGather(forces);
+  std::vector<std::size_t> order(all_ids.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return all_ids[a] < all_ids[b]; });
+  w.force = {0.0, 0.0, 0.0};
+  for (std::size_t k : order)
+    for (int c = 0; c < 3; ++c) w.force[c] += all_forces[3 * k + static_cast<std::size_t>(c)];
+  w.normal_force = dot(w.def->normal, w.force.data());
 }
 
 double Boundary::wallKineticEnergy() const {

@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "comm/communicator.hpp"
 #include "domain/subdomain.hpp"
 #include "model/model.hpp"
 
@@ -28,19 +29,26 @@ class Boundary {
  public:
   Boundary(const model::Model& model, const domain::Subdomain& sd);
 
-  // f_ext at time t on the current configuration: nodal loads, follower pressure, gravity.
+  // Follower pressure of the segments this rank computes, into their corner slots (they are
+  // exchanged and gathered like element forces, so every rank sums them in the same order).
+  void pressureForces(double t, domain::Subdomain& sd) const;
+
+  // f_ext at time t: nodal loads and gravity, plus the gathered pressure already in f_ext.
   void externalForces(double t, const domain::Subdomain& sd, domain::NodeVector& f_ext) const;
 
   // Enforces SPCs and prescribed motion on v(n+1/2) = sd.v, given v(n-1/2) in v_old;
-  // t is t(n), dt_n the step centred on t(n), dt_half = dt(n+1/2). Returns reaction work.
+  // t is t(n), dt_n the step centred on t(n), dt_half = dt(n+1/2). Returns the reaction work
+  // of the nodes this rank owns.
   double applyKinematics(double t, double dt_n, double dt_half, domain::Subdomain& sd,
                          const domain::NodeVector& v_old) const;
 
   // Stonewalls: no slave node ends the step behind a wall (DYNA3D stonewall: the normal
   // velocity is corrected so the node lands on the plane; Coulomb friction acts on the
-  // tangential velocity with the normal impulse as its bound). Returns absorbed energy.
+  // tangential velocity with the normal impulse as its bound). Returns the energy absorbed at
+  // the nodes this rank owns. Wall force totals are summed over all ranks in ascending global
+  // node order, so a moving wall moves identically for any number of ranks.
   double applyRigidWalls(double dt_n, double dt_half, domain::Subdomain& sd,
-                         const domain::NodeVector& v_old);
+                         const domain::NodeVector& v_old, const comm::Communicator& comm);
 
   const std::vector<WallState>& walls() const { return walls_; }
   // Kinetic energy of moving walls (part of the system's kinetic energy).
@@ -62,15 +70,19 @@ class Boundary {
     double sf;
   };
   struct Pressure {
-    std::array<int32_t, 4> nodes;
+    std::array<int32_t, 4> nodes;  // local nodes
     const model::Curve* curve;
     double sf, at;
+    std::size_t first_slot;
   };
   struct Body {
     int dof;
     const model::Curve* curve;
     double sf;
   };
+  static void sumWallForce(WallState& w, const std::vector<int64_t>& ids,
+                           const std::vector<double>& forces, const comm::Communicator& comm);
+
   std::vector<std::pair<int32_t, model::DofMask>> spc_;
   std::vector<Motion> motion_;
   std::vector<NodalLoad> loads_;

@@ -58,13 +58,32 @@ struct SolidBlock {
   void resize(std::size_t n, bool plastic, bool kinematic, bool stiffness_hourglass);
 };
 
+// Corner slots this rank sends to, and receives from, one neighbour each cycle. Both sides
+// list the slots in ascending (global source, corner) order, so the message needs no ids.
+struct PeerExchange {
+  int rank = 0;
+  std::vector<int32_t> send_slots;  // local slots whose node the peer also holds
+  std::size_t recv_first = 0;       // first ghost slot filled by this peer
+  std::size_t recv_count = 0;
+  std::vector<double> send_buffer;  // 3 doubles per send slot
+};
+
+// A node gathers, in ascending order of (source, corner), the slots of every element and
+// pressure segment at it: local ones and ghost copies received from neighbours. Sources are
+// numbered globally: solid element e is e, pressure segment s is num_solids + s.
+struct GatherPlan {
+  std::vector<int32_t> ptr;   // CSR over local nodes
+  std::vector<int32_t> slot;  // slot indices (3 doubles each)
+};
+
 struct Subdomain {
   int rank = 0;
   int num_ranks = 1;
 
   // Nodes: local index -> model node index (ascending, so local order == global id order).
   std::vector<int32_t> node_model;
-  std::vector<int64_t> node_id;  // user ids, for output
+  std::vector<int64_t> node_id;     // user ids, for output
+  std::vector<uint8_t> node_owned;  // 1 where this is the lowest rank holding the node
   NodeVector x0, x, v, a, f, f_ext;
   std::vector<double> mass;  // lumped nodal mass (incl. mass added by scaling)
   std::vector<double> mass_added;
@@ -72,20 +91,26 @@ struct Subdomain {
   std::vector<SolidBlock> solid_blocks;
   std::size_t num_elements = 0;
 
-  // Element corner forces: slots[3*(slot)+c], slot = block.slot_offset + 8*e + corner.
+  // Pressure segments computed here (model indices into Model::pressure_loads), each with 4
+  // corner slots from pressure_slot_offset on; every segment is computed by exactly one rank.
+  std::vector<int32_t> pressure_segments;
+  std::size_t pressure_slot_offset = 0;
+
+  // Corner slots: slots[3*slot + c]. Local element slots (block.slot_offset + 8 e + corner),
+  // then local pressure slots, then ghost slots received from neighbours.
   std::vector<double> slots;
-  // Gather plan (CSR): node n sums slots gather_slot[gather_ptr[n] .. gather_ptr[n+1])
-  // in ascending (global element id, corner) order.
-  std::vector<int32_t> gather_ptr;
-  std::vector<int32_t> gather_slot;
+  std::size_t num_local_slots = 0;
+  GatherPlan internal;  // element slots -> nodal internal force (and mass)
+  GatherPlan pressure;  // pressure slots -> nodal external force
+  std::vector<PeerExchange> peers;
 
   std::size_t numNodes() const { return node_model.size(); }
 };
 
-// Builds the subdomain that holds the given model elements (ascending) and the nodes they
-// reference, plus `extra_nodes` (nodes attached to no element that this rank keeps).
-Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& elements,
-                         const std::vector<int32_t>& extra_nodes, int rank, int num_ranks);
+// Builds rank `rank`'s subdomain from the element -> rank map of the whole model (one entry
+// per model solid). Nodes attached to no element are kept by rank 0.
+Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& elem_rank, int rank,
+                         int num_ranks);
 
 // The single subdomain of a serial run: every node and element of the model.
 Subdomain buildSerialSubdomain(const model::Model& model);

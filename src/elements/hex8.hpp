@@ -53,7 +53,8 @@ BlockStatus initializeSolids(domain::SolidBlock& block, const domain::NodeVector
 
 // Stable time step of one element from its characteristic length (volume / largest face
 // area, LS-DYNA Theory Manual sec. 22 "Time step control") and the dilatational wave speed,
-// reduced for bulk viscosity: dt = L / (Q + sqrt(Q^2 + c^2)), Q = Q2 c + Q1 L |tr D| (tr D < 0).
+// reduced for bulk viscosity: dt = L / (Q + sqrt(Q^2 + c^2)), Q = Q2 c + Q1 L |tr D| (for
+// either sign of tr D: a step that jumps with the sign pumps energy into vibrating elements).
 double solidTimeStep(double length, double wave_speed, double trace_d, const BulkViscosity& bv);
 
 }  // namespace crumple::elements

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -30,69 +31,112 @@ long peakMemoryBytes() {
 }  // namespace
 
 ResultsWriter::ResultsWriter(std::filesystem::path dir, const model::Model& model,
-                             const solver::Solver& s)
-    : dir_(std::move(dir)), model_(model), pvd_(dir_ / "results.pvd") {
+                             const solver::Solver& s, const comm::Communicator& comm)
+    : dir_(std::move(dir)), model_(model), comm_(comm), pvd_(dir_ / "results.pvd") {
+  const bool root = comm.isRoot();
   const auto& ctl = model.controls;
   const double end = s.endTime();
   glstat_.interval = intervalOr(ctl.glstat_dt, end, kDefaultSamples);
   matsum_.interval = intervalOr(ctl.matsum_dt, end, kDefaultSamples);
   plot_.interval = intervalOr(ctl.d3plot_dt, end, kDefaultPlotStates);
-  glstat_csv_ = CsvWriter(dir_ / "glstat.csv",
-                          {"time", "cycle", "dt", "kinetic", "internal", "hourglass", "contact",
-                           "external_work", "total", "energy_ratio", "rigidwall", "added_mass"});
-  matsum_csv_ = CsvWriter(dir_ / "matsum.csv", {"time", "part", "kinetic", "internal", "hourglass",
-                                                "x_momentum", "y_momentum", "z_momentum"});
+  if (root)
+    glstat_csv_ = CsvWriter(dir_ / "glstat.csv",
+                            {"time", "cycle", "dt", "kinetic", "internal", "hourglass", "contact",
+                             "external_work", "total", "energy_ratio", "rigidwall", "added_mass"});
+  if (root)
+    matsum_csv_ =
+        CsvWriter(dir_ / "matsum.csv", {"time", "part", "kinetic", "internal", "hourglass",
+                                        "x_momentum", "y_momentum", "z_momentum"});
   const auto& sd = s.subdomain();
-  for (int32_t mn : model.history_nodes) {
+  history_count_ = model.history_nodes.size();
+  for (std::size_t k = 0; k < model.history_nodes.size(); ++k) {
+    const int32_t mn = model.history_nodes[k];
     auto it = std::lower_bound(sd.node_model.begin(), sd.node_model.end(), mn);
-    if (it != sd.node_model.end() && *it == mn)
-      history_local_.push_back(static_cast<int32_t>(it - sd.node_model.begin()));
+    if (it != sd.node_model.end() && *it == mn) {
+      const auto local = static_cast<int32_t>(it - sd.node_model.begin());
+      if (sd.node_owned[static_cast<std::size_t>(local)])
+        history_local_.emplace_back(int32_t(k), local);
+    }
   }
-  if (!history_local_.empty()) {
+  if (history_count_ > 0) {
     nodout_.interval = intervalOr(ctl.nodout_dt, end, kDefaultSamples);
-    nodout_csv_ = CsvWriter(dir_ / "nodout.csv", {"time", "node", "x", "y", "z", "dx", "dy", "dz",
-                                                  "vx", "vy", "vz", "ax", "ay", "az"});
+    if (root)
+      nodout_csv_ = CsvWriter(dir_ / "nodout.csv", {"time", "node", "x", "y", "z", "dx", "dy", "dz",
+                                                    "vx", "vy", "vz", "ax", "ay", "az"});
   }
   if (!model.rigid_walls.empty()) {
     rwforc_.interval = intervalOr(ctl.rwforc_dt, end, kDefaultSamples);
-    rwforc_csv_ = CsvWriter(dir_ / "rwforc.csv", {"time", "wall", "fn", "fx", "fy", "fz"});
+    if (root)
+      rwforc_csv_ = CsvWriter(dir_ / "rwforc.csv", {"time", "wall", "fn", "fx", "fy", "fz"});
   }
-  std::filesystem::create_directories(dir_ / "states");
+  if (root) std::filesystem::create_directories(dir_ / kStatesFolder);
+  comm.barrier();
 }
 
 void ResultsWriter::write(const solver::Solver& s, bool last) {
   const auto t0 = std::chrono::steady_clock::now();
   const double t = s.time();
   const auto& sd = s.subdomain();
+  const bool root = comm_.isRoot();
   if (glstat_.due(t, last)) {
     const auto e = s.energies();
-    glstat_csv_.row({t, double(s.cycle()), s.dt(), e.kinetic, e.internal, e.hourglass, e.contact,
-                     e.external_work, e.total, e.ratio, e.rigidwall, s.addedMass()});
-    glstat_csv_.flush();
+    if (root)
+      glstat_csv_.row({t, double(s.cycle()), s.dt(), e.kinetic, e.internal, e.hourglass, e.contact,
+                       e.external_work, e.total, e.ratio, e.rigidwall, s.addedMass()});
+    if (root) glstat_csv_.flush();
     glstat_.advance(t);
   }
   if (matsum_.due(t, last)) {
-    for (const auto& p : s.partSums())
-      matsum_csv_.row({t, double(p.part_id), p.kinetic, p.internal, p.hourglass, p.momentum[0],
-                       p.momentum[1], p.momentum[2]});
-    matsum_csv_.flush();
+    const auto sums = s.partSums();
+    if (root)
+      for (const auto& p : sums)
+        matsum_csv_.row({t, double(p.part_id), p.kinetic, p.internal, p.hourglass, p.momentum[0],
+                         p.momentum[1], p.momentum[2]});
+    if (root) matsum_csv_.flush();
     matsum_.advance(t);
   }
   if (nodout_.due(t, last)) {
-    for (int32_t n : history_local_) {
+    // Rows of the history nodes this rank owns, gathered and written in deck order.
+    constexpr std::size_t kRow = 15;  // deck order + the 14 nodout columns
+    std::vector<double> rows;
+    for (const auto& [order, n] : history_local_) {
       const std::size_t i = 3 * static_cast<std::size_t>(n);
-      nodout_csv_.row({t, double(sd.node_id[static_cast<std::size_t>(n)]), sd.x[i], sd.x[i + 1],
-                       sd.x[i + 2], sd.x[i] - sd.x0[i], sd.x[i + 1] - sd.x0[i + 1],
-                       sd.x[i + 2] - sd.x0[i + 2], sd.v[i], sd.v[i + 1], sd.v[i + 2], sd.a[i],
-                       sd.a[i + 1], sd.a[i + 2]});
+      const double row[kRow] = {double(order),
+                                t,
+                                double(sd.node_id[static_cast<std::size_t>(n)]),
+                                sd.x[i],
+                                sd.x[i + 1],
+                                sd.x[i + 2],
+                                sd.x[i] - sd.x0[i],
+                                sd.x[i + 1] - sd.x0[i + 1],
+                                sd.x[i + 2] - sd.x0[i + 2],
+                                sd.v[i],
+                                sd.v[i + 1],
+                                sd.v[i + 2],
+                                sd.a[i],
+                                sd.a[i + 1],
+                                sd.a[i + 2]};
+      rows.insert(rows.end(), row, row + kRow);
     }
-    nodout_csv_.flush();
+    const auto all = comm_.allGather(rows);
+    if (root) {
+      std::vector<std::size_t> idx(all.size() / kRow);
+      for (std::size_t k = 0; k < idx.size(); ++k) idx[k] = k;
+      std::sort(idx.begin(), idx.end(),
+                [&](std::size_t a, std::size_t b) { return all[kRow * a] < all[kRow * b]; });
+      for (std::size_t k : idx)
+        nodout_csv_.row(std::vector<double>(all.begin() + long(kRow * k + 1),
+                                            all.begin() + long(kRow * (k + 1))));
+      nodout_csv_.flush();
+    }
     nodout_.advance(t);
   }
   if (rwforc_.due(t, last)) {
-    for (const auto& w : s.boundary().walls())
-      rwforc_csv_.row({t, double(w.def->id), w.normal_force, w.force[0], w.force[1], w.force[2]});
-    rwforc_csv_.flush();
+    if (root) {
+      for (const auto& w : s.boundary().walls())
+        rwforc_csv_.row({t, double(w.def->id), w.normal_force, w.force[0], w.force[1], w.force[2]});
+      rwforc_csv_.flush();
+    }
     rwforc_.advance(t);
   }
   if ((s.cycle() == 0 || plot_.due(t, last)) && t != last_plot_time_) {
@@ -152,15 +196,64 @@ void ResultsWriter::writePlotState(const solver::Solver& s) {
       {"von_mises", Association::Cell, 1, von_mises.data(), nullptr},
       {"effective_plastic_strain", Association::Cell, 1, eps.data(), nullptr},
   };
-  const std::string name = fmt::format("states/state_{:05d}.vtu", plot_count_++);
-  writeVtu(dir_ / name, mesh, fields);
-  pvd_.addState(s.time(), name);
+  const int state = plot_count_++;
+  if (!comm_.distributed()) {
+    const std::string name = fmt::format("{}/state_{:05d}.vtu", kStatesFolder, state);
+    writeVtu(dir_ / name, mesh, fields);
+    pvd_.addState(s.time(), name);
+    return;
+  }
+  // One piece per rank and a .pvtu that names them; ParaView shows the rank field as the
+  // partition (the seed paper's Figure 2).
+  auto piece = [&](int r) { return fmt::format("state_{:05d}_r{:04d}.vtu", state, r); };
+  writeVtu(dir_ / kStatesFolder / piece(sd.rank), mesh, fields);
+  comm_.barrier();
+  if (comm_.isRoot()) {
+    std::vector<std::string> pieces;
+    for (int r = 0; r < comm_.size(); ++r) pieces.push_back(piece(r));
+    const std::string name = fmt::format("{}/state_{:05d}.pvtu", kStatesFolder, state);
+    writePvtu(dir_ / name, pieces, fields);
+    pvd_.addState(s.time(), name);
+  }
+}
+
+std::string ResultsWriter::stateDigestGlobal(const solver::Solver& s) const {
+  // Every rank sends (id, x, v) of the nodes it owns; rank 0 orders them by id.
+  const auto& sd = s.subdomain();
+  struct Record {
+    int64_t id;
+    double x[3], v[3];
+  };
+  std::vector<char> mine;
+  for (std::size_t n = 0; n < sd.numNodes(); ++n) {
+    if (!sd.node_owned[n]) continue;
+    Record r{sd.node_id[n],
+             {sd.x[3 * n], sd.x[3 * n + 1], sd.x[3 * n + 2]},
+             {sd.v[3 * n], sd.v[3 * n + 1], sd.v[3 * n + 2]}};
+    const auto* p = reinterpret_cast<const char*>(&r);
+    mine.insert(mine.end(), p, p + sizeof(Record));
+  }
+  const auto all = comm_.gatherToRoot(mine);
+  if (!comm_.isRoot()) return {};
+  std::vector<Record> recs(all.size() / sizeof(Record));
+  std::memcpy(recs.data(), all.data(), recs.size() * sizeof(Record));
+  std::sort(recs.begin(), recs.end(), [](const Record& a, const Record& b) { return a.id < b.id; });
+  std::vector<double> x, v;
+  x.reserve(3 * recs.size());
+  v.reserve(3 * recs.size());
+  for (const auto& r : recs) {
+    x.insert(x.end(), r.x, r.x + 3);
+    v.insert(v.end(), r.v, r.v + 3);
+  }
+  return stateDigest(x, v);
 }
 
 void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) const {
   const auto e = s.energies();
+  const std::string digest = stateDigestGlobal(s);
+  const long peak = static_cast<long>(comm_.maxAll(int64_t(peakMemoryBytes())));
+  if (!comm_.isRoot()) return;
   const auto& t = s.timing();
-  const auto& sd = s.subdomain();
   nlohmann::json j;
   j["version"] = CRUMPLE_VERSION;
   j["deck"] = info.deck;
@@ -192,8 +285,9 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
   j["mass"] = {{"physical", s.totalMass()}, {"added", s.addedMass()}};
   j["eroded_elements"] = s.erodedElements();
   j["initial_dt"] = s.initialDt();
-  j["peak_memory_bytes"] = peakMemoryBytes();
-  j["state_digest"] = stateDigest(sd.x, sd.v);
+  j["peak_memory_bytes"] = peak;  // the largest rank
+  j["communication_s"] = s.timing().communication;
+  j["state_digest"] = digest;
   std::ofstream out(dir_ / "summary.json");
   out << j.dump(2) << '\n';
 }

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <string>
 
+#include "comm/communicator.hpp"
 #include "model/model.hpp"
 #include "output/files.hpp"
 #include "output/vtk.hpp"
@@ -23,12 +24,17 @@ struct RunInfo {
 
 class ResultsWriter {
  public:
-  ResultsWriter(std::filesystem::path dir, const model::Model& model, const solver::Solver& s);
+  // Every rank constructs one and calls write() at the same cycles (the sums are collective);
+  // rank 0 writes the histories, the .pvtu/.pvd and the summary, every rank its VTU piece.
+  ResultsWriter(std::filesystem::path dir, const model::Model& model, const solver::Solver& s,
+                const comm::Communicator& comm);
 
   // Writes the histories and plot states that are due at the solver's current time; `last`
   // forces a final sample of everything (end of run or error).
   void write(const solver::Solver& s, bool last = false);
   void writeSummary(const solver::Solver& s, const RunInfo& info) const;
+  // SHA-256 of x then v of every node in ascending global id (collective; valid on rank 0).
+  std::string stateDigestGlobal(const solver::Solver& s) const;
   double seconds() const { return seconds_; }
 
  private:
@@ -46,9 +52,11 @@ class ResultsWriter {
 
   std::filesystem::path dir_;
   const model::Model& model_;
+  const comm::Communicator& comm_;
   Schedule glstat_, matsum_, nodout_, rwforc_, plot_;
   CsvWriter glstat_csv_, matsum_csv_, nodout_csv_, rwforc_csv_;
-  std::vector<int32_t> history_local_;  // local node of each history node
+  std::vector<std::pair<int32_t, int32_t>> history_local_;  // (deck order, local node), owned
+  std::size_t history_count_ = 0;
   PvdWriter pvd_;
   int plot_count_ = 0;
   double last_plot_time_ = -1.0;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "util/error.hpp"
 
@@ -30,18 +31,34 @@ Solver::Solver(const model::Model& model, domain::Subdomain& sd, comm::Communica
   end_time_ = model.controls.end_time;
 }
 
-void Solver::gatherNodalForces(std::vector<double>& out, int components) const {
+void Solver::gather(const domain::GatherPlan& plan, std::vector<double>& out,
+                    int components) const {
   const std::size_t nn = sd_.numNodes();
   const double* slots = sd_.slots.data();
 #pragma omp parallel for schedule(static)
   for (std::size_t n = 0; n < nn; ++n) {
     double s[3] = {0.0, 0.0, 0.0};
-    for (int32_t k = sd_.gather_ptr[n]; k < sd_.gather_ptr[n + 1]; ++k) {
-      const double* slot = slots + 3 * static_cast<std::size_t>(sd_.gather_slot[k]);
+    for (int32_t k = plan.ptr[n]; k < plan.ptr[n + 1]; ++k) {
+      const double* slot =
+          slots + 3 * static_cast<std::size_t>(plan.slot[static_cast<std::size_t>(k)]);
       for (int c = 0; c < components; ++c) s[c] += slot[c];
     }
     for (int c = 0; c < components; ++c) out[components * n + c] = s[c];
   }
+}
+
+void Solver::exchangeSharedSlots() {
+  if (sd_.peers.empty()) return;
+  std::vector<comm::Message> sends, recvs;
+  for (auto& p : sd_.peers) {
+    for (std::size_t k = 0; k < p.send_slots.size(); ++k)
+      for (int c = 0; c < 3; ++c)
+        p.send_buffer[3 * k + c] = sd_.slots[3 * static_cast<std::size_t>(p.send_slots[k]) + c];
+    sends.push_back({p.rank, p.send_buffer.data(), p.send_buffer.size()});
+    recvs.push_back({p.rank, sd_.slots.data() + 3 * p.recv_first, 3 * p.recv_count});
+  }
+  comm_.exchangeBegin(sends, recvs);
+  comm_.exchangeEnd();
 }
 
 void Solver::initialize() {
@@ -63,7 +80,8 @@ void Solver::initialize() {
       dt_elem = st.dt_elem;
     }
   }
-  gatherNodalForces(sd_.mass, 1);
+  exchangeSharedSlots();
+  gather(sd_.internal, sd_.mass, 1);
   std::vector<double> physical_mass = sd_.mass;
 
   // Mass scaling (*CONTROL_TIMESTEP DT2MS): elements whose step TSSFAC*dt_e is below |DT2MS|
@@ -87,8 +105,9 @@ void Solver::initialize() {
         for (int a = 0; a < 8; ++a) slot[3 * a] = extra;
       }
     }
-    if (any) {
-      gatherNodalForces(sd_.mass_added, 1);
+    if (comm_.anyAll(any)) {
+      exchangeSharedSlots();
+      gather(sd_.internal, sd_.mass_added, 1);
       for (std::size_t n = 0; n < sd_.numNodes(); ++n) sd_.mass[n] += sd_.mass_added[n];
       dt_min = 1e300;
       for (std::size_t ib = 0; ib < sd_.solid_blocks.size(); ++ib) {
@@ -105,16 +124,24 @@ void Solver::initialize() {
   }
   total_mass_ = 0.0;
   added_mass_ = 0.0;
-  for (std::size_t n = 0; n < sd_.numNodes(); ++n) {
-    total_mass_ += physical_mass[n];
-    added_mass_ += sd_.mass_added[n];
-  }
+  for (std::size_t n = 0; n < sd_.numNodes(); ++n)
+    if (sd_.node_owned[n]) {
+      total_mass_ += physical_mass[n];
+      added_mass_ += sd_.mass_added[n];
+    }
+  const auto masses = comm_.sumOrdered({total_mass_, added_mass_});
+  total_mass_ = masses[0];
+  added_mass_ = masses[1];
 
   for (std::size_t n = 0; n < sd_.numNodes(); ++n)
     for (int c = 0; c < 3; ++c)
       sd_.v[3 * n + c] = model_.initial_velocity[static_cast<std::size_t>(sd_.node_model[n])][c];
 
-  dt_min = comm_.minAll(dt_min);
+  const double dt_global = comm_.minAll(dt_min);
+  dt_elem = static_cast<int32_t>(comm_.minAll(dt_min == dt_global && dt_elem >= 0
+                                                  ? int64_t(dt_elem)
+                                                  : std::numeric_limits<int64_t>::max()));
+  dt_min = dt_global;
   dt_next_ = ctl.tssfac * dt_min;
   if (ctl.dt_init > 0.0) dt_next_ = std::min(dt_next_, ctl.dt_init);
   dt_initial_ = dt_next_;
@@ -145,14 +172,20 @@ void Solver::computeInternalForces() {
     if (st.bad_elem >= 0 && (bad < 0 || st.bad_elem < bad)) bad = st.bad_elem;
     eroded_ += st.eroded;
   }
-  if (comm_.anyAll(bad >= 0)) {
-    const auto e = static_cast<std::size_t>(bad >= 0 ? bad : 0);
+  const int64_t bad_global =
+      comm_.minAll(bad >= 0 ? int64_t(bad) : std::numeric_limits<int64_t>::max());
+  if (bad_global != std::numeric_limits<int64_t>::max()) {
+    const auto e = static_cast<std::size_t>(bad_global);
     throw util::NumericalError(fmt::format(
         "negative volume in solid element {} (part {}) at cycle {}, time {:.6g}",
         model_.solids.id[e], model_.parts[static_cast<std::size_t>(model_.solids.part[e])].id,
         cycle_, time_));
   }
-  double dt_new = model_.controls.tssfac * comm_.minAll(dt_min);
+  const double dt_global = comm_.minAll(dt_min);
+  dt_elem = static_cast<int32_t>(comm_.minAll(dt_min == dt_global && dt_elem >= 0
+                                                  ? int64_t(dt_elem)
+                                                  : std::numeric_limits<int64_t>::max()));
+  double dt_new = model_.controls.tssfac * dt_global;
   if (model_.controls.dt_max_curve != model::kNone)
     dt_new = std::min(
         dt_new, model_.curves[static_cast<std::size_t>(model_.controls.dt_max_curve)].value(time_));
@@ -182,33 +215,40 @@ void Solver::updateKinematics() {
   const std::size_t nn = sd_.numNodes();
   v_old_ = sd_.v;
 
+#pragma omp parallel for schedule(static)
+  for (std::size_t n = 0; n < nn; ++n) {
+    const double m = sd_.mass[n];
+    for (int c = 0; c < 3; ++c) {
+      const std::size_t i = 3 * n + c;
+      sd_.a[i] = m > 0.0 ? (sd_.f[i] + sd_.f_ext[i]) / m : 0.0;
+      sd_.v[i] = v_old_[i] + dt_n * sd_.a[i];
+    }
+  }
+
+  const auto t0 = Clock::now();
+  double work = boundary_.applyKinematics(time_, dt_n, dt_half, sd_, v_old_);
+  rigidwall_energy_ += boundary_.applyRigidWalls(dt_n, dt_half, sd_, v_old_, comm_);
+  timing_.constraints += seconds(t0, Clock::now());
+
+  // External work over dt_n at the mean of the old and the final (constrained) velocity,
+  // counted once per node, by the rank that owns it; in fixed chunks added in order.
   const std::size_t nchunk = (nn + kNodeChunk - 1) / kNodeChunk;
-  std::vector<double> work(nchunk, 0.0);
+  std::vector<double> chunk_work(nchunk, 0.0);
 #pragma omp parallel for schedule(static)
   for (std::size_t ch = 0; ch < nchunk; ++ch) {
     const std::size_t end = std::min(nn, (ch + 1) * kNodeChunk);
     double w = 0.0;
     for (std::size_t n = ch * kNodeChunk; n < end; ++n) {
-      const double m = sd_.mass[n];
+      if (!sd_.node_owned[n]) continue;
       for (int c = 0; c < 3; ++c) {
         const std::size_t i = 3 * n + c;
-        const double f = sd_.f[i] + sd_.f_ext[i];
-        sd_.a[i] = m > 0.0 ? f / m : 0.0;
-        sd_.v[i] = v_old_[i] + dt_n * sd_.a[i];
-        // External work over dt_n at the mean velocity (trapezoidal in velocity).
         w += sd_.f_ext[i] * 0.5 * (v_old_[i] + sd_.v[i]) * dt_n;
       }
     }
-    work[ch] = w;
+    chunk_work[ch] = w;
   }
-  double ext = 0.0;
-  for (double w : work) ext += w;
-
-  const auto t0 = Clock::now();
-  ext += boundary_.applyKinematics(time_, dt_n, dt_half, sd_, v_old_);
-  rigidwall_energy_ += boundary_.applyRigidWalls(dt_n, dt_half, sd_, v_old_);
-  timing_.constraints += seconds(t0, Clock::now());
-  external_work_ += comm_.sumOrdered({ext})[0];
+  for (double w : chunk_work) work += w;
+  external_work_ += work;
 
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < 3 * nn; ++i) sd_.x[i] += dt_half * sd_.v[i];
@@ -221,19 +261,30 @@ void Solver::updateKinematics() {
 void Solver::step() {
   auto t0 = Clock::now();
   computeInternalForces();
-  gatherNodalForces(sd_.f, 3);
+  boundary_.pressureForces(time_, sd_);
   auto t1 = Clock::now();
-  timing_.elements += seconds(t0, t1);
+  exchangeSharedSlots();
+  auto t2 = Clock::now();
+  gather(sd_.internal, sd_.f, 3);
+  gather(sd_.pressure, sd_.f_ext, 3);
+  auto t3 = Clock::now();
+  timing_.elements += seconds(t0, t1) + seconds(t2, t3);
+  timing_.communication += seconds(t1, t2);
   boundary_.externalForces(time_, sd_, sd_.f_ext);
-  timing_.constraints += seconds(t1, Clock::now());
+  timing_.constraints += seconds(t3, Clock::now());
   updateKinematics();
-  for (std::size_t i = 0; i < sd_.v.size(); ++i) {
+  bool bad = false;
+  std::size_t bad_node = 0;
+  for (std::size_t i = 0; i < sd_.v.size() && !bad; ++i)
     if (!std::isfinite(sd_.v[i])) {
-      throw util::NumericalError(
-          fmt::format("non-finite velocity at node {} at cycle {}, time {:.6g}", sd_.node_id[i / 3],
-                      cycle_, time_));
+      bad = true;
+      bad_node = i / 3;
     }
-  }
+  const int64_t bad_id =
+      comm_.minAll(bad ? sd_.node_id[bad_node] : std::numeric_limits<int64_t>::max());
+  if (bad_id != std::numeric_limits<int64_t>::max())
+    throw util::NumericalError(fmt::format(
+        "non-finite velocity at node {} at cycle {}, time {:.6g}", bad_id, cycle_, time_));
 }
 
 Energies Solver::energies() const {
@@ -247,20 +298,23 @@ Energies Solver::energies() const {
   // and of the work integrals: the kinetic energy uses v(n) = (v(n-1/2) + v(n+1/2)) / 2.
   const bool stepped = v_old_.size() == sd_.v.size();
   for (std::size_t n = 0; n < sd_.numNodes(); ++n) {
+    if (!sd_.node_owned[n]) continue;
     double v[3];
     for (int c = 0; c < 3; ++c)
       v[c] = stepped ? 0.5 * (v_old_[3 * n + c] + sd_.v[3 * n + c]) : sd_.v[3 * n + c];
-    // Kinetic energy of the physical mass; mass added by scaling is reported separately.
-    const double m = sd_.mass[n] - sd_.mass_added[n];
+    // Kinetic energy of the mass the equations of motion integrate (mass added by scaling
+    // included, as the work of the forces goes into it too); the added mass is reported.
+    const double m = sd_.mass[n];
     e.kinetic += 0.5 * m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
   }
-  e.kinetic += boundary_.wallKineticEnergy();
-  const auto sums = comm_.sumOrdered({e.kinetic, e.internal, e.hourglass});
+  const auto sums =
+      comm_.sumOrdered({e.kinetic, e.internal, e.hourglass, external_work_, rigidwall_energy_});
   e.kinetic = sums[0];
   e.internal = sums[1];
   e.hourglass = sums[2];
-  e.external_work = external_work_;
-  e.rigidwall = rigidwall_energy_;
+  e.external_work = sums[3];
+  e.rigidwall = sums[4];
+  e.kinetic += boundary_.wallKineticEnergy();  // the same on every rank: added once
   e.total = e.kinetic + e.internal + e.hourglass + e.contact + e.rigidwall;
   e.initial = initial_energy_;
   const double reference = initial_energy_ + e.external_work;
@@ -269,24 +323,38 @@ Energies Solver::energies() const {
 }
 
 std::vector<PartSums> Solver::partSums() const {
-  std::vector<PartSums> out;
-  std::vector<double> node_share(sd_.numNodes(), 0.0);
+  // Seven sums per model part (element count, kinetic, internal, hourglass, momentum), added
+  // over this rank's blocks and then over ranks in rank order.
+  constexpr std::size_t kFields = 7;
+  std::vector<double> local(kFields * model_.parts.size(), 0.0);
   for (const auto& blk : sd_.solid_blocks) {
-    PartSums p;
-    p.part_id = blk.part_id;
+    double* p = &local[kFields * static_cast<std::size_t>(blk.part)];
+    p[0] += double(blk.size());
     for (std::size_t k = 0; k < blk.size(); ++k) {
-      p.internal += blk.e_int[k];
-      p.hourglass += blk.e_hg[k];
+      p[2] += blk.e_int[k];
+      p[3] += blk.e_hg[k];
       // Kinetic energy and momentum of a part: each corner carries rho0 V0 / 8 at the velocity
       // of its node, which splits shared nodes between parts by the mass each part gives them.
       const double corner_mass = blk.rho0 * blk.vol0[k] / 8.0;
       for (int a = 0; a < 8; ++a) {
         const double* v = &sd_.v[3 * static_cast<std::size_t>(blk.conn[k][a])];
-        p.kinetic += 0.5 * corner_mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-        for (int c = 0; c < 3; ++c) p.momentum[c] += corner_mass * v[c];
+        p[1] += 0.5 * corner_mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        for (int c = 0; c < 3; ++c) p[4 + c] += corner_mass * v[c];
       }
     }
-    out.push_back(p);
+  }
+  const auto total = comm_.sumOrdered(local);
+  std::vector<PartSums> out;
+  for (std::size_t i = 0; i < model_.parts.size(); ++i) {
+    const double* p = &total[kFields * i];
+    if (p[0] == 0.0) continue;
+    PartSums ps;
+    ps.part_id = model_.parts[i].id;
+    ps.kinetic = p[1];
+    ps.internal = p[2];
+    ps.hourglass = p[3];
+    for (int c = 0; c < 3; ++c) ps.momentum[c] = p[4 + c];
+    out.push_back(ps);
   }
   return out;
 }

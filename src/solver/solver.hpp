@@ -67,7 +67,10 @@ class Solver {
 
  private:
   void computeInternalForces();
-  void gatherNodalForces(std::vector<double>& out, int components) const;
+  // Sends this rank's corner slots at shared nodes to the neighbours and receives theirs
+  // into the ghost slots.
+  void exchangeSharedSlots();
+  void gather(const domain::GatherPlan& plan, std::vector<double>& out, int components) const;
   void updateKinematics();
   void applyMassScaling(const std::vector<double>& dt_elem_by_block);
 
@@ -87,6 +90,7 @@ class Solver {
   double total_mass_ = 0.0, added_mass_ = 0.0;
   int64_t eroded_ = 0;
 
+  // Work and wall energy of the nodes this rank owns; summed over ranks when reported.
   double external_work_ = 0.0, rigidwall_energy_ = 0.0, initial_energy_ = 0.0;
   domain::NodeVector v_old_;
   Timing timing_;

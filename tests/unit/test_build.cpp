@@ -73,7 +73,7 @@ const std::string kMesh = R"(*KEYWORD
 block
 1,1,1
 *SECTION_SOLID
-1,2
+1,1
 *MAT_ELASTIC
 1,7.8e-9,2.0e5,0.3
 )";
@@ -97,7 +97,7 @@ TEST(BuildModel, IndicesAscendingByUserId) {
   EXPECT_EQ(m.solids.nodes[1][1], m.nodeIndex(27));
   EXPECT_EQ(m.solids.part[0], m.partIndex(1));
   EXPECT_EQ(m.parts.at(0).title, "block");
-  EXPECT_EQ(m.solid_sections.at(0).elform, 2);
+  EXPECT_EQ(m.solid_sections.at(0).elform, 1);
   EXPECT_EQ(m.parts[0].material, 0);
   EXPECT_EQ(m.parts[0].hourglass, crumple::model::kNone);
   EXPECT_EQ(m.initial_velocity.size(), 12u);

@@ -1,0 +1,182 @@
+#include "model/serialize.hpp"
+
+#include "util/archive.hpp"
+
+namespace crumple::model {
+
+namespace {
+
+using util::ArchiveReader;
+using util::ArchiveWriter;
+
+// Every field of every Model type, once for writing and once for reading; the two visit
+// functions below must list the same fields in the same order.
+template <class A, class L>
+void loc(A& a, L& l) {
+  a(l.file);
+  a(l.line);
+}
+
+template <class A, class M>
+void fields(A& a, M& m) {
+  a(m.title);
+  a(m.deck_path);
+  a(m.nodes.id);
+  a(m.nodes.x);
+  a(m.solids.id);
+  a(m.solids.part);
+  a(m.solids.nodes);
+  a.count(
+      m.parts.size(),
+      [&](auto& p) {
+        a(p.id);
+        a(p.title);
+        a(p.section);
+        a(p.material);
+        a(p.hourglass);
+        loc(a, p.where);
+      },
+      m.parts);
+  a.count(
+      m.solid_sections.size(),
+      [&](auto& s) {
+        a(s.id);
+        a(s.elform);
+        loc(a, s.where);
+      },
+      m.solid_sections);
+  a.count(
+      m.materials.size(),
+      [&](auto& mat) {
+        a(mat.id);
+        a(mat.title);
+        a(mat.rho);
+        a.variant(mat.law);
+        loc(a, mat.where);
+      },
+      m.materials);
+  a(m.hourglass);
+  a.count(
+      m.curves.size(),
+      [&](auto& c) {
+        a(c.id);
+        a(c.x);
+        a(c.y);
+      },
+      m.curves);
+  a(m.node_sets);
+  a(m.part_sets);
+  a(m.segment_sets);
+  a(m.spcs);
+  a(m.prescribed);
+  a(m.nodal_loads);
+  a(m.pressure_loads);
+  a(m.body_loads);
+  a.count(
+      m.rigid_walls.size(),
+      [&](auto& w) {
+        a(w.id);
+        a(w.nodes);
+        a(w.tail);
+        a(w.normal);
+        a(w.fric);
+        a(w.finite);
+        a(w.l_axis);
+        a(w.lenl);
+        a(w.lenm);
+        a(w.moving);
+        a(w.mass);
+        a(w.v0);
+        loc(a, w.where);
+      },
+      m.rigid_walls);
+  a(m.initial_velocity);
+  a(m.history_nodes);
+  a(m.controls);
+  a.count(
+      m.unsupported.size(),
+      [&](auto& u) {
+        a(u.keyword);
+        a(u.reason);
+        a(u.count);
+        loc(a, u.first);
+      },
+      m.unsupported);
+  a.count(
+      m.ignored.size(),
+      [&](auto& f) {
+        a(f.keyword);
+        a(f.field);
+        a(f.reason);
+        loc(a, f.where);
+      },
+      m.ignored);
+}
+
+struct Writer {
+  ArchiveWriter w;
+  template <class T>
+  void operator()(const T& v) {
+    w.put(v);
+  }
+  template <class F, class V>
+  void count(std::size_t n, F&& each, const V& items) {
+    w.put<uint64_t>(n);
+    for (const auto& x : items) each(const_cast<typename V::value_type&>(x));
+  }
+  void variant(const MaterialLaw& law) {
+    w.put<uint64_t>(law.index());
+    std::visit([&](const auto& l) { w.put(l); }, law);
+  }
+};
+
+struct Reader {
+  ArchiveReader r;
+  template <class T>
+  void operator()(T& v) {
+    r.get(v);
+  }
+  template <class F, class V>
+  void count(std::size_t, F&& each, V& items) {
+    uint64_t n = 0;
+    r.get(n);
+    items.resize(n);
+    for (auto& x : items) each(x);
+  }
+  void variant(MaterialLaw& law) {
+    uint64_t index = 0;
+    r.get(index);
+    switch (index) {
+      case 0:
+        law = ElasticLaw{};
+        break;
+      case 1:
+        law = PlasticKinematicLaw{};
+        break;
+      case 2:
+        law = PiecewiseLinearLaw{};
+        break;
+      default:
+        throw std::runtime_error("archive: unknown material law");
+    }
+    std::visit([&](auto& l) { r.get(l); }, law);
+  }
+};
+
+}  // namespace
+
+std::vector<char> serialize(const Model& model) {
+  Writer w;
+  fields(w, const_cast<Model&>(model));
+  return std::move(w.w.bytes());
+}
+
+Model deserialize(const std::vector<char>& bytes) {
+  Model m;
+  Reader r{ArchiveReader(bytes)};
+  fields(r, m);
+  m.finalize();
+  return m;
+}
+
+}  // namespace crumple::model

@@ -1,0 +1,153 @@
+// The element dual graph in O(N_elements): every face of an element is looked up in the
+// incidence list of one of its nodes (the shortest), so the work per element is bounded by
+// (faces per element) x (elements per node) x (nodes per element), constants of the mesh,
+// never by the mesh size. No hashing and no global sort, hence no dependence on memory order:
+// the result is a pure function of the connectivity.
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "partition/incidence.hpp"
+#include "partition/partition.hpp"
+
+namespace crumple::partition {
+
+namespace detail {
+
+Incidence nodeElements(const model::Model& model) {
+  const auto& solids = model.solids;
+  const std::size_t nn = model.nodes.size();
+  Incidence inc;
+  inc.ptr.assign(nn + 1, 0);
+  int32_t d[8];
+  for (std::size_t e = 0; e < solids.size(); ++e) {
+    const int k = distinctNodes(solids.nodes[e], d);
+    for (int i = 0; i < k; ++i) {
+      if (d[i] < 0 || std::size_t(d[i]) >= nn)
+        throw std::invalid_argument("partition: solid " + std::to_string(solids.id[e]) +
+                                    " refers to node index " + std::to_string(d[i]) +
+                                    " outside the model");
+      ++inc.ptr[std::size_t(d[i]) + 1];
+    }
+  }
+  for (std::size_t n = 0; n < nn; ++n) inc.ptr[n + 1] += inc.ptr[n];
+  inc.elem.resize(std::size_t(inc.ptr[nn]));
+  std::vector<int64_t> fill(inc.ptr.begin(), inc.ptr.end() - 1);
+  // Elements visited in ascending order, so every node's list comes out sorted.
+  for (std::size_t e = 0; e < solids.size(); ++e) {
+    const int k = distinctNodes(solids.nodes[e], d);
+    for (int i = 0; i < k; ++i) inc.elem[std::size_t(fill[std::size_t(d[i])]++)] = int32_t(e);
+  }
+  return inc;
+}
+
+}  // namespace detail
+
+namespace {
+
+// Hex faces in LS-DYNA node order (0-based), outward by the right-hand rule.
+constexpr int kHexFaces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                 {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+
+// The faces of one element as lists of 3 or 4 distinct node indices. Degenerate hexes:
+// collapsing nodes turns a hex face into a triangle (kept), an edge or a point (dropped); this
+// gives the right faces for the LS-DYNA wedge (n5=n6, n7=n8) and pyramid (n5=...=n8) and for
+// the tetrahedron written n3=n4, n5=...=n8. The other tetrahedron convention (n4=...=n8) would
+// keep the bottom "face" n1..n4, which is the whole element, and lose the triangle n1 n2 n3, so
+// any element with 4 distinct nodes is given its 4 triangles directly.
+int elementFaces(const std::array<int32_t, 8>& n, int32_t faces[6][4], int sizes[6]) {
+  int32_t d[8];
+  const int k = detail::distinctNodes(n, d);
+  if (k < 4) return 0;  // not a solid; the model validation reports it
+  if (k == 4) {
+    constexpr int kTet[4][3] = {{0, 1, 2}, {0, 1, 3}, {1, 2, 3}, {0, 2, 3}};
+    for (int f = 0; f < 4; ++f) {
+      for (int i = 0; i < 3; ++i) faces[f][i] = d[kTet[f][i]];
+      sizes[f] = 3;
+    }
+    return 4;
+  }
+  int nf = 0;
+  for (const auto& hf : kHexFaces) {
+    int m = 0;
+    for (int i = 0; i < 4; ++i) {
+      const int32_t v = n[std::size_t(hf[i])];
+      bool seen = false;
+      for (int j = 0; j < m; ++j) seen = seen || faces[nf][j] == v;
+      if (!seen) faces[nf][m++] = v;
+    }
+    if (m >= 3) sizes[nf++] = m;
+  }
+  return nf;
+}
+
+bool containsAll(const std::array<int32_t, 8>& n, const int32_t* face, int m) {
+  for (int i = 0; i < m; ++i)
+    if (std::find(n.begin(), n.end(), face[i]) == n.end()) return false;
+  return true;
+}
+
+}  // namespace
+
+DualGraph buildDualGraph(const model::Model& model) {
+  const auto& solids = model.solids;
+  const std::size_t ne = solids.size();
+  const detail::Incidence inc = detail::nodeElements(model);
+
+  // Each element's faces find the elements holding all of the face's nodes. Pairs are recorded
+  // in both directions: with mixed shapes (a tetrahedron's triangle lying on a hex's quad) only
+  // one side sees the face, and the graph must still be symmetric.
+  std::vector<std::pair<int32_t, int32_t>> pairs;
+  pairs.reserve(ne * 7);
+  int32_t faces[6][4];
+  int sizes[6];
+  for (std::size_t e = 0; e < ne; ++e) {
+    const int nf = elementFaces(solids.nodes[e], faces, sizes);
+    for (int f = 0; f < nf; ++f) {
+      // Scan the shortest incidence list among the face's nodes.
+      int32_t best = faces[f][0];
+      for (int i = 1; i < sizes[f]; ++i) {
+        const auto len = [&](int32_t v) {
+          return inc.ptr[std::size_t(v) + 1] - inc.ptr[std::size_t(v)];
+        };
+        if (len(faces[f][i]) < len(best)) best = faces[f][i];
+      }
+      for (int64_t j = inc.ptr[std::size_t(best)]; j < inc.ptr[std::size_t(best) + 1]; ++j) {
+        const int32_t c = inc.elem[std::size_t(j)];
+        if (std::size_t(c) == e || !containsAll(solids.nodes[std::size_t(c)], faces[f], sizes[f]))
+          continue;
+        pairs.emplace_back(int32_t(e), c);
+        pairs.emplace_back(c, int32_t(e));
+      }
+    }
+  }
+
+  // Counting sort by the first element, then sort and deduplicate each (short) row.
+  DualGraph g;
+  g.xadj.assign(ne + 1, 0);
+  for (const auto& [a, b] : pairs) ++g.xadj[std::size_t(a) + 1];
+  for (std::size_t e = 0; e < ne; ++e) g.xadj[e + 1] += g.xadj[e];
+  std::vector<int64_t> tmp(pairs.size());
+  {
+    std::vector<int64_t> fill(g.xadj.begin(), g.xadj.end() - 1);
+    for (const auto& [a, b] : pairs) tmp[std::size_t(fill[std::size_t(a)]++)] = b;
+  }
+  pairs.clear();
+  pairs.shrink_to_fit();
+  g.adjncy.reserve(tmp.size() / 2);
+  int64_t begin = 0;
+  for (std::size_t e = 0; e < ne; ++e) {
+    const auto first = tmp.begin() + g.xadj[e];
+    const auto last = tmp.begin() + g.xadj[e + 1];
+    std::sort(first, last);
+    const auto end = std::unique(first, last);
+    g.xadj[e] = begin;
+    g.adjncy.insert(g.adjncy.end(), first, end);
+    begin = int64_t(g.adjncy.size());
+  }
+  g.xadj[ne] = begin;
+  return g;
+}
+
+}  // namespace crumple::partition

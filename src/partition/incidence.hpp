@@ -1,0 +1,34 @@
+// Internal to src/partition: node -> element incidence and the distinct nodes of a possibly
+// degenerate hexahedron. Shared by the dual graph and the partition statistics.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "model/model.hpp"
+
+namespace crumple::partition::detail {
+
+// Distinct node indices of an 8-node (possibly degenerate) hex, in order of first appearance.
+// Returns how many there are (<= 8).
+inline int distinctNodes(const std::array<int32_t, 8>& n, int32_t out[8]) {
+  int k = 0;
+  for (int32_t v : n) {
+    bool seen = false;
+    for (int i = 0; i < k; ++i) seen = seen || out[i] == v;
+    if (!seen) out[k++] = v;
+  }
+  return k;
+}
+
+// CSR node -> elements holding it, each element once per node, elements ascending.
+struct Incidence {
+  std::vector<int64_t> ptr;   // size num_nodes + 1
+  std::vector<int32_t> elem;  // size ptr.back()
+};
+
+// Throws std::invalid_argument if an element names a node index outside the model.
+Incidence nodeElements(const model::Model& model);
+
+}  // namespace crumple::partition::detail

@@ -1,0 +1,120 @@
+"""Shared helpers for the command-line tests in tests/cli/test_*.py (Python 3 stdlib only).
+
+Every script is run by ctest as
+
+    python3 tests/cli/test_NAME.py <path-to-crumple> <source-dir>
+
+`main()` takes those two positional arguments off sys.argv, runs the script's unittest cases,
+prints 'N passed, N failed' and exits non-zero on any failure or error. Skipped tests count as
+neither (they are listed with their reason).
+"""
+
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+CRUMPLE = None  # absolute path of the crumple executable
+SOURCE_DIR = None  # absolute path of the source tree (holds examples/, tests/)
+
+# The 2-thread runs share the machine with builds and benchmarks; a passive wait policy keeps
+# an OpenMP barrier from spinning against a busy core. It does not change any result.
+_ENV = dict(os.environ, OMP_WAIT_POLICY="PASSIVE")
+
+# A one-run budget well under the per-script 60 s aim; a hung run fails instead of stalling.
+RUN_TIMEOUT = 50
+
+
+def crumple(*args, cwd=None, timeout=RUN_TIMEOUT):
+    """Runs crumple with `args`; returns the CompletedProcess (text stdout/stderr)."""
+    return subprocess.run([CRUMPLE, *map(str, args)], cwd=cwd, capture_output=True, text=True,
+                          timeout=timeout, env=_ENV)
+
+
+def describe(proc):
+    """The exit status and both streams of a finished run, for assertion messages."""
+    return (f"\n  command: {' '.join(proc.args)}\n  exit status: {proc.returncode}"
+            f"\n  stdout: {proc.stdout.strip()[:2000]!r}\n  stderr: {proc.stderr.strip()[:2000]!r}")
+
+
+def read_summary(folder):
+    with open(os.path.join(folder, "summary.json"), encoding="utf-8") as f:
+        return json.load(f)
+
+
+def read_vtu(folder, *flags):
+    """Reads a results folder with VTK's own readers (tests/tools/read_vtu.py); returns the
+    parsed JSON, or raises unittest.SkipTest when no Python with vtk is available (exit 77)."""
+    script = os.path.join(SOURCE_DIR, "tests", "tools", "read_vtu.py")
+    proc = subprocess.run(["/usr/bin/python3" if os.path.exists("/usr/bin/python3")
+                           else sys.executable, script, folder, *flags],
+                          capture_output=True, text=True, timeout=120)
+    if proc.returncode == 77:
+        raise unittest.SkipTest("no Python with the vtk module: " + proc.stderr.strip())
+    if proc.returncode != 0:
+        raise AssertionError(f"read_vtu.py failed on {folder}:{describe(proc)}")
+    return json.loads(proc.stdout)
+
+
+def example(*parts):
+    return os.path.join(SOURCE_DIR, "examples", *parts)
+
+
+def shared_decks():
+    """source-dir/../shared/decks (the real-world decks), or None when absent."""
+    path = os.path.normpath(os.path.join(SOURCE_DIR, "..", "shared", "decks"))
+    return path if os.path.isdir(path) else None
+
+
+class TempDirTest(unittest.TestCase):
+    """A test case with a fresh temporary folder self.tmp, removed afterwards."""
+
+    def setUp(self):
+        self._tmp = tempfile.TemporaryDirectory(prefix="crumple_cli_")
+        self.tmp = self._tmp.name
+
+    def tearDown(self):
+        self._tmp.cleanup()
+
+    def write(self, name, text):
+        path = os.path.join(self.tmp, name)
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(text)
+        return path
+
+
+def one_brick_deck(title="one brick", material_id=1, extra="", end_time=0.01):
+    """A unit cube of one hex (element 1, part 1, nodes 1-8), steel in mm/ms/kg/GPa."""
+    nodes = [(1, 0, 0, 0), (2, 1, 0, 0), (3, 1, 1, 0), (4, 0, 1, 0),
+             (5, 0, 0, 1), (6, 1, 0, 1), (7, 1, 1, 1), (8, 0, 1, 1)]
+    s = f"*KEYWORD\n*TITLE\n{title}\n*CONTROL_TERMINATION\n{end_time:10.4g}\n"
+    s += f"*PART\nblock\n         1         1{material_id:10d}\n"
+    s += "*SECTION_SOLID\n         1         1\n"
+    s += "*MAT_ELASTIC\n$      mid        ro         e        pr\n"
+    s += "         1   7.85e-6     210.0       0.3\n"
+    s += extra
+    s += "*NODE\n" + "".join(f"{n:8d}{x:16.6f}{y:16.6f}{z:16.6f}\n" for n, x, y, z in nodes)
+    s += "*ELEMENT_SOLID\n" + "".join(f"{v:8d}" for v in (1, 1, 1, 2, 3, 4, 5, 6, 7, 8)) + "\n"
+    return s + "*END\n"
+
+
+def main():
+    global CRUMPLE, SOURCE_DIR
+    if len(sys.argv) < 3:
+        sys.stderr.write(f"usage: {sys.argv[0]} <path-to-crumple> <source-dir> [unittest args]\n")
+        sys.exit(2)
+    CRUMPLE = os.path.abspath(sys.argv[1])
+    SOURCE_DIR = os.path.abspath(sys.argv[2])
+    del sys.argv[1:3]
+    if not os.access(CRUMPLE, os.X_OK):
+        sys.stderr.write(f"{CRUMPLE} is not an executable\n")
+        sys.exit(1)
+    program = unittest.main(module="__main__", exit=False, verbosity=2)
+    result = program.result
+    failed = len(result.failures) + len(result.errors) + len(result.unexpectedSuccesses)
+    skipped = len(result.skipped)
+    passed = result.testsRun - failed - skipped
+    print(f"{passed} passed, {failed} failed" + (f", {skipped} skipped" if skipped else ""))
+    sys.exit(1 if failed or result.testsRun == 0 else 0)

@@ -1,0 +1,117 @@
+#!/usr/bin/env python3
+"""`crumple check` and short runs on real-world decks from other projects
+(source-dir/../shared/decks; the tests skip with a message when that folder is absent)."""
+
+import math
+import os
+import re
+import sys
+import unittest
+
+sys.dont_write_bytecode = True  # keep __pycache__ out of the source tree
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import clitest  # noqa: E402
+from clitest import crumple, describe, read_summary  # noqa: E402
+
+BLOCK = "wb_lsdyna_block/tests/testfiles/keywords/test_node_sets.k"
+PROJECTILE = "projectile_plate_lstc/tests/testfiles/run/case-keywords/projectile.k"
+BALL_PLATE = "ball_plate_pydyna/examples/Explicit/output/ball_plate.k"
+
+
+def unsupported_table(stdout):
+    """{keyword: reasons} from the 'keywords read but not acted on' table of check."""
+    table, inside = {}, False
+    for line in stdout.splitlines():
+        if line.startswith("keywords read but not acted on"):
+            inside = True
+            continue
+        if inside:
+            if line.startswith("keyword ") and "reason" in line:
+                continue
+            m = re.match(r"^(\*\S+)\s+(\d+)\s+(\S+:\d+)\s+(.*)$", line)
+            if not m:
+                break
+            table.setdefault(m.group(1), []).append(m.group(4).strip())
+    return table
+
+
+class RealDecks(clitest.TempDirTest):
+    def deck(self, relative):
+        root = clitest.shared_decks()
+        if root is None:
+            self.skipTest("../shared/decks is absent: no real-world decks to read")
+        path = os.path.join(root, relative)
+        if not os.path.isfile(path):
+            self.skipTest(f"{path} is absent")
+        return path
+
+    def check(self, relative, status):
+        p = crumple("check", self.deck(relative), cwd=self.tmp)
+        self.assertEqual(p.returncode, status, describe(p))
+        return p
+
+    def initial_step(self, p):
+        m = re.search(r"(?m)^initial time step: (\S+) \(element (\d+), TSSFAC", p.stdout)
+        self.assertIsNotNone(m, describe(p))
+        dt = float(m.group(1))
+        self.assertTrue(math.isfinite(dt) and dt > 0.0, describe(p))
+        return dt
+
+    def short_run(self, path, end_time):
+        out = os.path.join(self.tmp, "out")
+        p = crumple("run", path, "--endtime", f"{end_time:.6g}", "-o", out, "-q", cwd=self.tmp)
+        self.assertEqual(p.returncode, 0, describe(p))
+        s = read_summary(out)
+        self.assertEqual(s["termination"], "normal")
+        self.assertGreaterEqual(s["cycles"], 10)
+        for key, value in s["energy"].items():
+            self.assertTrue(math.isfinite(value), f"energy.{key} = {value}")
+        return s
+
+    def test_block_check_and_run(self):
+        p = self.check(BLOCK, 0)
+        self.assertRegex(p.stdout, r"(?m)^nodes: 6724$", describe(p))
+        self.assertRegex(p.stdout, r"(?m)^solid elements: 5680$", describe(p))
+        table = unsupported_table(p.stdout)
+        self.assertIn("*DATABASE_ELOUT", table, describe(p))
+        self.assertIn("output not written yet", table["*DATABASE_ELOUT"])
+        self.assertIn("*DATABASE_SPCFORC", table, describe(p))
+        dt = self.initial_step(p)
+        # About 20 cycles: enough to see the deck's loads act, short enough to stay quick.
+        s = self.short_run(self.deck(BLOCK), 20 * dt)
+        self.assertEqual(s["counts"]["nodes"], 6724)
+        self.assertEqual(s["counts"]["solids"], 5680)
+        self.assertAlmostEqual(s["end_time"], float(f"{20 * dt:.6g}"), delta=1e-12)
+
+    def test_projectile_check_and_run(self):
+        p = self.check(PROJECTILE, 0)
+        self.assertRegex(p.stdout, r"(?m)^solid elements: 5664$", describe(p))
+        table = unsupported_table(p.stdout)
+        self.assertIn("*CASE", table, describe(p))
+        self.assertIn("not supported", table["*CASE"])
+        self.assertIn("*CONTACT_FORCE_TRANSDUCER_PENALTY", table, describe(p))
+        # Keywords inside *CASE blocks are reported as such.
+        self.assertTrue(any("inside *CASE block" in r
+                            for r in table.get("*INITIAL_VELOCITY_GENERATION", [])), describe(p))
+        dt = self.initial_step(p)
+        s = self.short_run(self.deck(PROJECTILE), 20 * dt)
+        self.assertGreater(s["energy"]["total"], 0.0)
+
+    def test_ball_plate_cannot_run(self):
+        p = self.check(BALL_PLATE, 1)
+        self.assertIn("cannot run yet", p.stderr, describe(p))
+        self.assertIn("*MAT_RIGID", p.stderr, describe(p))
+        table = unsupported_table(p.stdout)
+        self.assertIn("*MAT_RIGID", table, describe(p))
+        self.assertIn("*ELEMENT_SHELL", table, describe(p))
+        self.assertIn("*CONTACT_AUTOMATIC_SINGLE_SURFACE", table, describe(p))
+        # `run` refuses it too, before creating results.
+        out = os.path.join(self.tmp, "out")
+        p = crumple("run", self.deck(BALL_PLATE), "-o", out, "-q", cwd=self.tmp)
+        self.assertEqual(p.returncode, 1, describe(p))
+        self.assertIn("*MAT_RIGID", p.stderr, describe(p))
+        self.assertFalse(os.path.exists(os.path.join(out, "summary.json")))
+
+
+if __name__ == "__main__":
+    clitest.main()

@@ -1,0 +1,116 @@
+#!/usr/bin/env python3
+"""Writes the decks under tests/data/decks/ used by the parallel determinism tests.
+
+  mixed_conditions.k  every load and constraint at once on a plastic brick with erosion:
+                      SPC, follower pressure, nodal load, gravity, prescribed velocity with
+                      birth/death, a moving stonewall with friction, rotating initial velocity,
+                      stiffness hourglass control, mass scaling and history nodes.
+"""
+
+from __future__ import annotations
+
+import pathlib
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from deckgen import Mesh, block, node_set  # noqa: E402
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+
+
+def mixed_conditions(nx: int = 12, ny: int = 6, nz: int = 6) -> str:
+    """Units mm, ms, kg, GPa. A 60 x 30 x 30 mm steel brick."""
+    mesh = Mesh()
+    g = block(mesh, 1, (0.0, 0.0, 0.02), (60.0, 30.0, 30.0), (nx, ny, nz))
+    # A second part (elastic) on top, sharing the interface nodes.
+    g2 = {}
+    for k in range(0, 3):
+        for j in range(ny + 1):
+            for i in range(nx + 1):
+                g2[i, j, k] = g[i, j, nz] if k == 0 else mesh.add_node(60.0 * i / nx, 30.0 * j / ny, 30.02 + 5.0 * k)
+    for k in range(2):
+        for j in range(ny):
+            for i in range(nx):
+                mesh.add_solid(2, [g2[i, j, k], g2[i + 1, j, k], g2[i + 1, j + 1, k], g2[i, j + 1, k],
+                                   g2[i, j, k + 1], g2[i + 1, j, k + 1], g2[i + 1, j + 1, k + 1], g2[i, j + 1, k + 1]])
+    fixed = [g[0, j, k] for j in range(ny + 1) for k in range(nz + 1)]
+    driven = [g[nx, j, k] for j in range(ny + 1) for k in range(nz + 1)]
+    top = [(g2[i, j, 2], g2[i + 1, j, 2], g2[i + 1, j + 1, 2], g2[i, j + 1, 2])
+           for j in range(ny) for i in range(nx)]
+    segs = "*SET_SEGMENT\n         1\n" + "".join(f"{a:10d}{b:10d}{c:10d}{d:10d}\n" for a, b, c, d in top)
+    return f"""*KEYWORD
+*TITLE
+mixed conditions: every load and constraint at once (parallel determinism test)
+*CONTROL_TERMINATION
+      0.05
+*CONTROL_TIMESTEP
+$   dtinit    tssfac      isdo    tslimt     dt2ms
+       0.0       0.8         0       0.0  -7.00e-4
+*CONTROL_HOURGLASS
+         4      0.05
+*DATABASE_GLSTAT
+     0.001
+*DATABASE_MATSUM
+     0.001
+*DATABASE_NODOUT
+     0.001
+*DATABASE_RWFORC
+     0.001
+*DATABASE_BINARY_D3PLOT
+      0.01
+*DATABASE_HISTORY_NODE
+{g[nx, ny, nz]:10d}{g[0, 0, 0]:10d}{g2[nx // 2, ny // 2, 2]:10d}
+*PART
+plastic brick
+         1         1         1
+*PART
+elastic cap
+         2         1         2         0         1
+*HOURGLASS
+         1         2       0.1
+*SECTION_SOLID
+         1         1
+*MAT_PIECEWISE_LINEAR_PLASTICITY
+$      mid        ro         e        pr      sigy      etan      fail
+         1   7.85e-6     210.0       0.3      0.25       2.0      0.01
+*MAT_ELASTIC
+         2   2.70e-6      70.0      0.33
+*DEFINE_CURVE
+         1
+                 0.0                 0.0
+                0.02                 1.0
+                 1.0                 1.0
+{node_set(1, fixed, "fixed end")}*BOUNDARY_SPC_SET
+         1         0         1         1         1
+{node_set(2, driven, "driven end")}*BOUNDARY_PRESCRIBED_MOTION_SET
+$     nsid       dof       vad      lcid        sf       vid     death     birth
+         2         1         0         1      20.0         0      0.04     0.002
+{segs}*LOAD_SEGMENT_SET
+         1         1      0.02
+*LOAD_NODE_POINT
+{g[nx, 0, 0]:10d}         3         1       0.5
+*LOAD_BODY_Z
+         1     9.81
+*INITIAL_VELOCITY_GENERATION
+$       id      styp     omega        vx        vy        vz
+         2         2       1.0       0.0       0.0      -1.0
+$       xc        yc        zc        nx        ny        nz
+      30.0      15.0      35.0       0.0       0.0       1.0
+*RIGIDWALL_PLANAR_MOVING
+         0
+       0.0       0.0       0.0       0.0       0.0       1.0       0.2
+$     mass        v0
+     0.005       1.0
+{mesh.keyword_text()}*END
+"""
+
+
+def main() -> None:
+    out = ROOT / "tests" / "data" / "decks"
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "mixed_conditions.k").write_text(mixed_conditions())
+    print("wrote tests/data/decks/mixed_conditions.k")
+
+
+if __name__ == "__main__":
+    main()
