@@ -59,7 +59,7 @@ void runKernel(benchmark::State& state, model::MaterialLaw law, int ihq) {
   const auto m = brick(50, 50, 40, law, ihq);
   auto sd = domain::buildSerialSubdomain(m);
   std::vector<double> dt_e;
-  for (auto& b : sd.solid_blocks) elements::initializeSolids(b, sd.x0, sd.slots.data(), dt_e);
+  for (auto& b : sd.solid_blocks) elements::initializeSolids(b, sd.x0, sd.slots.data(), dt_e, {});
   // A compressive, shearing velocity field large enough to yield the plastic material.
   for (std::size_t n = 0; n < sd.numNodes(); ++n) {
     const double* x = &sd.x0[3 * n];

@@ -58,7 +58,7 @@ Boundary::Boundary(const model::Model& m, const domain::Subdomain& sd) {
       for (int32_t mn : w.nodes)
         if (int32_t n = localOf(sd, mn); n != model::kNone) ws.nodes.push_back(n);
     }
-    ws.velocity = w.moving ? w.v0 : 0.0;
+    ws.velocity = ws.velocity_prev = w.moving ? w.v0 : 0.0;
     walls_.push_back(std::move(ws));
   }
 }
@@ -154,6 +154,8 @@ double Boundary::applyRigidWalls(double dt_n, double dt_half, domain::Subdomain&
     // ascending node id over all ranks.
     std::vector<int64_t> ids;
     std::vector<double> forces;
+    double impulse_n = 0.0;  // normal impulse of the wall on this rank's owned nodes
+    w.velocity_prev = w.velocity;
     model::Vec3 m_axis{};
     if (d.finite) {
       m_axis = {nrm[1] * d.l_axis[2] - nrm[2] * d.l_axis[1],
@@ -195,7 +197,8 @@ double Boundary::applyRigidWalls(double dt_n, double dt_half, domain::Subdomain&
         // Energy taken out of the node, less the work the wall's own motion did on it.
         const double vmean = 0.5 * (v_old[3 * n + c] + v_new[c]);
         if (owned) {
-          absorbed -= m * dv * (vmean - w.velocity * nrm[c]);
+          absorbed -= m * dv * vmean;
+          impulse_n += m * dv * nrm[c];
           forces.push_back(dt_n > 0.0 ? m * dv / dt_n : 0.0);
         }
         v[c] = v_new[c];
@@ -206,6 +209,9 @@ double Boundary::applyRigidWalls(double dt_n, double dt_half, domain::Subdomain&
       // The structure pushes back on a wall of finite mass (Newton's third law).
       w.velocity -= dt_n * w.normal_force / d.mass;
     }
+    // The work the nodes' reaction did on the moving wall, at the wall's mean velocity over
+    // the step; what is left is the energy the stonewall took out.
+    absorbed += impulse_n * 0.5 * (w.velocity_prev + w.velocity);
     w.displacement += dt_half * w.velocity;
   }
   return absorbed;
@@ -228,7 +234,11 @@ void Boundary::sumWallForce(WallState& w, const std::vector<int64_t>& ids,
 double Boundary::wallKineticEnergy() const {
   double e = 0.0;
   for (const auto& w : walls_)
-    if (w.def->moving) e += 0.5 * w.def->mass * w.velocity * w.velocity;
+    if (w.def->moving) {
+      // At t(n), like the structure's kinetic energy: the mean of the half-step velocities.
+      const double v = 0.5 * (w.velocity_prev + w.velocity);
+      e += 0.5 * w.def->mass * v * v;
+    }
   return e;
 }
 

@@ -15,7 +15,8 @@ struct WallState {
   const model::RigidWallPlanar* def = nullptr;
   std::vector<int32_t> nodes;  // local slave nodes
   double displacement = 0.0;   // along the normal (moving walls)
-  double velocity = 0.0;       // along the normal (moving walls)
+  double velocity = 0.0;       // along the normal (moving walls), v(n+1/2)
+  double velocity_prev = 0.0;  // v(n-1/2)
   model::Vec3 force{};         // force of the wall on the structure in the last cycle
   double normal_force = 0.0;   // its component along the wall normal
 };

@@ -49,6 +49,7 @@ struct SolidBlock {
   std::vector<uint8_t> active;               // 0 once eroded
   std::vector<uint8_t> failed;               // material reports failure this cycle
   std::vector<double> mass_scale;            // mass scaling factor (>= 1), padded; empty if none
+  std::vector<double> dt_scale;              // stable-step factor (<= 1), padded; empty if none
 
   std::size_t size() const { return elem.size(); }
   // Elements plus padding: a whole number of batches.

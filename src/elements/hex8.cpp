@@ -340,7 +340,8 @@ BlockStatus solidBlockForces(const Law& law, domain::SolidBlock& blk, const doma
         }
         for (int a = 0; a < 8; ++a)
           for (int i = 0; i < 3; ++i) slot[3 * a + i] = w.f[i][a][l];
-        const double dte = solidTimeStep(len[l], c_dt[l], trace_d[l], bv);
+        double dte = solidTimeStep(len[l], c_dt[l], trace_d[l], bv);
+        if (!blk.dt_scale.empty()) dte *= blk.dt_scale[e];
         if (dte < st.dt_min) {
           st.dt_min = dte;
           st.dt_elem = blk.elem[e];
@@ -379,6 +380,26 @@ double solidTimeStep(double length, double wave_speed, double trace_d, const Bul
   return length / (qv + std::sqrt(qv * qv + wave_speed * wave_speed));
 }
 
+void markIsolatedElements(domain::SolidBlock& blk, const domain::GatherPlan& plan) {
+  const materials::Moduli mod = moduliOf(blk.law);
+  const double factor =
+      std::min(1.0, std::sqrt((mod.bulk + 4.0 / 3.0 * mod.shear) / (3.0 * mod.bulk)));
+  blk.dt_scale.clear();
+  for (std::size_t e = 0; e < blk.size(); ++e) {
+    bool isolated = true;
+    for (int a = 0; a < 8 && isolated; ++a) {
+      const auto n = static_cast<std::size_t>(blk.conn[e][a]);
+      const int own =
+          static_cast<int>(std::count(blk.conn[e].begin(), blk.conn[e].end(), blk.conn[e][a]));
+      isolated = plan.ptr[n + 1] - plan.ptr[n] == own;
+    }
+    if (isolated && factor < 1.0) {
+      if (blk.dt_scale.empty()) blk.dt_scale.assign(blk.paddedSize(), 1.0);
+      blk.dt_scale[e] = factor;
+    }
+  }
+}
+
 BlockStatus computeSolidForces(domain::SolidBlock& block, const domain::NodeVector& x,
                                const domain::NodeVector& v, double dt, const BulkViscosity& bv,
                                double* slots) {
@@ -388,7 +409,7 @@ BlockStatus computeSolidForces(domain::SolidBlock& block, const domain::NodeVect
 }
 
 BlockStatus initializeSolids(domain::SolidBlock& blk, const domain::NodeVector& x0, double* slots,
-                             std::vector<double>& element_dt) {
+                             std::vector<double>& element_dt, const BulkViscosity& bv) {
   const materials::Moduli mod = moduliOf(blk.law);
   const double c = std::sqrt((mod.bulk + 4.0 / 3.0 * mod.shear) / blk.rho0);
   BlockStatus st;
@@ -415,7 +436,8 @@ BlockStatus initializeSolids(domain::SolidBlock& blk, const domain::NodeVector& 
         slot[3 * a] = corner_mass;
         slot[3 * a + 1] = slot[3 * a + 2] = 0.0;
       }
-      const double dte = vol[l] / area[l] / c;
+      double dte = solidTimeStep(vol[l] / area[l], c, 0.0, bv);
+      if (!blk.dt_scale.empty()) dte *= blk.dt_scale[e];
       element_dt[e] = dte;
       if (dte < st.dt_min) {
         st.dt_min = dte;

@@ -49,7 +49,13 @@ BlockStatus computeSolidForces(domain::SolidBlock& block, const domain::NodeVect
 // (rho0 V0 / 8) into the x component of its force slot, so that nodal masses are assembled by
 // the same ordered gather as forces.
 BlockStatus initializeSolids(domain::SolidBlock& block, const domain::NodeVector& x0, double* slots,
-                             std::vector<double>& element_dt);
+                             std::vector<double>& element_dt, const BulkViscosity& bv);
+
+// Marks elements that share no node with any other element (through the gather plan, so
+// neighbours on other ranks count) and gives them the step factor sqrt((K + 4G/3) / 3K):
+// such an element's breathing mode has omega = 2 sqrt(3K / (K + 4G/3)) c / h, above the
+// L / c estimate (0.73 h/c at nu = 0.3). In a mesh this mode cannot form.
+void markIsolatedElements(domain::SolidBlock& block, const domain::GatherPlan& plan);
 
 // Stable time step of one element from its characteristic length (volume / largest face
 // area, LS-DYNA Theory Manual sec. 22 "Time step control") and the dilatational wave speed,

@@ -68,7 +68,8 @@ void Solver::initialize() {
   int32_t dt_elem = -1;
   for (std::size_t ib = 0; ib < sd_.solid_blocks.size(); ++ib) {
     auto& blk = sd_.solid_blocks[ib];
-    const auto st = elements::initializeSolids(blk, sd_.x0, sd_.slots.data(), element_dt[ib]);
+    elements::markIsolatedElements(blk, sd_.internal);
+    const auto st = elements::initializeSolids(blk, sd_.x0, sd_.slots.data(), element_dt[ib], bv_);
     if (st.bad_elem >= 0) {
       throw util::NumericalError(fmt::format(
           "solid element {} (part {}) has zero or negative initial volume: check its node "

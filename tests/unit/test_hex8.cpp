@@ -138,7 +138,7 @@ TEST_P(Hex8Patch, UniformStrainIsExactAndInteriorForcesBalance) {
   auto sd = crumple::domain::buildSerialSubdomain(m);
   auto& blk = sd.solid_blocks.at(0);
   std::vector<double> dt_e;
-  crumple::elements::initializeSolids(blk, sd.x0, sd.slots.data(), dt_e);
+  crumple::elements::initializeSolids(blk, sd.x0, sd.slots.data(), dt_e, {});
   // Linear velocity field v = G x (general: stretch, shear and spin).
   const double G[3][3] = {{1e-3, 4e-4, -2e-4}, {-1e-4, -3e-4, 5e-4}, {3e-4, 2e-4, 6e-4}};
   const double dt = 1e-2;
@@ -185,7 +185,7 @@ TEST(Hex8, FiniteRigidRotationProducesNoStress) {
   auto sd = crumple::domain::buildSerialSubdomain(m);
   auto& blk = sd.solid_blocks.at(0);
   std::vector<double> dt_e;
-  crumple::elements::initializeSolids(blk, sd.x0, sd.slots.data(), dt_e);
+  crumple::elements::initializeSolids(blk, sd.x0, sd.slots.data(), dt_e, {});
   crumple::elements::BulkViscosity bv;
   // Rotate the block by 90 degrees about a skew axis in 200 steps; velocities are chosen so
   // that positions follow the exact rotation, as prescribed motion would impose.

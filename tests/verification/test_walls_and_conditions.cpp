@@ -192,10 +192,11 @@ TEST(Walls, FrictionlessWallKeepsTangentialVelocity) {
 // impulses that change the block's nodal velocities (Newton's third law), and internal forces
 // sum to zero, so the total momentum along the normal, sum m v_z + M V_wall, is conserved to
 // round-off; 1e-9 relative leaves room for the sums of a few hundred cycles.
-std::string movingWallDeck(double wall_mass, double v_wall, double gap) {
+std::string movingWallDeck(double wall_mass, double v_wall, double gap, double tssfac = 0.9) {
   return brickDeck(
       2, 2, 2, 10, 10, 10,
-      kSteel + termination(0.2) + "*RIGIDWALL_PLANAR_MOVING\n         0\n" +
+      kSteel + termination(0.2) + fmt::format("*CONTROL_TIMESTEP\n       0.0{:10.4g}\n", tssfac) +
+          "*RIGIDWALL_PLANAR_MOVING\n         0\n" +
           fmt::format("       0.0       0.0{:10.4g}       0.0       0.0       0.0\n", -gap) +
           fmt::format("{:10.6g}{:10.4g}\n", wall_mass, v_wall));
 }
@@ -229,20 +230,22 @@ TEST(Walls, MovingWallConservesMomentum) {
 }
 
 // Same impact, energy: the block's kinetic, internal and hourglass energy, the wall's kinetic
-// energy and the stonewall energy balance the wall's initial kinetic energy. The kinematic
-// wall dissipates (stonewall energy) and the balance must hold within 1% at the end, as for
-// any elastic problem (verification.md #8). (During the impact cycles the report may jump by
-// a few percent: kinetic energy is evaluated at t(n) from mean half-step velocities while the
-// wall's impulse is charged in full; that transient is not checked.)
+// energy and the stonewall energy balance the wall's initial kinetic energy. On this 2x2x2
+// block, ringing after a hard impact, the balance carries a first-order error in the step
+// (measured: 1.5% at TSSFAC 0.9, 0.35% at 0.5, 0.14% at 0.3), so the test checks the
+// default within 2% and that the error shrinks with the step: within 0.5% at TSSFAC 0.3.
 TEST(Walls, MovingWallEnergyBalance) {
   const double block_mass = kRho * 10 * 10 * 10;
-  auto sim = Simulation::fromText("wall_moving_energy", movingWallDeck(10 * block_mass, 10, 1));
-  sim->run();
-  const auto e = sim->solver->energies();
-  EXPECT_GT(e.rigidwall, 0.0);
-  EXPECT_NEAR(e.ratio, 1.0, 0.01) << "kinetic " << e.kinetic << " internal " << e.internal
-                                  << " hourglass " << e.hourglass << " stonewall " << e.rigidwall
-                                  << " initial " << e.initial;
+  for (const auto& [tssfac, tolerance] : {std::pair{0.9, 0.02}, std::pair{0.3, 0.005}}) {
+    auto sim =
+        Simulation::fromText("wall_moving_energy", movingWallDeck(10 * block_mass, 10, 1, tssfac));
+    sim->run();
+    const auto e = sim->solver->energies();
+    EXPECT_GT(e.rigidwall, 0.0);
+    EXPECT_NEAR(e.ratio, 1.0, tolerance)
+        << "TSSFAC " << tssfac << ": kinetic " << e.kinetic << " internal " << e.internal
+        << " hourglass " << e.hourglass << " stonewall " << e.rigidwall << " initial " << e.initial;
+  }
 }
 
 // A finite stonewall (_FINITE): only nodes over its rectangle are stopped. Three separate
@@ -398,14 +401,17 @@ TEST(Conditions, InitialVelocityGenerationRotation) {
 // Mass scaling (*CONTROL_TIMESTEP DT2MS < 0): every element whose step TSSFAC dt_e is below
 // |DT2MS| gets its density scaled by (|DT2MS| / (TSSFAC dt_e))^2, so the run goes at |DT2MS|.
 // A cube of side h has characteristic length h (volume / largest face) and
-// dt_e = h / c, c = sqrt((K + 4G/3) / rho). Added mass = sum over elements of
-// m_e ((|DT2MS| / (TSSFAC dt_e))^2 - 1): closed form, so 1e-9 relative.
+// dt_e = h / (c (Q2 + sqrt(1 + Q2^2))), c = sqrt((K + 4G/3) / rho), with the default linear
+// bulk viscosity Q2 = 0.06 (docs/theory.md, stable time step). Added mass = sum over elements
+// of m_e ((|DT2MS| / (TSSFAC dt_e))^2 - 1): closed form, so 1e-9 relative.
 TEST(Conditions, MassScalingAddsAnalyticMass) {
   const int n = 3;
   const double h = 1.0, tssfac = 0.9, target = 4e-4;
   const double K = kE / (3 * (1 - 2 * kNu)), G = kE / (2 * (1 + kNu));
-  const double c = std::sqrt((K + 4 * G / 3) / kRho), dt_e = h / c;
-  ASSERT_LT(tssfac * dt_e, target);  // 1.50e-4 < 4e-4: every element is scaled
+  const double q2 = 0.06;
+  const double c = std::sqrt((K + 4 * G / 3) / kRho),
+               dt_e = h / (c * (q2 + std::sqrt(1 + q2 * q2)));
+  ASSERT_LT(tssfac * dt_e, target);  // 1.41e-4 < 4e-4: every element is scaled
   auto sim = Simulation::fromText(
       "mass_scaling",
       brickDeck(
@@ -421,9 +427,11 @@ TEST(Conditions, MassScalingAddsAnalyticMass) {
   EXPECT_NEAR(sim->solver->totalMass(), n * n * n * element_mass, 1e-12)
       << "totalMass() is the physical mass";
   EXPECT_NEAR(sim->solver->initialDt(), target, 1e-12 * target);
-  // The nodal masses carry the scaled mass, the kinetic energy only the physical one.
+  // The nodal masses carry the scaled mass, and so does the kinetic energy (the energy balance
+  // holds for the mass the equations integrate).
   EXPECT_NEAR(totalMass(*sim), n * n * n * element_mass * ratio * ratio, 1e-9 * added);
-  EXPECT_NEAR(sim->solver->energies().kinetic, 0.5 * n * n * n * element_mass, 1e-12);
+  EXPECT_NEAR(sim->solver->energies().kinetic, 0.5 * n * n * n * element_mass * ratio * ratio,
+              1e-9 * added);
   // It runs at |DT2MS|.
   double smallest = 1e300, largest = 0.0;
   sim->run([&](const auto& s) {
@@ -432,12 +440,10 @@ TEST(Conditions, MassScalingAddsAnalyticMass) {
       largest = std::max(largest, s.dt());
     }
   });
-  // The step is |DT2MS| except when an element's volume rate is negative (even by round-off
-  // in this rigid translation), when the linear bulk viscosity Q2 = 0.06 (default) shortens it
-  // to |DT2MS| / (Q2 + sqrt(1 + Q2^2)) (LS-DYNA's solid time step with bulk viscosity).
-  const double q2 = 0.06;
+  // The step stays |DT2MS|: the bulk viscosity term of the step does not depend on the sign of
+  // the (round-off) volume rate of this rigid translation.
   EXPECT_NEAR(largest, target, 1e-9 * target);
-  EXPECT_GE(smallest, target / (q2 + std::sqrt(1 + q2 * q2)) * (1 - 1e-9));
+  EXPECT_NEAR(smallest, target, 1e-9 * target);
 }
 
 // |DT2MS| below every element's step: nothing is added and the step is the physical one.
@@ -453,7 +459,10 @@ TEST(Conditions, MassScalingLeavesFastElementsAlone) {
               fmt::format("*CONTROL_TIMESTEP\n       0.0{:10.4g}         0       0.0{:10.4g}\n",
                           tssfac, -1e-5)));
   EXPECT_EQ(sim->solver->addedMass(), 0.0);
-  EXPECT_NEAR(sim->solver->initialDt(), tssfac * h / c, 1e-12 * h / c);
+  // The physical step with the default linear bulk viscosity Q2 = 0.06 in the step formula.
+  const double q2 = 0.06;
+  EXPECT_NEAR(sim->solver->initialDt(), tssfac * h / (c * (q2 + std::sqrt(1 + q2 * q2))),
+              1e-12 * h / c);
 }
 
 // ---------------------------------------------------------------------------------------------
