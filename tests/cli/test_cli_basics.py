@@ -186,13 +186,14 @@ class Check(clitest.TempDirTest):
         m = re.search(r"(?m)^total mass: (\S+)$", out)
         self.assertIsNotNone(m, describe(p))
         self.assertAlmostEqual(float(m.group(1)), 0.0785, delta=1e-9)
-        # Initial step: TSSFAC 0.9 x (characteristic length / c); the bar is 10 x 10 x 100 mm in
-        # 2 x 2 x 100 hexes (5 x 5 x 1 mm, nu = 0): L = V / largest face = 1 mm,
-        # c = sqrt(E / rho), dt = 0.9 / c.
+        # Initial step: TSSFAC 0.9 x L / (c (Q2 + sqrt(1 + Q2^2))) with the default linear bulk
+        # viscosity Q2 = 0.06 (docs/theory.md); the bar is 10 x 10 x 100 mm in 2 x 2 x 100 hexes
+        # (5 x 5 x 1 mm, nu = 0): L = V / largest face = 1 mm, c = sqrt(E / rho).
         m = re.search(r"(?m)^initial time step: (\S+) \(element (\d+), TSSFAC 0\.9\)$", out)
         self.assertIsNotNone(m, describe(p))
         c = (210.0 / 7.85e-6) ** 0.5
-        self.assertAlmostEqual(float(m.group(1)), 0.9 * 1.0 / c, delta=1e-4 * 0.9 / c)
+        q = 0.06 + (1 + 0.06 ** 2) ** 0.5
+        self.assertAlmostEqual(float(m.group(1)), 0.9 * 1.0 / (c * q), delta=1e-4 * 0.9 / c)
         self.assertTrue(1 <= int(m.group(2)) <= 400)
         self.assertIn("everything in the deck is supported", out, describe(p))
         self.assertEqual(os.listdir(self.tmp), [], "check must not write results")
@@ -232,10 +233,15 @@ class Check(clitest.TempDirTest):
         self.assertRegex(p.stdout, r"(?m)^solid elements: 2$", describe(p))
         m = re.search(r"(?m)^initial time step: (\S+) \(element 77,", p.stdout)
         self.assertIsNotNone(m, "the smaller element 77 controls the step" + describe(p))
-        # Cube of side h: L = h; c = sqrt((K + 4G/3) / rho) with E = 210, nu = 0.3.
+        # Cube of side h: L = h; c = sqrt((K + 4G/3) / rho) with E = 210, nu = 0.3; the linear
+        # bulk viscosity Q2 = 0.06 enters the step; and both cubes share no node with another
+        # element, so their breathing mode limits them: factor sqrt((K + 4G/3) / 3K).
         E, nu, rho = 210.0, 0.3, 7.85e-6
         c = (E * (1 - nu) / ((1 + nu) * (1 - 2 * nu) * rho)) ** 0.5
-        self.assertAlmostEqual(float(m.group(1)), 0.9 * 0.5 / c, delta=1e-5 * 0.9 * 0.5 / c)
+        q = 0.06 + (1 + 0.06 ** 2) ** 0.5
+        breathing = ((1 - nu) / (1 + nu)) ** 0.5  # = sqrt((K + 4G/3) / 3K)
+        expected = 0.9 * 0.5 * breathing / (c * q)
+        self.assertAlmostEqual(float(m.group(1)), expected, delta=1e-5 * expected)
 
 
 if __name__ == "__main__":
