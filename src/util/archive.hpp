@@ -28,6 +28,7 @@ class ArchiveWriter {
   void put(const std::vector<T>& v) {
     put<uint64_t>(v.size());
     if constexpr (std::is_trivially_copyable_v<T>) {
+      if (v.empty()) return;  // data() may be null
       const auto* p = reinterpret_cast<const char*>(v.data());
       bytes_.insert(bytes_.end(), p, p + v.size() * sizeof(T));
     } else {
@@ -72,6 +73,7 @@ class ArchiveReader {
     if constexpr (std::is_trivially_copyable_v<T>) {
       need(n * sizeof(T));
       v.resize(n);
+      if (n == 0) return;  // memcpy with a null pointer is undefined even for no bytes
       std::memcpy(v.data(), bytes_.data() + pos_, n * sizeof(T));
       pos_ += n * sizeof(T);
     } else {

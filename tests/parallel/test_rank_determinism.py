@@ -61,6 +61,12 @@ def main() -> int:
 
         for t in a.threads.split(","):
             results[f"serial t{t}"] = digest(f"serial_t{t}", [], t)
+        # Open MPI's dynamically loaded components leave allocations that LeakSanitizer reports
+        # with no frame of ours (their modules are unloaded by then, so they cannot be matched
+        # by a suppression). Under mpirun only, leak detection is off; address and undefined-
+        # behaviour checks stay on, and the serial runs above still check for leaks.
+        asan = env.get("ASAN_OPTIONS", "")
+        env["ASAN_OPTIONS"] = (asan + ":" if asan else "") + "detect_leaks=0"
         for n in a.ranks.split(","):
             for t in a.threads.split(","):
                 results[f"np{n} t{t}"] = digest(f"np{n}_t{t}", [mpirun, "--oversubscribe", "-np", n], t)
