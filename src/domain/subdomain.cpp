@@ -107,6 +107,8 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
   Subdomain sd;
   sd.rank = rank;
   sd.num_ranks = num_ranks;
+  sd.global_nodes = static_cast<int64_t>(model.nodes.size());
+  sd.global_solids = static_cast<int64_t>(model.solids.size());
   const NodeRanks nr = nodeRanks(model, elem_rank);
   const std::size_t n_model = model.nodes.size();
   const int64_t num_solids = static_cast<int64_t>(model.solids.size());
@@ -136,10 +138,21 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
   sd.mass.assign(nn, 0.0);
   sd.mass_added.assign(nn, 0.0);
 
-  // Blocks: one per part, elements ascending within a block.
-  std::map<int32_t, std::vector<int32_t>> by_part;
+  // Blocks: one per part. Elements touching a node that another rank also holds come first, so
+  // their forces can be sent while the others are computed; each group ascending.
+  auto shared = [&](std::size_t e) {
+    for (int32_t n : model.solids.nodes[e])
+      if (nr.ptr[static_cast<std::size_t>(n) + 1] - nr.ptr[static_cast<std::size_t>(n)] > 1) return true;
+    return false;
+  };
+  std::map<int32_t, std::vector<int32_t>> by_part, shared_by_part;
   for (std::size_t e = 0; e < model.solids.size(); ++e)
-    if (elem_rank[e] == rank) by_part[model.solids.part[e]].push_back(int32_t(e));
+    if (elem_rank[e] == rank)
+      (shared(e) ? shared_by_part : by_part)[model.solids.part[e]].push_back(int32_t(e));
+  for (auto& [part_index, first] : shared_by_part) {
+    auto& rest = by_part[part_index];
+    rest.insert(rest.begin(), first.begin(), first.end());
+  }
   std::size_t slot = 0;
   std::vector<Corner> internal, pressure;
   for (auto& [part_index, elems] : by_part) {
@@ -152,6 +165,11 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
     b.rho0 = mat.rho;
     b.hourglass = hourglassOf(model, part);
     b.elem = elems;
+    b.shared_count = shared_by_part.count(part_index) ? shared_by_part[part_index].size() : 0;
+    b.shared_end = std::min(elems.size(), (b.shared_count + kSolidBatch - 1) / kSolidBatch * kSolidBatch);
+    b.elem_id.resize(elems.size());
+    for (std::size_t k = 0; k < elems.size(); ++k)
+      b.elem_id[k] = model.solids.id[static_cast<std::size_t>(elems[k])];
     b.conn.resize(elems.size());
     for (std::size_t k = 0; k < elems.size(); ++k) {
       const auto& gn = model.solids.nodes[static_cast<std::size_t>(elems[k])];
@@ -260,6 +278,29 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
   sd.internal = gatherPlan(std::move(internal), local_of, nn);
   sd.pressure = gatherPlan(std::move(pressure), local_of, nn);
   return sd;
+}
+
+namespace {
+template <class F>
+int64_t findElement(const Subdomain& sd, int32_t model_index, F&& value) {
+  // Two ascending runs per block: the shared group, then the rest.
+  for (const auto& b : sd.solid_blocks) {
+    const auto mid = b.elem.begin() + static_cast<long>(b.shared_count);
+    for (auto [lo, hi] : {std::pair{b.elem.begin(), mid}, std::pair{mid, b.elem.end()}}) {
+      auto it = std::lower_bound(lo, hi, model_index);
+      if (it != hi && *it == model_index) return value(b, std::size_t(it - b.elem.begin()));
+    }
+  }
+  return 0;
+}
+}  // namespace
+
+int64_t Subdomain::elementId(int32_t model_index) const {
+  return findElement(*this, model_index, [](const SolidBlock& b, std::size_t k) { return b.elem_id[k]; });
+}
+
+int64_t Subdomain::elementPart(int32_t model_index) const {
+  return findElement(*this, model_index, [](const SolidBlock& b, std::size_t) { return b.part_id; });
 }
 
 Subdomain buildSerialSubdomain(const model::Model& model) {

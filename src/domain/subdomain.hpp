@@ -35,9 +35,15 @@ struct SolidBlock {
   double rho0 = 0.0;
   HourglassParams hourglass;
 
-  std::vector<int32_t> elem;                 // model element index, ascending
+  // Model element index. Elements with a node shared with another rank come first (ascending),
+  // then the others (ascending): the first group is computed before the shared-node exchange
+  // is posted, the second while it travels.
+  std::vector<int32_t> elem;
+  std::size_t shared_count = 0;  // elements in the first group
+  std::size_t shared_end = 0;    // shared_count rounded up to whole batches (kernel range)
+  std::vector<int64_t> elem_id;              // user element id (for messages and output)
   std::vector<std::array<int32_t, 8>> conn;  // local node indices
-  std::size_t slot_offset = 0;               // first force slot (element-major, 8 corners)
+  std::size_t slot_offset = 0;  // first force slot (element-major, 8 corners)
 
   // Per-element state.
   std::array<std::vector<double>, 6> sig;    // Cauchy stress (Voigt, tensor shear)
@@ -105,7 +111,14 @@ struct Subdomain {
   GatherPlan pressure;  // pressure slots -> nodal external force
   std::vector<PeerExchange> peers;
 
+  // Sizes of the whole model (this rank holds only part of it).
+  int64_t global_nodes = 0;
+  int64_t global_solids = 0;
+
   std::size_t numNodes() const { return node_model.size(); }
+  // User id and part id of a solid held here, by model index; 0 if not held here.
+  int64_t elementId(int32_t model_index) const;
+  int64_t elementPart(int32_t model_index) const;
 };
 
 // Builds rank `rank`'s subdomain from the element -> rank map of the whole model (one entry

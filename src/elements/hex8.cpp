@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -125,9 +126,10 @@ struct BatchScratch {
 template <class Law>
 BlockStatus solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVector& x,
                              const domain::NodeVector& v, double dt, const BulkViscosity& bv,
-                             double* slots) {
-  const std::size_t ne = blk.size();
-  const std::size_t nbatch = (ne + kBatch - 1) / kBatch;
+                             double* slots, std::size_t range_first, std::size_t range_last) {
+  const std::size_t ne = range_last;
+  const std::size_t batch0 = range_first / kBatch;
+  const std::size_t nbatch = range_last > range_first ? (range_last - range_first + kBatch - 1) / kBatch : 0;
   const materials::Moduli mod = law.moduli;
   const double lam2mu = mod.bulk + 4.0 / 3.0 * mod.shear;
   const int ihq = blk.hourglass.ihq;
@@ -141,7 +143,7 @@ BlockStatus solidBlockForces(const Law& law, domain::SolidBlock& blk, const doma
     BatchScratch w;
 #pragma omp for schedule(static)
     for (std::size_t ib = 0; ib < nbatch; ++ib) {
-      const std::size_t first = ib * kBatch;
+      const std::size_t first = (batch0 + ib) * kBatch;
       const int n = static_cast<int>(std::min<std::size_t>(kBatch, ne - first));
       BlockStatus& st = status[ib];
       gatherNodal(blk, first, n, x, w.x);
@@ -402,9 +404,15 @@ void markIsolatedElements(domain::SolidBlock& blk, const domain::GatherPlan& pla
 
 BlockStatus computeSolidForces(domain::SolidBlock& block, const domain::NodeVector& x,
                                const domain::NodeVector& v, double dt, const BulkViscosity& bv,
-                               double* slots) {
+                               double* slots, std::size_t first, std::size_t last) {
+  // Batches never straddle the range: unconditional vector stores of state would otherwise
+  // write elements outside it.
+  if (first % kBatch != 0 || (last % kBatch != 0 && last != block.size()) || last > block.size())
+    throw std::logic_error("computeSolidForces: range not aligned to batches");
   return std::visit(
-      [&](const auto& law) { return solidBlockForces(law, block, x, v, dt, bv, slots); },
+      [&](const auto& law) {
+        return solidBlockForces(law, block, x, v, dt, bv, slots, first, last);
+      },
       block.law);
 }
 

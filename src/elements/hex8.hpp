@@ -41,9 +41,15 @@ struct BlockStatus {
 // x - dt/2 v, Jaumann stress rotation, material update, bulk viscosity, stress divergence at
 // x, hourglass forces, element energies and stable time step. Corner forces go to the block's
 // force slots (no scatter). `dt` is the step dt(n-1/2) that brought x and v to this cycle.
+// Elements [first, last) of the block only, both multiples of kBatch or last == size().
 BlockStatus computeSolidForces(domain::SolidBlock& block, const domain::NodeVector& x,
                                const domain::NodeVector& v, double dt, const BulkViscosity& bv,
-                               double* slots);
+                               double* slots, std::size_t first, std::size_t last);
+inline BlockStatus computeSolidForces(domain::SolidBlock& block, const domain::NodeVector& x,
+                                      const domain::NodeVector& v, double dt,
+                                      const BulkViscosity& bv, double* slots) {
+  return computeSolidForces(block, x, v, dt, bv, slots, 0, block.size());
+}
 
 // Initial volumes and the stable step of a block; writes each corner's lumped mass
 // (rho0 V0 / 8) into the x component of its force slot, so that nodal masses are assembled by

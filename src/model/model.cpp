@@ -55,6 +55,16 @@ int32_t Model::curveIndex(int64_t id) const {
   return find(curve_index_, id);
 }
 
+void Model::releaseMesh() {
+  nodes = Nodes{};
+  solids = Solids{};
+  node_sets.clear();
+  part_sets.clear();
+  segment_sets.clear();
+  std::vector<Vec3>().swap(initial_velocity);
+  std::unordered_map<int64_t, int32_t>().swap(node_index_);
+}
+
 void Model::finalize() {
   fill(node_index_, nodes.id);
   std::vector<int64_t> ids;

@@ -238,6 +238,12 @@ struct Model {
   // Filled by finalize(): id -> index maps. Called by the builder once everything is read.
   void finalize();
 
+  // Frees the global mesh (nodes, solids, sets, per-node initial velocities and the id maps)
+  // once every rank has built its subdomain, so that no rank keeps the whole mesh during the
+  // run (the seed's distributed-memory premise). What the cycle still reads stays: parts,
+  // materials, curves, controls and the load and constraint lists.
+  void releaseMesh();
+
  private:
   std::unordered_map<int64_t, int32_t> node_index_, part_index_, curve_index_;
 };

@@ -20,6 +20,7 @@ struct RunInfo {
   std::string termination = "normal";  // "normal", "error", "signal"
   std::string message;                 // the error, if any
   double wall_s = 0.0;
+  double setup_s = 0.0;  // reading, partitioning, distributing and initialising
 };
 
 class ResultsWriter {

@@ -47,7 +47,7 @@ void Solver::gather(const domain::GatherPlan& plan, std::vector<double>& out,
   }
 }
 
-void Solver::exchangeSharedSlots() {
+void Solver::beginSharedExchange() {
   if (sd_.peers.empty()) return;
   std::vector<comm::Message> sends, recvs;
   for (auto& p : sd_.peers) {
@@ -58,7 +58,23 @@ void Solver::exchangeSharedSlots() {
     recvs.push_back({p.rank, sd_.slots.data() + 3 * p.recv_first, 3 * p.recv_count});
   }
   comm_.exchangeBegin(sends, recvs);
-  comm_.exchangeEnd();
+}
+
+void Solver::endSharedExchange() {
+  if (!sd_.peers.empty()) comm_.exchangeEnd();
+}
+
+void Solver::exchangeSharedSlots() {
+  beginSharedExchange();
+  endSharedExchange();
+}
+
+int64_t Solver::controllingElement(int32_t local_best, bool holds_global_min) const {
+  // The smallest user id among the elements at the global minimum step: ascending user ids
+  // follow model indices, so this is the same element whatever the partition.
+  constexpr int64_t kNoElement = std::numeric_limits<int64_t>::max();
+  const int64_t id = comm_.minAll(holds_global_min ? sd_.elementId(local_best) : kNoElement);
+  return id == kNoElement ? 0 : id;
 }
 
 void Solver::initialize() {
@@ -74,7 +90,7 @@ void Solver::initialize() {
       throw util::NumericalError(fmt::format(
           "solid element {} (part {}) has zero or negative initial volume: check its node "
           "ordering (LS-DYNA: nodes 1-4 one face, 5-8 the opposite face, right-handed)",
-          model_.solids.id[static_cast<std::size_t>(st.bad_elem)], blk.part_id));
+          sd_.elementId(st.bad_elem), blk.part_id));
     }
     if (st.dt_elem >= 0 && (st.dt_min < dt_min || (st.dt_min == dt_min && st.dt_elem < dt_elem))) {
       dt_min = st.dt_min;
@@ -139,14 +155,10 @@ void Solver::initialize() {
       sd_.v[3 * n + c] = model_.initial_velocity[static_cast<std::size_t>(sd_.node_model[n])][c];
 
   const double dt_global = comm_.minAll(dt_min);
-  dt_elem = static_cast<int32_t>(comm_.minAll(dt_min == dt_global && dt_elem >= 0
-                                                  ? int64_t(dt_elem)
-                                                  : std::numeric_limits<int64_t>::max()));
-  dt_min = dt_global;
-  dt_next_ = ctl.tssfac * dt_min;
+  dt_initial_elem_ = controllingElement(dt_elem, dt_elem >= 0 && dt_min == dt_global);
+  dt_next_ = ctl.tssfac * dt_global;
   if (ctl.dt_init > 0.0) dt_next_ = std::min(dt_next_, ctl.dt_init);
   dt_initial_ = dt_next_;
-  dt_initial_elem_ = dt_elem >= 0 ? model_.solids.id[static_cast<std::size_t>(dt_elem)] : 0;
   dt_elem_ = dt_initial_elem_;
   dt_ = 0.0;
   time_ = 0.0;
@@ -161,31 +173,38 @@ bool Solver::finished() const {
   return time_ >= end_time_ * (1.0 - 1e-12);
 }
 
-void Solver::computeInternalForces() {
-  double dt_min = 1e300;
-  int32_t dt_elem = -1, bad = -1;
+void Solver::computeElementGroup(Group group, ElementPass& pass) {
   for (auto& blk : sd_.solid_blocks) {
-    const auto st = elements::computeSolidForces(blk, sd_.x, sd_.v, dt_, bv_, sd_.slots.data());
-    if (st.dt_elem >= 0 && (st.dt_min < dt_min || (st.dt_min == dt_min && st.dt_elem < dt_elem))) {
-      dt_min = st.dt_min;
-      dt_elem = st.dt_elem;
+    const std::size_t first = group == Group::Shared ? 0 : blk.shared_end;
+    const std::size_t last = group == Group::Shared ? blk.shared_end : blk.size();
+    if (first >= last) continue;
+    const auto st =
+        elements::computeSolidForces(blk, sd_.x, sd_.v, dt_, bv_, sd_.slots.data(), first, last);
+    if (st.dt_elem >= 0 &&
+        (st.dt_min < pass.dt_min || (st.dt_min == pass.dt_min && st.dt_elem < pass.dt_elem))) {
+      pass.dt_min = st.dt_min;
+      pass.dt_elem = st.dt_elem;
     }
-    if (st.bad_elem >= 0 && (bad < 0 || st.bad_elem < bad)) bad = st.bad_elem;
+    if (st.bad_elem >= 0 && (pass.bad < 0 || st.bad_elem < pass.bad)) pass.bad = st.bad_elem;
     eroded_ += st.eroded;
   }
-  const int64_t bad_global =
-      comm_.minAll(bad >= 0 ? int64_t(bad) : std::numeric_limits<int64_t>::max());
-  if (bad_global != std::numeric_limits<int64_t>::max()) {
-    const auto e = static_cast<std::size_t>(bad_global);
+}
+
+void Solver::finishElementPass(const ElementPass& pass) {
+  const double dt_min = pass.dt_min;
+  const int32_t dt_elem = pass.dt_elem, bad = pass.bad;
+  constexpr int64_t kNoElement = std::numeric_limits<int64_t>::max();
+  const int64_t bad_id = comm_.minAll(bad >= 0 ? sd_.elementId(bad) : kNoElement);
+  if (bad_id != kNoElement) {
+    // The rank holding the element names its part; user ids ascend with model indices.
+    const int64_t part =
+        comm_.minAll(bad >= 0 && sd_.elementId(bad) == bad_id ? sd_.elementPart(bad) : kNoElement);
     throw util::NumericalError(fmt::format(
-        "negative volume in solid element {} (part {}) at cycle {}, time {:.6g}",
-        model_.solids.id[e], model_.parts[static_cast<std::size_t>(model_.solids.part[e])].id,
+        "negative volume in solid element {} (part {}) at cycle {}, time {:.6g}", bad_id, part,
         cycle_, time_));
   }
   const double dt_global = comm_.minAll(dt_min);
-  dt_elem = static_cast<int32_t>(comm_.minAll(dt_min == dt_global && dt_elem >= 0
-                                                  ? int64_t(dt_elem)
-                                                  : std::numeric_limits<int64_t>::max()));
+  const int64_t dt_elem_id = controllingElement(dt_elem, dt_elem >= 0 && dt_min == dt_global);
   double dt_new = model_.controls.tssfac * dt_global;
   if (model_.controls.dt_max_curve != model::kNone)
     dt_new = std::min(
@@ -193,17 +212,17 @@ void Solver::computeInternalForces() {
   if (!(dt_new > 0.0) || !std::isfinite(dt_new)) {
     throw util::NumericalError(fmt::format(
         "time step collapsed to {:.3g} at cycle {}, time {:.6g} (controlling element {})", dt_new,
-        cycle_, time_, dt_elem >= 0 ? model_.solids.id[static_cast<std::size_t>(dt_elem)] : 0));
+        cycle_, time_, dt_elem_id));
   }
   if (model_.controls.dt_min_ratio > 0.0 && dt_new < model_.controls.dt_min_ratio * dt_initial_) {
     throw util::NumericalError(fmt::format(
         "time step {:.3g} fell below DTMIN x initial step ({:.3g}) at cycle {}, time {:.6g} "
         "(controlling element {})",
         dt_new, model_.controls.dt_min_ratio * dt_initial_, cycle_, time_,
-        dt_elem >= 0 ? model_.solids.id[static_cast<std::size_t>(dt_elem)] : 0));
+        dt_elem_id));
   }
   dt_next_ = dt_new;
-  if (dt_elem >= 0) dt_elem_ = model_.solids.id[static_cast<std::size_t>(dt_elem)];
+  dt_elem_ = dt_elem_id;
 }
 
 void Solver::updateKinematics() {
@@ -260,19 +279,27 @@ void Solver::updateKinematics() {
 }
 
 void Solver::step() {
+  // Elements at shared nodes first; their corner forces travel while the others compute.
+  ElementPass pass;
   auto t0 = Clock::now();
-  computeInternalForces();
+  computeElementGroup(Group::Shared, pass);
   boundary_.pressureForces(time_, sd_);
   auto t1 = Clock::now();
-  exchangeSharedSlots();
+  beginSharedExchange();
   auto t2 = Clock::now();
+  computeElementGroup(Group::Interior, pass);
+  auto t3 = Clock::now();
+  endSharedExchange();
+  auto t4 = Clock::now();
   gather(sd_.internal, sd_.f, 3);
   gather(sd_.pressure, sd_.f_ext, 3);
-  auto t3 = Clock::now();
-  timing_.elements += seconds(t0, t1) + seconds(t2, t3);
-  timing_.communication += seconds(t1, t2);
+  auto t5 = Clock::now();
+  finishElementPass(pass);
+  auto t6 = Clock::now();
+  timing_.elements += seconds(t0, t1) + seconds(t2, t3) + seconds(t4, t5);
+  timing_.communication += seconds(t1, t2) + seconds(t3, t4) + seconds(t5, t6);
   boundary_.externalForces(time_, sd_, sd_.f_ext);
-  timing_.constraints += seconds(t3, Clock::now());
+  timing_.constraints += seconds(t6, Clock::now());
   updateKinematics();
   bool bad = false;
   std::size_t bad_node = 0;

@@ -1,8 +1,10 @@
 // The explicit cycle of DYNA3D (Hallquist, DYNA3D User Manual, UCRL-MA-107254, sec. 2):
 // central differences on a lumped mass, element by element, no matrix inversion.
 //
-//   computeInternalForces   element kernels write corner forces to their slots
-//   gatherNodalForces       nodes sum their slots in global element order
+//   computeElementGroup     element kernels write corner forces to their slots: first the
+//                           elements at nodes shared with other ranks, then (while their
+//                           forces travel: begin/endSharedExchange) all the others
+//   gather                  nodes sum their slots, local and received, in global element order
 //   computeExternalForces   nodal loads, follower pressure, gravity
 //   updateKinematics        a = F/m, v(n+1/2), SPC, prescribed motion, rigid walls, x(n+1)
 //   stableTimeStep          TSSFAC x min over elements, global minimum
@@ -66,13 +68,26 @@ class Solver {
   const constraints::Boundary& boundary() const { return boundary_; }
 
  private:
-  void computeInternalForces();
-  // Sends this rank's corner slots at shared nodes to the neighbours and receives theirs
-  // into the ghost slots.
+  // One element pass: the minimum stable step found and any inverted element.
+  struct ElementPass {
+    double dt_min = 1e300;
+    int32_t dt_elem = -1;  // model index
+    int32_t bad = -1;      // model index
+  };
+  enum class Group { Shared, Interior };
+  // Element kernels over one group of every block (elements at shared nodes, or the rest).
+  void computeElementGroup(Group group, ElementPass& pass);
+  // The collective end of a pass: inverted elements end every rank; the next stable step.
+  void finishElementPass(const ElementPass& pass);
+  // Sends this rank's corner slots at shared nodes to the neighbours and receives theirs into
+  // the ghost slots (non-blocking: work may go on between begin and end).
+  void beginSharedExchange();
+  void endSharedExchange();
   void exchangeSharedSlots();
   void gather(const domain::GatherPlan& plan, std::vector<double>& out, int components) const;
   void updateKinematics();
-  void applyMassScaling(const std::vector<double>& dt_elem_by_block);
+  // User id of the element controlling the step, agreed by all ranks (collective).
+  int64_t controllingElement(int32_t local_best, bool holds_global_min) const;
 
   const model::Model& model_;
   domain::Subdomain& sd_;
