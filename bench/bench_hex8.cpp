@@ -56,7 +56,8 @@ model::Model brick(int nx, int ny, int nz, model::MaterialLaw law, int ihq) {
 
 void runKernel(benchmark::State& state, model::MaterialLaw law, int ihq) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
-  const auto m = brick(50, 50, 40, law, ihq);
+  // Range 1: brick edge in elements along z (40 = 100k elements; 4 = 10k, which fits in cache).
+  const auto m = brick(50, 50, static_cast<int>(state.range(1)), law, ihq);
   auto sd = domain::buildSerialSubdomain(m);
   std::vector<double> dt_e;
   for (auto& b : sd.solid_blocks) elements::initializeSolids(b, sd.x0, sd.slots.data(), dt_e, {});
@@ -111,16 +112,21 @@ void Hex8PlasticKinematicViscousHourglass(benchmark::State& s) {
   runKernel(s, law, 2);
 }
 
-BENCHMARK(Hex8Elastic)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(Hex8PlasticHourglassStiffness)
-    ->Arg(1)
-    ->Arg(2)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
-BENCHMARK(Hex8PlasticKinematicViscousHourglass)
-    ->Arg(1)
-    ->Arg(2)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
+// Args: threads, layers of 50 x 50 elements (40 layers = 100k elements; 4 = 10k, which fits in
+// the caches and shows the kernel's arithmetic cost apart from memory traffic).
+void hexArgs(benchmark::internal::Benchmark* b) {
+  b->Args({1, 40})->Args({2, 40})->Args({1, 4})->Unit(benchmark::kMillisecond)->UseRealTime();
+}
+BENCHMARK(Hex8Elastic)->Apply(hexArgs);
+// A fixed amount of work, for instruction counts under callgrind (wall time on a shared machine
+// varies by tens of percent; instruction counts do not):
+//   valgrind --tool=callgrind --toggle-collect='*solidBlockForces*' crumple_bench
+//     --benchmark_filter=Hex8Counted   -> Ir / (10 iterations x 10,000 elements)
+void Hex8Counted(benchmark::State& s) {
+  Hex8PlasticKinematicViscousHourglass(s);
+}
+BENCHMARK(Hex8Counted)->Args({1, 4})->Iterations(10)->Unit(benchmark::kMillisecond);
+BENCHMARK(Hex8PlasticHourglassStiffness)->Apply(hexArgs);
+BENCHMARK(Hex8PlasticKinematicViscousHourglass)->Apply(hexArgs);
 
 }  // namespace

@@ -30,23 +30,29 @@ constexpr int kFaces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
 
 using LaneArray = double[kBatch];
 
-// dV/dx of node A, component (y, z) -> x of FB 1981 eq. 79, for every lane.
-template <int A>
-inline void gradientOfNode(const NodalBatch& x, NodalBatch& b) {
+// dV/dx of node A, component C, from the other two components (Y, Z) = (C+1, C+2) mod 3:
+// FB 1981 eq. 79 for every lane, all indices known at compile time.
+template <int A, int C>
+inline void gradientOfNodeComponent(const NodalBatch& x, NodalBatch& b) {
   constexpr int p1 = kPerm[A][1], p2 = kPerm[A][2], p3 = kPerm[A][3], p4 = kPerm[A][4],
                 p5 = kPerm[A][5], p7 = kPerm[A][7];
   constexpr double twelfth = 1.0 / 12.0;
-  for (int c = 0; c < 3; ++c) {
-    const auto& y = x[(c + 1) % 3];
-    const auto& z = x[(c + 2) % 3];
-    for (int l = 0; l < kBatch; ++l) {
-      b[c][A][l] = twelfth * (y[p1][l] * ((z[p5][l] - z[p2][l]) - (z[p3][l] - z[p4][l])) +
-                              y[p2][l] * (z[p1][l] - z[p3][l]) +
-                              y[p3][l] * ((z[p2][l] - z[p7][l]) - (z[p4][l] - z[p1][l])) +
-                              y[p4][l] * ((z[p7][l] - z[p5][l]) - (z[p1][l] - z[p3][l])) +
-                              y[p5][l] * (z[p4][l] - z[p1][l]) + y[p7][l] * (z[p3][l] - z[p4][l]));
-    }
+  const auto& y = x[(C + 1) % 3];
+  const auto& z = x[(C + 2) % 3];
+  for (int l = 0; l < kBatch; ++l) {
+    b[C][A][l] = twelfth * (y[p1][l] * ((z[p5][l] - z[p2][l]) - (z[p3][l] - z[p4][l])) +
+                            y[p2][l] * (z[p1][l] - z[p3][l]) +
+                            y[p3][l] * ((z[p2][l] - z[p7][l]) - (z[p4][l] - z[p1][l])) +
+                            y[p4][l] * ((z[p7][l] - z[p5][l]) - (z[p1][l] - z[p3][l])) +
+                            y[p5][l] * (z[p4][l] - z[p1][l]) + y[p7][l] * (z[p3][l] - z[p4][l]));
   }
+}
+
+template <int A>
+inline void gradientOfNode(const NodalBatch& x, NodalBatch& b) {
+  gradientOfNodeComponent<A, 0>(x, b);
+  gradientOfNodeComponent<A, 1>(x, b);
+  gradientOfNodeComponent<A, 2>(x, b);
 }
 
 template <std::size_t... A>
@@ -54,12 +60,16 @@ inline void gradientOfAll(const NodalBatch& x, NodalBatch& b, std::index_sequenc
   (gradientOfNode<int(A)>(x, b), ...);
 }
 
+// Sums over the 8 nodes sit inside the lane loop: GCC unrolls them and vectorises across
+// lanes with the partial sums in registers (an accumulator array per node pass would go
+// through memory on every node).
 inline void volumeOf(const NodalBatch& x, const NodalBatch& b, LaneArray& vol) {
-  for (int l = 0; l < kBatch; ++l) vol[l] = 0.0;
-  for (int c = 0; c < 3; ++c)
-    for (int a = 0; a < 8; ++a)
-      for (int l = 0; l < kBatch; ++l) vol[l] += x[c][a][l] * b[c][a][l];
-  for (int l = 0; l < kBatch; ++l) vol[l] *= (1.0 / 3.0);
+  for (int l = 0; l < kBatch; ++l) {
+    double v = 0.0;
+    for (int c = 0; c < 3; ++c)
+      for (int a = 0; a < 8; ++a) v += x[c][a][l] * b[c][a][l];
+    vol[l] = v * (1.0 / 3.0);
+  }
 }
 
 // Largest face area: each face as half the cross product of its diagonals.
@@ -129,7 +139,8 @@ BlockStatus solidBlockForces(const Law& law, domain::SolidBlock& blk, const doma
                              double* slots, std::size_t range_first, std::size_t range_last) {
   const std::size_t ne = range_last;
   const std::size_t batch0 = range_first / kBatch;
-  const std::size_t nbatch = range_last > range_first ? (range_last - range_first + kBatch - 1) / kBatch : 0;
+  const std::size_t nbatch =
+      range_last > range_first ? (range_last - range_first + kBatch - 1) / kBatch : 0;
   const materials::Moduli mod = law.moduli;
   const double lam2mu = mod.bulk + 4.0 / 3.0 * mod.shear;
   const int ihq = blk.hourglass.ihq;
@@ -266,45 +277,54 @@ BlockStatus solidBlockForces(const Law& law, domain::SolidBlock& blk, const doma
           coef[l] = stiffness_hg ? 0.125 * qm * lam2mu * bb * inv_vol[l] * dt
                                  : 0.25 * qm * rho[l] * cbrt_vol[l] * cbrt_vol[l] * c[l];
         }
+        // All four modes first (vectors gamma and resistances), then one pass that adds their
+        // forces to the nodes: f_ia -= sum_alpha Q_i,alpha gamma_a,alpha.
+        double g[4][8][kBatch];
+        double force[4][3][kBatch];
         for (int alpha = 0; alpha < 4; ++alpha) {
-          double g[8][kBatch];
           for (int a = 0; a < 8; ++a)
-            for (int l = 0; l < kBatch; ++l) g[a][l] = kGamma[alpha][a];
+            for (int l = 0; l < kBatch; ++l) g[alpha][a][l] = kGamma[alpha][a];
           if (projected_hg) {
             // gamma_a = Gamma_a - (1/V) (sum_b x_b Gamma_b) . B_a: orthogonal to linear fields.
             double h[3][kBatch];
-            for (int cc = 0; cc < 3; ++cc) {
-              for (int l = 0; l < kBatch; ++l) h[cc][l] = 0.0;
-              for (int a = 0; a < 8; ++a)
-                for (int l = 0; l < kBatch; ++l) h[cc][l] += w.x[cc][a][l] * kGamma[alpha][a];
-              for (int l = 0; l < kBatch; ++l) h[cc][l] *= inv_vol[l];
-            }
+            for (int cc = 0; cc < 3; ++cc)
+              for (int l = 0; l < kBatch; ++l) {
+                double sum = 0.0;
+                for (int a = 0; a < 8; ++a) sum += w.x[cc][a][l] * kGamma[alpha][a];
+                h[cc][l] = sum * inv_vol[l];
+              }
             for (int a = 0; a < 8; ++a)
               for (int l = 0; l < kBatch; ++l)
-                g[a][l] -= h[0][l] * w.b[0][a][l] + h[1][l] * w.b[1][a][l] + h[2][l] * w.b[2][a][l];
+                g[alpha][a][l] -=
+                    h[0][l] * w.b[0][a][l] + h[1][l] * w.b[1][a][l] + h[2][l] * w.b[2][a][l];
           }
           for (int i = 0; i < 3; ++i) {
-            double qdot[kBatch], force[kBatch], mean_force[kBatch];
-            for (int l = 0; l < kBatch; ++l) qdot[l] = 0.0;
-            for (int a = 0; a < 8; ++a)
-              for (int l = 0; l < kBatch; ++l) qdot[l] += w.v[i][a][l] * g[a][l];
-            if (stiffness_hg) {
-              std::vector<double>& stored = blk.hgq[static_cast<std::size_t>(3 * alpha + i)];
-              for (int l = 0; l < kBatch; ++l) {
-                const double old = stored[first + static_cast<std::size_t>(l)];
-                force[l] = old + coef[l] * qdot[l];
-                mean_force[l] = 0.5 * (old + force[l]);  // trapezoidal work, as for the stress
-              }
-              for (int l = 0; l < kBatch; ++l)
-                stored[first + static_cast<std::size_t>(l)] = force[l];
-            } else {
-              for (int l = 0; l < kBatch; ++l) force[l] = mean_force[l] = coef[l] * qdot[l];
+            double qdot[kBatch], mean_force[kBatch];
+            for (int l = 0; l < kBatch; ++l) {
+              double sum = 0.0;
+              for (int a = 0; a < 8; ++a) sum += w.v[i][a][l] * g[alpha][a][l];
+              qdot[l] = sum;
             }
-            for (int a = 0; a < 8; ++a)
-              for (int l = 0; l < kBatch; ++l) w.f[i][a][l] -= force[l] * g[a][l];
+            double* fq = force[alpha][i];
+            if (stiffness_hg) {
+              double* stored = blk.hgq[static_cast<std::size_t>(3 * alpha + i)].data() + first;
+              for (int l = 0; l < kBatch; ++l) {
+                const double old = stored[l];
+                fq[l] = old + coef[l] * qdot[l];
+                mean_force[l] = 0.5 * (old + fq[l]);  // trapezoidal work, as for the stress
+                stored[l] = fq[l];
+              }
+            } else {
+              for (int l = 0; l < kBatch; ++l) fq[l] = mean_force[l] = coef[l] * qdot[l];
+            }
             for (int l = 0; l < kBatch; ++l) de_hg[l] += mean_force[l] * qdot[l] * dt;
           }
         }
+        for (int i = 0; i < 3; ++i)
+          for (int a = 0; a < 8; ++a)
+            for (int l = 0; l < kBatch; ++l)
+              w.f[i][a][l] -= force[0][i][l] * g[0][a][l] + force[1][i][l] * g[1][a][l] +
+                              force[2][i][l] * g[2][a][l] + force[3][i][l] * g[3][a][l];
       }
 
       // --- store state (whole batch, contiguous), then per element: forces and stable step --
