@@ -29,6 +29,7 @@ double dot(const model::Vec3& a, const double* b) {
 }  // namespace
 
 Boundary::Boundary(const model::Model& m, const domain::Subdomain& sd) {
+  has_external_ = !m.nodal_loads.empty() || !m.pressure_loads.empty() || !m.body_loads.empty();
   for (const auto& s : m.spcs) {
     const int32_t n = localOf(sd, s.node);
     if (n != model::kNone && (s.dofs & 7)) spc_.emplace_back(n, s.dofs);

@@ -55,6 +55,9 @@ class Boundary {
   // Kinetic energy of moving walls (part of the system's kinetic energy).
   double wallKineticEnergy() const;
   bool hasBodyLoads() const { return !body_.empty(); }
+  // Whether any external force (nodal, pressure, gravity) exists anywhere in the model; the
+  // same on every rank, so collective sums that depend on it stay matched.
+  bool hasExternalForces() const { return has_external_; }
 
  private:
   struct Motion {
@@ -90,6 +93,7 @@ class Boundary {
   std::vector<Pressure> pressure_;
   std::vector<Body> body_;
   std::vector<WallState> walls_;
+  bool has_external_ = false;
 };
 
 }  // namespace crumple::constraints

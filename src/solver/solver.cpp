@@ -199,9 +199,9 @@ void Solver::finishElementPass(const ElementPass& pass) {
     // The rank holding the element names its part; user ids ascend with model indices.
     const int64_t part =
         comm_.minAll(bad >= 0 && sd_.elementId(bad) == bad_id ? sd_.elementPart(bad) : kNoElement);
-    throw util::NumericalError(fmt::format(
-        "negative volume in solid element {} (part {}) at cycle {}, time {:.6g}", bad_id, part,
-        cycle_, time_));
+    throw util::NumericalError(
+        fmt::format("negative volume in solid element {} (part {}) at cycle {}, time {:.6g}",
+                    bad_id, part, cycle_, time_));
   }
   const double dt_global = comm_.minAll(dt_min);
   const int64_t dt_elem_id = controllingElement(dt_elem, dt_elem >= 0 && dt_min == dt_global);
@@ -218,8 +218,7 @@ void Solver::finishElementPass(const ElementPass& pass) {
     throw util::NumericalError(fmt::format(
         "time step {:.3g} fell below DTMIN x initial step ({:.3g}) at cycle {}, time {:.6g} "
         "(controlling element {})",
-        dt_new, model_.controls.dt_min_ratio * dt_initial_, cycle_, time_,
-        dt_elem_id));
+        dt_new, model_.controls.dt_min_ratio * dt_initial_, cycle_, time_, dt_elem_id));
   }
   dt_next_ = dt_new;
   dt_elem_ = dt_elem_id;
@@ -233,17 +232,24 @@ void Solver::updateKinematics() {
   // dt(n) centred on t(n); the first cycle starts from v(-1/2) = v(0) with half a step.
   const double dt_n = cycle_ == 0 ? 0.5 * dt_half : 0.5 * (dt_ + dt_half);
   const std::size_t nn = sd_.numNodes();
-  v_old_ = sd_.v;
+  v_old_.resize(sd_.v.size());
 
-#pragma omp parallel for schedule(static)
+  // One pass over the nodes: keep v(n-1/2), form a = F/m and v(n+1/2), and look for
+  // non-finite values (fused: at a few bytes per flop, node passes are memory-bound).
+  int non_finite = 0;
+#pragma omp parallel for schedule(static) reduction(| : non_finite)
   for (std::size_t n = 0; n < nn; ++n) {
     const double m = sd_.mass[n];
     for (int c = 0; c < 3; ++c) {
       const std::size_t i = 3 * n + c;
+      const double v_prev = sd_.v[i];
+      v_old_[i] = v_prev;
       sd_.a[i] = m > 0.0 ? (sd_.f[i] + sd_.f_ext[i]) / m : 0.0;
-      sd_.v[i] = v_old_[i] + dt_n * sd_.a[i];
+      sd_.v[i] = v_prev + dt_n * sd_.a[i];
+      non_finite |= std::isfinite(sd_.v[i]) ? 0 : 1;
     }
   }
+  non_finite_ = non_finite != 0;
 
   const auto t0 = Clock::now();
   double work = boundary_.applyKinematics(time_, dt_n, dt_half, sd_, v_old_);
@@ -252,7 +258,7 @@ void Solver::updateKinematics() {
 
   // External work over dt_n at the mean of the old and the final (constrained) velocity,
   // counted once per node, by the rank that owns it; in fixed chunks added in order.
-  const std::size_t nchunk = (nn + kNodeChunk - 1) / kNodeChunk;
+  const std::size_t nchunk = boundary_.hasExternalForces() ? (nn + kNodeChunk - 1) / kNodeChunk : 0;
   std::vector<double> chunk_work(nchunk, 0.0);
 #pragma omp parallel for schedule(static)
   for (std::size_t ch = 0; ch < nchunk; ++ch) {
@@ -301,16 +307,17 @@ void Solver::step() {
   boundary_.externalForces(time_, sd_, sd_.f_ext);
   timing_.constraints += seconds(t6, Clock::now());
   updateKinematics();
-  bool bad = false;
-  std::size_t bad_node = 0;
-  for (std::size_t i = 0; i < sd_.v.size() && !bad; ++i)
-    if (!std::isfinite(sd_.v[i])) {
-      bad = true;
-      bad_node = i / 3;
-    }
-  const int64_t bad_id =
-      comm_.minAll(bad ? sd_.node_id[bad_node] : std::numeric_limits<int64_t>::max());
-  if (bad_id != std::numeric_limits<int64_t>::max())
+  // A non-finite velocity ends every rank (collective); the lowest node id is named.
+  const int64_t kNoNode = std::numeric_limits<int64_t>::max();
+  int64_t bad_node = kNoNode;
+  if (non_finite_)
+    for (std::size_t i = 0; i < sd_.v.size(); ++i)
+      if (!std::isfinite(sd_.v[i])) {
+        bad_node = sd_.node_id[i / 3];
+        break;
+      }
+  const int64_t bad_id = comm_.minAll(bad_node);
+  if (bad_id != kNoNode)
     throw util::NumericalError(fmt::format(
         "non-finite velocity at node {} at cycle {}, time {:.6g}", bad_id, cycle_, time_));
 }

@@ -108,6 +108,7 @@ class Solver {
   // Work and wall energy of the nodes this rank owns; summed over ranks when reported.
   double external_work_ = 0.0, rigidwall_energy_ = 0.0, initial_energy_ = 0.0;
   domain::NodeVector v_old_;
+  bool non_finite_ = false;  // the last velocity update produced a NaN or an infinity
   Timing timing_;
 };
 
