@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "brick_model.hpp"
 #include "domain/subdomain.hpp"
 #include "elements/hex8.hpp"
 #include "model/model.hpp"
@@ -16,42 +17,15 @@ namespace {
 using namespace crumple;
 
 model::Model brick(int nx, int ny, int nz, model::MaterialLaw law, int ihq) {
-  model::Model m;
-  const double h = 1.0;
-  for (int k = 0; k <= nz; ++k)
-    for (int j = 0; j <= ny; ++j)
-      for (int i = 0; i <= nx; ++i) {
-        m.nodes.id.push_back(1 + i + (nx + 1) * (j + (ny + 1) * k));
-        // A mild distortion so no shortcut of a perfect grid applies.
-        m.nodes.x.push_back(
-            {h * i + 0.05 * std::sin(j + k), h * j + 0.05 * std::cos(i + k), h * k});
-      }
-  auto id = [&](int i, int j, int k) { return int32_t(i + (nx + 1) * (j + (ny + 1) * k)); };
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i) {
-        m.solids.id.push_back(int64_t(m.solids.id.size()) + 1);
-        m.solids.part.push_back(0);
-        m.solids.nodes.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k),
-                                  id(i, j + 1, k), id(i, j, k + 1), id(i + 1, j, k + 1),
-                                  id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
-      }
-  model::Material mat;
-  mat.id = 1;
-  mat.rho = 7.85e-6;
-  mat.law = law;
-  m.materials.push_back(mat);
-  m.solid_sections.push_back({1, 1, {}});
-  model::Part p;
-  p.id = 1;
-  p.section = 0;
-  p.material = 0;
-  m.parts.push_back(p);
-  m.controls.hourglass_ihq = ihq;
-  m.controls.hourglass_qh = 0.05;
-  m.initial_velocity.assign(m.nodes.size(), {0, 0, 0});
-  m.finalize();
-  return m;
+  testing::BrickOptions opt;
+  opt.law = law;
+  opt.ihq = ihq;
+  opt.qh = 0.05;
+  // A mild distortion so no shortcut of a perfect grid applies.
+  opt.position = [](int i, int j, int k) {
+    return model::Vec3{i + 0.05 * std::sin(j + k), j + 0.05 * std::cos(i + k), double(k)};
+  };
+  return testing::brickModel(nx, ny, nz, opt);
 }
 
 void runKernel(benchmark::State& state, model::MaterialLaw law, int ihq) {

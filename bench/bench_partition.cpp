@@ -13,6 +13,7 @@
 
 #include <algorithm>
 
+#include "brick_model.hpp"
 #include "model/model.hpp"
 #include "partition/partition.hpp"
 
@@ -21,37 +22,7 @@ namespace {
 using namespace crumple;
 
 model::Model hexGrid(int nx, int ny, int nz) {
-  model::Model m;
-  for (int k = 0; k <= nz; ++k)
-    for (int j = 0; j <= ny; ++j)
-      for (int i = 0; i <= nx; ++i) {
-        m.nodes.id.push_back(1 + int64_t(i) + int64_t(nx + 1) * (j + int64_t(ny + 1) * k));
-        m.nodes.x.push_back({double(i), double(j), double(k)});
-      }
-  auto id = [&](int i, int j, int k) { return int32_t(i + (nx + 1) * (j + (ny + 1) * k)); };
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i) {
-        m.solids.id.push_back(int64_t(m.solids.id.size()) + 1);
-        m.solids.part.push_back(0);
-        m.solids.nodes.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k),
-                                  id(i, j + 1, k), id(i, j, k + 1), id(i + 1, j, k + 1),
-                                  id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
-      }
-  model::Material mat;
-  mat.id = 1;
-  mat.rho = 7.85e-6;
-  mat.law = model::ElasticLaw{210.0, 0.3};
-  m.materials.push_back(mat);
-  m.solid_sections.push_back({1, 1, {}});
-  model::Part p;
-  p.id = 1;
-  p.section = 0;
-  p.material = 0;
-  m.parts.push_back(p);
-  m.initial_velocity.assign(m.nodes.size(), {0, 0, 0});
-  m.finalize();
-  return m;
+  return testing::brickModel(nx, ny, nz);
 }
 
 const model::Model& plate() {

@@ -50,36 +50,32 @@ std::vector<T> gatherAll(const std::vector<T>& local, MPI_Datatype type, int siz
 
 }  // namespace
 
-double Communicator::minAll(double local) const {
-  if (!mpi_) return local;
-  Timed t(seconds_);
-  double out = local;
-  check(MPI_Allreduce(&local, &out, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD), "Allreduce(min)");
+namespace {
+// One value reduced over all ranks (min, max and sum of one value are exact and
+// order-independent for these types, so the result is the same whatever the message order).
+template <class T>
+T allReduce(T local, MPI_Datatype type, MPI_Op op, double& seconds) {
+  Timed t(seconds);
+  T out = local;
+  check(MPI_Allreduce(&local, &out, 1, type, op, MPI_COMM_WORLD), "Allreduce");
   return out;
+}
+}  // namespace
+
+double Communicator::minAll(double local) const {
+  return mpi_ ? allReduce(local, MPI_DOUBLE, MPI_MIN, seconds_) : local;
 }
 
 int64_t Communicator::minAll(int64_t local) const {
-  if (!mpi_) return local;
-  Timed t(seconds_);
-  int64_t out = local;
-  check(MPI_Allreduce(&local, &out, 1, MPI_INT64_T, MPI_MIN, MPI_COMM_WORLD), "Allreduce(min)");
-  return out;
+  return mpi_ ? allReduce(local, MPI_INT64_T, MPI_MIN, seconds_) : local;
 }
 
 int64_t Communicator::maxAll(int64_t local) const {
-  if (!mpi_) return local;
-  Timed t(seconds_);
-  int64_t out = local;
-  check(MPI_Allreduce(&local, &out, 1, MPI_INT64_T, MPI_MAX, MPI_COMM_WORLD), "Allreduce(max)");
-  return out;
+  return mpi_ ? allReduce(local, MPI_INT64_T, MPI_MAX, seconds_) : local;
 }
 
 long long Communicator::sumAll(long long local) const {
-  if (!mpi_) return local;
-  Timed t(seconds_);
-  long long out = local;
-  check(MPI_Allreduce(&local, &out, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD), "Allreduce(sum)");
-  return out;
+  return mpi_ ? allReduce(local, MPI_LONG_LONG, MPI_SUM, seconds_) : local;
 }
 
 std::vector<double> Communicator::sumOrdered(const std::vector<double>& local) const {
@@ -94,11 +90,7 @@ std::vector<double> Communicator::sumOrdered(const std::vector<double>& local) c
 }
 
 bool Communicator::anyAll(bool local) const {
-  if (!mpi_) return local;
-  Timed t(seconds_);
-  int in = local ? 1 : 0, out = 0;
-  check(MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD), "Allreduce(any)");
-  return out != 0;
+  return mpi_ ? allReduce(local ? 1 : 0, MPI_INT, MPI_MAX, seconds_) != 0 : local;
 }
 
 std::vector<double> Communicator::allGather(const std::vector<double>& local) const {

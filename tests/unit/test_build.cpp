@@ -12,6 +12,7 @@
 #include <string>
 
 #include "model/build.hpp"
+#include "temp_dir.hpp"
 #include "util/error.hpp"
 
 namespace fs = std::filesystem;
@@ -21,35 +22,12 @@ using crumple::util::InputError;
 
 namespace {
 
-class TempDir {
+using crumple::testing::errorOf;
+// Each test's files in a fresh folder, removed afterwards.
+class TempDir : public crumple::testing::TempDir {
  public:
-  TempDir() {
-    static std::atomic<int> counter{0};
-    dir_ = fs::temp_directory_path() /
-           ("crumple_test_build_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-    fs::create_directories(dir_);
-  }
-  ~TempDir() { fs::remove_all(dir_); }
-  fs::path write(const std::string& name, const std::string& text) const {
-    const fs::path p = dir_ / name;
-    std::ofstream(p) << text;
-    return p;
-  }
-  const fs::path& path() const { return dir_; }
-
- private:
-  fs::path dir_;
+  TempDir() : crumple::testing::TempDir("crumple_test_build") {}
 };
-
-template <class F>
-std::string errorOf(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 // Two unit hexahedra along x, nodes and elements given in descending id order.
 const std::string kMesh = R"(*KEYWORD

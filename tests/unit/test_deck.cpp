@@ -15,6 +15,7 @@
 #include "deck/expression.hpp"
 #include "deck/number.hpp"
 #include "model/build.hpp"
+#include "temp_dir.hpp"
 #include "util/error.hpp"
 
 namespace fs = std::filesystem;
@@ -23,37 +24,12 @@ using crumple::util::InputError;
 namespace {
 
 // A scratch folder per test, removed afterwards.
-class TempDir {
+using crumple::testing::errorOf;
+// Each test's files in a fresh folder, removed afterwards.
+class TempDir : public crumple::testing::TempDir {
  public:
-  TempDir() {
-    static std::atomic<int> counter{0};
-    dir_ = fs::temp_directory_path() /
-           ("crumple_test_deck_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-    fs::create_directories(dir_);
-  }
-  ~TempDir() { fs::remove_all(dir_); }
-  fs::path write(const std::string& name, const std::string& text) const {
-    const fs::path p = dir_ / name;
-    fs::create_directories(p.parent_path());
-    std::ofstream(p) << text;
-    return p;
-  }
-  const fs::path& path() const { return dir_; }
-
- private:
-  fs::path dir_;
+  TempDir() : crumple::testing::TempDir("crumple_test_deck") {}
 };
-
-// The message of the InputError that `f` throws ("" if none).
-template <class F>
-std::string errorOf(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 // Fixed-format card text: each value right-aligned in its width.
 std::string cols(std::initializer_list<std::pair<std::string, int>> fields) {

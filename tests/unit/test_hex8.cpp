@@ -8,6 +8,7 @@
 #include <random>
 #include <span>
 
+#include "brick_model.hpp"
 #include "domain/subdomain.hpp"
 #include "elements/hex8.hpp"
 #include "model/model.hpp"
@@ -92,43 +93,15 @@ TEST(Hex8, VolumeGradientMatchesExactQuadrature) {
 
 // A 2x2x2 block of unit-ish hexes whose centre node is moved off-centre (distorted mesh).
 crumple::model::Model distortedBlock(int ihq) {
-  using namespace crumple::model;
-  Model m;
-  for (int k = 0; k <= 2; ++k)
-    for (int j = 0; j <= 2; ++j)
-      for (int i = 0; i <= 2; ++i) {
-        Vec3 p{double(i), double(j), double(k)};
-        if (i == 1 && j == 1 && k == 1) p = {1.17, 0.91, 1.08};
-        if (i == 1 && j == 0 && k == 1) p = {1.1, 0.0, 0.93};
-        m.nodes.id.push_back(1 + i + 3 * j + 9 * k);
-        m.nodes.x.push_back(p);
-      }
-  auto node = [](int i, int j, int k) { return int32_t(i + 3 * j + 9 * k); };
-  for (int k = 0; k < 2; ++k)
-    for (int j = 0; j < 2; ++j)
-      for (int i = 0; i < 2; ++i) {
-        m.solids.id.push_back(1 + i + 2 * j + 4 * k);
-        m.solids.part.push_back(0);
-        m.solids.nodes.push_back({node(i, j, k), node(i + 1, j, k), node(i + 1, j + 1, k),
-                                  node(i, j + 1, k), node(i, j, k + 1), node(i + 1, j, k + 1),
-                                  node(i + 1, j + 1, k + 1), node(i, j + 1, k + 1)});
-      }
-  Material mat;
-  mat.id = 1;
-  mat.rho = 7.8e-6;
-  mat.law = ElasticLaw{210.0, 0.3};
-  m.materials.push_back(mat);
-  m.solid_sections.push_back({1, 1, {}});
-  Part p;
-  p.id = 1;
-  p.section = 0;
-  p.material = 0;
-  m.parts.push_back(p);
-  m.controls.hourglass_ihq = ihq;
-  m.controls.hourglass_qh = 0.1;
-  m.initial_velocity.assign(m.nodes.size(), {0, 0, 0});
-  m.finalize();
-  return m;
+  crumple::testing::BrickOptions opt;
+  opt.ihq = ihq;
+  opt.qh = 0.1;
+  opt.position = [](int i, int j, int k) {
+    if (i == 1 && j == 1 && k == 1) return crumple::model::Vec3{1.17, 0.91, 1.08};
+    if (i == 1 && j == 0 && k == 1) return crumple::model::Vec3{1.1, 0.0, 0.93};
+    return crumple::model::Vec3{double(i), double(j), double(k)};
+  };
+  return crumple::testing::brickModel(2, 2, 2, opt);
 }
 
 class Hex8Patch : public ::testing::TestWithParam<int> {};

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 
+#include "brick_model.hpp"
 #include "domain/subdomain.hpp"
 #include "model/model.hpp"
 
@@ -15,37 +16,7 @@ using namespace crumple;
 
 // nx x ny x nz brick of unit hexes with one elastic part.
 model::Model brick(int nx, int ny, int nz) {
-  model::Model m;
-  for (int k = 0; k <= nz; ++k)
-    for (int j = 0; j <= ny; ++j)
-      for (int i = 0; i <= nx; ++i) {
-        m.nodes.id.push_back(1 + i + (nx + 1) * (j + (ny + 1) * k));
-        m.nodes.x.push_back({double(i), double(j), double(k)});
-      }
-  auto id = [&](int i, int j, int k) { return int32_t(i + (nx + 1) * (j + (ny + 1) * k)); };
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i) {
-        m.solids.id.push_back(int64_t(m.solids.id.size()) + 1);
-        m.solids.part.push_back(0);
-        m.solids.nodes.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
-                                  id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
-                                  id(i, j + 1, k + 1)});
-      }
-  model::Material mat;
-  mat.id = 1;
-  mat.rho = 1.0;
-  mat.law = model::ElasticLaw{1.0, 0.3};
-  m.materials.push_back(mat);
-  m.solid_sections.push_back({1, 1, {}});
-  model::Part p;
-  p.id = 1;
-  p.section = 0;
-  p.material = 0;
-  m.parts.push_back(p);
-  m.initial_velocity.assign(m.nodes.size(), {0, 0, 0});
-  m.finalize();
-  return m;
+  return crumple::testing::brickModel(nx, ny, nz);
 }
 
 // An arbitrary, non-round value for each (element, corner, component).
@@ -65,7 +36,8 @@ std::vector<double> gatherAll(const domain::Subdomain& sd) {
   std::vector<double> f(3 * sd.numNodes(), 0.0);
   for (std::size_t n = 0; n < sd.numNodes(); ++n)
     for (int32_t s = sd.internal.ptr[n]; s < sd.internal.ptr[n + 1]; ++s)
-      for (int c = 0; c < 3; ++c) f[3 * n + c] += sd.slots[3 * std::size_t(sd.internal.slot[std::size_t(s)]) + c];
+      for (int c = 0; c < 3; ++c)
+        f[3 * n + c] += sd.slots[3 * std::size_t(sd.internal.slot[std::size_t(s)]) + c];
   return f;
 }
 
@@ -76,7 +48,8 @@ TEST_P(SubdomainRanks, GhostExchangeReproducesSerialSumsBitForBit) {
   const auto m = brick(5, 3, 2);
   // A deliberately irregular element -> rank map (not contiguous in id order).
   std::vector<int32_t> elem_rank(m.solids.size());
-  for (std::size_t e = 0; e < elem_rank.size(); ++e) elem_rank[e] = int32_t((e * 7 + e / 3) % ranks);
+  for (std::size_t e = 0; e < elem_rank.size(); ++e)
+    elem_rank[e] = int32_t((e * 7 + e / 3) % ranks);
 
   auto serial = domain::buildSerialSubdomain(m);
   fillSlots(serial);
@@ -91,7 +64,8 @@ TEST_P(SubdomainRanks, GhostExchangeReproducesSerialSumsBitForBit) {
   for (int r = 0; r < ranks; ++r)
     for (const auto& p : sds[std::size_t(r)].peers) {
       const auto& q = sds[std::size_t(p.rank)];
-      const auto it = std::find_if(q.peers.begin(), q.peers.end(), [&](const auto& x) { return x.rank == r; });
+      const auto it =
+          std::find_if(q.peers.begin(), q.peers.end(), [&](const auto& x) { return x.rank == r; });
       ASSERT_NE(it, q.peers.end()) << "peer lists must be symmetric";
       ASSERT_EQ(it->recv_count, p.send_slots.size());
       for (std::size_t k = 0; k < p.send_slots.size(); ++k)
