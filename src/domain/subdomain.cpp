@@ -142,7 +142,8 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
   // their forces can be sent while the others are computed; each group ascending.
   auto shared = [&](std::size_t e) {
     for (int32_t n : model.solids.nodes[e])
-      if (nr.ptr[static_cast<std::size_t>(n) + 1] - nr.ptr[static_cast<std::size_t>(n)] > 1) return true;
+      if (nr.ptr[static_cast<std::size_t>(n) + 1] - nr.ptr[static_cast<std::size_t>(n)] > 1)
+        return true;
     return false;
   };
   std::map<int32_t, std::vector<int32_t>> by_part, shared_by_part;
@@ -166,7 +167,8 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
     b.hourglass = hourglassOf(model, part);
     b.elem = elems;
     b.shared_count = shared_by_part.count(part_index) ? shared_by_part[part_index].size() : 0;
-    b.shared_end = std::min(elems.size(), (b.shared_count + kSolidBatch - 1) / kSolidBatch * kSolidBatch);
+    b.shared_end =
+        std::min(elems.size(), (b.shared_count + kSolidBatch - 1) / kSolidBatch * kSolidBatch);
     b.elem_id.resize(elems.size());
     for (std::size_t k = 0; k < elems.size(); ++k)
       b.elem_id[k] = model.solids.id[static_cast<std::size_t>(elems[k])];
@@ -296,11 +298,13 @@ int64_t findElement(const Subdomain& sd, int32_t model_index, F&& value) {
 }  // namespace
 
 int64_t Subdomain::elementId(int32_t model_index) const {
-  return findElement(*this, model_index, [](const SolidBlock& b, std::size_t k) { return b.elem_id[k]; });
+  return findElement(*this, model_index,
+                     [](const SolidBlock& b, std::size_t k) { return b.elem_id[k]; });
 }
 
 int64_t Subdomain::elementPart(int32_t model_index) const {
-  return findElement(*this, model_index, [](const SolidBlock& b, std::size_t) { return b.part_id; });
+  return findElement(*this, model_index,
+                     [](const SolidBlock& b, std::size_t) { return b.part_id; });
 }
 
 Subdomain buildSerialSubdomain(const model::Model& model) {

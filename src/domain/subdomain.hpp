@@ -41,9 +41,9 @@ struct SolidBlock {
   std::vector<int32_t> elem;
   std::size_t shared_count = 0;  // elements in the first group
   std::size_t shared_end = 0;    // shared_count rounded up to whole batches (kernel range)
-  std::vector<int64_t> elem_id;              // user element id (for messages and output)
+  std::vector<int64_t> elem_id;  // user element id (for messages and output)
   std::vector<std::array<int32_t, 8>> conn;  // local node indices
-  std::size_t slot_offset = 0;  // first force slot (element-major, 8 corners)
+  std::size_t slot_offset = 0;               // first force slot (element-major, 8 corners)
 
   // Per-element state.
   std::array<std::vector<double>, 6> sig;    // Cauchy stress (Voigt, tensor shear)

@@ -275,10 +275,8 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
   j["timing"] = {{"elements", t.elements},       {"contact", t.contact},
                  {"constraints", t.constraints}, {"communication", t.communication},
                  {"output", seconds_},           {"other", std::max(0.0, info.wall_s - accounted)}};
-  j["counts"] = {{"nodes", sd.global_nodes},
-                 {"solids", sd.global_solids},
-                 {"shells", 0},
-                 {"beams", 0}};
+  j["counts"] = {
+      {"nodes", sd.global_nodes}, {"solids", sd.global_solids}, {"shells", 0}, {"beams", 0}};
   j["energy"] = {{"kinetic", e.kinetic},
                  {"internal", e.internal},
                  {"hourglass", e.hourglass},
