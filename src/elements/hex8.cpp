@@ -133,10 +133,16 @@ struct BatchScratch {
   uint8_t failed[kBatch];
 };
 
+// One portable binary, three instruction sets: GCC compiles this kernel (with everything it
+// calls inlined: flatten) for AVX-512, for AVX2 and for the x86-64 baseline, and picks one at
+// load time from the CPU. The clones do the same IEEE operations in the same order (no FMA
+// contraction, no fast-math), so they give the same bits; tested on the example decks
+// (docs/performance.md).
 template <class Law>
-BlockStatus solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVector& x,
-                             const domain::NodeVector& v, double dt, const BulkViscosity& bv,
-                             double* slots, std::size_t range_first, std::size_t range_last) {
+[[gnu::flatten, gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] BlockStatus
+solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVector& x,
+                 const domain::NodeVector& v, double dt, const BulkViscosity& bv, double* slots,
+                 std::size_t range_first, std::size_t range_last) {
   const std::size_t ne = range_last;
   const std::size_t batch0 = range_first / kBatch;
   const std::size_t nbatch =
