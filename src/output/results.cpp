@@ -252,6 +252,7 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
   const auto e = s.energies();
   const std::string digest = stateDigestGlobal(s);
   const long peak = static_cast<long>(comm_.maxAll(int64_t(peakMemoryBytes())));
+  const long long eroded = comm_.sumAll(s.erodedElements());  // each rank erodes its own
   if (!comm_.isRoot()) return;
   const auto& t = s.timing();
   nlohmann::json j;
@@ -286,7 +287,7 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
                  {"total", e.total},
                  {"ratio", e.ratio}};
   j["mass"] = {{"physical", s.totalMass()}, {"added", s.addedMass()}};
-  j["eroded_elements"] = s.erodedElements();
+  j["eroded_elements"] = eroded;
   j["initial_dt"] = s.initialDt();
   j["peak_memory_bytes"] = peak;  // the largest rank
   j["communication_s"] = s.timing().communication;

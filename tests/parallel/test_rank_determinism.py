@@ -57,7 +57,8 @@ def main() -> int:
                           "--partition", a.partition] + extra, env)
             with open(os.path.join(out, "summary.json")) as f:
                 s = json.load(f)
-            return s["state_digest"]
+            # Besides the final state, counts that summarise the run must agree too.
+            return f'{s["state_digest"]} cycles={s["cycles"]} eroded={s["eroded_elements"]}'
 
         for t in a.threads.split(","):
             results[f"serial t{t}"] = digest(f"serial_t{t}", [], t)
