@@ -192,11 +192,11 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
       if constexpr (Law::kKinematic)
         for (int k = 0; k < 6; ++k)
           for (int l = 0; l < kBatch; ++l) w.alpha[k][l] = blk.alpha[k][first + l];
-      LaneArray trace_d;
+      LaneArray trace_d, spin_xy, spin_yz, spin_zx;
       for (int l = 0; l < kBatch; ++l) {
-        const double wxy = 0.5 * (L[0][1][l] - L[1][0][l]) * dt;
-        const double wyz = 0.5 * (L[1][2][l] - L[2][1][l]) * dt;
-        const double wzx = 0.5 * (L[2][0][l] - L[0][2][l]) * dt;
+        const double wxy = spin_xy[l] = 0.5 * (L[0][1][l] - L[1][0][l]) * dt;
+        const double wyz = spin_yz[l] = 0.5 * (L[1][2][l] - L[2][1][l]) * dt;
+        const double wzx = spin_zx[l] = 0.5 * (L[2][0][l] - L[0][2][l]) * dt;
         rotateJaumann(w.s, l, wxy, wyz, wzx);
         // The back stress is a tensor in the same frame: it rotates with the stress.
         if constexpr (Law::kKinematic) rotateJaumann(w.alpha, l, wxy, wyz, wzx);
@@ -282,6 +282,22 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
           // normalise the hourglass vectors by 1/sqrt(8), hence the 1/8 on the +-1 vectors.
           coef[l] = stiffness_hg ? 0.125 * qm * lam2mu * bb * inv_vol[l] * dt
                                  : 0.25 * qm * rho[l] * cbrt_vol[l] * cbrt_vol[l] * c[l];
+        }
+        if (stiffness_hg) {
+          // The stored resistance of each mode is a vector in the global frame: it turns with
+          // the element, by the same spin increment as the stress (FB 1981 sec. 4.2), or a
+          // rotated element would be pushed along its old directions.
+          for (int alpha = 0; alpha < 4; ++alpha) {
+            double* qx = blk.hgq[static_cast<std::size_t>(3 * alpha)].data() + first;
+            double* qy = blk.hgq[static_cast<std::size_t>(3 * alpha + 1)].data() + first;
+            double* qz = blk.hgq[static_cast<std::size_t>(3 * alpha + 2)].data() + first;
+            for (int l = 0; l < kBatch; ++l) {
+              const double x0 = qx[l], y0 = qy[l], z0 = qz[l];
+              qx[l] = x0 + spin_xy[l] * y0 - spin_zx[l] * z0;
+              qy[l] = y0 - spin_xy[l] * x0 + spin_yz[l] * z0;
+              qz[l] = z0 + spin_zx[l] * x0 - spin_yz[l] * y0;
+            }
+          }
         }
         // All four modes first (vectors gamma and resistances), then one pass that adds their
         // forces to the nodes: f_ia -= sum_alpha Q_i,alpha gamma_a,alpha.

@@ -192,6 +192,45 @@ TEST(Hex8, FiniteRigidRotationProducesNoStress) {
   }
 }
 
+// The stiffness hourglass resistance is a vector in the global frame: a rigid rotation of the
+// element must turn it (and create none). Rotate by 90 degrees about z in 400 steps; the
+// first-order spin update grows its length by (1 + dtheta^2)^(steps/2) = 0.3 % and turns it
+// by atan(dtheta) a step, short of 90 degrees by 400 dtheta^3 / 3 = 8e-6 rad.
+TEST(Hex8, StiffnessHourglassResistanceTurnsWithTheElement) {
+  const auto m = distortedBlock(4);
+  auto sd = crumple::domain::buildSerialSubdomain(m);
+  auto& blk = sd.solid_blocks.at(0);
+  std::vector<double> dt_e;
+  crumple::elements::initializeSolids(blk, sd.x0, sd.slots.data(), dt_e, {});
+  for (std::size_t e = 0; e < blk.size(); ++e) {
+    blk.hgq[0][e] = 1.0;          // mode 1, x component
+    blk.hgq[3 * 2 + 2][e] = 0.5;  // mode 3, z component (on the rotation axis: unchanged)
+  }
+  const int steps = 400;
+  const double dt = 1e-3, dangle = M_PI / 2 / steps;
+  crumple::elements::BulkViscosity bv;
+  for (int n = 0; n < steps; ++n) {
+    for (std::size_t k = 0; k < sd.numNodes(); ++k) {
+      const double* p = &sd.x0[3 * k];
+      const double c0 = std::cos(n * dangle), s0 = std::sin(n * dangle);
+      const double c1 = std::cos((n + 1) * dangle), s1 = std::sin((n + 1) * dangle);
+      const double now[3] = {c0 * p[0] - s0 * p[1], s0 * p[0] + c0 * p[1], p[2]};
+      const double next[3] = {c1 * p[0] - s1 * p[1], s1 * p[0] + c1 * p[1], p[2]};
+      for (int c = 0; c < 3; ++c) {
+        sd.v[3 * k + c] = (next[c] - now[c]) / dt;
+        sd.x[3 * k + c] = next[c];
+      }
+    }
+    crumple::elements::computeSolidForces(blk, sd.x, sd.v, dt, bv, sd.slots.data());
+  }
+  for (std::size_t e = 0; e < blk.size(); ++e) {
+    EXPECT_NEAR(blk.hgq[0][e], 0.0, 1e-5) << e;  // x turned into y
+    EXPECT_NEAR(blk.hgq[1][e], 1.0, 5e-3) << e;
+    EXPECT_NEAR(blk.hgq[2][e], 0.0, 1e-12) << e;
+    EXPECT_NEAR(blk.hgq[3 * 2 + 2][e], 0.5, 1e-12) << e;
+  }
+}
+
 TEST(Hex8, StableStepOfACubeIsEdgeOverWaveSpeed) {
   using crumple::elements::solidTimeStep;
   // Without bulk viscosity: L / c.
