@@ -73,6 +73,10 @@ std::vector<KeywordSpec> makeTables() {
                  {I("N1", 0, 0, 8), I("N2", 0, 0, 8), I("N3", 0, 0, 8), I("N4", 0, 0, 8),
                   I("N5", 0, 0, 8), I("N6", 0, 0, 8), I("N7", 0, 0, 8), I("N8", 0, 0, 8),
                   I("N9", 0, 0, 8), I("N10", 0, 0, 8)}}}});
+  // *ELEMENT_MASS I8,I8,E16,I8 (Keyword Manual, *ELEMENT_MASS).
+  t.push_back({"*ELEMENT_MASS",
+               {{"card 1",
+                 {I("EID", 0, 0, 8), I("NID", 0, 0, 8), R("MASS", 0, 0, 16), I("PID", 0, 0, 8)}}}});
   // ---- parts, sections, materials -----------------------------------------------------------
   t.push_back({"*PART",
                {{"card 1", {A("HEADING", 70)}},

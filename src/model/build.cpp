@@ -275,6 +275,7 @@ const std::vector<Meaning>& meanings() {
       {"*INITIAL_VELOCITY_NODE", 6, readInitialVelocityNode, {}, U::Reject},
       {"*INITIAL_VELOCITY_GENERATION", 6, readInitialVelocityGeneration, {}, U::Reject},
       {"*LOAD_NODE", 6, readLoadNode, {"POINT", "SET"}, U::Reject},
+      {"*ELEMENT_MASS", 6, readElementMass, {}, U::Reject},
       {"*LOAD_SEGMENT", 6, readLoadSegment, {}, U::Reject},
       {"*LOAD_SEGMENT_SET", 6, readLoadSegmentSet, {}, U::Reject},
       {"*LOAD_BODY", 6, readLoadBody, {"X", "Y", "Z"}, U::Reject},

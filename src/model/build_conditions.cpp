@@ -219,6 +219,24 @@ void readLoadNode(Context& ctx, const deck::Keyword& kw, const KeywordOptions& o
   }
 }
 
+// *ELEMENT_MASS: a lumped mass on a node (Keyword Manual, *ELEMENT_MASS). The part id only
+// groups masses for LS-DYNA's own summaries; Crumple adds the mass to the node.
+void readElementMass(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*ELEMENT_MASS").card("card 1");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec);
+    if (c.integer("EID") <= 0) c.fail("EID", "must be a positive id");
+    const int32_t node = ctx.node(c, "NID", c.integer("NID"));
+    const double mass = c.real("MASS");
+    if (!(mass >= 0.0)) c.fail("MASS", "must not be negative");
+    if (c.integer("PID") != 0)
+      ctx.ignore(kw.name, "PID", "mass elements are not grouped by part in matsum", c.where());
+    ctx.model.point_masses.push_back({node, mass});
+    ctx.collect(cur);
+  }
+}
+
 namespace {
 std::array<int32_t, 4> segmentNodes(Context& ctx, const Card& c) {
   static constexpr std::string_view kN[4] = {"N1", "N2", "N3", "N4"};

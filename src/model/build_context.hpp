@@ -181,6 +181,7 @@ void readInitialVelocity(Context&, const deck::Keyword&, const KeywordOptions&);
 void readInitialVelocityNode(Context&, const deck::Keyword&, const KeywordOptions&);
 void readInitialVelocityGeneration(Context&, const deck::Keyword&, const KeywordOptions&);
 void readLoadNode(Context&, const deck::Keyword&, const KeywordOptions&);
+void readElementMass(Context&, const deck::Keyword&, const KeywordOptions&);
 void readLoadSegment(Context&, const deck::Keyword&, const KeywordOptions&);
 void readLoadSegmentSet(Context&, const deck::Keyword&, const KeywordOptions&);
 void readLoadBody(Context&, const deck::Keyword&, const KeywordOptions&);

@@ -21,6 +21,12 @@ namespace crumple::model {
 using Vec3 = std::array<double, 3>;
 inline constexpr int32_t kNone = -1;
 
+// *ELEMENT_MASS: a lumped mass added to a node.
+struct PointMass {
+  int32_t node = kNone;
+  double mass = 0.0;
+};
+
 // *DEFINE_CURVE after SFA/SFO/OFFA/OFFO have been applied; LS-DYNA scales after offsetting:
 // x = SFA*(a + OFFA), y = SFO*(o + OFFO).
 struct Curve {
@@ -223,8 +229,9 @@ struct Model {
   std::vector<PressureLoad> pressure_loads;
   std::vector<BodyLoad> body_loads;
   std::vector<RigidWallPlanar> rigid_walls;
-  std::vector<Vec3> initial_velocity;  // per node (zero if none given)
-  std::vector<int32_t> history_nodes;  // *DATABASE_HISTORY_NODE, in deck order
+  std::vector<Vec3> initial_velocity;   // per node (zero if none given)
+  std::vector<PointMass> point_masses;  // *ELEMENT_MASS, in deck order
+  std::vector<int32_t> history_nodes;   // *DATABASE_HISTORY_NODE, in deck order
 
   Controls controls;
   std::vector<UnsupportedKeyword> unsupported;

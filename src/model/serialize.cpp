@@ -91,6 +91,7 @@ void fields(A& a, M& m) {
       },
       m.rigid_walls);
   a(m.initial_velocity);
+  a(m.point_masses);
   a(m.history_nodes);
   a(m.controls);
   a.count(
