@@ -52,9 +52,6 @@ class Communicator {
   // Seconds spent inside communication calls (waiting included), for the timing table.
   double seconds() const { return seconds_; }
 
-  // Initialised by initialize(); world() before that is a single serial rank.
-  bool usesMpi() const { return mpi_; }
-
  private:
   friend void initialize(int* argc, char*** argv);
   friend void finalize();

@@ -21,11 +21,6 @@ struct WallState {
   double normal_force = 0.0;   // its component along the wall normal
 };
 
-struct KinematicWork {
-  double reaction = 0.0;  // work of SPC / prescribed-motion reactions (enters external work)
-  double wall = 0.0;      // energy absorbed at rigid walls (stonewall energy)
-};
-
 class Boundary {
  public:
   Boundary(const model::Model& model, const domain::Subdomain& sd);
@@ -54,7 +49,6 @@ class Boundary {
   const std::vector<WallState>& walls() const { return walls_; }
   // Kinetic energy of moving walls (part of the system's kinetic energy).
   double wallKineticEnergy() const;
-  bool hasBodyLoads() const { return !body_.empty(); }
   // Whether any external force (nodal, pressure, gravity) exists anywhere in the model; the
   // same on every rank, so collective sums that depend on it stay matched.
   bool hasExternalForces() const { return has_external_; }

@@ -5,9 +5,10 @@
 //                           elements at nodes shared with other ranks, then (while their
 //                           forces travel: begin/endSharedExchange) all the others
 //   gather                  nodes sum their slots, local and received, in global element order
-//   computeExternalForces   nodal loads, follower pressure, gravity
-//   updateKinematics        a = F/m, v(n+1/2), SPC, prescribed motion, rigid walls, x(n+1)
-//   stableTimeStep          TSSFAC x min over elements, global minimum
+//                           (follower pressure travels the same way)
+//   finishElementPass       inverted elements end the run; next step = TSSFAC x global min
+//   externalForces          nodal loads, gravity (Boundary)
+//   updateKinematics        a = F/m, v(n+1/2), SPC, prescribed motion, stonewalls, x(n+1)
 #pragma once
 
 #include <cstdint>
@@ -52,7 +53,6 @@ class Solver {
   int64_t cycle() const { return cycle_; }
   double dt() const { return dt_; }  // the step just taken, dt(n+1/2)
   double endTime() const { return end_time_; }
-  void setEndTime(double t) { end_time_ = t; }
   bool finished() const;
 
   Energies energies() const;
