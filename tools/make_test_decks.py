@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Writes the decks under tests/data/decks/ used by the parallel determinism tests.
 
-  mixed_conditions.k  every load and constraint at once on a plastic brick with erosion:
+  mixed_conditions.k  every load and constraint at once on a plastic brick with erosion, under
+                      a fully integrated (ELFORM 2) elastic cap:
                       SPC, follower pressure, nodal load, gravity, prescribed velocity with
                       birth/death, a moving stonewall with friction, rotating initial velocity,
                       stiffness hourglass control, mass scaling and history nodes.
@@ -64,12 +65,14 @@ $   dtinit    tssfac      isdo    tslimt     dt2ms
 plastic brick
          1         1         1
 *PART
-elastic cap
-         2         1         2         0         1
+elastic cap (fully integrated)
+         2         2         2         0         1
 *HOURGLASS
          1         2       0.1
 *SECTION_SOLID
          1         1
+*SECTION_SOLID
+         2         2
 *MAT_PIECEWISE_LINEAR_PLASTICITY
 $      mid        ro         e        pr      sigy      etan      fail
          1   7.85e-6     210.0       0.3      0.25       2.0      0.01

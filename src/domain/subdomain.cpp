@@ -8,7 +8,8 @@
 
 namespace crumple::domain {
 
-void SolidBlock::resize(std::size_t n, bool plastic, bool kinematic, bool stiffness_hourglass) {
+void SolidBlock::resize(std::size_t n, bool plastic, bool kinematic, bool stiffness_hourglass,
+                        bool gauss_points) {
   const std::size_t padded = (n + kSolidBatch - 1) / kSolidBatch * kSolidBatch;
   for (auto& s : sig) s.assign(padded, 0.0);
   eps_p.assign(plastic ? padded : 0, 0.0);
@@ -21,6 +22,10 @@ void SolidBlock::resize(std::size_t n, bool plastic, bool kinematic, bool stiffn
   e_hg.assign(padded, 0.0);
   active.assign(padded, 1);
   failed.assign(padded, 0);
+  const std::size_t points = gauss_points ? 8 * padded : 0;
+  for (auto& s : sig_ip) s.assign(points, 0.0);
+  for (auto& s : alpha_ip) s.assign(kinematic ? points : 0, 0.0);
+  eps_p_ip.assign(plastic ? points : 0, 0.0);
 }
 
 namespace {
@@ -182,7 +187,10 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
     }
     const bool plastic = std::visit([](const auto& law) { return law.kPlastic; }, b.law);
     const bool kinematic = std::visit([](const auto& law) { return law.kKinematic; }, b.law);
-    b.resize(elems.size(), plastic, kinematic, b.hourglass.ihq >= 4);
+    b.elform = model.solid_sections[static_cast<std::size_t>(part.section)].elform;
+    // A fully integrated element has no hourglass modes to control.
+    b.resize(elems.size(), plastic, kinematic, b.elform == 1 && b.hourglass.ihq >= 4,
+             b.elform == 2);
     b.slot_offset = slot;
     slot += 8 * elems.size();
     sd.num_elements += elems.size();

@@ -34,6 +34,7 @@ struct SolidBlock {
   materials::Law law;
   double rho0 = 0.0;
   HourglassParams hourglass;
+  int elform = 1;  // *SECTION_SOLID ELFORM: 1 one-point, 2 fully integrated (8 points)
 
   // Model element index. Elements with a node shared with another rank come first (ascending),
   // then the others (ascending): the first group is computed before the shared-node exchange
@@ -56,13 +57,18 @@ struct SolidBlock {
   std::vector<uint8_t> failed;               // material reports failure this cycle
   std::vector<double> mass_scale;            // mass scaling factor (>= 1), padded; empty if none
   std::vector<double> dt_scale;              // stable-step factor (<= 1), padded; empty if none
+  // ELFORM 2 only: the state of the 8 Gauss points, point-major (point q of element e at
+  // q * paddedSize() + e). sig and eps_p above then hold the means over the points.
+  std::array<std::vector<double>, 6> sig_ip, alpha_ip;
+  std::vector<double> eps_p_ip;
 
   std::size_t size() const { return elem.size(); }
   // Elements plus padding: a whole number of batches.
   std::size_t paddedSize() const {
     return (elem.size() + kSolidBatch - 1) / kSolidBatch * kSolidBatch;
   }
-  void resize(std::size_t n, bool plastic, bool kinematic, bool stiffness_hourglass);
+  void resize(std::size_t n, bool plastic, bool kinematic, bool stiffness_hourglass,
+              bool gauss_points = false);
 };
 
 // Corner slots this rank sends to, and receives from, one neighbour each cycle. Both sides

@@ -1,5 +1,7 @@
 #include "elements/hex8.hpp"
 
+#include "elements/hex8_kernel.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -9,6 +11,14 @@
 namespace crumple::elements {
 
 namespace {
+
+using detail::BatchScratch;
+using detail::gatherNodal;
+using detail::LaneArray;
+using detail::laneElement;
+using detail::maxFaceArea;
+using detail::rotateJaumann;
+using detail::volumeOf;
 
 // Node permutation of FB 1981 (Appendix): the formula for node 1 gives node a's gradient
 // when nodes are renumbered by row a. Zero-based.
@@ -23,12 +33,6 @@ constexpr double kGamma[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
                                  {1, -1, -1, 1, -1, 1, 1, -1},
                                  {1, -1, 1, -1, 1, -1, 1, -1},
                                  {-1, 1, -1, 1, 1, -1, 1, -1}};
-
-// Faces for the characteristic length, each as 4 corners.
-constexpr int kFaces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                              {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-
-using LaneArray = double[kBatch];
 
 // dV/dx of node A, component C, from the other two components (Y, Z) = (C+1, C+2) mod 3:
 // FB 1981 eq. 79 for every lane, all indices known at compile time.
@@ -60,78 +64,9 @@ inline void gradientOfAll(const NodalBatch& x, NodalBatch& b, std::index_sequenc
   (gradientOfNode<int(A)>(x, b), ...);
 }
 
-// Sums over the 8 nodes sit inside the lane loop: GCC unrolls them and vectorises across
-// lanes with the partial sums in registers (an accumulator array per node pass would go
-// through memory on every node).
-inline void volumeOf(const NodalBatch& x, const NodalBatch& b, LaneArray& vol) {
-  for (int l = 0; l < kBatch; ++l) {
-    double v = 0.0;
-    for (int c = 0; c < 3; ++c)
-      for (int a = 0; a < 8; ++a) v += x[c][a][l] * b[c][a][l];
-    vol[l] = v * (1.0 / 3.0);
-  }
-}
-
-// Largest face area: each face as half the cross product of its diagonals.
-inline void maxFaceArea(const NodalBatch& x, LaneArray& area) {
-  for (int l = 0; l < kBatch; ++l) area[l] = 0.0;
-  for (const auto& f : kFaces) {
-    for (int l = 0; l < kBatch; ++l) {
-      const double d1x = x[0][f[2]][l] - x[0][f[0]][l], d1y = x[1][f[2]][l] - x[1][f[0]][l],
-                   d1z = x[2][f[2]][l] - x[2][f[0]][l];
-      const double d2x = x[0][f[3]][l] - x[0][f[1]][l], d2y = x[1][f[3]][l] - x[1][f[1]][l],
-                   d2z = x[2][f[3]][l] - x[2][f[1]][l];
-      const double cx = d1y * d2z - d1z * d2y, cy = d1z * d2x - d1x * d2z,
-                   cz = d1x * d2y - d1y * d2x;
-      const double a2 = 0.25 * (cx * cx + cy * cy + cz * cz);
-      area[l] = std::max(area[l], a2);
-    }
-  }
-  for (int l = 0; l < kBatch; ++l) area[l] = std::sqrt(area[l]);
-}
-
-// Lane l of a batch starting at `first` with `n` live elements reads element first+min(l,n-1).
-inline std::size_t laneElement(std::size_t first, int n, int l) {
-  return first + static_cast<std::size_t>(std::min(l, n - 1));
-}
-
-void gatherNodal(const domain::SolidBlock& b, std::size_t first, int n,
-                 const domain::NodeVector& src, NodalBatch& out) {
-  for (int l = 0; l < kBatch; ++l) {
-    const auto& conn = b.conn[laneElement(first, n, l)];
-    for (int a = 0; a < 8; ++a) {
-      const double* p = &src[3 * static_cast<std::size_t>(conn[a])];
-      out[0][a][l] = p[0];
-      out[1][a][l] = p[1];
-      out[2][a][l] = p[2];
-    }
-  }
-}
-
 materials::Moduli moduliOf(const materials::Law& law) {
   return std::visit([](const auto& m) { return m.moduli; }, law);
 }
-
-// Jaumann rotation of a symmetric tensor over one step: t += W t - t W, with the spin
-// increments W_xy, W_yz, W_zx (times dt) and W skew.
-inline void rotateJaumann(double (&t)[6][kBatch], int l, double wxy, double wyz, double wzx) {
-  const double txx = t[0][l], tyy = t[1][l], tzz = t[2][l];
-  const double txy = t[3][l], tyz = t[4][l], tzx = t[5][l];
-  t[0][l] = txx + 2.0 * (wxy * txy - wzx * tzx);
-  t[1][l] = tyy + 2.0 * (-wxy * txy + wyz * tyz);
-  t[2][l] = tzz + 2.0 * (wzx * tzx - wyz * tyz);
-  t[3][l] = txy + wxy * (tyy - txx) - wzx * tyz + wyz * tzx;
-  t[4][l] = tyz + wyz * (tzz - tyy) - wxy * tzx + wzx * txy;
-  t[5][l] = tzx + wzx * (txx - tzz) - wyz * txy + wxy * tyz;
-}
-
-// Scratch for one batch, kept per thread.
-struct BatchScratch {
-  NodalBatch x, v, xm, b, f;
-  double s[6][kBatch], s_old[6][kBatch], de[6][kBatch], alpha[6][kBatch];
-  double eps_p[kBatch];
-  uint8_t failed[kBatch];
-};
 
 // One portable binary, three instruction sets: GCC compiles this kernel (with everything it
 // calls inlined: flatten) for AVX-512, for AVX2 and for the x86-64 baseline, and picks one at
@@ -394,19 +329,7 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
     }
   }
 
-  // Merge in batch order: the result does not depend on the thread count.
-  BlockStatus total;
-  for (const auto& s : status) {
-    if (s.dt_elem >= 0 &&
-        (s.dt_min < total.dt_min || (s.dt_min == total.dt_min && s.dt_elem < total.dt_elem))) {
-      total.dt_min = s.dt_min;
-      total.dt_elem = s.dt_elem;
-    }
-    if (s.bad_elem >= 0 && (total.bad_elem < 0 || s.bad_elem < total.bad_elem))
-      total.bad_elem = s.bad_elem;
-    total.eroded += s.eroded;
-  }
-  return total;
+  return detail::mergeStatus(status);
 }
 
 }  // namespace

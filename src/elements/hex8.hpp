@@ -51,6 +51,12 @@ inline BlockStatus computeSolidForces(domain::SolidBlock& block, const domain::N
   return computeSolidForces(block, x, v, dt, bv, slots, 0, block.size());
 }
 
+// The fully integrated hexahedron (ELFORM 2) over elements [first, last): 2x2x2 Gauss points
+// with the element-mean dilatation (B-bar); no hourglass control (src/elements/hex8_full.cpp).
+BlockStatus computeFullSolidForces(domain::SolidBlock& block, const domain::NodeVector& x,
+                                   const domain::NodeVector& v, double dt, const BulkViscosity& bv,
+                                   double* slots, std::size_t first, std::size_t last);
+
 // Initial volumes and the stable step of a block; writes each corner's lumped mass
 // (rho0 V0 / 8) into the x component of its force slot, so that nodal masses are assembled by
 // the same ordered gather as forces.

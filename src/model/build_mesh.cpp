@@ -245,12 +245,12 @@ void readSectionSolid(Context& ctx, const deck::Keyword& kw, const KeywordOption
     s.id = positiveId(c, "SECID");
     s.where = c.where();
     const auto elform = c.integer("ELFORM");
-    // ELFORM (Keyword Manual, *SECTION_SOLID): 1 constant stress (default); 0 is the one-point
-    // corotational form of *MAT_MODIFIED_HONEYCOMB, run here as 1 with a note. The fully
-    // integrated forms (2, -1, -2) are not implemented yet: a deck that uses them is refused
-    // rather than silently run with one-point elements.
-    if (elform == 1) {
-      s.elform = 1;
+    // ELFORM (Keyword Manual, *SECTION_SOLID): 1 constant stress (default), 2 fully integrated
+    // selective-reduced; 0 is the one-point corotational form of *MAT_MODIFIED_HONEYCOMB,
+    // run here as 1 with a note. -1 and -2 (fully integrated forms for poor aspect ratios)
+    // are refused rather than silently run as something else.
+    if (elform == 1 || elform == 2) {
+      s.elform = static_cast<int>(elform);
     } else if (elform == 0) {
       s.elform = 1;
       ctx.ignore(kw.name, "ELFORM", "ELFORM 0 is run as ELFORM 1", c.where());
@@ -260,7 +260,7 @@ void readSectionSolid(Context& ctx, const deck::Keyword& kw, const KeywordOption
       ctx.defineUnsupported(Kind::Section, s.id, kw.name + " ELFORM=" + std::to_string(elform),
                             c.where());
       ctx.reportUnsupported(
-          kw, "ELFORM " + std::to_string(elform) + " not supported yet (1 is; 0 runs as 1)");
+          kw, "ELFORM " + std::to_string(elform) + " not supported yet (1 and 2 are; 0 runs as 1)");
       ctx.collect(cur);
       continue;
     }

@@ -54,7 +54,13 @@ std::vector<int32_t> elementWeights(const model::Model& model, const Options& op
         part.hourglass != model::kNone && std::size_t(part.hourglass) < model.hourglass.size()
             ? model.hourglass[std::size_t(part.hourglass)].ihq
             : model.controls.hourglass_ihq;
-    if (ihq >= 4) part_weight[p] += kWeightStiffnessHourglass;
+    const bool full = part.section != model::kNone &&
+                      std::size_t(part.section) < model.solid_sections.size() &&
+                      model.solid_sections[std::size_t(part.section)].elform == 2;
+    if (full)  // no hourglass control; eight material points instead of one
+      part_weight[p] = part_weight[p] * kWeightFullyIntegratedFactor / 10;
+    else if (ihq >= 4)
+      part_weight[p] += kWeightStiffnessHourglass;
   }
   std::vector<int32_t> w(solids.size(), kWeightSolidElastic);
   for (std::size_t e = 0; e < solids.size(); ++e) {

@@ -184,8 +184,11 @@ void Solver::computeElementGroup(Group group, ElementPass& pass) {
     const std::size_t first = group == Group::Shared ? 0 : blk.shared_end;
     const std::size_t last = group == Group::Shared ? blk.shared_end : blk.size();
     if (first >= last) continue;
-    const auto st =
-        elements::computeSolidForces(blk, sd_.x, sd_.v, dt_, bv_, sd_.slots.data(), first, last);
+    const auto st = blk.elform == 2
+                        ? elements::computeFullSolidForces(blk, sd_.x, sd_.v, dt_, bv_,
+                                                           sd_.slots.data(), first, last)
+                        : elements::computeSolidForces(blk, sd_.x, sd_.v, dt_, bv_,
+                                                       sd_.slots.data(), first, last);
     if (st.dt_elem >= 0 &&
         (st.dt_min < pass.dt_min || (st.dt_min == pass.dt_min && st.dt_elem < pass.dt_elem))) {
       pass.dt_min = st.dt_min;

@@ -231,6 +231,74 @@ TEST(Hex8, StiffnessHourglassResistanceTurnsWithTheElement) {
   }
 }
 
+// The fully integrated element (ELFORM 2) passes the same patch test: with a linear velocity
+// field every Gauss point of every element carries the same stress, and the interior node of
+// the distorted block is in equilibrium.
+TEST(Hex8Full, UniformStrainIsExactAndInteriorForcesBalance) {
+  auto m = distortedBlock(1);
+  m.solid_sections[0].elform = 2;
+  auto sd = crumple::domain::buildSerialSubdomain(m);
+  auto& blk = sd.solid_blocks.at(0);
+  ASSERT_EQ(blk.elform, 2);
+  std::vector<double> dt_e;
+  crumple::elements::initializeSolids(blk, sd.x0, sd.slots.data(), dt_e, {});
+  const double G[3][3] = {{1e-3, 4e-4, -2e-4}, {-1e-4, -3e-4, 5e-4}, {3e-4, 2e-4, 6e-4}};
+  const double dt = 1e-2;
+  for (std::size_t n = 0; n < sd.numNodes(); ++n)
+    for (int i = 0; i < 3; ++i) {
+      double v = 0.0;
+      for (int j = 0; j < 3; ++j) v += G[i][j] * sd.x0[3 * n + j];
+      sd.v[3 * n + i] = v;
+    }
+  for (std::size_t i = 0; i < sd.x.size(); ++i) sd.x[i] = sd.x0[i] + 0.5 * dt * sd.v[i];
+  crumple::elements::computeFullSolidForces(blk, sd.x, sd.v, dt, {0.0, 0.0}, sd.slots.data(), 0,
+                                            blk.size());
+  const double E = 210.0, nu = 0.3;
+  const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+  const double tr = (G[0][0] + G[1][1] + G[2][2]) * dt;
+  const std::size_t padded = blk.paddedSize();
+  for (int q = 0; q < 8; ++q)
+    for (std::size_t e = 0; e < blk.size(); ++e) {
+      EXPECT_NEAR(blk.sig_ip[0][q * padded + e], lambda * tr + 2 * mu * G[0][0] * dt, 1e-12);
+      EXPECT_NEAR(blk.sig_ip[3][q * padded + e], mu * (G[0][1] + G[1][0]) * dt, 1e-12);
+    }
+  std::vector<double> f(3 * sd.numNodes(), 0.0);
+  for (std::size_t n = 0; n < sd.numNodes(); ++n)
+    for (int32_t k = sd.internal.ptr[n]; k < sd.internal.ptr[n + 1]; ++k)
+      for (int c = 0; c < 3; ++c)
+        f[3 * n + c] += sd.slots[3 * std::size_t(sd.internal.slot[std::size_t(k)]) + c];
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(f[3 * 13 + c], 0.0, 1e-13 * std::abs(blk.sig[0][0]));
+}
+
+// ... and a finite rigid rotation leaves every Gauss point unstressed.
+TEST(Hex8Full, FiniteRigidRotationProducesNoStress) {
+  auto m = distortedBlock(1);
+  m.solid_sections[0].elform = 2;
+  auto sd = crumple::domain::buildSerialSubdomain(m);
+  auto& blk = sd.solid_blocks.at(0);
+  std::vector<double> dt_e;
+  crumple::elements::initializeSolids(blk, sd.x0, sd.slots.data(), dt_e, {});
+  const int steps = 200;
+  const double dt = 1e-3, dangle = M_PI / 2 / steps;
+  for (int n = 0; n < steps; ++n) {
+    for (std::size_t k = 0; k < sd.numNodes(); ++k) {
+      const double* p = &sd.x0[3 * k];
+      const double c0 = std::cos(n * dangle), s0 = std::sin(n * dangle);
+      const double c1 = std::cos((n + 1) * dangle), s1 = std::sin((n + 1) * dangle);
+      const double now[3] = {p[0], c0 * p[1] - s0 * p[2], s0 * p[1] + c0 * p[2]};
+      const double next[3] = {p[0], c1 * p[1] - s1 * p[2], s1 * p[1] + c1 * p[2]};
+      for (int c = 0; c < 3; ++c) {
+        sd.v[3 * k + c] = (next[c] - now[c]) / dt;
+        sd.x[3 * k + c] = next[c];
+      }
+    }
+    crumple::elements::computeFullSolidForces(blk, sd.x, sd.v, dt, {}, sd.slots.data(), 0,
+                                              blk.size());
+  }
+  for (const auto& comp : blk.sig_ip)
+    for (double s : comp) EXPECT_NEAR(s, 0.0, 1e-11);
+}
+
 TEST(Hex8, StableStepOfACubeIsEdgeOverWaveSpeed) {
   using crumple::elements::solidTimeStep;
   // Without bulk viscosity: L / c.

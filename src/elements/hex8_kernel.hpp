@@ -1,0 +1,106 @@
+// Pieces shared by the hex kernels (one-point hex8.cpp, fully integrated hex8_full.cpp):
+// batch scratch, the node gather, volume and face areas of a batch, the Jaumann rotation, and
+// the merge of per-batch results. Internal to src/elements.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "elements/hex8.hpp"
+
+namespace crumple::elements::detail {
+
+using LaneArray = double[kBatch];
+
+// Faces for the characteristic length, each as 4 corners.
+constexpr int kFaces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                              {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+
+// Sums over the 8 nodes sit inside the lane loop: GCC unrolls them and vectorises across
+// lanes with the partial sums in registers (an accumulator array per node pass would go
+// through memory on every node).
+inline void volumeOf(const NodalBatch& x, const NodalBatch& b, LaneArray& vol) {
+  for (int l = 0; l < kBatch; ++l) {
+    double v = 0.0;
+    for (int c = 0; c < 3; ++c)
+      for (int a = 0; a < 8; ++a) v += x[c][a][l] * b[c][a][l];
+    vol[l] = v * (1.0 / 3.0);
+  }
+}
+
+// Largest face area: each face as half the cross product of its diagonals.
+inline void maxFaceArea(const NodalBatch& x, LaneArray& area) {
+  for (int l = 0; l < kBatch; ++l) area[l] = 0.0;
+  for (const auto& f : kFaces) {
+    for (int l = 0; l < kBatch; ++l) {
+      const double d1x = x[0][f[2]][l] - x[0][f[0]][l], d1y = x[1][f[2]][l] - x[1][f[0]][l],
+                   d1z = x[2][f[2]][l] - x[2][f[0]][l];
+      const double d2x = x[0][f[3]][l] - x[0][f[1]][l], d2y = x[1][f[3]][l] - x[1][f[1]][l],
+                   d2z = x[2][f[3]][l] - x[2][f[1]][l];
+      const double cx = d1y * d2z - d1z * d2y, cy = d1z * d2x - d1x * d2z,
+                   cz = d1x * d2y - d1y * d2x;
+      const double a2 = 0.25 * (cx * cx + cy * cy + cz * cz);
+      area[l] = std::max(area[l], a2);
+    }
+  }
+  for (int l = 0; l < kBatch; ++l) area[l] = std::sqrt(area[l]);
+}
+
+// Lane l of a batch starting at `first` with `n` live elements reads element first+min(l,n-1).
+inline std::size_t laneElement(std::size_t first, int n, int l) {
+  return first + static_cast<std::size_t>(std::min(l, n - 1));
+}
+
+inline void gatherNodal(const domain::SolidBlock& b, std::size_t first, int n,
+                        const domain::NodeVector& src, NodalBatch& out) {
+  for (int l = 0; l < kBatch; ++l) {
+    const auto& conn = b.conn[laneElement(first, n, l)];
+    for (int a = 0; a < 8; ++a) {
+      const double* p = &src[3 * static_cast<std::size_t>(conn[a])];
+      out[0][a][l] = p[0];
+      out[1][a][l] = p[1];
+      out[2][a][l] = p[2];
+    }
+  }
+}
+
+// Jaumann rotation of a symmetric tensor over one step: t += W t - t W, with the spin
+// increments W_xy, W_yz, W_zx (times dt) and W skew.
+inline void rotateJaumann(double (&t)[6][kBatch], int l, double wxy, double wyz, double wzx) {
+  const double txx = t[0][l], tyy = t[1][l], tzz = t[2][l];
+  const double txy = t[3][l], tyz = t[4][l], tzx = t[5][l];
+  t[0][l] = txx + 2.0 * (wxy * txy - wzx * tzx);
+  t[1][l] = tyy + 2.0 * (-wxy * txy + wyz * tyz);
+  t[2][l] = tzz + 2.0 * (wzx * tzx - wyz * tyz);
+  t[3][l] = txy + wxy * (tyy - txx) - wzx * tyz + wyz * tzx;
+  t[4][l] = tyz + wyz * (tzz - tyy) - wxy * tzx + wzx * txy;
+  t[5][l] = tzx + wzx * (txx - tzz) - wyz * txy + wxy * tyz;
+}
+
+// Scratch for one batch, kept per thread.
+struct BatchScratch {
+  NodalBatch x, v, xm, b, f;
+  double s[6][kBatch], s_old[6][kBatch], de[6][kBatch], alpha[6][kBatch];
+  double eps_p[kBatch];
+  uint8_t failed[kBatch];
+};
+
+// Per-batch results merged in batch order: the result does not depend on the thread count.
+inline BlockStatus mergeStatus(const std::vector<BlockStatus>& status) {
+  BlockStatus total;
+  for (const auto& s : status) {
+    if (s.dt_elem >= 0 &&
+        (s.dt_min < total.dt_min || (s.dt_min == total.dt_min && s.dt_elem < total.dt_elem))) {
+      total.dt_min = s.dt_min;
+      total.dt_elem = s.dt_elem;
+    }
+    if (s.bad_elem >= 0 && (total.bad_elem < 0 || s.bad_elem < total.bad_elem))
+      total.bad_elem = s.bad_elem;
+    total.eroded += s.eroded;
+  }
+  return total;
+}
+
+}  // namespace crumple::elements::detail
