@@ -14,7 +14,7 @@ void SolidBlock::resize(std::size_t n, bool plastic, bool kinematic, bool stiffn
   for (auto& s : sig) s.assign(padded, 0.0);
   eps_p.assign(plastic ? padded : 0, 0.0);
   for (auto& s : alpha) s.assign(kinematic ? padded : 0, 0.0);
-  for (auto& s : hgq) s.assign(stiffness_hourglass ? padded : 0, 0.0);
+  hgq.assign(stiffness_hourglass ? 12 * padded : 0, 0.0);
   // Padding lanes get a unit volume so that densities stay finite there.
   vol0.assign(padded, 1.0);
   vol.assign(padded, 1.0);

@@ -50,13 +50,19 @@ struct SolidBlock {
   std::array<std::vector<double>, 6> sig;    // Cauchy stress (Voigt, tensor shear)
   std::vector<double> eps_p;                 // effective plastic strain (plastic laws)
   std::array<std::vector<double>, 6> alpha;  // back stress (kinematic hardening laws)
-  std::array<std::vector<double>, 12> hgq;   // hourglass resistance, stiffness forms (3 x 4)
-  std::vector<double> vol0, vol;             // initial and current volume
-  std::vector<double> e_int, e_hg;           // internal and hourglass energy
-  std::vector<uint8_t> active;               // 0 once eroded
-  std::vector<uint8_t> failed;               // material reports failure this cycle
-  std::vector<double> mass_scale;            // mass scaling factor (>= 1), padded; empty if none
-  std::vector<double> dt_scale;              // stable-step factor (<= 1), padded; empty if none
+  // Hourglass resistance of the stiffness forms, 4 modes x 3 components, stored batch by
+  // batch (12 x kSolidBatch contiguous values per batch): one memory stream instead of twelve.
+  std::vector<double> hgq;
+  double& hgqAt(int component, std::size_t e) {
+    return hgq[(e / kSolidBatch) * 12 * kSolidBatch + std::size_t(component) * kSolidBatch +
+               e % kSolidBatch];
+  }
+  std::vector<double> vol0, vol;    // initial and current volume
+  std::vector<double> e_int, e_hg;  // internal and hourglass energy
+  std::vector<uint8_t> active;      // 0 once eroded
+  std::vector<uint8_t> failed;      // material reports failure this cycle
+  std::vector<double> mass_scale;   // mass scaling factor (>= 1), padded; empty if none
+  std::vector<double> dt_scale;     // stable-step factor (<= 1), padded; empty if none
   // ELFORM 2 only: the state of the 8 Gauss points, point-major (point q of element e at
   // q * paddedSize() + e). sig and eps_p above then hold the means over the points.
   std::array<std::vector<double>, 6> sig_ip, alpha_ip;

@@ -218,14 +218,16 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
           coef[l] = stiffness_hg ? 0.125 * qm * lam2mu * bb * inv_vol[l] * dt
                                  : 0.25 * qm * rho[l] * cbrt_vol[l] * cbrt_vol[l] * c[l];
         }
+        // This batch's record of stored resistances (stiffness forms only).
+        double* hgq_batch = stiffness_hg ? blk.hgq.data() + first * 12 : nullptr;
         if (stiffness_hg) {
           // The stored resistance of each mode is a vector in the global frame: it turns with
           // the element, by the same spin increment as the stress (FB 1981 sec. 4.2), or a
           // rotated element would be pushed along its old directions.
           for (int alpha = 0; alpha < 4; ++alpha) {
-            double* qx = blk.hgq[static_cast<std::size_t>(3 * alpha)].data() + first;
-            double* qy = blk.hgq[static_cast<std::size_t>(3 * alpha + 1)].data() + first;
-            double* qz = blk.hgq[static_cast<std::size_t>(3 * alpha + 2)].data() + first;
+            double* qx = hgq_batch + (3 * alpha) * kBatch;
+            double* qy = hgq_batch + (3 * alpha + 1) * kBatch;
+            double* qz = hgq_batch + (3 * alpha + 2) * kBatch;
             for (int l = 0; l < kBatch; ++l) {
               const double x0 = qx[l], y0 = qy[l], z0 = qz[l];
               qx[l] = x0 + spin_xy[l] * y0 - spin_zx[l] * z0;
@@ -264,7 +266,7 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
             }
             double* fq = force[alpha][i];
             if (stiffness_hg) {
-              double* stored = blk.hgq[static_cast<std::size_t>(3 * alpha + i)].data() + first;
+              double* stored = hgq_batch + (3 * alpha + i) * kBatch;
               for (int l = 0; l < kBatch; ++l) {
                 const double old = stored[l];
                 fq[l] = old + coef[l] * qdot[l];

@@ -203,8 +203,8 @@ TEST(Hex8, StiffnessHourglassResistanceTurnsWithTheElement) {
   std::vector<double> dt_e;
   crumple::elements::initializeSolids(blk, sd.x0, sd.slots.data(), dt_e, {});
   for (std::size_t e = 0; e < blk.size(); ++e) {
-    blk.hgq[0][e] = 1.0;          // mode 1, x component
-    blk.hgq[3 * 2 + 2][e] = 0.5;  // mode 3, z component (on the rotation axis: unchanged)
+    blk.hgqAt(0, e) = 1.0;          // mode 1, x component
+    blk.hgqAt(3 * 2 + 2, e) = 0.5;  // mode 3, z component (on the rotation axis: unchanged)
   }
   const int steps = 400;
   const double dt = 1e-3, dangle = M_PI / 2 / steps;
@@ -224,10 +224,10 @@ TEST(Hex8, StiffnessHourglassResistanceTurnsWithTheElement) {
     crumple::elements::computeSolidForces(blk, sd.x, sd.v, dt, bv, sd.slots.data());
   }
   for (std::size_t e = 0; e < blk.size(); ++e) {
-    EXPECT_NEAR(blk.hgq[0][e], 0.0, 1e-5) << e;  // x turned into y
-    EXPECT_NEAR(blk.hgq[1][e], 1.0, 5e-3) << e;
-    EXPECT_NEAR(blk.hgq[2][e], 0.0, 1e-12) << e;
-    EXPECT_NEAR(blk.hgq[3 * 2 + 2][e], 0.5, 1e-12) << e;
+    EXPECT_NEAR(blk.hgqAt(0, e), 0.0, 1e-5) << e;  // x turned into y
+    EXPECT_NEAR(blk.hgqAt(1, e), 1.0, 5e-3) << e;
+    EXPECT_NEAR(blk.hgqAt(2, e), 0.0, 1e-12) << e;
+    EXPECT_NEAR(blk.hgqAt(3 * 2 + 2, e), 0.5, 1e-12) << e;
   }
 }
 
