@@ -11,9 +11,9 @@ namespace crumple::domain {
 void SolidBlock::resize(std::size_t n, bool plastic, bool kinematic, bool stiffness_hourglass,
                         bool gauss_points) {
   const std::size_t padded = (n + kSolidBatch - 1) / kSolidBatch * kSolidBatch;
-  for (auto& s : sig) s.assign(padded, 0.0);
+  sig.assign(6 * padded, 0.0);
   eps_p.assign(plastic ? padded : 0, 0.0);
-  for (auto& s : alpha) s.assign(kinematic ? padded : 0, 0.0);
+  alpha.assign(kinematic ? 6 * padded : 0, 0.0);
   hgq.assign(stiffness_hourglass ? 12 * padded : 0, 0.0);
   // Padding lanes get a unit volume so that densities stay finite there.
   vol0.assign(padded, 1.0);

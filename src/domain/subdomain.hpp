@@ -47,12 +47,21 @@ struct SolidBlock {
   std::size_t slot_offset = 0;               // first force slot (element-major, 8 corners)
 
   // Per-element state.
-  std::array<std::vector<double>, 6> sig;    // Cauchy stress (Voigt, tensor shear)
-  std::vector<double> eps_p;                 // effective plastic strain (plastic laws)
-  std::array<std::vector<double>, 6> alpha;  // back stress (kinematic hardening laws)
+  // Cauchy stress (Voigt, tensor shear) and back stress (kinematic hardening laws), stored
+  // batch by batch like hgq: 6 x kSolidBatch contiguous values per batch.
+  std::vector<double> sig;
+  std::vector<double> eps_p;  // effective plastic strain (plastic laws)
+  std::vector<double> alpha;
   // Hourglass resistance of the stiffness forms, 4 modes x 3 components, stored batch by
   // batch (12 x kSolidBatch contiguous values per batch): one memory stream instead of twelve.
   std::vector<double> hgq;
+  static std::size_t blocked(int fields, int component, std::size_t e) {
+    return (e / kSolidBatch) * std::size_t(fields) * kSolidBatch +
+           std::size_t(component) * kSolidBatch + e % kSolidBatch;
+  }
+  double& sigAt(int k, std::size_t e) { return sig[blocked(6, k, e)]; }
+  double sigAt(int k, std::size_t e) const { return sig[blocked(6, k, e)]; }
+  double& alphaAt(int k, std::size_t e) { return alpha[blocked(6, k, e)]; }
   double& hgqAt(int component, std::size_t e) {
     return hgq[(e / kSolidBatch) * 12 * kSolidBatch + std::size_t(component) * kSolidBatch +
                e % kSolidBatch];

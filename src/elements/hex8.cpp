@@ -100,6 +100,9 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
       BlockStatus& st = status[ib];
       gatherNodal(blk, first, n, x, w.x);
       gatherNodal(blk, first, n, v, w.v);
+      // This batch's records of stress and back stress (batch-blocked storage).
+      double* sig_batch = blk.sig.data() + first * 6;
+      double* alpha_batch = Law::kKinematic ? blk.alpha.data() + first * 6 : nullptr;
 
       // --- strain rate at the mid-step geometry x(n-1/2) = x(n) - dt/2 v(n-1/2) --------------
       for (int c = 0; c < 3; ++c)
@@ -121,12 +124,12 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
 
       // --- stress: Jaumann rotation, then the material law ------------------------------------
       for (int k = 0; k < 6; ++k)
-        for (int l = 0; l < kBatch; ++l) w.s[k][l] = blk.sig[k][first + l];
+        for (int l = 0; l < kBatch; ++l) w.s[k][l] = sig_batch[k * kBatch + l];
       if constexpr (Law::kPlastic)
         for (int l = 0; l < kBatch; ++l) w.eps_p[l] = blk.eps_p[first + l];
       if constexpr (Law::kKinematic)
         for (int k = 0; k < 6; ++k)
-          for (int l = 0; l < kBatch; ++l) w.alpha[k][l] = blk.alpha[k][first + l];
+          for (int l = 0; l < kBatch; ++l) w.alpha[k][l] = alpha_batch[k * kBatch + l];
       LaneArray trace_d, spin_xy, spin_yz, spin_zx;
       for (int l = 0; l < kBatch; ++l) {
         const double wxy = spin_xy[l] = 0.5 * (L[0][1][l] - L[1][0][l]) * dt;
@@ -289,13 +292,13 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
       // --- store state (whole batch, contiguous), then per element: forces and stable step --
       const uint8_t* alive = &blk.active[first];
       for (int k = 0; k < 6; ++k)
-        for (int l = 0; l < kBatch; ++l) blk.sig[k][first + l] = alive[l] ? w.s[k][l] : 0.0;
+        for (int l = 0; l < kBatch; ++l) sig_batch[k * kBatch + l] = alive[l] ? w.s[k][l] : 0.0;
       if constexpr (Law::kPlastic)
         for (int l = 0; l < kBatch; ++l)
           blk.eps_p[first + l] = alive[l] ? w.eps_p[l] : blk.eps_p[first + l];
       if constexpr (Law::kKinematic)
         for (int k = 0; k < 6; ++k)
-          for (int l = 0; l < kBatch; ++l) blk.alpha[k][first + l] = w.alpha[k][l];
+          for (int l = 0; l < kBatch; ++l) alpha_batch[k * kBatch + l] = w.alpha[k][l];
       for (int l = 0; l < kBatch; ++l) {
         blk.vol[first + l] = vol[l];
         blk.e_int[first + l] += alive[l] ? de_int[l] : 0.0;
@@ -314,7 +317,7 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
           // Erosion: the element is removed once its integration point fails (LS-DYNA FAIL).
           blk.active[e] = 0;
           blk.failed[e] = 1;
-          for (int k = 0; k < 6; ++k) blk.sig[k][e] = 0.0;
+          for (int k = 0; k < 6; ++k) blk.sigAt(k, e) = 0.0;
           std::fill(slot, slot + 24, 0.0);
           ++st.eroded;
           continue;

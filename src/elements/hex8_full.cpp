@@ -241,7 +241,7 @@ BlockStatus fullBlockForces(const Law& law, domain::SolidBlock& blk, const domai
         }
         if (vol[l] <= 0.0 && (st.bad_elem < 0 || blk.elem[e] < st.bad_elem))
           st.bad_elem = blk.elem[e];
-        for (int k = 0; k < 6; ++k) blk.sig[k][e] = sig_mean[k][l];
+        for (int k = 0; k < 6; ++k) blk.sigAt(k, e) = sig_mean[k][l];
         if constexpr (Law::kPlastic) blk.eps_p[e] = eps_mean[l];
         blk.vol[e] = vol[l];
         blk.e_int[e] += de_int[l];
@@ -249,7 +249,7 @@ BlockStatus fullBlockForces(const Law& law, domain::SolidBlock& blk, const domai
           // Erosion when any Gauss point reaches the failure strain (documented choice).
           blk.active[e] = 0;
           blk.failed[e] = 1;
-          for (int k = 0; k < 6; ++k) blk.sig[k][e] = 0.0;
+          for (int k = 0; k < 6; ++k) blk.sigAt(k, e) = 0.0;
           std::fill(slot, slot + 24, 0.0);
           ++st.eroded;
           continue;

@@ -173,7 +173,7 @@ void ResultsWriter::writePlotState(const solver::Solver& s) {
     const auto& c = cells[i];
     for (int a = 0; a < 8; ++a) conn[8 * i + a] = c.blk->conn[c.k][a];
     double sg[6];
-    for (int k = 0; k < 6; ++k) stress[6 * i + k] = sg[k] = c.blk->sig[k][c.k];
+    for (int k = 0; k < 6; ++k) stress[6 * i + k] = sg[k] = c.blk->sigAt(k, c.k);
     eps[i] = c.blk->eps_p.empty() ? 0.0 : c.blk->eps_p[c.k];
     const double p = (sg[0] + sg[1] + sg[2]) / 3.0;
     const double j2 =

@@ -129,13 +129,13 @@ TEST_P(Hex8Patch, UniformStrainIsExactAndInteriorForcesBalance) {
   // Every element carries the same stress: the strain of a linear field is exact.
   for (int k = 0; k < 6; ++k)
     for (std::size_t e = 1; e < blk.size(); ++e)
-      EXPECT_NEAR(blk.sig[k][e], blk.sig[k][0], 1e-12 * std::abs(blk.sig[0][0])) << k;
+      EXPECT_NEAR(blk.sigAt(k, e), blk.sigAt(k, 0), 1e-12 * std::abs(blk.sigAt(0, 0))) << k;
   // Expected stress: lambda tr(D dt) I + 2 mu D dt (the Jaumann term vanishes from zero stress).
   const double E = 210.0, nu = 0.3;
   const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
   const double tr = (G[0][0] + G[1][1] + G[2][2]) * dt;
-  EXPECT_NEAR(blk.sig[0][0], lambda * tr + 2 * mu * G[0][0] * dt, 1e-12);
-  EXPECT_NEAR(blk.sig[3][0], mu * (G[0][1] + G[1][0]) * dt, 1e-12);
+  EXPECT_NEAR(blk.sigAt(0, 0), lambda * tr + 2 * mu * G[0][0] * dt, 1e-12);
+  EXPECT_NEAR(blk.sigAt(3, 0), mu * (G[0][1] + G[1][0]) * dt, 1e-12);
   // No hourglass work for a linear field on the FB-projected forms.
   if (GetParam() >= 2) {
     for (std::size_t e = 0; e < blk.size(); ++e) EXPECT_NEAR(blk.e_hg[e], 0.0, 1e-20);
@@ -147,7 +147,7 @@ TEST_P(Hex8Patch, UniformStrainIsExactAndInteriorForcesBalance) {
     for (int32_t s = sd.internal.ptr[n]; s < sd.internal.ptr[n + 1]; ++s)
       for (int c = 0; c < 3; ++c)
         f[3 * n + c] += sd.slots[3 * std::size_t(sd.internal.slot[std::size_t(s)]) + c];
-  const double scale = std::abs(blk.sig[0][0]);
+  const double scale = std::abs(blk.sigAt(0, 0));
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(f[3 * 13 + c], 0.0, 1e-13 * scale) << c;
 }
 
@@ -185,7 +185,7 @@ TEST(Hex8, FiniteRigidRotationProducesNoStress) {
     crumple::elements::computeSolidForces(blk, sd.x, sd.v, dt, bv, sd.slots.data());
   }
   for (int k = 0; k < 6; ++k)
-    for (std::size_t e = 0; e < blk.size(); ++e) EXPECT_NEAR(blk.sig[k][e], 0.0, 1e-11) << k;
+    for (std::size_t e = 0; e < blk.size(); ++e) EXPECT_NEAR(blk.sigAt(k, e), 0.0, 1e-11) << k;
   for (std::size_t e = 0; e < blk.size(); ++e) {
     EXPECT_NEAR(blk.e_hg[e], 0.0, 1e-16);
     EXPECT_NEAR(blk.vol[e], blk.vol0[e], 1e-12);
@@ -267,7 +267,7 @@ TEST(Hex8Full, UniformStrainIsExactAndInteriorForcesBalance) {
     for (int32_t k = sd.internal.ptr[n]; k < sd.internal.ptr[n + 1]; ++k)
       for (int c = 0; c < 3; ++c)
         f[3 * n + c] += sd.slots[3 * std::size_t(sd.internal.slot[std::size_t(k)]) + c];
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(f[3 * 13 + c], 0.0, 1e-13 * std::abs(blk.sig[0][0]));
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(f[3 * 13 + c], 0.0, 1e-13 * std::abs(blk.sigAt(0, 0)));
 }
 
 // ... and a finite rigid rotation leaves every Gauss point unstressed.
