@@ -311,25 +311,8 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
           std::fill(slot, slot + 24, 0.0);
           continue;
         }
-        if (vol[l] <= 0.0 && (st.bad_elem < 0 || blk.elem[e] < st.bad_elem))
-          st.bad_elem = blk.elem[e];
-        if (w.failed[l]) {
-          // Erosion: the element is removed once its integration point fails (LS-DYNA FAIL).
-          blk.active[e] = 0;
-          blk.failed[e] = 1;
-          for (int k = 0; k < 6; ++k) blk.sigAt(k, e) = 0.0;
-          std::fill(slot, slot + 24, 0.0);
-          ++st.eroded;
-          continue;
-        }
-        for (int a = 0; a < 8; ++a)
-          for (int i = 0; i < 3; ++i) slot[3 * a + i] = w.f[i][a][l];
-        double dte = solidTimeStep(len[l], c_dt[l], trace_d[l], bv);
-        if (!blk.dt_scale.empty()) dte *= blk.dt_scale[e];
-        if (dte < st.dt_min) {
-          st.dt_min = dte;
-          st.dt_elem = blk.elem[e];
-        }
+        detail::finishElement(blk, e, l, w.f, vol[l], w.failed[l] != 0, len[l], c_dt[l], trace_d[l],
+                              bv, slot, st);
       }
     }
   }
