@@ -146,20 +146,7 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
         w.de[5][l] = 0.5 * (L[2][0][l] + L[0][2][l]) * dt;
         trace_d[l] = L[0][0][l] + L[1][1][l] + L[2][2][l];
       }
-      for (int k = 0; k < 6; ++k)
-        for (int l = 0; l < kBatch; ++l) w.s_old[k][l] = w.s[k][l];
-      for (int l = 0; l < kBatch; ++l) w.failed[l] = 0;
-      materials::PointBatch pb;
-      pb.n = kBatch;
-      pb.dt = dt;
-      for (int k = 0; k < 6; ++k) {
-        pb.s[k] = w.s[k];
-        pb.de[k] = w.de[k];
-        pb.alpha[k] = Law::kKinematic ? w.alpha[k] : nullptr;
-      }
-      pb.eps_p = Law::kPlastic ? w.eps_p : nullptr;
-      pb.failed = w.failed;
-      law.update(pb);
+      detail::updateMaterial(law, w, dt);
 
       // --- geometry at x(n): volume, volume gradient, characteristic length -------------------
       gradientOfAll(w.x, w.b, std::make_index_sequence<8>{});
@@ -187,10 +174,7 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
       // --- internal energy: midpoint rule on the stress power, plus bulk viscosity work ------
       LaneArray de_int;
       for (int l = 0; l < kBatch; ++l) {
-        double p = 0.0;
-        for (int k = 0; k < 6; ++k)
-          p += (k < 3 ? 0.5 : 1.0) * (w.s_old[k][l] + w.s[k][l]) * w.de[k][l];
-        de_int[l] = (p - q[l] * trace_d[l] * dt) * vol_mid[l];
+        de_int[l] = (detail::stressWork(w, l) - q[l] * trace_d[l] * dt) * vol_mid[l];
       }
 
       // --- stress divergence: f_a = -(sigma - q I) . B_a --------------------------------------

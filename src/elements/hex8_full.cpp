@@ -140,25 +140,9 @@ BlockStatus fullBlockForces(const Law& law, domain::SolidBlock& blk, const domai
           w.de[4][l] = 0.5 * (L[1][2] + L[2][1]) * dt;
           w.de[5][l] = 0.5 * (L[2][0] + L[0][2]) * dt;
         }
-        for (int k = 0; k < 6; ++k)
-          for (int l = 0; l < kBatch; ++l) w.s_old[k][l] = w.s[k][l];
-        for (int l = 0; l < kBatch; ++l) w.failed[l] = 0;
-        materials::PointBatch pb;
-        pb.n = kBatch;
-        pb.dt = dt;
-        for (int k = 0; k < 6; ++k) {
-          pb.s[k] = w.s[k];
-          pb.de[k] = w.de[k];
-          pb.alpha[k] = Law::kKinematic ? w.alpha[k] : nullptr;
-        }
-        pb.eps_p = Law::kPlastic ? w.eps_p : nullptr;
-        pb.failed = w.failed;
-        law.update(pb);
+        detail::updateMaterial(law, w, dt);
         for (int l = 0; l < kBatch; ++l) {
-          double p = 0.0;
-          for (int k = 0; k < 6; ++k)
-            p += (k < 3 ? 0.5 : 1.0) * (w.s_old[k][l] + w.s[k][l]) * w.de[k][l];
-          de_int[l] += p * det[l];  // unit Gauss weights
+          de_int[l] += detail::stressWork(w, l) * det[l];  // unit Gauss weights
           any_failed[l] |= w.failed[l];
         }
         for (int k = 0; k < 6; ++k)

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "elements/hex8.hpp"
+#include "materials/materials.hpp"
 
 namespace crumple::elements::detail {
 
@@ -86,6 +87,34 @@ struct BatchScratch {
   double eps_p[kBatch];
   uint8_t failed[kBatch];
 };
+
+// The material update of one batch of points: keeps the rotated stress in s_old (for the
+// energy), clears the failure flags and lets the law advance s (and eps_p, alpha) by de.
+template <class Law>
+inline void updateMaterial(const Law& law, BatchScratch& w, double dt) {
+  for (int k = 0; k < 6; ++k)
+    for (int l = 0; l < kBatch; ++l) w.s_old[k][l] = w.s[k][l];
+  for (int l = 0; l < kBatch; ++l) w.failed[l] = 0;
+  materials::PointBatch pb;
+  pb.n = kBatch;
+  pb.dt = dt;
+  for (int k = 0; k < 6; ++k) {
+    pb.s[k] = w.s[k];
+    pb.de[k] = w.de[k];
+    pb.alpha[k] = Law::kKinematic ? w.alpha[k] : nullptr;
+  }
+  pb.eps_p = Law::kPlastic ? w.eps_p : nullptr;
+  pb.failed = w.failed;
+  law.update(pb);
+}
+
+// Stress work per unit volume over the step at lane l: the midpoint rule
+// (s_old + s) / 2 : de, tensor shear components counted twice.
+inline double stressWork(const BatchScratch& w, int l) {
+  double p = 0.0;
+  for (int k = 0; k < 6; ++k) p += (k < 3 ? 0.5 : 1.0) * (w.s_old[k][l] + w.s[k][l]) * w.de[k][l];
+  return p;
+}
 
 // The end of an element's pass, shared by the kernels: an inverted element is noted; a failed
 // one is eroded (LS-DYNA FAIL: the element is removed, its slots zeroed); otherwise its

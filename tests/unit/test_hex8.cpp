@@ -104,6 +104,31 @@ crumple::model::Model distortedBlock(int ihq) {
   return crumple::testing::brickModel(2, 2, 2, opt);
 }
 
+// The patch-test field: linear velocity v = G x (stretch, shear and spin), over a step dt.
+constexpr double G[3][3] = {{1e-3, 4e-4, -2e-4}, {-1e-4, -3e-4, 5e-4}, {3e-4, 2e-4, 6e-4}};
+
+// Sets v = G x0 and the geometry at the end of the step, x = x0 + dt v / 2, so that the
+// mid-step geometry is x0.
+void imposeLinearField(crumple::domain::Subdomain& sd, double dt) {
+  for (std::size_t n = 0; n < sd.numNodes(); ++n)
+    for (int i = 0; i < 3; ++i) {
+      double v = 0.0;
+      for (int j = 0; j < 3; ++j) v += G[i][j] * sd.x0[3 * n + j];
+      sd.v[3 * n + i] = v;
+    }
+  for (std::size_t i = 0; i < sd.x.size(); ++i) sd.x[i] = sd.x0[i] + 0.5 * dt * sd.v[i];
+}
+
+// Nodal forces gathered from the element slots in the subdomain's order.
+std::vector<double> gatheredForces(const crumple::domain::Subdomain& sd) {
+  std::vector<double> f(3 * sd.numNodes(), 0.0);
+  for (std::size_t n = 0; n < sd.numNodes(); ++n)
+    for (int32_t k = sd.internal.ptr[n]; k < sd.internal.ptr[n + 1]; ++k)
+      for (int c = 0; c < 3; ++c)
+        f[3 * n + c] += sd.slots[3 * std::size_t(sd.internal.slot[std::size_t(k)]) + c];
+  return f;
+}
+
 class Hex8Patch : public ::testing::TestWithParam<int> {};
 
 TEST_P(Hex8Patch, UniformStrainIsExactAndInteriorForcesBalance) {
@@ -112,17 +137,8 @@ TEST_P(Hex8Patch, UniformStrainIsExactAndInteriorForcesBalance) {
   auto& blk = sd.solid_blocks.at(0);
   std::vector<double> dt_e;
   crumple::elements::initializeSolids(blk, sd.x0, sd.slots.data(), dt_e, {});
-  // Linear velocity field v = G x (general: stretch, shear and spin).
-  const double G[3][3] = {{1e-3, 4e-4, -2e-4}, {-1e-4, -3e-4, 5e-4}, {3e-4, 2e-4, 6e-4}};
   const double dt = 1e-2;
-  // Geometry at the end of the step, x = x0 + dt v, so the mid-step geometry is x0 + dt/2 v.
-  for (std::size_t n = 0; n < sd.numNodes(); ++n)
-    for (int i = 0; i < 3; ++i) {
-      double v = 0.0;
-      for (int j = 0; j < 3; ++j) v += G[i][j] * sd.x0[3 * n + j];
-      sd.v[3 * n + i] = v;
-    }
-  for (std::size_t i = 0; i < sd.x.size(); ++i) sd.x[i] = sd.x0[i] + 0.5 * dt * sd.v[i];
+  imposeLinearField(sd, dt);
   crumple::elements::BulkViscosity bv{0.0, 0.0};
   crumple::elements::computeSolidForces(blk, sd.x, sd.v, dt, bv, sd.slots.data());
 
@@ -142,11 +158,7 @@ TEST_P(Hex8Patch, UniformStrainIsExactAndInteriorForcesBalance) {
   }
 
   // Gather and check the interior node (13) is in equilibrium.
-  std::vector<double> f(3 * sd.numNodes(), 0.0);
-  for (std::size_t n = 0; n < sd.numNodes(); ++n)
-    for (int32_t s = sd.internal.ptr[n]; s < sd.internal.ptr[n + 1]; ++s)
-      for (int c = 0; c < 3; ++c)
-        f[3 * n + c] += sd.slots[3 * std::size_t(sd.internal.slot[std::size_t(s)]) + c];
+  const auto f = gatheredForces(sd);
   const double scale = std::abs(blk.sigAt(0, 0));
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(f[3 * 13 + c], 0.0, 1e-13 * scale) << c;
 }
@@ -242,15 +254,8 @@ TEST(Hex8Full, UniformStrainIsExactAndInteriorForcesBalance) {
   ASSERT_EQ(blk.elform, 2);
   std::vector<double> dt_e;
   crumple::elements::initializeSolids(blk, sd.x0, sd.slots.data(), dt_e, {});
-  const double G[3][3] = {{1e-3, 4e-4, -2e-4}, {-1e-4, -3e-4, 5e-4}, {3e-4, 2e-4, 6e-4}};
   const double dt = 1e-2;
-  for (std::size_t n = 0; n < sd.numNodes(); ++n)
-    for (int i = 0; i < 3; ++i) {
-      double v = 0.0;
-      for (int j = 0; j < 3; ++j) v += G[i][j] * sd.x0[3 * n + j];
-      sd.v[3 * n + i] = v;
-    }
-  for (std::size_t i = 0; i < sd.x.size(); ++i) sd.x[i] = sd.x0[i] + 0.5 * dt * sd.v[i];
+  imposeLinearField(sd, dt);
   crumple::elements::computeFullSolidForces(blk, sd.x, sd.v, dt, {0.0, 0.0}, sd.slots.data(), 0,
                                             blk.size());
   const double E = 210.0, nu = 0.3;
@@ -262,11 +267,7 @@ TEST(Hex8Full, UniformStrainIsExactAndInteriorForcesBalance) {
       EXPECT_NEAR(blk.sig_ip[0][q * padded + e], lambda * tr + 2 * mu * G[0][0] * dt, 1e-12);
       EXPECT_NEAR(blk.sig_ip[3][q * padded + e], mu * (G[0][1] + G[1][0]) * dt, 1e-12);
     }
-  std::vector<double> f(3 * sd.numNodes(), 0.0);
-  for (std::size_t n = 0; n < sd.numNodes(); ++n)
-    for (int32_t k = sd.internal.ptr[n]; k < sd.internal.ptr[n + 1]; ++k)
-      for (int c = 0; c < 3; ++c)
-        f[3 * n + c] += sd.slots[3 * std::size_t(sd.internal.slot[std::size_t(k)]) + c];
+  const auto f = gatheredForces(sd);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(f[3 * 13 + c], 0.0, 1e-13 * std::abs(blk.sigAt(0, 0)));
 }
 
