@@ -185,21 +185,21 @@ int runCommand(const RunOptions& opt) {
   });
   if (!read_ok) return 1;
   if (comm.distributed()) {
+    // One archive: the model's bytes, then the element -> rank map.
     std::vector<char> bytes;
     if (root) {
-      bytes = model::serialize(m);
       util::ArchiveWriter w;
+      w.put(model::serialize(m));
       w.put(elem_rank);
-      bytes.insert(bytes.end(), w.bytes().begin(), w.bytes().end());
+      bytes = std::move(w.bytes());
     }
     comm.broadcast(bytes);
     if (!root) {
-      // The model's bytes come first, then the partition.
-      m = model::deserialize(bytes);
-      const auto tail = model::serialize(m).size();
-      std::vector<char> rest(bytes.begin() + long(tail), bytes.end());
-      util::ArchiveReader r(rest);
+      util::ArchiveReader r(bytes);
+      std::vector<char> model_bytes;
+      r.get(model_bytes);
       r.get(elem_rank);
+      m = model::deserialize(model_bytes);
     }
   }
 
