@@ -15,13 +15,6 @@ double curveValue(const model::Curve* c, double t) {
   return c ? c->value(t) : 1.0;
 }
 
-// Local index of a model node in the subdomain, or kNone if the rank does not hold it.
-int32_t localOf(const domain::Subdomain& sd, int32_t model_node) {
-  auto it = std::lower_bound(sd.node_model.begin(), sd.node_model.end(), model_node);
-  if (it == sd.node_model.end() || *it != model_node) return model::kNone;
-  return static_cast<int32_t>(it - sd.node_model.begin());
-}
-
 double dot(const model::Vec3& a, const double* b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
@@ -31,22 +24,22 @@ double dot(const model::Vec3& a, const double* b) {
 Boundary::Boundary(const model::Model& m, const domain::Subdomain& sd) {
   has_external_ = !m.nodal_loads.empty() || !m.pressure_loads.empty() || !m.body_loads.empty();
   for (const auto& s : m.spcs) {
-    const int32_t n = localOf(sd, s.node);
+    const int32_t n = sd.localNode(s.node);
     if (n != model::kNone && (s.dofs & 7)) spc_.emplace_back(n, s.dofs);
   }
   for (const auto& p : m.prescribed) {
-    const int32_t n = localOf(sd, p.node);
+    const int32_t n = sd.localNode(p.node);
     if (n != model::kNone)
       motion_.push_back({n, p.dof, p.kind, curveOf(m, p.curve), p.sf, p.birth, p.death});
   }
   for (const auto& l : m.nodal_loads) {
-    const int32_t n = localOf(sd, l.node);
+    const int32_t n = sd.localNode(l.node);
     if (n != model::kNone) loads_.push_back({n, l.dof, curveOf(m, l.curve), l.sf});
   }
   for (std::size_t k = 0; k < sd.pressure_segments.size(); ++k) {
     const auto& p = m.pressure_loads[static_cast<std::size_t>(sd.pressure_segments[k])];
     Pressure q{{}, curveOf(m, p.curve), p.sf, p.at, sd.pressure_slot_offset + 4 * k};
-    for (int c = 0; c < 4; ++c) q.nodes[c] = localOf(sd, p.nodes[c]);
+    for (int c = 0; c < 4; ++c) q.nodes[c] = sd.localNode(p.nodes[c]);
     pressure_.push_back(q);
   }
   for (const auto& b : m.body_loads) body_.push_back({b.dof, curveOf(m, b.curve), b.sf});
@@ -57,7 +50,7 @@ Boundary::Boundary(const model::Model& m, const domain::Subdomain& sd) {
       for (std::size_t i = 0; i < sd.numNodes(); ++i) ws.nodes.push_back(int32_t(i));
     } else {
       for (int32_t mn : w.nodes)
-        if (int32_t n = localOf(sd, mn); n != model::kNone) ws.nodes.push_back(n);
+        if (int32_t n = sd.localNode(mn); n != model::kNone) ws.nodes.push_back(n);
     }
     ws.velocity = ws.velocity_prev = w.moving ? w.v0 : 0.0;
     walls_.push_back(std::move(ws));

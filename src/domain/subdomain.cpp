@@ -305,6 +305,12 @@ int64_t findElement(const Subdomain& sd, int32_t model_index, F&& value) {
 }
 }  // namespace
 
+int32_t Subdomain::localNode(int32_t model_node) const {
+  auto it = std::lower_bound(node_model.begin(), node_model.end(), model_node);
+  if (it == node_model.end() || *it != model_node) return model::kNone;
+  return static_cast<int32_t>(it - node_model.begin());
+}
+
 int64_t Subdomain::elementId(int32_t model_index) const {
   return findElement(*this, model_index,
                      [](const SolidBlock& b, std::size_t k) { return b.elem_id[k]; });

@@ -137,6 +137,8 @@ struct Subdomain {
   int64_t global_solids = 0;
 
   std::size_t numNodes() const { return node_model.size(); }
+  // Local index of a model node, or model::kNone if this rank does not hold it.
+  int32_t localNode(int32_t model_node) const;
   // User id and part id of a solid held here, by model index; 0 if not held here.
   int64_t elementId(int32_t model_index) const;
   int64_t elementPart(int32_t model_index) const;

@@ -50,13 +50,9 @@ ResultsWriter::ResultsWriter(std::filesystem::path dir, const model::Model& mode
   const auto& sd = s.subdomain();
   history_count_ = model.history_nodes.size();
   for (std::size_t k = 0; k < model.history_nodes.size(); ++k) {
-    const int32_t mn = model.history_nodes[k];
-    auto it = std::lower_bound(sd.node_model.begin(), sd.node_model.end(), mn);
-    if (it != sd.node_model.end() && *it == mn) {
-      const auto local = static_cast<int32_t>(it - sd.node_model.begin());
-      if (sd.node_owned[static_cast<std::size_t>(local)])
-        history_local_.emplace_back(int32_t(k), local);
-    }
+    const int32_t local = sd.localNode(model.history_nodes[k]);
+    if (local != model::kNone && sd.node_owned[static_cast<std::size_t>(local)])
+      history_local_.emplace_back(int32_t(k), local);
   }
   if (history_count_ > 0) {
     nodout_.interval = intervalOr(ctl.nodout_dt, end, kDefaultSamples);

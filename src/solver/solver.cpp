@@ -100,11 +100,9 @@ void Solver::initialize() {
   exchangeSharedSlots();
   gather(sd_.internal, sd_.mass, 1);
   // Point masses (*ELEMENT_MASS) belong to their node on every rank that holds it.
-  for (const auto& pm : model_.point_masses) {
-    auto it = std::lower_bound(sd_.node_model.begin(), sd_.node_model.end(), pm.node);
-    if (it != sd_.node_model.end() && *it == pm.node)
-      sd_.mass[static_cast<std::size_t>(it - sd_.node_model.begin())] += pm.mass;
-  }
+  for (const auto& pm : model_.point_masses)
+    if (const int32_t n = sd_.localNode(pm.node); n != model::kNone)
+      sd_.mass[static_cast<std::size_t>(n)] += pm.mass;
   std::vector<double> physical_mass = sd_.mass;
 
   // Mass scaling (*CONTROL_TIMESTEP DT2MS): elements whose step TSSFAC*dt_e is below |DT2MS|
