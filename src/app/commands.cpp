@@ -31,19 +31,6 @@ extern "C" void onSignal(int) {
   g_interrupted = true;
 }
 
-const char* lawName(const model::MaterialLaw& law) {
-  struct Visitor {
-    const char* operator()(const model::ElasticLaw&) const { return "*MAT_ELASTIC"; }
-    const char* operator()(const model::PlasticKinematicLaw&) const {
-      return "*MAT_PLASTIC_KINEMATIC";
-    }
-    const char* operator()(const model::PiecewiseLinearLaw&) const {
-      return "*MAT_PIECEWISE_LINEAR_PLASTICITY";
-    }
-  };
-  return std::visit(Visitor{}, law);
-}
-
 // The model summary shared by `crumple check` and run.log.
 std::string modelSummary(const model::Model& m, const solver::Solver& s) {
   std::string out;
@@ -56,7 +43,7 @@ std::string modelSummary(const model::Model& m, const solver::Solver& s) {
     const auto& part = m.parts[static_cast<std::size_t>(p)];
     const auto& mat = m.materials[static_cast<std::size_t>(part.material)];
     out += fmt::format("  part {}{}: {} solids, {} {} (density {:g})\n", part.id,
-                       part.title.empty() ? "" : " \"" + part.title + "\"", count, lawName(mat.law),
+                       part.title.empty() ? "" : " \"" + part.title + "\"", count, model::materialKeyword(mat.law),
                        mat.id, mat.rho);
   }
   out += fmt::format("total mass: {:.6g}\n", s.totalMass());

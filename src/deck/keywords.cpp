@@ -77,6 +77,26 @@ std::vector<KeywordSpec> makeTables() {
   t.push_back({"*ELEMENT_MASS",
                {{"card 1",
                  {I("EID", 0, 0, 8), I("NID", 0, 0, 8), R("MASS", 0, 0, 16), I("PID", 0, 0, 8)}}}});
+  // *ELEMENT_SHELL 10I8; _THICKNESS adds THIC1-4 and BETA (E16 each).
+  t.push_back({"*ELEMENT_SHELL",
+               {{"card 1",
+                 {I("EID", 0, 0, 8), I("PID", 0, 0, 8), I("N1", 0, 0, 8), I("N2", 0, 0, 8),
+                  I("N3", 0, 0, 8), I("N4", 0, 0, 8), I("N5", 0, 0, 8), I("N6", 0, 0, 8),
+                  I("N7", 0, 0, 8), I("N8", 0, 0, 8)}},
+                {"thickness card",
+                 {R("THIC1", 0, 0, 16), R("THIC2", 0, 0, 16), R("THIC3", 0, 0, 16),
+                  R("THIC4", 0, 0, 16), R("BETA", 0, 0, 16)}}}});
+  // *ELEMENT_BEAM 10I8: EID PID N1 N2 N3 RT1 RR1 RT2 RR2 LOCAL.
+  t.push_back({"*ELEMENT_BEAM",
+               {{"card 1",
+                 {I("EID", 0, 0, 8), I("PID", 0, 0, 8), I("N1", 0, 0, 8), I("N2", 0, 0, 8),
+                  I("N3", 0, 0, 8), I("RT1", 0, 0, 8), I("RR1", 0, 0, 8), I("RT2", 0, 0, 8),
+                  I("RR2", 0, 0, 8), I("LOCAL", 2, Z, 8)}}}});
+  // *ELEMENT_DISCRETE I8,I8,I8,I8,I8,E16,I8,E16.
+  t.push_back({"*ELEMENT_DISCRETE",
+               {{"card 1",
+                 {I("EID", 0, 0, 8), I("PID", 0, 0, 8), I("N1", 0, 0, 8), I("N2", 0, 0, 8),
+                  I("VID", 0, 0, 8), R("S", 1, Z, 16), I("PF", 0, 0, 8), R("OFFSET", 0, 0, 16)}}}});
   // ---- parts, sections, materials -----------------------------------------------------------
   t.push_back({"*PART",
                {{"card 1", {A("HEADING", 70)}},
@@ -88,6 +108,36 @@ std::vector<KeywordSpec> makeTables() {
                 {"card 1",
                  {I("SECID"), I("ELFORM", 1), I("AET"), A("UNUSED1", 10, {}, Q),
                   A("UNUSED2", 10, {}, Q), A("UNUSED3", 10, {}, Q), R("COHOFF"), R("GASKETT")}}}});
+  t.push_back({"*SECTION_SHELL",
+               {titleCard(),
+                {"card 1",
+                 {I("SECID"), I("ELFORM", 2, Z), R("SHRF", 1, Z), I("NIP", 2, Z), R("PROPT", 1, Z),
+                  I("QR/IRID"), I("ICOMP"), I("SETYP", 1, Z)}},
+                {"card 2",
+                 {R("T1"), R("T2"), R("T3"), R("T4"), R("NLOC"), R("MAREA"), I("IDOF"),
+                  I("EDGSET")}}}});
+  t.push_back({"*SECTION_BEAM",
+               {titleCard(),
+                {"card 1",
+                 {I("SECID"), I("ELFORM", 1, Z), R("SHRF", 1, Z), I("QR/IRID", 2, Z), I("CST"),
+                  R("SCOOR"), R("NSM"), R("NAUPD", 0, Q)}},
+                {"integrated card",
+                 {R("TS1"), R("TS2"), R("TT1"), R("TT2"), R("NSLOC"), R("NTLOC")}},
+                {"resultant card", {R("A"), R("ISS"), R("ITT"), R("J"), R("SA"), R("IST")}}}});
+  t.push_back({"*SECTION_DISCRETE",
+               {titleCard(),
+                {"card 1", {I("SECID"), I("DRO"), R("KD"), R("V0"), R("CL"), R("FD")}},
+                {"card 2", {R("CDL"), R("TDL")}}}});
+  t.push_back({"*MAT_RIGID",
+               {titleCard(),
+                {"card 1",
+                 {I("MID"), R("RO"), R("E"), R("PR"), R("N"), R("COUPLE"), R("M"), R("ALIAS")}},
+                {"card 2", {R("CMO"), R("CON1"), R("CON2")}},
+                {"card 3", {R("LCO/A1"), R("A2"), R("A3"), R("V1"), R("V2"), R("V3")}}}});
+  t.push_back({"*MAT_SPRING_ELASTIC", {titleCard(), {"card 1", {I("MID"), R("K")}}}});
+  t.push_back({"*MAT_DAMPER_VISCOUS", {titleCard(), {"card 1", {I("MID"), R("DC")}}}});
+  t.push_back({"*MAT_SPRING_NONLINEAR_ELASTIC",
+               {titleCard(), {"card 1", {I("MID"), I("LCD"), I("LCR")}}}});
   t.push_back(
       {"*MAT_ELASTIC",
        {titleCard(), {"card 1", {I("MID"), R("RO"), R("E"), R("PR"), R("DA"), R("DB"), R("K")}}}});
@@ -146,7 +196,10 @@ std::vector<KeywordSpec> makeTables() {
   t.push_back({"*CONTROL_SHELL",
                {{"card 1",
                  {R("WRPANG", 20, Z), I("ESORT"), I("IRNXX", -1, Z), I("ISTUPD"), I("THEORY", 2, Z),
-                  I("BWC", 2, Z), I("MITER", 1, Z), I("PROJ")}}}});
+                  I("BWC", 2, Z), I("MITER", 1, Z), I("PROJ")}},
+                {"card 2",
+                 {R("ROTASCL", 1, Z), I("INTGRD"), I("LAMSHT", 0, Q), I("CSTYP6", 1, Z),
+                  I("TSHELL")}}}});
   t.push_back({"*CONTROL_CONTACT",
                {{"card 1",
                  {R("SLSFAC", 0.1, Z), R("RWPNAL"), I("ISLCHK", 1, Z), I("SHLTHK"),

@@ -35,6 +35,10 @@ struct BlockBase {
   std::size_t shared_end = 0;    // shared_count rounded up to whole batches (kernel range)
   std::vector<int64_t> elem_id;  // user element id
   std::size_t slot_offset = 0;   // first slot of the block
+  // *MAT_RIGID part: the elements give the rigid body their mass and inertia and compute no
+  // force; their kernels run only at initialisation (the state arrays are allocated by the
+  // solver, which calls the kernels' resize functions).
+  bool rigid = false;
   std::size_t size() const { return elem.size(); }
 };
 

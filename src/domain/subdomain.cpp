@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <map>
+#include <cmath>
 #include <numeric>
+#include <set>
+#include <stdexcept>
+#include <tuple>
 
 #include "util/error.hpp"
 
@@ -51,18 +55,22 @@ struct NodeRanks {
     return std::binary_search(rank.begin() + ptr[node], rank.begin() + ptr[node + 1], r);
   }
   int lowest(std::size_t node) const { return rank[static_cast<std::size_t>(ptr[node])]; }
+  bool shared(std::size_t node) const { return ptr[node + 1] - ptr[node] > 1; }
 };
 
 NodeRanks nodeRanks(const model::Model& model, const std::vector<int32_t>& elem_rank) {
   const std::size_t nn = model.nodes.size();
   std::vector<std::pair<int32_t, int32_t>> pairs;  // (node, rank)
-  pairs.reserve(8 * model.solids.size() + nn);
+  pairs.reserve(8 * model.numElements() + nn);
   std::vector<uint8_t> touched(nn, 0);
-  for (std::size_t e = 0; e < model.solids.size(); ++e)
-    for (int32_t n : model.solids.nodes[e]) {
-      pairs.emplace_back(n, elem_rank[e]);
-      touched[static_cast<std::size_t>(n)] = 1;
+  int32_t en[8];
+  for (std::size_t g = 0; g < model.numElements(); ++g) {
+    const int k = model.elementNodes(g, en);
+    for (int a = 0; a < k; ++a) {
+      pairs.emplace_back(en[a], elem_rank[g]);
+      touched[static_cast<std::size_t>(en[a])] = 1;
     }
+  }
   for (std::size_t n = 0; n < nn; ++n)
     if (!touched[n]) pairs.emplace_back(int32_t(n), 0);  // element-less nodes live on rank 0
   std::sort(pairs.begin(), pairs.end());
@@ -78,18 +86,46 @@ NodeRanks nodeRanks(const model::Model& model, const std::vector<int32_t>& elem_
   return nr;
 }
 
-// One corner of a force source (solid or pressure segment) at a node.
+// One corner of a force source (element or pressure segment) at a node.
 struct Corner {
   int32_t node;    // model node
-  int64_t source;  // global source number (solid e, or num_solids + segment)
+  int64_t source;  // global source number (element g, or num_elements + segment)
   int32_t corner;
-  int32_t slot;  // local or ghost slot
+  int32_t slot;      // local or ghost slot
+  bool rotational;   // a moment corner (shells, beams)
   bool operator<(const Corner& o) const {
     if (node != o.node) return node < o.node;
     if (source != o.source) return source < o.source;
     return corner < o.corner;
   }
 };
+
+// Slots per element of a family, and the corners of global element g: shells and beams have
+// a force corner and a moment corner at each node (blocks.hpp, "Slot layout").
+int slotsPerElement(model::Family f) {
+  switch (f) {
+    case model::Family::Solid:
+    case model::Family::Shell:
+      return 8;
+    case model::Family::Beam:
+      return 4;
+    case model::Family::Discrete:
+      return 2;
+  }
+  return 0;
+}
+
+int elementCorners(const model::Model& model, std::size_t g, Corner out[8]) {
+  int32_t en[8];
+  const int k = model.elementNodes(g, en);
+  const auto family = model.element(g).first;
+  const bool rot = family == model::Family::Shell || family == model::Family::Beam;
+  int n = 0;
+  for (int a = 0; a < k; ++a) out[n++] = {en[a], int64_t(g), a, -1, false};
+  if (rot)
+    for (int a = 0; a < k; ++a) out[n++] = {en[a], int64_t(g), k + a, -1, true};
+  return n;
+}
 
 GatherPlan gatherPlan(std::vector<Corner> corners, const std::vector<int32_t>& local_of,
                       std::size_t num_nodes) {
@@ -105,18 +141,55 @@ GatherPlan gatherPlan(std::vector<Corner> corners, const std::vector<int32_t>& l
   return plan;
 }
 
+bool isRigid(const model::Model& model, const model::Part& part) {
+  return part.material != model::kNone &&
+         std::holds_alternative<model::RigidLaw>(
+             model.materials[static_cast<std::size_t>(part.material)].law);
+}
+
+// Fills the part of a block every family shares; `conn` gets the local nodes of element k.
+template <class Block, class List>
+void fillBase(Block& b, const model::Model& model, int32_t part_index,
+              const std::vector<int32_t>& elems, std::size_t shared_count, int batch,
+              const List& list, const std::vector<int32_t>& local_of) {
+  const auto& part = model.parts[static_cast<std::size_t>(part_index)];
+  b.part = part_index;
+  b.part_id = part.id;
+  b.elem = elems;
+  b.shared_count = shared_count;
+  b.shared_end = std::min(elems.size(), (shared_count + std::size_t(batch) - 1) /
+                                            std::size_t(batch) * std::size_t(batch));
+  b.elem_id.resize(elems.size());
+  b.conn.resize(elems.size());
+  for (std::size_t k = 0; k < elems.size(); ++k) {
+    const auto e = static_cast<std::size_t>(elems[k]);
+    b.elem_id[k] = list.id[e];
+    for (std::size_t a = 0; a < list.nodes[e].size(); ++a)
+      b.conn[k][a] = local_of[static_cast<std::size_t>(list.nodes[e][a])];
+  }
+}
+
 }  // namespace
 
 Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& elem_rank, int rank,
                          int num_ranks) {
+  if (elem_rank.size() != model.numElements())
+    throw std::invalid_argument("buildSubdomain: one rank per element expected");
   Subdomain sd;
   sd.rank = rank;
   sd.num_ranks = num_ranks;
   sd.global_nodes = static_cast<int64_t>(model.nodes.size());
   sd.global_solids = static_cast<int64_t>(model.solids.size());
+  sd.global_elements = static_cast<int64_t>(model.numElements());
+  for (int f = 0; f < model::kFamilies; ++f) {
+    sd.family_offset[std::size_t(f)] =
+        static_cast<int64_t>(model.familyOffset(static_cast<model::Family>(f)));
+    sd.global_family[std::size_t(f)] =
+        static_cast<int64_t>(model.familySize(static_cast<model::Family>(f)));
+  }
   const NodeRanks nr = nodeRanks(model, elem_rank);
   const std::size_t n_model = model.nodes.size();
-  const int64_t num_solids = static_cast<int64_t>(model.solids.size());
+  const int64_t num_elements = sd.global_elements;
 
   // Nodes held here, ascending model index.
   std::vector<int32_t> local_of(n_model, model::kNone);
@@ -142,59 +215,165 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
   sd.f_ext.assign(3 * nn, 0.0);
   sd.mass.assign(nn, 0.0);
   sd.mass_added.assign(nn, 0.0);
-
-  // Blocks: one per part. Elements touching a node that another rank also holds come first, so
-  // their forces can be sent while the others are computed; each group ascending.
-  auto shared = [&](std::size_t e) {
-    for (int32_t n : model.solids.nodes[e])
-      if (nr.ptr[static_cast<std::size_t>(n) + 1] - nr.ptr[static_cast<std::size_t>(n)] > 1)
-        return true;
-    return false;
-  };
-  std::map<int32_t, std::vector<int32_t>> by_part, shared_by_part;
-  for (std::size_t e = 0; e < model.solids.size(); ++e)
-    if (elem_rank[e] == rank)
-      (shared(e) ? shared_by_part : by_part)[model.solids.part[e]].push_back(int32_t(e));
-  for (auto& [part_index, first] : shared_by_part) {
-    auto& rest = by_part[part_index];
-    rest.insert(rest.begin(), first.begin(), first.end());
+  sd.rotations = model.shells.size() + model.beams.size() > 0;
+  if (sd.rotations) {
+    sd.w.assign(3 * nn, 0.0);
+    sd.moment.assign(3 * nn, 0.0);
+    sd.moment_ext.assign(3 * nn, 0.0);
+    sd.inertia.assign(nn, 0.0);
   }
+
+  // Blocks: one per family and part. Elements touching a node that another rank also holds
+  // come first, so their forces can be sent while the others are computed; each group
+  // ascending.
   std::size_t slot = 0;
   std::vector<Corner> internal, pressure;
-  for (auto& [part_index, elems] : by_part) {
+  auto groupByPart = [&](model::Family family, const std::vector<int32_t>& parts,
+                         const auto& nodes_of) {
+    const std::size_t offset = model.familyOffset(family);
+    std::map<int32_t, std::vector<int32_t>> rest, first;
+    for (std::size_t e = 0; e < parts.size(); ++e) {
+      if (elem_rank[offset + e] != rank) continue;
+      bool shared = false;
+      for (int32_t n : nodes_of(e)) shared = shared || nr.shared(static_cast<std::size_t>(n));
+      (shared ? first : rest)[parts[e]].push_back(int32_t(e));
+    }
+    std::vector<std::tuple<int32_t, std::vector<int32_t>, std::size_t>> out;
+    std::set<int32_t> keys;
+    for (const auto& [p, v] : rest) keys.insert(p);
+    for (const auto& [p, v] : first) keys.insert(p);
+    for (int32_t p : keys) {
+      std::vector<int32_t> elems = first.count(p) ? first[p] : std::vector<int32_t>{};
+      const std::size_t shared_count = elems.size();
+      if (rest.count(p)) elems.insert(elems.end(), rest[p].begin(), rest[p].end());
+      out.emplace_back(p, std::move(elems), shared_count);
+    }
+    return out;
+  };
+  // Records the corners of a block's elements and gives the block its slots.
+  auto addCorners = [&](BlockBase& b, model::Family family) {
+    const std::size_t offset = model.familyOffset(family);
+    const int per = slotsPerElement(family);
+    b.slot_offset = slot;
+    Corner cs[8];
+    for (std::size_t k = 0; k < b.size(); ++k) {
+      const int n = elementCorners(model, offset + std::size_t(b.elem[k]), cs);
+      for (int i = 0; i < n; ++i) {
+        cs[i].slot = int32_t(slot + std::size_t(per) * k + std::size_t(cs[i].corner));
+        internal.push_back(cs[i]);
+      }
+    }
+    slot += std::size_t(per) * b.size();
+    sd.num_elements += b.size();
+  };
+
+  for (auto& [part_index, elems, shared_count] :
+       groupByPart(model::Family::Solid, model.solids.part,
+                   [&](std::size_t e) { return model.solids.nodes[e]; })) {
     const auto& part = model.parts[static_cast<std::size_t>(part_index)];
     const auto& mat = model.materials[static_cast<std::size_t>(part.material)];
     SolidBlock b;
-    b.part = part_index;
-    b.part_id = part.id;
+    fillBase(b, model, part_index, elems, shared_count, kSolidBatch, model.solids, local_of);
     b.law = materials::makeLaw(mat, model);
     b.rho0 = mat.rho;
+    b.rigid = isRigid(model, part);
     b.hourglass = hourglassOf(model, part);
-    b.elem = elems;
-    b.shared_count = shared_by_part.count(part_index) ? shared_by_part[part_index].size() : 0;
-    b.shared_end =
-        std::min(elems.size(), (b.shared_count + kSolidBatch - 1) / kSolidBatch * kSolidBatch);
-    b.elem_id.resize(elems.size());
-    for (std::size_t k = 0; k < elems.size(); ++k)
-      b.elem_id[k] = model.solids.id[static_cast<std::size_t>(elems[k])];
-    b.conn.resize(elems.size());
-    for (std::size_t k = 0; k < elems.size(); ++k) {
-      const auto& gn = model.solids.nodes[static_cast<std::size_t>(elems[k])];
-      for (int a = 0; a < 8; ++a) {
-        b.conn[k][a] = local_of[static_cast<std::size_t>(gn[a])];
-        internal.push_back({gn[a], elems[k], a, int32_t(slot + 8 * k + a)});
-      }
-    }
     const bool plastic = std::visit([](const auto& law) { return law.kPlastic; }, b.law);
     const bool kinematic = std::visit([](const auto& law) { return law.kKinematic; }, b.law);
     b.elform = model.solid_sections[static_cast<std::size_t>(part.section)].elform;
     // A fully integrated element has no hourglass modes to control.
-    b.resize(elems.size(), plastic, kinematic, b.elform == 1 && b.hourglass.ihq >= 4,
-             b.elform == 2);
-    b.slot_offset = slot;
-    slot += 8 * elems.size();
-    sd.num_elements += elems.size();
+    b.resize(b.size(), plastic, kinematic, b.elform == 1 && b.hourglass.ihq >= 4, b.elform == 2);
+    addCorners(b, model::Family::Solid);
     sd.solid_blocks.push_back(std::move(b));
+  }
+  for (auto& [part_index, elems, shared_count] :
+       groupByPart(model::Family::Shell, model.shells.part,
+                   [&](std::size_t e) { return model.shells.nodes[e]; })) {
+    const auto& part = model.parts[static_cast<std::size_t>(part_index)];
+    const auto& mat = model.materials[static_cast<std::size_t>(part.material)];
+    const auto& sec = model.shell_sections[static_cast<std::size_t>(part.section)];
+    ShellBlock b;
+    fillBase(b, model, part_index, elems, shared_count, kShellBatch, model.shells, local_of);
+    b.law = materials::makeLaw(mat, model);
+    b.rho0 = mat.rho;
+    b.rigid = isRigid(model, part);
+    b.elform = sec.elform == 10 ? 2 : sec.elform;
+    b.nip = sec.nip;
+    b.lobatto = model.controls.shell_lobatto;
+    b.shear_factor = sec.shrf;
+    const auto hg = hourglassOf(model, part);
+    b.ihq = hg.ihq;
+    b.qm = hg.qm;
+    // ELFORM 10 is Belytschko-Tsay with the Belytschko-Wong-Chiang warping correction.
+    b.bwc = model.controls.shell_bwc || sec.elform == 10;
+    b.thickness_update = model.controls.shell_thickness_update;
+    b.corner_thickness.resize(b.size());
+    for (std::size_t k = 0; k < b.size(); ++k) {
+      const auto& t = model.shells.thickness[static_cast<std::size_t>(b.elem[k])];
+      b.corner_thickness[k] = t[0] > 0 ? t : sec.t;
+    }
+    addCorners(b, model::Family::Shell);
+    sd.shell_blocks.push_back(std::move(b));
+  }
+  for (auto& [part_index, elems, shared_count] :
+       groupByPart(model::Family::Beam, model.beams.part,
+                   [&](std::size_t e) { return model.beams.nodes[e]; })) {
+    const auto& part = model.parts[static_cast<std::size_t>(part_index)];
+    const auto& mat = model.materials[static_cast<std::size_t>(part.material)];
+    const auto& sec = model.beam_sections[static_cast<std::size_t>(part.section)];
+    BeamBlock b;
+    fillBase(b, model, part_index, elems, shared_count, 1, model.beams, local_of);
+    b.law = materials::makeLaw(mat, model);
+    b.rho0 = mat.rho;
+    b.rigid = isRigid(model, part);
+    b.section = {sec.elform, sec.cst, sec.ts1, sec.ts2, sec.tt1, sec.tt2, sec.a,
+                 sec.iss,    sec.itt, sec.j,   sec.sa,  sec.shrf};
+    b.orientation.resize(b.size());
+    for (std::size_t k = 0; k < b.size(); ++k) {
+      const auto e = static_cast<std::size_t>(b.elem[k]);
+      const int32_t n3 = model.beams.orientation[e];
+      b.conn[k][2] = n3 == model::kNone ? model::kNone : local_of[static_cast<std::size_t>(n3)];
+      if (n3 != model::kNone)
+        b.orientation[k] = model.nodes.x[static_cast<std::size_t>(n3)];
+      else
+        b.orientation[k] = {std::nan(""), std::nan(""), std::nan("")};
+    }
+    addCorners(b, model::Family::Beam);
+    sd.beam_blocks.push_back(std::move(b));
+  }
+  for (auto& [part_index, elems, shared_count] :
+       groupByPart(model::Family::Discrete, model.discretes.part,
+                   [&](std::size_t e) { return model.discretes.nodes[e]; })) {
+    const auto& part = model.parts[static_cast<std::size_t>(part_index)];
+    const auto& mat = model.materials[static_cast<std::size_t>(part.material)];
+    DiscreteBlock b;
+    fillBase(b, model, part_index, elems, shared_count, 1, model.discretes, local_of);
+    std::visit(
+        [&](const auto& law) {
+          using T = std::decay_t<decltype(law)>;
+          if constexpr (std::is_same_v<T, model::SpringElasticLaw>) {
+            b.kind = DiscreteBlock::Kind::SpringElastic;
+            b.k = law.k;
+          } else if constexpr (std::is_same_v<T, model::DamperViscousLaw>) {
+            b.kind = DiscreteBlock::Kind::DamperViscous;
+            b.k = law.dc;
+          } else if constexpr (std::is_same_v<T, model::SpringNonlinearLaw>) {
+            b.kind = DiscreteBlock::Kind::SpringNonlinear;
+            const auto& c = model.curves[static_cast<std::size_t>(law.curve)];
+            b.curve_x = c.x;
+            b.curve_y = c.y;
+          }
+        },
+        mat.law);
+    b.scale.resize(b.size());
+    b.offset.resize(b.size());
+    for (std::size_t k = 0; k < b.size(); ++k) {
+      const auto e = static_cast<std::size_t>(b.elem[k]);
+      b.scale[k] = model.discretes.scale[e];
+      b.offset[k] = model.discretes.offset[e];
+    }
+    addCorners(b, model::Family::Discrete);
+    sd.discrete_blocks.push_back(std::move(b));
   }
 
   // Pressure segments: computed by the lowest rank that holds all four nodes.
@@ -220,8 +399,8 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
     if (segment_owner[s] != rank) continue;
     sd.pressure_segments.push_back(int32_t(s));
     for (int a = 0; a < 4; ++a)
-      pressure.push_back(
-          {model.pressure_loads[s].nodes[a], num_solids + int64_t(s), a, int32_t(slot + a)});
+      pressure.push_back({model.pressure_loads[s].nodes[a], num_elements + int64_t(s), a,
+                          int32_t(slot + a), false});
     slot += 4;
   }
   sd.num_local_slots = slot;
@@ -242,14 +421,14 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
     };
     for (const auto& c : internal) addSend(c);
     for (const auto& c : pressure) addSend(c);
-    for (std::size_t e = 0; e < model.solids.size(); ++e) {
-      const int q = elem_rank[e];
+    Corner cs[8];
+    for (std::size_t g = 0; g < model.numElements(); ++g) {
+      const int q = elem_rank[g];
       if (q == rank) continue;
-      const auto& gn = model.solids.nodes[e];
-      for (int a = 0; a < 8; ++a)
-        if (local_of[static_cast<std::size_t>(gn[a])] != model::kNone)
-          recv[static_cast<std::size_t>(q)].push_back(
-              {{int64_t(e), a}, {gn[a], int64_t(e), a, -1}});
+      const int n = elementCorners(model, g, cs);
+      for (int i = 0; i < n; ++i)
+        if (local_of[static_cast<std::size_t>(cs[i].node)] != model::kNone)
+          recv[static_cast<std::size_t>(q)].push_back({{cs[i].source, cs[i].corner}, cs[i]});
     }
     for (std::size_t s = 0; s < model.pressure_loads.size(); ++s) {
       const int q = segment_owner[s];
@@ -258,7 +437,7 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
         const int32_t n = model.pressure_loads[s].nodes[a];
         if (local_of[static_cast<std::size_t>(n)] != model::kNone)
           recv[static_cast<std::size_t>(q)].push_back(
-              {{num_solids + int64_t(s), a}, {n, num_solids + int64_t(s), a, -1}});
+              {{num_elements + int64_t(s), a}, {n, num_elements + int64_t(s), a, -1, false}});
       }
     }
     for (int q = 0; q < num_ranks; ++q) {
@@ -276,7 +455,7 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
       p.recv_count = rq.size();
       for (auto& [key, c] : rq) {
         c.slot = int32_t(slot++);
-        (c.source < num_solids ? internal : pressure).push_back(c);
+        (c.source < num_elements ? internal : pressure).push_back(c);
       }
       sd.peers.push_back(std::move(p));
     }
@@ -285,23 +464,46 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
 
   // Gather plans: this fixed order of summation is what makes nodal forces independent of
   // how elements are split among threads and ranks (ARCHITECTURE.md, Determinism).
+  std::vector<Corner> moments;
+  const auto split = std::stable_partition(internal.begin(), internal.end(),
+                                           [](const Corner& c) { return !c.rotational; });
+  moments.assign(split, internal.end());
+  internal.erase(split, internal.end());
   sd.internal = gatherPlan(std::move(internal), local_of, nn);
+  sd.rotational = gatherPlan(std::move(moments), local_of, nn);
   sd.pressure = gatherPlan(std::move(pressure), local_of, nn);
   return sd;
 }
 
 namespace {
-template <class F>
-int64_t findElement(const Subdomain& sd, int32_t model_index, F&& value) {
-  // Two ascending runs per block: the shared group, then the rest.
-  for (const auto& b : sd.solid_blocks) {
+// The block holding element `index` of one family, and its position there: two ascending
+// runs per block (the shared group, then the rest).
+template <class Blocks, class F>
+int64_t findIn(const Blocks& blocks, int32_t index, F&& value) {
+  for (const auto& b : blocks) {
     const auto mid = b.elem.begin() + static_cast<long>(b.shared_count);
     for (auto [lo, hi] : {std::pair{b.elem.begin(), mid}, std::pair{mid, b.elem.end()}}) {
-      auto it = std::lower_bound(lo, hi, model_index);
-      if (it != hi && *it == model_index) return value(b, std::size_t(it - b.elem.begin()));
+      auto it = std::lower_bound(lo, hi, index);
+      if (it != hi && *it == index) return value(b, std::size_t(it - b.elem.begin()));
     }
   }
   return 0;
+}
+template <class F>
+int64_t findElement(const Subdomain& sd, int64_t global_index, F&& value) {
+  int f = model::kFamilies - 1;
+  while (f > 0 && global_index < sd.family_offset[std::size_t(f)]) --f;
+  const auto index = static_cast<int32_t>(global_index - sd.family_offset[std::size_t(f)]);
+  switch (static_cast<model::Family>(f)) {
+    case model::Family::Shell:
+      return findIn(sd.shell_blocks, index, value);
+    case model::Family::Beam:
+      return findIn(sd.beam_blocks, index, value);
+    case model::Family::Discrete:
+      return findIn(sd.discrete_blocks, index, value);
+    default:
+      return findIn(sd.solid_blocks, index, value);
+  }
 }
 }  // namespace
 
@@ -311,18 +513,18 @@ int32_t Subdomain::localNode(int32_t model_node) const {
   return static_cast<int32_t>(it - node_model.begin());
 }
 
-int64_t Subdomain::elementId(int32_t model_index) const {
-  return findElement(*this, model_index,
-                     [](const SolidBlock& b, std::size_t k) { return b.elem_id[k]; });
+int64_t Subdomain::elementId(int64_t global_index) const {
+  return findElement(*this, global_index,
+                     [](const BlockBase& b, std::size_t k) { return b.elem_id[k]; });
 }
 
-int64_t Subdomain::elementPart(int32_t model_index) const {
-  return findElement(*this, model_index,
-                     [](const SolidBlock& b, std::size_t) { return b.part_id; });
+int64_t Subdomain::elementPart(int64_t global_index) const {
+  return findElement(*this, global_index,
+                     [](const BlockBase& b, std::size_t) { return b.part_id; });
 }
 
 Subdomain buildSerialSubdomain(const model::Model& model) {
-  return buildSubdomain(model, std::vector<int32_t>(model.solids.size(), 0), 0, 1);
+  return buildSubdomain(model, std::vector<int32_t>(model.numElements(), 0), 0, 1);
 }
 
 }  // namespace crumple::domain

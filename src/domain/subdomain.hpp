@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "domain/blocks.hpp"
 #include "materials/materials.hpp"
 #include "model/model.hpp"
 
@@ -28,23 +29,16 @@ inline constexpr int kSolidBatch = 16;
 
 // Elements of one part: one element type x one material x one section. State is a structure
 // of arrays owned by the block; element e of the block is global (model) element elem[e].
-struct SolidBlock {
-  int32_t part = model::kNone;  // model part index
-  int64_t part_id = 0;
+struct SolidBlock : BlockBase {
   materials::Law law;
   double rho0 = 0.0;
   HourglassParams hourglass;
   int elform = 1;  // *SECTION_SOLID ELFORM: 1 one-point, 2 fully integrated (8 points)
 
-  // Model element index. Elements with a node shared with another rank come first (ascending),
+  // BlockBase::elem: elements with a node shared with another rank come first (ascending),
   // then the others (ascending): the first group is computed before the shared-node exchange
-  // is posted, the second while it travels.
-  std::vector<int32_t> elem;
-  std::size_t shared_count = 0;  // elements in the first group
-  std::size_t shared_end = 0;    // shared_count rounded up to whole batches (kernel range)
-  std::vector<int64_t> elem_id;  // user element id (for messages and output)
+  // is posted, the second while it travels. Slots: 8 corners per element from slot_offset.
   std::vector<std::array<int32_t, 8>> conn;  // local node indices
-  std::size_t slot_offset = 0;               // first force slot (element-major, 8 corners)
 
   // Per-element state.
   // Cauchy stress (Voigt, tensor shear) and back stress (kinematic hardening laws), stored
@@ -77,7 +71,6 @@ struct SolidBlock {
   std::array<std::vector<double>, 6> sig_ip, alpha_ip;
   std::vector<double> eps_p_ip;
 
-  std::size_t size() const { return elem.size(); }
   // Elements plus padding: a whole number of batches.
   std::size_t paddedSize() const {
     return (elem.size() + kSolidBatch - 1) / kSolidBatch * kSolidBatch;
@@ -98,7 +91,8 @@ struct PeerExchange {
 
 // A node gathers, in ascending order of (source, corner), the slots of every element and
 // pressure segment at it: local ones and ghost copies received from neighbours. Sources are
-// numbered globally: solid element e is e, pressure segment s is num_solids + s.
+// numbered globally: element g (Model's global element order) is g, pressure segment s is
+// num_elements + s.
 struct GatherPlan {
   std::vector<int32_t> ptr;   // CSR over local nodes
   std::vector<int32_t> slot;  // slot indices (3 doubles each)
@@ -115,9 +109,19 @@ struct Subdomain {
   NodeVector x0, x, v, a, f, f_ext;
   std::vector<double> mass;  // lumped nodal mass (incl. mass added by scaling)
   std::vector<double> mass_added;
+  // Rotational freedoms, only when the model has shells or beams (else empty): angular
+  // velocity, moment (internal plus external) and lumped rotational inertia per node.
+  bool rotations = false;
+  NodeVector w, moment, moment_ext;
+  std::vector<double> inertia;
 
   std::vector<SolidBlock> solid_blocks;
-  std::size_t num_elements = 0;
+  std::vector<ShellBlock> shell_blocks;
+  std::vector<BeamBlock> beam_blocks;
+  std::vector<DiscreteBlock> discrete_blocks;
+  std::size_t num_elements = 0;  // held here
+  // Global index of the first element of each family (Model::familyOffset).
+  std::array<int64_t, model::kFamilies> family_offset{};
 
   // Pressure segments computed here (model indices into Model::pressure_loads), each with 4
   // corner slots from pressure_slot_offset on; every segment is computed by exactly one rank.
@@ -128,24 +132,31 @@ struct Subdomain {
   // then local pressure slots, then ghost slots received from neighbours.
   std::vector<double> slots;
   std::size_t num_local_slots = 0;
-  GatherPlan internal;  // element slots -> nodal internal force (and mass)
+  GatherPlan internal;    // element force slots -> nodal internal force (and mass)
+  GatherPlan rotational;  // element moment slots -> nodal moment (and rotational inertia)
   GatherPlan pressure;  // pressure slots -> nodal external force
   std::vector<PeerExchange> peers;
 
   // Sizes of the whole model (this rank holds only part of it).
   int64_t global_nodes = 0;
   int64_t global_solids = 0;
+  int64_t global_elements = 0;  // every family
+  std::array<int64_t, model::kFamilies> global_family{};
 
   std::size_t numNodes() const { return node_model.size(); }
   // Local index of a model node, or model::kNone if this rank does not hold it.
   int32_t localNode(int32_t model_node) const;
-  // User id and part id of a solid held here, by model index; 0 if not held here.
-  int64_t elementId(int32_t model_index) const;
-  int64_t elementPart(int32_t model_index) const;
+  // User id and part id of an element held here, by global element index; 0 if not held.
+  int64_t elementId(int64_t global_index) const;
+  int64_t elementPart(int64_t global_index) const;
+  // Global index of element `index` of a family.
+  int64_t globalElement(model::Family family, int32_t index) const {
+    return family_offset[static_cast<std::size_t>(family)] + index;
+  }
 };
 
 // Builds rank `rank`'s subdomain from the element -> rank map of the whole model (one entry
-// per model solid). Nodes attached to no element are kept by rank 0.
+// per model element, global numbering). Nodes attached to no element are kept by rank 0.
 Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& elem_rank, int rank,
                          int num_ranks);
 

@@ -82,8 +82,15 @@ Law makeLaw(const model::Material& m, const model::Model& model) {
           pk.srp = law.srp;
           pk.fs = law.fs;
           return pk;
+        } else if constexpr (std::is_same_v<T, model::RigidLaw>) {
+          // A rigid part computes no stress; its elastic constants serve contact stiffness.
+          checkElastic(m, "*MAT_RIGID", law.E, law.nu);
+          return Elastic{moduliFromYoung(law.E, law.nu)};
+        } else if constexpr (!std::is_same_v<T, model::PiecewiseLinearLaw>) {
+          throw util::InputError(at(m, model::materialKeyword(m.law)) +
+                                 "is a spring or damper material: only discrete elements "
+                                 "(*ELEMENT_DISCRETE) can use it");
         } else {
-          static_assert(std::is_same_v<T, model::PiecewiseLinearLaw>);
           const char* kw = "*MAT_PIECEWISE_LINEAR_PLASTICITY";
           checkElastic(m, kw, law.E, law.nu);
           PiecewiseLinear pl;

@@ -170,9 +170,9 @@ const std::vector<int32_t>& Context::partNodes(int32_t part) {
   auto it = part_nodes_.find(part);
   if (it != part_nodes_.end()) return it->second;
   std::vector<int32_t> nodes;
-  for (std::size_t e = 0; e < model.solids.size(); ++e)
-    if (model.solids.part[e] == part)
-      nodes.insert(nodes.end(), model.solids.nodes[e].begin(), model.solids.nodes[e].end());
+  int32_t n[8];
+  for (std::size_t g = 0; g < model.numElements(); ++g)
+    if (model.elementPart(g) == part) nodes.insert(nodes.end(), n, n + model.elementNodes(g, n));
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   return part_nodes_.emplace(part, std::move(nodes)).first->second;
@@ -252,9 +252,28 @@ const std::vector<Meaning>& meanings() {
        U::Definition,
        Kind::Section},
       {"*SECTION_SOLID", 1, readSectionSolid, {"TITLE"}, U::Definition, Kind::Section},
+      {"*SECTION_SHELL", 1, readSectionShell, {"TITLE"}, U::Definition, Kind::Section},
+      {"*SECTION_BEAM", 1, readSectionBeam, {"TITLE"}, U::Definition, Kind::Section},
+      {"*SECTION_DISCRETE", 1, readSectionDiscrete, {"TITLE"}, U::Definition, Kind::Section},
+      {"*MAT_RIGID", 1, readMatRigid, {"TITLE"}, U::Definition, Kind::Material},
+      {"*MAT_020", 1, readMatRigid, {"TITLE"}, U::Definition, Kind::Material},
+      {"*MAT_SPRING_ELASTIC", 1, readMatSpringElastic, {"TITLE"}, U::Definition, Kind::Material},
+      {"*MAT_S01", 1, readMatSpringElastic, {"TITLE"}, U::Definition, Kind::Material},
+      {"*MAT_DAMPER_VISCOUS", 1, readMatDamperViscous, {"TITLE"}, U::Definition, Kind::Material},
+      {"*MAT_S02", 1, readMatDamperViscous, {"TITLE"}, U::Definition, Kind::Material},
+      {"*MAT_SPRING_NONLINEAR_ELASTIC",
+       1,
+       readMatSpringNonlinear,
+       {"TITLE"},
+       U::Definition,
+       Kind::Material},
+      {"*MAT_S04", 1, readMatSpringNonlinear, {"TITLE"}, U::Definition, Kind::Material},
       {"*HOURGLASS", 1, readHourglass, {"TITLE"}, U::Definition, Kind::Hourglass},
       {"*PART", 2, readParts, {}, U::Reject},
       {"*ELEMENT_SOLID", 3, readSolids, {}, U::Reject},
+      {"*ELEMENT_SHELL", 3, readShells, {"THICKNESS"}, U::Reject},
+      {"*ELEMENT_BEAM", 3, readBeams, {}, U::Reject},
+      {"*ELEMENT_DISCRETE", 3, readDiscretes, {}, U::Reject},
       {"*SET_NODE",
        4,
        readNodeSetList,
@@ -288,7 +307,7 @@ const std::vector<Meaning>& meanings() {
       {"*CONTROL_SOLID", 6, readIgnoredControl, {}},
       {"*CONTROL_ACCURACY", 6, readIgnoredControl, {}},
       {"*CONTROL_OUTPUT", 6, readIgnoredControl, {}},
-      {"*CONTROL_SHELL", 6, readIgnoredControl, {}},
+      {"*CONTROL_SHELL", 6, readControlShell, {}},
       {"*CONTROL_CONTACT", 6, readIgnoredControl, {}},
       {"*CONTROL_SOLUTION", 6, readIgnoredControl, {}},
       {"*DATABASE_EXTENT_BINARY", 6, readIgnoredControl, {}},
@@ -458,9 +477,10 @@ Model readModel(const std::filesystem::path& path, const ReadOptions& options) {
   finishControls(ctx);
   if (model.nodes.size() == 0)
     throw util::InputError(path.string() + ": the deck defines no nodes (*NODE)");
-  if (model.solids.size() == 0 && !options.allow_unsupported)
+  if (model.numElements() == 0 && !options.allow_unsupported)
     throw util::InputError(path.string() +
-                           ": the deck defines no elements Crumple can run (*ELEMENT_SOLID)");
+                           ": the deck defines no elements Crumple can run (*ELEMENT_SOLID, "
+                           "_SHELL, _BEAM or _DISCRETE)");
   model.finalize();
   return model;
 }

@@ -106,7 +106,7 @@ class Context {
                                                         std::string_view field, int64_t id) const;
   const Box& box(const deck::Card& card, std::string_view field, int64_t id) const;
   const Frame& frame(const deck::Card& card, std::string_view field, int64_t id) const;
-  // Nodes of the solid elements of a part, ascending.
+  // Nodes of the elements of a part (every family), ascending.
   const std::vector<int32_t>& partNodes(int32_t part);
 
   // ---- build state -------------------------------------------------------------------------
@@ -124,13 +124,21 @@ class Context {
     int32_t file, line;
   };
   std::vector<NodeInput> node_input;
-  struct SolidInput {
+  // Elements as read, before sorting by id. `real` and `aux` carry what a family adds:
+  // shell corner thicknesses, the beam orientation node, discrete scale and offset.
+  template <int N>
+  struct ElementInput {
     int64_t id;
     int32_t part;
-    std::array<int32_t, 8> nodes;
+    std::array<int32_t, N> nodes;
     int32_t file, line;
+    std::array<double, 4> real{};
+    int32_t aux = kNone;
   };
-  std::vector<SolidInput> solid_input;
+  std::vector<ElementInput<8>> solid_input;
+  std::vector<ElementInput<4>> shell_input;
+  std::vector<ElementInput<2>> beam_input, discrete_input;
+  std::unordered_map<int64_t, SectionKind> section_kind;  // by section id
   std::map<int32_t, DofMask> spc_masks;
   int64_t d3plot_npltc = 0;
   int64_t erode_flag = 0;  // *CONTROL_TIMESTEP ERODE
@@ -162,7 +170,31 @@ void readUnsupportedDefinition(Context&, const deck::Keyword&, Kind kind);
 void finishNodes(Context&);
 void finishDefinitions(Context&);
 void finishParts(Context&);
-void finishSolids(Context&);
+void finishSolids(Context&);  // sorts and checks every element family
+
+// build_structures.cpp: shells, beams, discrete elements, their sections and materials
+void readShells(Context&, const deck::Keyword&, const KeywordOptions&);
+void readBeams(Context&, const deck::Keyword&, const KeywordOptions&);
+void readDiscretes(Context&, const deck::Keyword&, const KeywordOptions&);
+void readSectionShell(Context&, const deck::Keyword&, const KeywordOptions&);
+void readSectionBeam(Context&, const deck::Keyword&, const KeywordOptions&);
+void readSectionDiscrete(Context&, const deck::Keyword&, const KeywordOptions&);
+void readMatRigid(Context&, const deck::Keyword&, const KeywordOptions&);
+void readMatSpringElastic(Context&, const deck::Keyword&, const KeywordOptions&);
+void readMatDamperViscous(Context&, const deck::Keyword&, const KeywordOptions&);
+void readMatSpringNonlinear(Context&, const deck::Keyword&, const KeywordOptions&);
+
+void readControlShell(Context&, const deck::Keyword&, const KeywordOptions&);
+// An element of `kind` in a part whose section is of another kind: InputError at PID.
+void checkSectionKind(Context& ctx, const deck::Card& c, int32_t part, SectionKind kind);
+
+// Helpers shared by the build_*.cpp readers (build_mesh.cpp).
+int64_t positiveId(const deck::Card& c, std::string_view field);
+std::string readTitleCard(deck::CardCursor& cur, const deck::KeywordSpec& spec,
+                          const KeywordOptions& opts);
+// MID and RO of card 1 (the definition is recorded; RO must be positive).
+Material readMaterialBase(Context& ctx, const deck::Card& c, std::string title);
+void checkElastic(const deck::Card& c, double E, double nu);
 
 // build_sets.cpp
 void readCurve(Context&, const deck::Keyword&, const KeywordOptions&);

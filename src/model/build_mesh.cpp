@@ -9,22 +9,16 @@
 
 namespace crumple::model::build {
 
-namespace {
-
 using deck::Card;
 using deck::CardCursor;
 using deck::keywordSpec;
+
+namespace {
 
 // *NODE TC/RC codes (Keyword Manual, *NODE): 1 x, 2 y, 3 z, 4 x+y, 5 y+z, 6 z+x, 7 all.
 DofMask codeMask(int code) {
   static constexpr DofMask masks[8] = {0, 1, 2, 4, 3, 6, 5, 7};
   return masks[code];
-}
-
-int64_t positiveId(const Card& c, std::string_view field) {
-  const int64_t id = c.integer(field);
-  if (id <= 0) c.fail(field, "the id must be a positive integer, not " + std::to_string(id));
-  return id;
 }
 
 // Order of `ids` ascending (stable for equal ids, so the first definition comes first).
@@ -37,11 +31,20 @@ std::vector<std::size_t> ascending(std::size_t n, Get id) {
   return order;
 }
 
-std::string title(CardCursor& cur, const deck::KeywordSpec& spec, const KeywordOptions& opts) {
+}  // namespace
+
+int64_t positiveId(const Card& c, std::string_view field) {
+  const int64_t id = c.integer(field);
+  if (id <= 0) c.fail(field, "the id must be a positive integer, not " + std::to_string(id));
+  return id;
+}
+
+std::string readTitleCard(CardCursor& cur, const deck::KeywordSpec& spec,
+                          const KeywordOptions& opts) {
   return opts.has("TITLE") ? cur.read(spec.card("title card")).text("TITLE") : std::string{};
 }
 
-// MID, RO, E, PR of card 1, shared by the three materials, checked as LS-DYNA requires.
+// MID and RO of card 1, shared by the materials, checked as LS-DYNA requires.
 Material readMaterialBase(Context& ctx, const Card& c, std::string t) {
   Material m;
   m.id = positiveId(c, "MID");
@@ -58,9 +61,15 @@ void checkElastic(const Card& c, double E, double nu) {
   if (!(nu > -1.0 && nu < 0.5)) c.fail("PR", "Poisson's ratio must lie in (-1, 0.5)");
 }
 
+namespace {
+
 void checkYield(const Card& c, double E, double sigy, double etan) {
   if (sigy <= 0) c.fail("SIGY", "the yield stress must be positive");
   if (etan < 0 || etan >= E) c.fail("ETAN", "the tangent modulus must lie in [0, E)");
+}
+
+std::string title(CardCursor& cur, const deck::KeywordSpec& spec, const KeywordOptions& opts) {
+  return readTitleCard(cur, spec, opts);
 }
 
 }  // namespace
@@ -122,6 +131,7 @@ void readSolids(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
     const int64_t eid = positiveId(c, "EID");
     const int32_t part = ctx.part(c, "PID", c.integer("PID"));
     if (!ctx.part_problem[part].empty()) ctx.reject(c, "PID", ctx.part_problem[part]);
+    checkSectionKind(ctx, c, part, SectionKind::Solid);
     // Card 1 with EID and PID only: the nodes follow on a second card of ten 8-character
     // fields (Keyword Manual, *ELEMENT_SOLID, the format of 10-node tetrahedra that
     // pre-processors also use for hexahedra).
@@ -139,7 +149,7 @@ void readSolids(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
     // A tetrahedron given by N1..N4 alone: LS-DYNA's degenerate form repeats N4 (n4=...=n8).
     if (ids[3] != 0 && std::all_of(ids.begin() + 4, ids.end(), [](int64_t n) { return n == 0; }))
       std::fill(ids.begin() + 4, ids.end(), ids[3]);
-    Context::SolidInput s{eid, part, {}, c.fileIndex(), c.lineNumber()};
+    Context::ElementInput<8> s{eid, part, {}, c.fileIndex(), c.lineNumber()};
     for (int i = 0; i < 8; ++i) {
       if (ids[i] == 0) nc->fail(kN[i], "node id missing");
       s.nodes[i] = ctx.node(*nc, kN[i], ids[i]);
@@ -149,28 +159,49 @@ void readSolids(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
   }
 }
 
-void finishSolids(Context& ctx) {
-  auto& in = ctx.solid_input;
+namespace {
+
+// Sorts one family's elements by id, refuses duplicates and moves them into the model list;
+// `extra(list, input)` appends what the family adds.
+template <int N, class List, class Extra>
+void finishFamily(Context& ctx, std::vector<Context::ElementInput<N>>& in, List& list,
+                  std::string_view keyword, Extra&& extra) {
   const auto order = ascending(in.size(), [&](std::size_t i) { return in[i].id; });
-  Solids& solids = ctx.model.solids;
-  solids.id.reserve(in.size());
-  solids.part.reserve(in.size());
-  solids.nodes.reserve(in.size());
+  list.id.reserve(in.size());
+  list.part.reserve(in.size());
+  list.nodes.reserve(in.size());
   for (std::size_t k = 0; k < order.size(); ++k) {
     const auto& e = in[order[k]];
     if (k > 0 && in[order[k - 1]].id == e.id) {
       const auto& first = in[order[k - 1]];
-      throw util::InputError(ctx.deck.loc(e.file, e.line).str() +
-                             ": *ELEMENT_SOLID card 1 field 1 (EID): element " +
-                             std::to_string(e.id) + " is already defined at " +
+      throw util::InputError(ctx.deck.loc(e.file, e.line).str() + ": " + std::string(keyword) +
+                             " card 1 field 1 (EID): element " + std::to_string(e.id) +
+                             " is already defined at " +
                              ctx.deck.loc(first.file, first.line).str());
     }
-    solids.id.push_back(e.id);
-    solids.part.push_back(e.part);
-    solids.nodes.push_back(e.nodes);
+    list.id.push_back(e.id);
+    list.part.push_back(e.part);
+    list.nodes.push_back(e.nodes);
+    extra(list, e);
   }
   in.clear();
   in.shrink_to_fit();
+}
+
+}  // namespace
+
+void finishSolids(Context& ctx) {
+  auto none = [](auto&, const auto&) {};
+  finishFamily(ctx, ctx.solid_input, ctx.model.solids, "*ELEMENT_SOLID", none);
+  finishFamily(ctx, ctx.shell_input, ctx.model.shells, "*ELEMENT_SHELL",
+               [](Shells& s, const Context::ElementInput<4>& e) { s.thickness.push_back(e.real); });
+  finishFamily(ctx, ctx.beam_input, ctx.model.beams, "*ELEMENT_BEAM",
+               [](Beams& b, const Context::ElementInput<2>& e) { b.orientation.push_back(e.aux); });
+  finishFamily(ctx, ctx.discrete_input, ctx.model.discretes, "*ELEMENT_DISCRETE",
+               [](Discretes& d, const Context::ElementInput<2>& e) {
+                 d.scale.push_back(e.real[0]);
+                 d.offset.push_back(e.real[1]);
+               });
 }
 
 void readParts(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
@@ -198,6 +229,7 @@ void readParts(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
       return kNone;
     };
     p.section = resolve("SECID", Kind::Section, ctx.section_index);
+    if (p.section != kNone) p.section_kind = ctx.section_kind.at(c.integer("SECID"));
     p.material = resolve("MID", Kind::Material, ctx.material_index);
     if (const int64_t hg = c.integer("HGID"); hg != 0) {
       auto it = ctx.hourglass_index.find(hg);
@@ -232,6 +264,18 @@ void finishParts(Context& ctx) {
   }
   parts = std::move(sorted);
   ctx.part_problem = std::move(problems);
+  // Springs and dampers take spring materials, and nothing else does.
+  for (const Part& p : parts) {
+    if (p.section == kNone || p.material == kNone) continue;
+    const Material& m = ctx.model.materials[static_cast<std::size_t>(p.material)];
+    const bool discrete = p.section_kind == SectionKind::Discrete;
+    if (discrete != isDiscreteLaw(m.law))
+      throw util::InputError(p.where.str() + ": *PART card 2 field 3 (MID): part " +
+                             std::to_string(p.id) + " has " +
+                             (discrete ? "a *SECTION_DISCRETE section but material "
+                                       : "a continuum section but the spring material ") +
+                             std::to_string(m.id) + " (" + materialKeyword(m.law) + ")");
+  }
   ctx.model.finalize();
 }
 
@@ -406,7 +450,21 @@ void finishDefinitions(Context& ctx) {
     for (std::size_t i = 0; i < v.size(); ++i) index.emplace(v[i].id, static_cast<int32_t>(i));
   };
   sortById(ctx.model.materials, ctx.material_index);
-  sortById(ctx.model.solid_sections, ctx.section_index);
+  // Section ids are one name space over every *SECTION kind (Keyword Manual, *PART SECID).
+  std::unordered_map<int64_t, int32_t> index;
+  ctx.section_index.clear();
+  ctx.section_kind.clear();
+  auto sections = [&](auto& list, SectionKind kind) {
+    sortById(list, index);
+    for (const auto& [id, i] : index) {
+      ctx.section_index[id] = i;
+      ctx.section_kind[id] = kind;
+    }
+  };
+  sections(ctx.model.solid_sections, SectionKind::Solid);
+  sections(ctx.model.shell_sections, SectionKind::Shell);
+  sections(ctx.model.beam_sections, SectionKind::Beam);
+  sections(ctx.model.discrete_sections, SectionKind::Discrete);
   sortById(ctx.model.hourglass, ctx.hourglass_index);
 }
 

@@ -1,6 +1,8 @@
 #include "model/model.hpp"
 
 #include <algorithm>
+#include <iterator>
+#include <string>
 
 namespace crumple::model {
 
@@ -55,9 +57,120 @@ int32_t Model::curveIndex(int64_t id) const {
   return find(curve_index_, id);
 }
 
+const char* materialKeyword(const MaterialLaw& law) {
+  static constexpr const char* kNames[] = {"*MAT_ELASTIC",
+                                           "*MAT_PLASTIC_KINEMATIC",
+                                           "*MAT_PIECEWISE_LINEAR_PLASTICITY",
+                                           "*MAT_RIGID",
+                                           "*MAT_SPRING_ELASTIC",
+                                           "*MAT_DAMPER_VISCOUS",
+                                           "*MAT_SPRING_NONLINEAR_ELASTIC"};
+  static_assert(std::size(kNames) == std::variant_size_v<MaterialLaw>);
+  return kNames[law.index()];
+}
+
+bool isDiscreteLaw(const MaterialLaw& law) {
+  return std::holds_alternative<SpringElasticLaw>(law) ||
+         std::holds_alternative<DamperViscousLaw>(law) ||
+         std::holds_alternative<SpringNonlinearLaw>(law);
+}
+
+const char* familyName(Family f) {
+  switch (f) {
+    case Family::Solid:
+      return "solid";
+    case Family::Shell:
+      return "shell";
+    case Family::Beam:
+      return "beam";
+    case Family::Discrete:
+      return "discrete";
+  }
+  return "element";
+}
+
+std::size_t Model::familySize(Family f) const {
+  switch (f) {
+    case Family::Solid:
+      return solids.size();
+    case Family::Shell:
+      return shells.size();
+    case Family::Beam:
+      return beams.size();
+    case Family::Discrete:
+      return discretes.size();
+  }
+  return 0;
+}
+
+std::size_t Model::familyOffset(Family f) const {
+  std::size_t offset = 0;
+  for (int k = 0; k < static_cast<int>(f); ++k) offset += familySize(static_cast<Family>(k));
+  return offset;
+}
+
+std::size_t Model::numElements() const {
+  return solids.size() + shells.size() + beams.size() + discretes.size();
+}
+
+std::pair<Family, int32_t> Model::element(std::size_t g) const {
+  for (int k = 0; k < kFamilies; ++k) {
+    const auto f = static_cast<Family>(k);
+    const std::size_t n = familySize(f);
+    if (g < n) return {f, static_cast<int32_t>(g)};
+    g -= n;
+  }
+  return {Family::Solid, kNone};
+}
+
+namespace {
+template <class List>
+int copyNodes(const List& list, int32_t i, int32_t out[8]) {
+  const auto& n = list.nodes[static_cast<std::size_t>(i)];
+  for (int a = 0; a < List::kNodes; ++a) out[a] = n[static_cast<std::size_t>(a)];
+  return List::kNodes;
+}
+template <class F>
+auto onFamily(const Model& m, std::size_t g, F&& f) {
+  const auto [family, i] = m.element(g);
+  switch (family) {
+    case Family::Shell:
+      return f(m.shells, i);
+    case Family::Beam:
+      return f(m.beams, i);
+    case Family::Discrete:
+      return f(m.discretes, i);
+    default:
+      return f(m.solids, i);
+  }
+}
+}  // namespace
+
+int Model::elementNodes(std::size_t g, int32_t out[8]) const {
+  return onFamily(*this, g, [&](const auto& list, int32_t i) { return copyNodes(list, i, out); });
+}
+
+int32_t Model::elementPart(std::size_t g) const {
+  return onFamily(*this, g, [](const auto& list, int32_t i) {
+    return list.part[static_cast<std::size_t>(i)];
+  });
+}
+
+int64_t Model::elementId(std::size_t g) const {
+  return onFamily(*this, g,
+                  [](const auto& list, int32_t i) { return list.id[static_cast<std::size_t>(i)]; });
+}
+
+std::string Model::elementName(std::size_t g) const {
+  return std::string(familyName(element(g).first)) + " element " + std::to_string(elementId(g));
+}
+
 void Model::releaseMesh() {
   nodes = Nodes{};
   solids = Solids{};
+  shells = Shells{};
+  beams = Beams{};
+  discretes = Discretes{};
   node_sets.clear();
   part_sets.clear();
   segment_sets.clear();

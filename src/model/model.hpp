@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -55,7 +56,34 @@ struct PiecewiseLinearLaw {  // *MAT_PIECEWISE_LINEAR_PLASTICITY (024)
   int32_t lcss = kNone;  // curve index: yield stress vs effective plastic strain
   double tdel = 0;       // minimum time step for automatic element deletion
 };
-using MaterialLaw = std::variant<ElasticLaw, PlasticKinematicLaw, PiecewiseLinearLaw>;
+// *MAT_RIGID (020): the part moves as one rigid body. E and nu only size the contact
+// stiffness and the time step of nothing (rigid elements have no step). CMO/CON1/CON2 fix
+// global translations and rotations of the body's centre of mass (Keyword Manual, *MAT_020).
+struct RigidLaw {
+  double E = 0, nu = 0;
+  int cmo = 0;        // 0 free, 1 constraints in global directions (CON1 / CON2 codes)
+  int con1 = 0;       // translation code: 0 none, 1 x, 2 y, 3 z, 4 xy, 5 yz, 6 zx, 7 all
+  int con2 = 0;       // rotation code, same digits
+};
+// *MAT_SPRING_ELASTIC (S01): F = K dL.
+struct SpringElasticLaw {
+  double k = 0;
+};
+// *MAT_DAMPER_VISCOUS (S02): F = DC dL/dt.
+struct DamperViscousLaw {
+  double dc = 0;
+};
+// *MAT_SPRING_NONLINEAR_ELASTIC (S04): F = curve(dL).
+struct SpringNonlinearLaw {
+  int32_t curve = kNone;
+};
+using MaterialLaw = std::variant<ElasticLaw, PlasticKinematicLaw, PiecewiseLinearLaw, RigidLaw,
+                                 SpringElasticLaw, DamperViscousLaw, SpringNonlinearLaw>;
+
+// "*MAT_ELASTIC", "*MAT_RIGID", ... for messages and summaries.
+const char* materialKeyword(const MaterialLaw& law);
+// Laws of discrete elements (springs and dampers), as opposed to continuum and rigid laws.
+bool isDiscreteLaw(const MaterialLaw& law);
 
 struct Material {
   int64_t id = 0;
@@ -72,6 +100,41 @@ struct SectionSolid {
   util::SourceLoc where;
 };
 
+// *SECTION_SHELL: ELFORM 2 Belytschko-Tsay (default), 4 C0 triangle; NIP points through the
+// thickness, Gauss or (QR/IRID = -? / Lobatto) Lobatto; T1-T4 corner thicknesses.
+struct SectionShell {
+  int64_t id = 0;
+  int elform = 2;
+  double shrf = 1.0;  // transverse shear factor (LS-DYNA default 1; 5/6 recommended)
+  int nip = 2;
+  bool lobatto = false;
+  std::array<double, 4> t{};
+  util::SourceLoc where;
+};
+
+// *SECTION_BEAM: ELFORM 1 Hughes-Liu (CST 0 rectangular, 1 tubular: TS/TT thicknesses or
+// outer/inner diameters at the two ends), 2 Belytschko-Schwer resultant and 3 truss (A, ISS,
+// ITT, J, SA).
+struct SectionBeam {
+  int64_t id = 0;
+  int elform = 1;
+  double shrf = 1.0;
+  int qr = 2;
+  int cst = 0;
+  double ts1 = 0, ts2 = 0, tt1 = 0, tt2 = 0;
+  double a = 0, iss = 0, itt = 0, j = 0, sa = 0;
+  util::SourceLoc where;
+};
+
+// *SECTION_DISCRETE: translational springs and dampers (DRO 0).
+struct SectionDiscrete {
+  int64_t id = 0;
+  int dro = 0;
+  util::SourceLoc where;
+};
+
+enum class SectionKind : uint8_t { Solid = 0, Shell = 1, Beam = 2, Discrete = 3 };
+
 // *HOURGLASS / *CONTROL_HOURGLASS. IHQ 1-3 viscous, 4-5 Flanagan-Belytschko stiffness.
 struct Hourglass {
   int64_t id = 0;
@@ -82,7 +145,8 @@ struct Hourglass {
 struct Part {
   int64_t id = 0;
   std::string title;
-  int32_t section = kNone;    // index into Model::solid_sections
+  SectionKind section_kind = SectionKind::Solid;
+  int32_t section = kNone;    // index into the Model's sections of that kind
   int32_t material = kNone;   // index into Model::materials
   int32_t hourglass = kNone;  // index into Model::hourglass; kNone = *CONTROL_HOURGLASS
   util::SourceLoc where;
@@ -95,14 +159,41 @@ struct Nodes {
   std::size_t size() const { return id.size(); }
 };
 
-// 8-node hexahedra; wedges and tetrahedra as degenerate hexes (repeated node indices),
-// the LS-DYNA convention (tet: n4=n5=n6=n7=n8; wedge: n5=n6, n7=n8).
-struct Solids {
+// Elements of one family with N nodes each, ascending user id.
+template <int N>
+struct ElementList {
+  static constexpr int kNodes = N;
   std::vector<int64_t> id;                    // ascending
   std::vector<int32_t> part;                  // index into Model::parts
-  std::vector<std::array<int32_t, 8>> nodes;  // node indices
+  std::vector<std::array<int32_t, N>> nodes;  // node indices
   std::size_t size() const { return id.size(); }
 };
+
+// 8-node hexahedra; wedges and tetrahedra as degenerate hexes (repeated node indices),
+// the LS-DYNA convention (tet: n4=n5=n6=n7=n8; wedge: n5=n6, n7=n8).
+struct Solids : ElementList<8> {};
+
+// 4-node shells; n3 == n4 is a triangle (LS-DYNA convention).
+struct Shells : ElementList<4> {
+  // *ELEMENT_SHELL_THICKNESS corner thicknesses; all zero = the section's.
+  std::vector<std::array<double, 4>> thickness;
+};
+
+// 2-node beams with an optional orientation node (third node, kNone if none).
+struct Beams : ElementList<2> {
+  std::vector<int32_t> orientation;
+};
+
+// 2-node discrete springs and dampers, with the S (scale) and OFFSET fields.
+struct Discretes : ElementList<2> {
+  std::vector<double> scale, offset;
+};
+
+// Element families. Elements are numbered globally in this order (all solids, then all
+// shells, beams and discrete elements), which is the "global element order" of the slots.
+enum class Family : uint8_t { Solid = 0, Shell = 1, Beam = 2, Discrete = 3 };
+inline constexpr int kFamilies = 4;
+const char* familyName(Family f);  // "solid", "shell", "beam", "discrete"
 
 // ---- loads, constraints and initial conditions ---------------------------------------------
 enum class Dof : uint8_t { X = 0, Y = 1, Z = 2 };
@@ -185,6 +276,9 @@ struct Controls {
   bool hourglass_energy = false;  // *CONTROL_ENERGY HGEN == 2
   bool rigidwall_energy = true;   // RWEN == 2 (default)
   bool erode_on_dtmin = false;    // derived from TDEL of any material
+  bool shell_bwc = false;               // *CONTROL_SHELL BWC = 1 (warping correction)
+  bool shell_thickness_update = false;  // ISTUPD != 0
+  bool shell_lobatto = false;           // INTGRD = 1
   double d3plot_dt = 0.0;         // *DATABASE_BINARY_D3PLOT DT; 0 = first and last state
   double glstat_dt = 0.0;         // *DATABASE_GLSTAT; 0 = not requested
   double matsum_dt = 0.0;
@@ -212,8 +306,14 @@ struct Model {
 
   Nodes nodes;
   Solids solids;
+  Shells shells;
+  Beams beams;
+  Discretes discretes;
   std::vector<Part> parts;  // ascending id
   std::vector<SectionSolid> solid_sections;
+  std::vector<SectionShell> shell_sections;
+  std::vector<SectionBeam> beam_sections;
+  std::vector<SectionDiscrete> discrete_sections;
   std::vector<Material> materials;
   std::vector<Hourglass> hourglass;
   std::vector<Curve> curves;
@@ -236,6 +336,20 @@ struct Model {
   Controls controls;
   std::vector<UnsupportedKeyword> unsupported;
   std::vector<IgnoredField> ignored;
+
+  // ---- the global element numbering (solids, shells, beams, discretes) ----------------------
+  std::size_t familySize(Family f) const;
+  std::size_t familyOffset(Family f) const;  // global index of the family's first element
+  std::size_t numElements() const;
+  // Family and index within it of global element g.
+  std::pair<Family, int32_t> element(std::size_t g) const;
+  // The nodes that carry forces of global element g (solid 8, shell 4, beam and discrete 2),
+  // written to out; returns the count.
+  int elementNodes(std::size_t g, int32_t out[8]) const;
+  int32_t elementPart(std::size_t g) const;
+  int64_t elementId(std::size_t g) const;
+  // "shell element 12" for messages.
+  std::string elementName(std::size_t g) const;
 
   // Lookups from user id to model index (kNone if absent).
   int32_t nodeIndex(int64_t id) const;

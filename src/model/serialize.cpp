@@ -26,11 +26,25 @@ void fields(A& a, M& m) {
   a(m.solids.id);
   a(m.solids.part);
   a(m.solids.nodes);
+  a(m.shells.id);
+  a(m.shells.part);
+  a(m.shells.nodes);
+  a(m.shells.thickness);
+  a(m.beams.id);
+  a(m.beams.part);
+  a(m.beams.nodes);
+  a(m.beams.orientation);
+  a(m.discretes.id);
+  a(m.discretes.part);
+  a(m.discretes.nodes);
+  a(m.discretes.scale);
+  a(m.discretes.offset);
   a.count(
       m.parts.size(),
       [&](auto& p) {
         a(p.id);
         a(p.title);
+        a(p.section_kind);
         a(p.section);
         a(p.material);
         a(p.hourglass);
@@ -45,6 +59,46 @@ void fields(A& a, M& m) {
         loc(a, s.where);
       },
       m.solid_sections);
+  a.count(
+      m.shell_sections.size(),
+      [&](auto& s) {
+        a(s.id);
+        a(s.elform);
+        a(s.shrf);
+        a(s.nip);
+        a(s.lobatto);
+        a(s.t);
+        loc(a, s.where);
+      },
+      m.shell_sections);
+  a.count(
+      m.beam_sections.size(),
+      [&](auto& s) {
+        a(s.id);
+        a(s.elform);
+        a(s.shrf);
+        a(s.qr);
+        a(s.cst);
+        a(s.ts1);
+        a(s.ts2);
+        a(s.tt1);
+        a(s.tt2);
+        a(s.a);
+        a(s.iss);
+        a(s.itt);
+        a(s.j);
+        a(s.sa);
+        loc(a, s.where);
+      },
+      m.beam_sections);
+  a.count(
+      m.discrete_sections.size(),
+      [&](auto& s) {
+        a(s.id);
+        a(s.dro);
+        loc(a, s.where);
+      },
+      m.discrete_sections);
   a.count(
       m.materials.size(),
       [&](auto& mat) {
@@ -144,22 +198,22 @@ struct Reader {
     items.resize(n);
     for (auto& x : items) each(x);
   }
+  template <std::size_t I = 0>
+  static void emplace(MaterialLaw& law, uint64_t index) {
+    if constexpr (I < std::variant_size_v<MaterialLaw>) {
+      if (index == I) {
+        law.emplace<I>();
+        return;
+      }
+      emplace<I + 1>(law, index);
+    } else {
+      throw std::runtime_error("archive: unknown material law");
+    }
+  }
   void variant(MaterialLaw& law) {
     uint64_t index = 0;
     r.get(index);
-    switch (index) {
-      case 0:
-        law = ElasticLaw{};
-        break;
-      case 1:
-        law = PlasticKinematicLaw{};
-        break;
-      case 2:
-        law = PiecewiseLinearLaw{};
-        break;
-      default:
-        throw std::runtime_error("archive: unknown material law");
-    }
+    emplace(law, index);
     std::visit([&](auto& l) { r.get(l); }, law);
   }
 };

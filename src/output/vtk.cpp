@@ -143,6 +143,27 @@ VtkCell classify(const int32_t* h) {
   return cell;
 }
 
+// Shells: a quadrilateral, or a triangle when n3 == n4 (LS-DYNA's degenerate shell); beams and
+// springs: a line.
+VtkCell classifySurfaceOrLine(const int32_t* h, int size) {
+  constexpr uint8_t kVtkLine = 3, kVtkTriangle = 5, kVtkQuad = 9;
+  VtkCell cell;
+  if (size == 2) {
+    cell.type = kVtkLine;
+    cell.count = 2;
+    cell.nodes = {h[0], h[1]};
+  } else if (h[2] == h[3]) {
+    cell.type = kVtkTriangle;
+    cell.count = 3;
+    cell.nodes = {h[0], h[1], h[2]};
+  } else {
+    cell.type = kVtkQuad;
+    cell.count = 4;
+    cell.nodes = {h[0], h[1], h[2], h[3]};
+  }
+  return cell;
+}
+
 // The appended section: each block is a UInt64 byte count followed by the bytes, and each
 // DataArray names its block by the offset of that count from the first byte after '_'.
 class AppendedData {
@@ -214,14 +235,18 @@ void writeVtu(const std::filesystem::path& path, const MeshView& mesh,
   types.reserve(mesh.num_cells);
   for (std::size_t c = 0; c < mesh.num_cells; ++c) {
     const int32_t* h = mesh.hex_nodes + 8 * c;
-    for (int i = 0; i < 8; ++i) {
+    const int size = mesh.cell_sizes != nullptr ? mesh.cell_sizes[c] : 8;
+    if (size != 8 && size != 4 && size != 2)
+      throw std::invalid_argument(
+          fmt::format("writing '{}': cell {} has {} nodes (8, 4 or 2)", path.string(), c, size));
+    for (int i = 0; i < size; ++i) {
       if (h[i] < 0 || static_cast<std::size_t>(h[i]) >= mesh.num_points) {
         throw std::invalid_argument(
             fmt::format("writing '{}': cell {} refers to point {} but the mesh has {} points",
                         path.string(), c, h[i], mesh.num_points));
       }
     }
-    const VtkCell cell = classify(h);
+    const VtkCell cell = size == 8 ? classify(h) : classifySurfaceOrLine(h, size);
     connectivity.insert(connectivity.end(), cell.nodes.begin(), cell.nodes.begin() + cell.count);
     offsets.push_back(static_cast<int64_t>(connectivity.size()));
     types.push_back(cell.type);

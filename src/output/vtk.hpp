@@ -13,11 +13,14 @@ namespace crumple::output {
 // Cells are given as 8-node hexahedra in LS-DYNA ordering, possibly degenerate
 // (tetrahedron: n4=n5=n6=n7=n8; wedge/pentahedron: n5=n6 and n7=n8). The writer emits
 // VTK_HEXAHEDRON, VTK_WEDGE or VTK_TETRA as the node pattern says, so ParaView draws them right.
+// Shells (4 nodes, n3 == n4 a triangle) and beams or springs (2 nodes) are given in the same
+// stride-8 array with their node count in `cell_sizes` (VTK_QUAD, VTK_TRIANGLE, VTK_LINE).
 struct MeshView {
   std::size_t num_points = 0;
   const double* points = nullptr;  // packed xyz, 3*num_points (current coordinates)
   std::size_t num_cells = 0;
-  const int32_t* hex_nodes = nullptr;  // 8*num_cells indices into points
+  const int32_t* hex_nodes = nullptr;     // 8*num_cells indices into points (stride 8)
+  const uint8_t* cell_sizes = nullptr;    // nodes per cell (8, 4 or 2); nullptr: all 8
 };
 
 enum class Association { Point, Cell };

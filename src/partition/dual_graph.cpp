@@ -16,16 +16,16 @@ namespace crumple::partition {
 namespace detail {
 
 Incidence nodeElements(const model::Model& model) {
-  const auto& solids = model.solids;
+  const std::size_t ne = model.numElements();
   const std::size_t nn = model.nodes.size();
   Incidence inc;
   inc.ptr.assign(nn + 1, 0);
   int32_t d[8];
-  for (std::size_t e = 0; e < solids.size(); ++e) {
-    const int k = distinctNodes(solids.nodes[e], d);
+  for (std::size_t e = 0; e < ne; ++e) {
+    const int k = elementDistinctNodes(model, e, d);
     for (int i = 0; i < k; ++i) {
       if (d[i] < 0 || std::size_t(d[i]) >= nn)
-        throw std::invalid_argument("partition: solid " + std::to_string(solids.id[e]) +
+        throw std::invalid_argument("partition: " + model.elementName(e) +
                                     " refers to node index " + std::to_string(d[i]) +
                                     " outside the model");
       ++inc.ptr[std::size_t(d[i]) + 1];
@@ -35,8 +35,8 @@ Incidence nodeElements(const model::Model& model) {
   inc.elem.resize(std::size_t(inc.ptr[nn]));
   std::vector<int64_t> fill(inc.ptr.begin(), inc.ptr.end() - 1);
   // Elements visited in ascending order, so every node's list comes out sorted.
-  for (std::size_t e = 0; e < solids.size(); ++e) {
-    const int k = distinctNodes(solids.nodes[e], d);
+  for (std::size_t e = 0; e < ne; ++e) {
+    const int k = elementDistinctNodes(model, e, d);
     for (int i = 0; i < k; ++i) inc.elem[std::size_t(fill[std::size_t(d[i])]++)] = int32_t(e);
   }
   return inc;
@@ -82,17 +82,41 @@ int elementFaces(const std::array<int32_t, 8>& n, int32_t faces[6][4], int sizes
   return nf;
 }
 
-bool containsAll(const std::array<int32_t, 8>& n, const int32_t* face, int m) {
+// Faces of any element: a solid's as above; a shell's edges (so shells meeting along an edge
+// are neighbours, and a shell lying on a solid's face or edge is the solid's); the two nodes
+// of a beam or discrete element (neighbours through a shared node).
+int anyElementFaces(const model::Model& model, std::size_t g, int32_t faces[6][4], int sizes[6]) {
+  const auto [family, i] = model.element(g);
+  if (family == model::Family::Solid)
+    return elementFaces(model.solids.nodes[std::size_t(i)], faces, sizes);
+  int32_t d[8];
+  const int k = detail::elementDistinctNodes(model, g, d);
+  if (family == model::Family::Shell) {
+    if (k < 3) return 0;
+    for (int a = 0; a < k; ++a) {
+      faces[a][0] = d[a];
+      faces[a][1] = d[(a + 1) % k];
+      sizes[a] = 2;
+    }
+    return k;
+  }
+  for (int a = 0; a < k; ++a) {
+    faces[a][0] = d[a];
+    sizes[a] = 1;
+  }
+  return k;
+}
+
+bool containsAll(const int32_t* n, int count, const int32_t* face, int m) {
   for (int i = 0; i < m; ++i)
-    if (std::find(n.begin(), n.end(), face[i]) == n.end()) return false;
+    if (std::find(n, n + count, face[i]) == n + count) return false;
   return true;
 }
 
 }  // namespace
 
 DualGraph buildDualGraph(const model::Model& model) {
-  const auto& solids = model.solids;
-  const std::size_t ne = solids.size();
+  const std::size_t ne = model.numElements();
   const detail::Incidence inc = detail::nodeElements(model);
 
   // Each element's faces find the elements holding all of the face's nodes. Pairs are recorded
@@ -103,7 +127,7 @@ DualGraph buildDualGraph(const model::Model& model) {
   int32_t faces[6][4];
   int sizes[6];
   for (std::size_t e = 0; e < ne; ++e) {
-    const int nf = elementFaces(solids.nodes[e], faces, sizes);
+    const int nf = anyElementFaces(model, e, faces, sizes);
     for (int f = 0; f < nf; ++f) {
       // Scan the shortest incidence list among the face's nodes.
       int32_t best = faces[f][0];
@@ -115,8 +139,10 @@ DualGraph buildDualGraph(const model::Model& model) {
       }
       for (int64_t j = inc.ptr[std::size_t(best)]; j < inc.ptr[std::size_t(best) + 1]; ++j) {
         const int32_t c = inc.elem[std::size_t(j)];
-        if (std::size_t(c) == e || !containsAll(solids.nodes[std::size_t(c)], faces[f], sizes[f]))
-          continue;
+        if (std::size_t(c) == e) continue;
+        int32_t cn[8];
+        const int cc = model.elementNodes(std::size_t(c), cn);
+        if (!containsAll(cn, cc, faces[f], sizes[f])) continue;
         pairs.emplace_back(int32_t(e), c);
         pairs.emplace_back(c, int32_t(e));
       }

@@ -22,7 +22,20 @@ inline int distinctNodes(const std::array<int32_t, 8>& n, int32_t out[8]) {
   return k;
 }
 
-// CSR node -> elements holding it, each element once per node, elements ascending.
+// Distinct force-carrying nodes of global element g (any family), in order of appearance.
+inline int elementDistinctNodes(const model::Model& model, std::size_t g, int32_t out[8]) {
+  int32_t n[8];
+  const int count = model.elementNodes(g, n);
+  int k = 0;
+  for (int a = 0; a < count; ++a) {
+    bool seen = false;
+    for (int i = 0; i < k; ++i) seen = seen || out[i] == n[a];
+    if (!seen) out[k++] = n[a];
+  }
+  return k;
+}
+
+// CSR node -> elements (global numbering) holding it, each element once per node, ascending.
 struct Incidence {
   std::vector<int64_t> ptr;   // size num_nodes + 1
   std::vector<int32_t> elem;  // size ptr.back()

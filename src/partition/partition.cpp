@@ -33,11 +33,11 @@ std::vector<int32_t> elementWeights(const model::Model& model) {
 }
 
 std::vector<int32_t> elementWeights(const model::Model& model, const Options& opt) {
-  const auto& solids = model.solids;
+  const std::size_t ne = model.numElements();
   if (!(opt.contact_bias > 0.0) || !std::isfinite(opt.contact_bias))
     throw std::invalid_argument("partition: contact_bias must be positive and finite");
-  if (!opt.contact_elements.empty() && opt.contact_elements.size() != solids.size())
-    throw std::invalid_argument("partition: contact_elements must have one flag per solid");
+  if (!opt.contact_elements.empty() && opt.contact_elements.size() != ne)
+    throw std::invalid_argument("partition: contact_elements must have one flag per element");
   // Cost per element-cycle by material law and hourglass form, measured with the one-point
   // hex kernel (docs/parallel.md, "Element weights"): plasticity adds the radial return (and
   // rate effects, a pow) to the elastic update; stiffness hourglass control (IHQ 4-5) adds its
@@ -54,6 +54,26 @@ std::vector<int32_t> elementWeights(const model::Model& model, const Options& op
         part.hourglass != model::kNone && std::size_t(part.hourglass) < model.hourglass.size()
             ? model.hourglass[std::size_t(part.hourglass)].ihq
             : model.controls.hourglass_ihq;
+    const bool rigid = mat != model::kNone && std::size_t(mat) < model.materials.size() &&
+                       std::holds_alternative<model::RigidLaw>(model.materials[std::size_t(mat)].law);
+    const bool plastic = part_weight[p] == kWeightSolidPlastic;
+    if (rigid) {
+      part_weight[p] = kWeightRigid;
+      continue;
+    }
+    switch (part.section_kind) {
+      case model::SectionKind::Shell:
+        part_weight[p] = plastic ? kWeightShellPlastic : kWeightShellElastic;
+        continue;
+      case model::SectionKind::Beam:
+        part_weight[p] = kWeightBeam;
+        continue;
+      case model::SectionKind::Discrete:
+        part_weight[p] = kWeightDiscrete;
+        continue;
+      case model::SectionKind::Solid:
+        break;
+    }
     const bool full = part.section != model::kNone &&
                       std::size_t(part.section) < model.solid_sections.size() &&
                       model.solid_sections[std::size_t(part.section)].elform == 2;
@@ -62,9 +82,9 @@ std::vector<int32_t> elementWeights(const model::Model& model, const Options& op
     else if (ihq >= 4)
       part_weight[p] += kWeightStiffnessHourglass;
   }
-  std::vector<int32_t> w(solids.size(), kWeightSolidElastic);
-  for (std::size_t e = 0; e < solids.size(); ++e) {
-    const int32_t p = solids.part[e];
+  std::vector<int32_t> w(ne, kWeightSolidElastic);
+  for (std::size_t e = 0; e < ne; ++e) {
+    const int32_t p = model.elementPart(e);
     if (p >= 0 && std::size_t(p) < part_weight.size()) w[e] = part_weight[std::size_t(p)];
     if (!opt.contact_elements.empty() && opt.contact_elements[e] != 0)
       w[e] = std::max<int32_t>(1, int32_t(std::lround(w[e] * opt.contact_bias)));
@@ -224,20 +244,20 @@ void rcb(std::vector<int32_t>& elems, std::size_t lo, std::size_t hi, int parts,
 
 std::vector<int32_t> rcbPartition(const model::Model& model, const std::vector<int32_t>& weights,
                                   int parts) {
-  const auto& solids = model.solids;
-  std::vector<model::Vec3> centroid(solids.size());
+  const std::size_t ne = model.numElements();
+  std::vector<model::Vec3> centroid(ne);
   int32_t d[8];
-  for (std::size_t e = 0; e < solids.size(); ++e) {
-    const int k = detail::distinctNodes(solids.nodes[e], d);
+  for (std::size_t e = 0; e < ne; ++e) {
+    const int k = detail::elementDistinctNodes(model, e, d);
     model::Vec3 c{0, 0, 0};
     for (int i = 0; i < k; ++i)
       for (int j = 0; j < 3; ++j) c[j] += model.nodes.x[std::size_t(d[i])][j];
     for (int j = 0; j < 3; ++j) c[j] /= k;
     centroid[e] = c;
   }
-  std::vector<int32_t> elems(solids.size());
+  std::vector<int32_t> elems(ne);
   std::iota(elems.begin(), elems.end(), 0);
-  std::vector<int32_t> rank(solids.size(), 0);
+  std::vector<int32_t> rank(ne, 0);
   rcb(elems, 0, elems.size(), parts, 0, centroid, weights, rank);
   return rank;
 }
@@ -273,7 +293,7 @@ void fillEmptyRanks(const DualGraph& g, int parts, std::vector<int32_t>& rank) {
 }  // namespace
 
 std::vector<int32_t> partitionElements(const model::Model& model, int parts, const Options& opt) {
-  const std::size_t ne = model.solids.size();
+  const std::size_t ne = model.numElements();
   if (parts < 1)
     throw util::InputError("cannot split " + std::to_string(ne) + " elements over " +
                            std::to_string(parts) + " ranks: the rank count must be at least 1");

@@ -46,7 +46,8 @@ struct Options {
 Method parseMethod(const std::string& name);
 const char* methodName(Method m);
 
-// Element -> rank (0..parts-1) for every model solid. Deterministic (same input, same output).
+// Element -> rank (0..parts-1) for every model element (global numbering: solids, shells,
+// beams, discretes). Deterministic (same input, same output).
 // parts == 1: all zeros. Throws util::InputError if parts < 1 or parts > number of elements
 // ("cannot split N elements over P ranks"); std::runtime_error if METIS fails. Every rank
 // receives at least one element.
@@ -63,6 +64,12 @@ inline constexpr int32_t kWeightStiffnessHourglass = 4;
 // The fully integrated hex (ELFORM 2) runs 8 Gauss points: measured 2.4x the one-point
 // element's cost on the bar impact example (1.17 M against 2.8 M element-cycles per second).
 inline constexpr int32_t kWeightFullyIntegratedFactor = 24;  // in tenths
+// Shells, beams, springs and rigid elements, in the same units (docs/parallel.md).
+inline constexpr int32_t kWeightShellElastic = 4;
+inline constexpr int32_t kWeightShellPlastic = 6;
+inline constexpr int32_t kWeightBeam = 3;
+inline constexpr int32_t kWeightDiscrete = 1;
+inline constexpr int32_t kWeightRigid = 1;  // mass only: a rigid element computes no force
 std::vector<int32_t> elementWeights(const model::Model& model);
 // As above, with Options::contact_bias applied to Options::contact_elements.
 std::vector<int32_t> elementWeights(const model::Model& model, const Options& opt);

@@ -16,9 +16,9 @@ namespace {
 
 void checkRanks(const model::Model& model, const std::vector<int32_t>& elem_rank, int parts) {
   if (parts < 1) throw std::invalid_argument("partition stats: parts must be at least 1");
-  if (elem_rank.size() != model.solids.size())
+  if (elem_rank.size() != model.numElements())
     throw std::invalid_argument("partition stats: " + std::to_string(elem_rank.size()) +
-                                " ranks given for " + std::to_string(model.solids.size()) +
+                                " ranks given for " + std::to_string(model.numElements()) +
                                 " elements");
   for (int32_t r : elem_rank)
     if (r < 0 || r >= parts)
@@ -35,11 +35,11 @@ Stats computeStats(const model::Model& model, const std::vector<int32_t>& elem_r
 Stats computeStats(const model::Model& model, const std::vector<int32_t>& elem_rank, int parts,
                    const CommModel& comm) {
   checkRanks(model, elem_rank, parts);
-  const auto& solids = model.solids;
+  const std::size_t ne = model.numElements();
   const std::size_t nn = model.nodes.size();
   Stats s;
   s.parts = parts;
-  s.elements = int64_t(solids.size());
+  s.elements = int64_t(ne);
   s.model = comm;
   s.ranks.resize(std::size_t(parts));
   for (int r = 0; r < parts; ++r) s.ranks[std::size_t(r)].rank = r;
@@ -47,7 +47,7 @@ Stats computeStats(const model::Model& model, const std::vector<int32_t>& elem_r
   // Weights summed as integers (exact, order-independent), then scaled to elastic-solid units.
   const std::vector<int32_t> w = elementWeights(model);
   std::vector<int64_t> wsum(std::size_t(parts), 0);
-  for (std::size_t e = 0; e < solids.size(); ++e) {
+  for (std::size_t e = 0; e < ne; ++e) {
     ++s.ranks[std::size_t(elem_rank[e])].elements;
     wsum[std::size_t(elem_rank[e])] += w[e];
   }
@@ -73,8 +73,9 @@ Stats computeStats(const model::Model& model, const std::vector<int32_t>& elem_r
     held.clear();
     for (int64_t j = inc.ptr[n]; j < inc.ptr[n + 1]; ++j) {
       const auto e = std::size_t(inc.elem[std::size_t(j)]);
-      const auto corners =
-          int64_t(std::count(solids.nodes[e].begin(), solids.nodes[e].end(), int32_t(n)));
+      int32_t en[8];
+      const int count = model.elementNodes(e, en);
+      const auto corners = int64_t(std::count(en, en + count, int32_t(n)));
       const int32_t r = elem_rank[e];
       auto it = std::find_if(held.begin(), held.end(), [&](const auto& h) { return h.first == r; });
       if (it == held.end())
@@ -164,20 +165,20 @@ void writePartitionJson(const std::filesystem::path& path, const Stats& s,
 
 void writePartitionVtu(const std::filesystem::path& path, const model::Model& model,
                        const std::vector<int32_t>& elem_rank) {
-  const auto& solids = model.solids;
-  if (elem_rank.size() != solids.size())
+  const std::size_t ne = model.numElements();
+  if (elem_rank.size() != ne)
     throw std::invalid_argument("partition VTU: one rank per element expected");
   std::vector<double> points(3 * model.nodes.size());
   for (std::size_t n = 0; n < model.nodes.size(); ++n)
     for (int c = 0; c < 3; ++c) points[3 * n + std::size_t(c)] = model.nodes.x[n][c];
-  std::vector<int32_t> cells(8 * solids.size());
-  std::vector<int64_t> rank(solids.size()), eid(solids.size()), pid(solids.size());
-  for (std::size_t e = 0; e < solids.size(); ++e) {
-    std::copy(solids.nodes[e].begin(), solids.nodes[e].end(),
-              cells.begin() + std::ptrdiff_t(8 * e));
+  std::vector<int32_t> cells(8 * ne);
+  std::vector<uint8_t> sizes(ne);
+  std::vector<int64_t> rank(ne), eid(ne), pid(ne);
+  for (std::size_t e = 0; e < ne; ++e) {
+    sizes[e] = uint8_t(model.elementNodes(e, &cells[8 * e]));
     rank[e] = elem_rank[e];
-    eid[e] = solids.id[e];
-    const int32_t p = solids.part[e];
+    eid[e] = model.elementId(e);
+    const int32_t p = model.elementPart(e);
     pid[e] = p >= 0 && std::size_t(p) < model.parts.size() ? model.parts[std::size_t(p)].id : -1;
   }
   // Point field: number of ranks holding each node (0 for nodes no element uses).
@@ -191,7 +192,7 @@ void writePartitionVtu(const std::filesystem::path& path, const model::Model& mo
     std::sort(seen.begin(), seen.end());
     node_ranks[n] = std::unique(seen.begin(), seen.end()) - seen.begin();
   }
-  output::MeshView mesh{model.nodes.size(), points.data(), solids.size(), cells.data()};
+  output::MeshView mesh{model.nodes.size(), points.data(), ne, cells.data(), sizes.data()};
   std::vector<output::FieldView> fields;
   fields.push_back({"rank", output::Association::Cell, 1, nullptr, rank.data()});
   fields.push_back({"element_id", output::Association::Cell, 1, nullptr, eid.data()});

@@ -1,0 +1,384 @@
+// Meaning of the structural element keywords: *ELEMENT_SHELL(_THICKNESS), *ELEMENT_BEAM,
+// *ELEMENT_DISCRETE, *SECTION_SHELL, *SECTION_BEAM, *SECTION_DISCRETE, *MAT_RIGID (020),
+// *MAT_SPRING_ELASTIC (S01), *MAT_DAMPER_VISCOUS (S02), *MAT_SPRING_NONLINEAR_ELASTIC (S04)
+// and *CONTROL_SHELL (LS-DYNA Keyword Manual Vol. I and II).
+#include <algorithm>
+#include <cmath>
+
+#include "model/build_context.hpp"
+#include "util/error.hpp"
+
+namespace crumple::model::build {
+
+using deck::Card;
+using deck::CardCursor;
+using deck::keywordSpec;
+
+namespace {
+
+const char* sectionKeyword(SectionKind k) {
+  switch (k) {
+    case SectionKind::Solid:
+      return "*SECTION_SOLID";
+    case SectionKind::Shell:
+      return "*SECTION_SHELL";
+    case SectionKind::Beam:
+      return "*SECTION_BEAM";
+    case SectionKind::Discrete:
+      return "*SECTION_DISCRETE";
+  }
+  return "*SECTION";
+}
+
+// Elements read with EID, PID and n node fields N1..Nn of card 1.
+template <int N>
+Context::ElementInput<N> elementCard(Context& ctx, const Card& c, SectionKind kind,
+                                     const char* const* names) {
+  Context::ElementInput<N> e{positiveId(c, "EID"),
+                             ctx.part(c, "PID", c.integer("PID")),
+                             {},
+                             c.fileIndex(),
+                             c.lineNumber()};
+  if (!ctx.part_problem[e.part].empty()) ctx.reject(c, "PID", ctx.part_problem[e.part]);
+  checkSectionKind(ctx, c, e.part, kind);
+  for (int i = 0; i < N; ++i) {
+    const int64_t id = c.integer(names[i]);
+    if (id == 0) c.fail(names[i], "node id missing");
+    e.nodes[static_cast<std::size_t>(i)] = ctx.node(c, names[i], id);
+  }
+  return e;
+}
+
+}  // namespace
+
+void checkSectionKind(Context& ctx, const Card& c, int32_t part, SectionKind kind) {
+  const Part& p = ctx.model.parts[static_cast<std::size_t>(part)];
+  if (p.section == kNone || p.section_kind == kind) return;
+  c.fail("PID", "part " + std::to_string(p.id) + " has a " + sectionKeyword(p.section_kind) +
+                    " section, but " + c.keyword().name + " needs a " + sectionKeyword(kind));
+}
+
+void readShells(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*ELEMENT_SHELL");
+  static constexpr const char* kN[4] = {"N1", "N2", "N3", "N4"};
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec.card("card 1"));
+    // A triangle is written with N4 = N3 or N4 blank (Keyword Manual, *ELEMENT_SHELL).
+    static constexpr const char* kTri[4] = {"N1", "N2", "N3", "N3"};
+    auto e = elementCard<4>(ctx, c, SectionKind::Shell, c.integer("N4") == 0 ? kTri : kN);
+    for (auto n : {"N5", "N6", "N7", "N8"})
+      if (c.integer(n) != 0) ctx.reject(c, n, "8-node shells are not supported (4-node only)");
+    if (opts.has("THICKNESS")) {
+      const Card& t = cur.read(spec.card("thickness card"));
+      for (int i = 0; i < 4; ++i) {
+        const std::string f = "THIC" + std::to_string(i + 1);
+        e.real[static_cast<std::size_t>(i)] = t.real(f);
+        if (e.real[static_cast<std::size_t>(i)] < 0) t.fail(f, "a thickness must not be negative");
+      }
+      // Corners left 0 take THIC1; all 0 means the section's thicknesses.
+      if (e.real[0] > 0)
+        for (auto& th : e.real)
+          if (th == 0) th = e.real[0];
+      if (t.real("BETA") != 0)
+        ctx.ignore(kw.name, "BETA",
+                   "the material angle only matters for anisotropic materials, which are not "
+                   "supported",
+                   t.where());
+    }
+    ctx.shell_input.push_back(e);
+    ctx.collect(cur);
+  }
+}
+
+void readBeams(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*ELEMENT_BEAM");
+  static constexpr const char* kN[2] = {"N1", "N2"};
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec.card("card 1"));
+    auto e = elementCard<2>(ctx, c, SectionKind::Beam, kN);
+    if (e.nodes[0] == e.nodes[1]) c.fail("N2", "a beam needs two distinct nodes");
+    if (const int64_t n3 = c.integer("N3"); n3 != 0) e.aux = ctx.node(c, "N3", n3);
+    for (auto f : {"RT1", "RR1", "RT2", "RR2"})
+      if (c.integer(f) != 0) ctx.reject(c, f, "beam end releases are not supported");
+    c.integer("LOCAL");  // release coordinate system: no releases, no meaning
+    ctx.beam_input.push_back(e);
+    ctx.collect(cur);
+  }
+}
+
+void readDiscretes(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*ELEMENT_DISCRETE");
+  static constexpr const char* kN[2] = {"N1", "N2"};
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec.card("card 1"));
+    auto e = elementCard<2>(ctx, c, SectionKind::Discrete, kN);
+    if (e.nodes[0] == e.nodes[1]) c.fail("N2", "a discrete element needs two distinct nodes");
+    if (c.integer("VID") != 0)
+      ctx.reject(c, "VID", "orientation vectors (*DEFINE_SD_ORIENTATION) are not supported");
+    c.integer("PF");
+    e.real[0] = c.real("S");
+    e.real[1] = c.real("OFFSET");
+    ctx.discrete_input.push_back(e);
+    ctx.collect(cur);
+  }
+}
+
+void readSectionShell(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*SECTION_SHELL");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    readTitleCard(cur, spec, opts);
+    const Card& c = cur.read(spec.card("card 1"));
+    const Card& c2 = cur.read(spec.card("card 2"));
+    SectionShell s;
+    s.id = positiveId(c, "SECID");
+    s.where = c.where();
+    const auto elform = c.integer("ELFORM");
+    // ELFORM (Keyword Manual, *SECTION_SHELL): 2 Belytschko-Tsay, 4 C0 triangle, 10
+    // Belytschko-Wong-Chiang (BT with the warping correction). Others are refused on use.
+    if (elform != 2 && elform != 4 && elform != 10) {
+      ctx.define(Kind::Section, s.id, c, "SECID");
+      ctx.defineUnsupported(Kind::Section, s.id, kw.name + " ELFORM=" + std::to_string(elform),
+                            c.where());
+      ctx.reportUnsupported(kw, "ELFORM " + std::to_string(elform) +
+                                    " not supported (2, 4 and 10 are)");
+      ctx.collect(cur);
+      continue;
+    }
+    s.elform = static_cast<int>(elform);
+    s.shrf = c.real("SHRF");
+    if (!(s.shrf > 0)) c.fail("SHRF", "the shear factor must be positive");
+    const int64_t nip = c.integer("NIP");
+    if (nip < 1 || nip > 10) c.fail("NIP", "must be 1 to 10 through-thickness points");
+    s.nip = static_cast<int>(nip);
+    c.real("PROPT");  // printout only
+    if (c.integer("QR/IRID") != 0)
+      ctx.reject(c, "QR/IRID", "user-defined integration rules are not supported");
+    if (c.integer("ICOMP") != 0)
+      ctx.reject(c, "ICOMP", "composite (layered) shells are not supported");
+    c.integer("SETYP");
+    for (int i = 0; i < 4; ++i) {
+      const std::string f = "T" + std::to_string(i + 1);
+      s.t[static_cast<std::size_t>(i)] = c2.real(f);
+    }
+    if (!(s.t[0] > 0)) c2.fail("T1", "the shell thickness must be positive");
+    for (auto& t : s.t)
+      if (t <= 0) t = s.t[0];
+    if (c2.real("NLOC") != 0)
+      ctx.reject(c2, "NLOC", "reference surfaces off the mid-surface are not supported");
+    ctx.define(Kind::Section, s.id, c, "SECID");
+    ctx.model.shell_sections.push_back(s);
+    ctx.collect(cur);
+  }
+}
+
+void readSectionBeam(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*SECTION_BEAM");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    readTitleCard(cur, spec, opts);
+    const Card& c = cur.read(spec.card("card 1"));
+    SectionBeam s;
+    s.id = positiveId(c, "SECID");
+    s.where = c.where();
+    const auto elform = c.integer("ELFORM");
+    if (elform < 1 || elform > 3) {
+      // The second card's layout depends on ELFORM; skip it with the definition.
+      if (!cur.atEnd()) cur.read(spec.card("resultant card"));
+      ctx.define(Kind::Section, s.id, c, "SECID");
+      ctx.defineUnsupported(Kind::Section, s.id, kw.name + " ELFORM=" + std::to_string(elform),
+                            c.where());
+      ctx.reportUnsupported(kw, "ELFORM " + std::to_string(elform) +
+                                    " not supported (1 Hughes-Liu, 2 resultant, 3 truss are)");
+      ctx.collect(cur);
+      continue;
+    }
+    s.elform = static_cast<int>(elform);
+    s.shrf = c.real("SHRF");
+    s.qr = static_cast<int>(c.integer("QR/IRID"));
+    s.cst = static_cast<int>(c.integer("CST"));
+    if (c.real("SCOOR") != 0)
+      ctx.reject(c, "SCOOR", "offset beam reference axes (SCOOR) are not supported");
+    if (c.real("NSM") != 0) ctx.reject(c, "NSM", "non-structural mass is not supported");
+    if (s.elform == 1) {
+      const Card& c2 = cur.read(spec.card("integrated card"));
+      if (s.cst != 0 && s.cst != 1)
+        ctx.reject(c, "CST", "only rectangular (0) and tubular (1) cross-sections are supported");
+      if (s.qr < 1 || s.qr > 5)
+        ctx.reject(c, "QR/IRID", "only the built-in Gauss rules (1 to 5) are supported");
+      s.ts1 = c2.real("TS1");
+      s.ts2 = c2.real("TS2");
+      s.tt1 = c2.real("TT1");
+      s.tt2 = c2.real("TT2");
+      if (!(s.ts1 > 0)) c2.fail("TS1", "the section dimension must be positive");
+      if (s.ts2 <= 0) s.ts2 = s.ts1;
+      // A tube's TT is its inner diameter (0: solid bar); a rectangle's is the other side.
+      if (s.cst == 0 && !(s.tt1 > 0)) c2.fail("TT1", "the section dimension must be positive");
+      if (s.tt2 <= 0) s.tt2 = s.tt1;
+      if (c2.real("NSLOC") != 0 || c2.real("NTLOC") != 0)
+        ctx.reject(c2, c2.real("NSLOC") != 0 ? "NSLOC" : "NTLOC",
+                   "offset reference axes are not supported");
+    } else {
+      const Card& c2 = cur.read(spec.card("resultant card"));
+      s.a = c2.real("A");
+      if (!(s.a > 0)) c2.fail("A", "the cross-section area must be positive");
+      if (s.elform == 2) {
+        s.iss = c2.real("ISS");
+        s.itt = c2.real("ITT");
+        s.j = c2.real("J");
+        s.sa = c2.real("SA");
+        if (!(s.iss > 0)) c2.fail("ISS", "the moment of inertia must be positive");
+        if (!(s.itt > 0)) c2.fail("ITT", "the moment of inertia must be positive");
+        if (s.j <= 0) s.j = s.iss + s.itt;  // polar moment of a thin section, LS-DYNA default
+        if (s.sa <= 0) s.sa = s.a;
+      }
+      c2.real("IST");
+    }
+    ctx.define(Kind::Section, s.id, c, "SECID");
+    ctx.model.beam_sections.push_back(s);
+    ctx.collect(cur);
+  }
+}
+
+void readSectionDiscrete(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*SECTION_DISCRETE");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    readTitleCard(cur, spec, opts);
+    const Card& c = cur.read(spec.card("card 1"));
+    const Card& c2 = cur.readOptional(spec.card("card 2"));
+    SectionDiscrete s;
+    s.id = positiveId(c, "SECID");
+    s.where = c.where();
+    s.dro = static_cast<int>(c.integer("DRO"));
+    if (s.dro != 0) ctx.reject(c, "DRO", "torsional (rotational) discrete elements are not supported");
+    for (auto f : {"KD", "V0", "CL", "FD"})
+      if (c.real(f) != 0)
+        ctx.reject(c, f, "dynamic magnification, clearance and failure of springs are not supported");
+    for (auto f : {"CDL", "TDL"})
+      if (c2.real(f) != 0) ctx.reject(c2, f, "deflection limits of springs are not supported");
+    ctx.define(Kind::Section, s.id, c, "SECID");
+    ctx.model.discrete_sections.push_back(s);
+    ctx.collect(cur);
+  }
+}
+
+void readMatRigid(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*MAT_RIGID");
+  CardCursor cur(kw, ctx.deck);
+  std::string t = readTitleCard(cur, spec, opts);
+  const Card& c = cur.read(spec.card("card 1"));
+  const Card& c2 = cur.readOptional(spec.card("card 2"));
+  const Card& c3 = cur.readOptional(spec.card("card 3"));
+  Material m = readMaterialBase(ctx, c, std::move(t));
+  RigidLaw law;
+  law.E = c.real("E");
+  law.nu = c.real("PR");
+  checkElastic(c, law.E, law.nu);
+  for (auto f : {"N", "COUPLE", "M", "ALIAS"}) c.real(f);  // coupling with MADYMO: not used
+  const double cmo = c2.real("CMO");
+  if (cmo == -1.0)
+    ctx.reject(c2, "CMO", "constraints in a local coordinate system (CMO=-1) are not supported");
+  else if (cmo != 0.0 && cmo != 1.0)
+    c2.fail("CMO", "must be 0, 1 or -1");
+  law.cmo = static_cast<int>(cmo);
+  if (law.cmo == 1) {
+    const double con1 = c2.real("CON1"), con2 = c2.real("CON2");
+    if (con1 < 0 || con1 > 7 || con1 != std::floor(con1)) c2.fail("CON1", "must be 0 to 7");
+    if (con2 < 0 || con2 > 7 || con2 != std::floor(con2)) c2.fail("CON2", "must be 0 to 7");
+    law.con1 = static_cast<int>(con1);
+    law.con2 = static_cast<int>(con2);
+  } else {
+    c2.real("CON1");
+    c2.real("CON2");
+  }
+  // Card 3 (local axes for output) changes no result.
+  for (auto f : {"LCO/A1", "A2", "A3", "V1", "V2", "V3"}) c3.real(f);
+  m.law = law;
+  ctx.model.materials.push_back(std::move(m));
+  ctx.collect(cur);
+}
+
+namespace {
+// Spring and damper materials have no density: a Material with RO = 0.
+Material springMaterial(Context& ctx, const Card& c, std::string t) {
+  Material m;
+  m.id = positiveId(c, "MID");
+  ctx.define(Kind::Material, m.id, c, "MID");
+  m.title = std::move(t);
+  m.where = c.where();
+  return m;
+}
+}  // namespace
+
+void readMatSpringElastic(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*MAT_SPRING_ELASTIC");
+  CardCursor cur(kw, ctx.deck);
+  std::string t = readTitleCard(cur, spec, opts);
+  const Card& c = cur.read(spec.card("card 1"));
+  Material m = springMaterial(ctx, c, std::move(t));
+  SpringElasticLaw law{c.real("K")};
+  if (!(law.k > 0)) c.fail("K", "the spring stiffness must be positive");
+  m.law = law;
+  ctx.model.materials.push_back(std::move(m));
+  ctx.collect(cur);
+}
+
+void readMatDamperViscous(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*MAT_DAMPER_VISCOUS");
+  CardCursor cur(kw, ctx.deck);
+  std::string t = readTitleCard(cur, spec, opts);
+  const Card& c = cur.read(spec.card("card 1"));
+  Material m = springMaterial(ctx, c, std::move(t));
+  DamperViscousLaw law{c.real("DC")};
+  if (!(law.dc > 0)) c.fail("DC", "the damping constant must be positive");
+  m.law = law;
+  ctx.model.materials.push_back(std::move(m));
+  ctx.collect(cur);
+}
+
+void readMatSpringNonlinear(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*MAT_SPRING_NONLINEAR_ELASTIC");
+  CardCursor cur(kw, ctx.deck);
+  std::string t = readTitleCard(cur, spec, opts);
+  const Card& c = cur.read(spec.card("card 1"));
+  Material m = springMaterial(ctx, c, std::move(t));
+  SpringNonlinearLaw law{ctx.curve(c, "LCD", c.integer("LCD"))};
+  if (c.integer("LCR") != 0)
+    ctx.reject(c, "LCR", "rate-dependent spring scaling (LCR) is not supported");
+  m.law = law;
+  ctx.model.materials.push_back(std::move(m));
+  ctx.collect(cur);
+}
+
+void readControlShell(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*CONTROL_SHELL");
+  CardCursor cur(kw, ctx.deck);
+  const Card& c = cur.readOptional(spec.card("card 1"));
+  const Card& c2 = cur.readOptional(spec.card("card 2"));
+  auto& ctl = ctx.model.controls;
+  c.real("WRPANG");  // warping angle for a warning only
+  c.integer("IRNXX");
+  c.integer("THEORY");  // the section's ELFORM is used; blank ELFORM gives 2 as THEORY does
+  c.integer("MITER");   // the plane-stress return is always iterated to sigma_zz = 0
+  c.integer("PROJ");
+  // ESORT: degenerate quadrilaterals always run as C0 triangles (as ESORT = 1).
+  c.integer("ESORT");
+  ctl.shell_thickness_update = c.integer("ISTUPD") != 0;
+  const int64_t bwc = c.integer("BWC");
+  if (bwc != 1 && bwc != 2) c.fail("BWC", "must be 1 (warping correction) or 2 (none)");
+  ctl.shell_bwc = bwc == 1;
+  const int64_t intgrd = c2.integer("INTGRD");
+  if (intgrd != 0 && intgrd != 1) c2.fail("INTGRD", "must be 0 (Gauss) or 1 (Lobatto)");
+  ctl.shell_lobatto = intgrd == 1;
+  if (c2.real("ROTASCL") != 1.0)
+    ctx.ignore(kw.name, "ROTASCL",
+               "the rotary inertia of shells is the element's own (Belytschko-Tsay scaling)",
+               c2.where());
+  ctx.collect(cur);
+}
+
+}  // namespace crumple::model::build
