@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "materials/materials.hpp"
+#include "materials/uniaxial.hpp"
 #include "model/model.hpp"
 
 namespace crumple::domain {
@@ -78,11 +79,16 @@ struct ShellBlock : BlockBase {
 
 // Beam cross-section (*SECTION_BEAM).
 struct BeamSection {
-  int elform = 2;        // 1 Hughes-Liu, 2 Belytschko-Schwer resultant, 3 truss
-  int cst = 0;           // Hughes-Liu cross-section: 0 rectangular, 1 tubular
-  double ts1 = 0, ts2 = 0, tt1 = 0, tt2 = 0;  // Hughes-Liu thicknesses at nodes 1, 2
+  int elform = 2;  // 1 Hughes-Liu, 2 Belytschko-Schwer resultant, 3 truss
+  int cst = 0;     // Hughes-Liu cross-section: 0 rectangular, 1 tubular
+  // Hughes-Liu thicknesses at nodes 1, 2: rectangular TS (s direction), TT (t direction);
+  // tubular TS outer and TT inner diameter.
+  double ts1 = 0, ts2 = 0, tt1 = 0, tt2 = 0;
   double a = 0, iss = 0, itt = 0, j = 0, sa = 0;  // resultant / truss properties
-  double shear_factor = 1.0;
+  double shear_factor = 1.0;                      // SHRF (Hughes-Liu transverse shear)
+  // QR: Hughes-Liu rectangular section quadrature: 1 one point, 2 2x2 Gauss (default),
+  // 3 3x3 Gauss, 4 3x3 Lobatto, 5 4x4 Gauss. Tubular sections use a 16-point ring.
+  int qr = 2;
 };
 
 struct BeamBlock : BlockBase {
@@ -94,11 +100,24 @@ struct BeamBlock : BlockBase {
   // Orientation node coordinates (the third node may be held by no element; its position is
   // fixed): one entry per element.
   std::vector<std::array<double, 3>> orientation;
-  // Per-element state: defined by the kernel (src/elements/beam.cpp).
-  std::vector<double> length0;
-  std::vector<double> e_int;
-  std::vector<uint8_t> active;
-  std::vector<double> state;  // kernel-defined layout
+  // Per-element state, sized by elements::resizeBeamBlock (src/elements/beam.cpp).
+  std::vector<double> length0;  // initial length
+  std::vector<double> e_int;    // internal energy
+  std::vector<uint8_t> active;  // 0 once eroded
+  // ELFORM 1, 2: the frame of each end node as a unit quaternion (w, x, y, z), node 1 then
+  // node 2: it turns the global axes into the node's (r, s, t) axes, and the node's angular
+  // velocity turns it every cycle.
+  std::vector<std::array<double, 8>> triad;
+  // ELFORM 1, 2: deformation at the last cycle in the corotational frame: elongation, twist
+  // (rotation about r of node 2 relative to node 1), rotations about s and t at node 1, about
+  // s and t at node 2.
+  std::vector<std::array<double, 6>> deformation;
+  // The conjugate resultants at the last cycle: axial force, torque, moments about s and t at
+  // node 1 and at node 2 (ELFORM 2: the state; ELFORM 1, 3: output).
+  std::vector<std::array<double, 6>> resultant;
+  // ELFORM 1, 3: integration point state, point i of element e at point[e * points + i].
+  int points = 0;
+  std::vector<materials::FibrePoint> point;
 };
 
 // Discrete springs and dampers (*ELEMENT_DISCRETE, *SECTION_DISCRETE).
@@ -112,7 +131,8 @@ struct DiscreteBlock : BlockBase {
   std::vector<double> offset;   // *ELEMENT_DISCRETE OFFSET (initial elongation)
   std::vector<double> length0;  // initial length
   std::vector<double> e_int;
-  std::vector<double> force;    // axial force (output)
+  std::vector<double> force;       // axial force at the last cycle (tension positive)
+  std::vector<double> elongation;  // elongation at the last cycle (energy increments)
 };
 
 }  // namespace crumple::domain

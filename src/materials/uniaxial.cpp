@@ -1,0 +1,184 @@
+// Truss and beam-fibre stress updates (see uniaxial.hpp for the formulation).
+#include "materials/uniaxial.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+#include <variant>
+
+namespace crumple::materials {
+
+namespace {
+
+double youngOf(const Moduli& m) {
+  return 9.0 * m.bulk * m.shear / (3.0 * m.bulk + m.shear);
+}
+
+// Plastic modulus of a bilinear curve with tangent Etan (Etan < E, checked by makeLaw): the
+// uniaxial slope after yield, E Ep / (E + Ep), is then Etan.
+double plasticModulus(double E, double etan) {
+  return E * etan / (E - etan);
+}
+
+// Segment k of a curve holds [x[k], x[k+1]), clamped to the end segments (linear
+// extrapolation beyond), as model::Curve::valueExtrapolated.
+std::size_t segmentOf(std::span<const double> x, double t) {
+  const auto it = std::upper_bound(x.begin(), x.end(), t);
+  const std::size_t k = it == x.begin() ? 0 : static_cast<std::size_t>(it - x.begin()) - 1;
+  return std::min(k, x.size() - 2);
+}
+
+// Static flow stress and its slope dsigma_y / deps_p at eps_p.
+void flowStressAndSlope(const FibreLaw& law, double eps_p, double& y, double& h) {
+  if (law.curve_eps.empty()) {
+    y = law.sigy + law.Hi * eps_p;
+    h = law.Hi;
+    return;
+  }
+  if (law.curve_eps.size() == 1) {
+    y = law.curve_sig[0];
+    h = 0.0;
+    return;
+  }
+  const std::size_t k = segmentOf(law.curve_eps, eps_p);
+  const double dx = law.curve_eps[k + 1] - law.curve_eps[k];
+  // A zero-length segment is a step up in the curve: the stress stands on the riser.
+  h = dx > 0.0 ? (law.curve_sig[k + 1] - law.curve_sig[k]) / dx : 0.0;
+  y = dx > 0.0 ? law.curve_sig[k] + h * (eps_p - law.curve_eps[k]) : law.curve_sig[k + 1];
+}
+
+}  // namespace
+
+double youngsModulus(const Law& law) {
+  return std::visit([](const auto& l) { return youngOf(l.moduli); }, law);
+}
+
+FibreLaw fibreLawOf(const Law& law) {
+  return std::visit(
+      [](const auto& l) {
+        using T = std::decay_t<decltype(l)>;
+        FibreLaw f;
+        f.E = youngOf(l.moduli);
+        f.G = l.moduli.shear;
+        if constexpr (std::is_same_v<T, PlasticKinematic>) {
+          // MAT_003: beta splits the plastic modulus between isotropic and kinematic
+          // hardening, as in the 3-D return (plastic.cpp).
+          const double Ep = plasticModulus(f.E, l.etan);
+          f.plastic = true;
+          f.sigy = l.sigy;
+          f.Hi = l.beta * Ep;
+          f.Hk = (1.0 - l.beta) * Ep;
+          if (l.src > 0.0 && l.srp > 0.0) {
+            f.C = l.src;
+            f.inv_P = 1.0 / l.srp;
+          }
+          f.fail = l.fs;
+        } else if constexpr (std::is_same_v<T, PiecewiseLinear>) {
+          f.plastic = true;
+          f.sigy = l.sigy;  // the curve's value at zero plastic strain when LCSS is given
+          if (l.curve_eps.empty()) {
+            f.Hi = plasticModulus(f.E, l.etan);
+          } else {
+            f.curve_eps = l.curve_eps;
+            f.curve_sig = l.curve_sig;
+          }
+          if (l.c > 0.0 && l.p > 0.0) {
+            f.C = l.c;
+            f.inv_P = 1.0 / l.p;
+          }
+          f.fail = l.fail;
+        }
+        return f;
+      },
+      law);
+}
+
+double flowStress(const FibreLaw& law, double eps_p) {
+  double y = 0.0, h = 0.0;
+  flowStressAndSlope(law, eps_p, y, h);
+  return y;
+}
+
+bool updateFibre(const FibreLaw& law, FibrePoint& p, double de, double dgs, double dgt, double dt) {
+  // Elastic predictor.
+  const double s_tr = p.sig + law.E * de;
+  const double ts_tr = p.tau_s + law.G * dgs;
+  const double tt_tr = p.tau_t + law.G * dgt;
+  p.sig = s_tr;
+  p.tau_s = ts_tr;
+  p.tau_t = tt_tr;
+  if (!law.plastic) return false;
+
+  // Cowper-Symonds factor on the yield stress, with the effective strain rate of this state
+  // for plastically incompressible flow: sqrt(2/3 e:e) = sqrt(de^2 + (dgs^2 + dgt^2) / 3).
+  double rf = 1.0;
+  if (law.C > 0.0 && dt > 0.0) {
+    const double rate = std::sqrt(de * de + (dgs * dgs + dgt * dgt) / 3.0) / dt;
+    rf = 1.0 + std::pow(rate / law.C, law.inv_P);
+  }
+  const double x = s_tr - p.alpha, ys = ts_tr - p.alpha_s, yt = tt_tr - p.alpha_t;
+  const double xx = x * x, yy = ys * ys + yt * yt;
+  const double q_tr = std::sqrt(xx + 3.0 * yy);
+  double y0 = 0.0, h0 = 0.0;
+  flowStressAndSlope(law, p.eps_p, y0, h0);
+  const double f = q_tr - rf * y0;
+  if (f > 0.0) {
+    // g(d) = q(n+1)(d) - rf sigma_y(eps_p + d) = 0 for the plastic strain increment d, with
+    // q(n+1) from the return formulas (uniaxial.hpp). g decreases from f > 0; Newton steps
+    // are kept inside the bracket [lo, hi] of the root, bisection otherwise.
+    const double a = law.E + law.Hk, b = 3.0 * law.G + law.Hk;
+    const double tiny = 1e-300;
+    auto eval = [&](double d, double& g, double& dg, double& yield) {
+      double y = 0.0, h = 0.0;
+      flowStressAndSlope(law, p.eps_p + d, y, h);
+      yield = std::max(rf * y, tiny);  // a curve softened to zero carries no stress
+      const double hr = rf * h;
+      const double yv = d / yield;
+      const double ua = 1.0 + a * yv, ub = 1.0 + b * yv;
+      const double q = std::sqrt(xx / (ua * ua) + 3.0 * yy / (ub * ub));
+      const double dq_dy =
+          -(a * xx / (ua * ua * ua) + 3.0 * b * yy / (ub * ub * ub)) / std::max(q, tiny);
+      g = q - yield;
+      dg = dq_dy * (yield - d * hr) / (yield * yield) - hr;
+    };
+    // First guess: the exact answer for linear hardening when the trial state is uniaxial or
+    // pure shear (the modulus along the trial direction).
+    const double m = (a * xx + 3.0 * b * yy) / (xx + 3.0 * yy);
+    double d = f / std::max(m + std::max(rf * h0, 0.0), tiny);
+    double lo = 0.0, hi = std::numeric_limits<double>::infinity();
+    double yield = rf * y0;
+    for (int it = 0; it < 60; ++it) {
+      double g = 0.0, dg = 0.0;
+      eval(d, g, dg, yield);
+      if (g > 0.0) {
+        lo = d;
+      } else {
+        hi = d;
+      }
+      // (hi stays infinite until an iterate overshoots the root.)
+      if (std::abs(g) <= 1e-13 * yield || (std::isfinite(hi) && hi - lo <= 1e-15 * hi)) break;
+      double next = dg < 0.0 ? d - g / dg : lo;
+      if (!(next > lo && next < hi)) next = std::isinf(hi) ? 2.0 * d : 0.5 * (lo + hi);
+      d = next;
+    }
+    double g = 0.0, dg = 0.0;
+    eval(d, g, dg, yield);
+    const double yv = d / yield;
+    const double xr = x / (1.0 + a * yv);
+    const double xs = ys / (1.0 + b * yv), xt = yt / (1.0 + b * yv);
+    // Prager: the back stress moves by Hk deps along the flow direction xi / q, q = yield.
+    const double ck = law.Hk * yv;
+    p.alpha += ck * xr;
+    p.alpha_s += ck * xs;
+    p.alpha_t += ck * xt;
+    p.sig = p.alpha + xr;
+    p.tau_s = p.alpha_s + xs;
+    p.tau_t = p.alpha_t + xt;
+    p.eps_p += d;
+  }
+  return law.fail > 0.0 && p.eps_p >= law.fail;
+}
+
+}  // namespace crumple::materials
