@@ -51,27 +51,57 @@ struct ShellBlock : BlockBase {
   materials::Law law;
   double rho0 = 0.0;
   int elform = 2;
-  int nip = 2;             // integration points through the thickness
-  bool lobatto = false;    // QR/IRID: Gauss (default) or Lobatto
+  int nip = 2;           // integration points through the thickness
+  bool lobatto = false;  // QR/IRID: Gauss (default) or Lobatto
   double shear_factor = 5.0 / 6.0;
-  int ihq = 1;             // hourglass type (viscous 1-3, stiffness 4-5)
-  double qm = 0.1;         // hourglass coefficient
-  bool bwc = false;        // Belytschko-Wong-Chiang warping correction (*CONTROL_SHELL BWC=1)
-  bool thickness_update = false;  // *CONTROL_SHELL ISTUPD
-  std::vector<std::array<int32_t, 4>> conn;  // local node indices; n3 == n4: triangle
+  int ihq = 1;       // hourglass type (viscous 1-3, stiffness 4-5)
+  double qm = 0.1;   // hourglass coefficient
+  bool bwc = false;  // Belytschko-Wong-Chiang warping correction (*CONTROL_SHELL BWC=1)
+  bool thickness_update = false;                        // *CONTROL_SHELL ISTUPD
+  std::vector<std::array<int32_t, 4>> conn;             // local node indices; n3 == n4: triangle
   std::vector<std::array<double, 4>> corner_thickness;  // initial thickness at the 4 corners
-  // Per-element state: defined by the kernel (src/elements/shell.cpp), padded to batches.
-  std::vector<double> thick;       // current thickness
-  std::vector<double> area0;       // initial area
-  std::vector<double> e_int, e_hg;
-  std::vector<uint8_t> active, failed;
-  std::vector<double> mass_scale;  // empty if none
-  // Stress at each integration point in the corotational element frame:
-  // sig[(k * nip + i) * padded + e] for component k in (xx, yy, xy, yz, zx), point i.
-  std::vector<double> sig;
-  std::vector<double> eps_p;       // [i * padded + e]
-  std::vector<double> alpha;       // back stress, like sig (kinematic laws), else empty
-  std::vector<double> hgq;         // hourglass resistance (stiffness forms), else empty
+  // Per-element state, defined and allocated by the kernel (src/elements/shell.cpp,
+  // resizeShellBlock), padded to whole batches (padding lanes replicate the block's last
+  // element and are never read back).
+  std::vector<double> thick;        // current thickness
+  std::vector<double> area0;        // initial mid-surface area
+  std::vector<double> e_int, e_hg;  // internal and hourglass energy
+  std::vector<uint8_t> active;      // 0 once eroded
+  std::vector<uint8_t> failed;      // eroded because every point reached the failure strain
+  std::vector<double> mass_scale;   // empty if none
+  // Through-thickness rule: point i at z = zeta[i] t / 2, weight[i] (the weights sum to 1).
+  std::vector<double> zeta, weight;
+  // Integration-point state in the corotational element frame, stored batch by batch (one
+  // contiguous record of `fields` x kShellBatch values per batch, like SolidBlock::sig):
+  //   sig:   3 nip + 2 fields: in-plane stress (xx, yy, xy) of point i at fields 3 i + k, then
+  //          the element's transverse shear stresses yz, zx (elastic, uniform through the
+  //          thickness) at fields 3 nip and 3 nip + 1
+  //   eps_p: nip fields, effective plastic strain (plastic laws), else empty
+  //   alpha: 3 nip fields, back stress in plane-stress form (kinematic laws), else empty
+  //   hgq:   5 fields, hourglass resistances of the stiffness forms (membrane x, y, bending
+  //          x, y, transverse), else empty
+  std::vector<double> sig, eps_p, alpha, hgq;
+  static std::size_t blocked(int fields, int field, std::size_t e) {
+    return (e / kShellBatch) * std::size_t(fields) * kShellBatch +
+           std::size_t(field) * kShellBatch + e % kShellBatch;
+  }
+  int sigFields() const { return 3 * nip + 2; }
+  double& sigAt(int k, int point, std::size_t e) {
+    return sig[blocked(sigFields(), 3 * point + k, e)];
+  }
+  double sigAt(int k, int point, std::size_t e) const {
+    return sig[blocked(sigFields(), 3 * point + k, e)];
+  }
+  // Transverse shear stress: k = 0 yz, 1 zx.
+  double& shearAt(int k, std::size_t e) { return sig[blocked(sigFields(), 3 * nip + k, e)]; }
+  double shearAt(int k, std::size_t e) const { return sig[blocked(sigFields(), 3 * nip + k, e)]; }
+  double& epsAt(int point, std::size_t e) { return eps_p[blocked(nip, point, e)]; }
+  double epsAt(int point, std::size_t e) const { return eps_p[blocked(nip, point, e)]; }
+  double& alphaAt(int k, int point, std::size_t e) {
+    return alpha[blocked(3 * nip, 3 * point + k, e)];
+  }
+  double& hgqAt(int mode, std::size_t e) { return hgq[blocked(5, mode, e)]; }
+  bool isTriangle(std::size_t e) const { return conn[e][2] == conn[e][3]; }
   std::size_t paddedSize() const {
     return (elem.size() + kShellBatch - 1) / kShellBatch * kShellBatch;
   }

@@ -1,0 +1,86 @@
+// The Belytschko-Lin-Tsay shell (ELFORM 2) and the C0 triangle (ELFORM 4, and every
+// quadrilateral with n3 == n4): Belytschko, Lin & Tsay (1984), "Explicit algorithms for the
+// nonlinear dynamics of shells", CMAME 42:225-251; Belytschko, Stolarski & Carpenter (1984),
+// "A C0 triangular plate element with one-point quadrature", IJNME 20:787-802; as in DYNA3D
+// (Hallquist, DYNA3D User Manual, UCRL-MA-107254) and the LS-DYNA Theory Manual
+// ("Belytschko-Lin-Tsay shell", "C0 triangular shell").
+//
+// Corotational: each element carries a frame (normal from the cross product of the diagonals,
+// first axis along side 1-2) in which its stresses and hourglass resistances live, so that a
+// rigid rotation changes none of them. Velocity strains at the mid-surface with one-point
+// quadrature in the plane, NIP points through the thickness with a plane-stress law
+// (materials/plane_stress.hpp), elastic transverse shear with the shear factor, resultants to
+// corner forces and moments. Theory notes in src/elements/shell.cpp.
+//
+// Kernels work on batches of kShellBatch elements held as structure of arrays, like the hex
+// kernel (elements/hex8.hpp): lanes beyond the batch's count replicate its last element.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "domain/blocks.hpp"
+#include "domain/subdomain.hpp"
+#include "elements/hex8.hpp"
+
+namespace crumple::elements {
+
+inline constexpr int kShellBatch = domain::kShellBatch;
+// Through-thickness points supported (LS-DYNA: NIP up to 10 with Gauss or Lobatto rules).
+inline constexpr int kMaxShellPoints = 10;
+
+// Through-thickness rule on [-1, 1]: Gauss-Legendre (nip 1-10) or Gauss-Lobatto (nip 3-10,
+// both surfaces included), weights normalised to sum to 1, abscissae ascending.
+void throughThicknessRule(int nip, bool lobatto, std::vector<double>& zeta,
+                          std::vector<double>& weight);
+
+// Allocates the per-element state of n elements, padded to whole batches: thickness, areas,
+// energies, flags, stresses; plastic strain and back stress only if the law has them;
+// hourglass resistances only for the stiffness forms (IHQ 4, 5). Sets the through-thickness
+// rule from nip and lobatto. Everything starts at zero and active.
+void resizeShellBlock(domain::ShellBlock& block, std::size_t n);
+
+// Thickness (mean of the corner thicknesses), area and stable step of every element; writes
+// each corner's lumped mass into the x component of its force slot and its rotational inertia
+// into the x component of its moment slot (other components zero):
+//   quadrilateral: m_a = rho t A / 4 at each corner;
+//   triangle:      m_a = rho t A / 3 at corners 1-3, nothing at corner 4;
+//   inertia:       I_a = m_a max(A / 8, t^2 / 12).
+// The inertia is the scaled rotary inertia of Kennedy, Belytschko & Lin (1986), "Recent
+// developments in explicit finite element techniques and their application to reactor
+// structures", Nucl. Eng. Des. 97:1-24, with the plate's own t^2/12 as a floor for thick
+// elements: it keeps the rotational modes (transverse shear against rotary inertia:
+// omega^2 = 8 kappa G / (rho A)) below the membrane limit 2 c / L_s, so rotations do not
+// control the step (see shell.cpp). element_dt[e] = L_s / c (shellTimeStep).
+BlockStatus initializeShells(domain::ShellBlock& block, const domain::NodeVector& x0, double* slots,
+                             std::vector<double>& element_dt);
+
+// One cycle for elements [first, last) of a shell block (both multiples of kShellBatch or
+// last == size()): x = x(n), v = v(n-1/2), w = omega(n-1/2), packed xyz per local node;
+// dt = dt(n-1/2). Corner forces go to slots[3 (slot_offset + 8 e + a) + c] and corner moments
+// to slots[3 (slot_offset + 8 e + 4 + a) + c], global frame, in the hex kernel's convention:
+// the force the element exerts on the node (minus the internal force vector), so that the
+// solver takes a = (f + f_ext) / m. Also energies, erosion and the stable step.
+BlockStatus computeShellForces(domain::ShellBlock& block, const domain::NodeVector& x,
+                               const domain::NodeVector& v, const domain::NodeVector& w, double dt,
+                               double* slots, std::size_t first, std::size_t last);
+inline BlockStatus computeShellForces(domain::ShellBlock& block, const domain::NodeVector& x,
+                                      const domain::NodeVector& v, const domain::NodeVector& w,
+                                      double dt, double* slots) {
+  return computeShellForces(block, x, v, w, dt, slots, 0, block.size());
+}
+
+// Stable step of one shell (LS-DYNA Theory Manual, "Time step control", shell elements, the
+// default characteristic length): dt = L_s / c, L_s = (1 + beta) A / (longest side), beta = 0
+// for quadrilaterals and 1 for triangles, c = sqrt(E / (rho (1 - nu^2))) (plane-stress plate
+// wave speed).
+double shellTimeStep(double area, double longest_side, bool triangle, double wave_speed);
+
+// Cauchy stress in the global frame (Voigt xx, yy, zz, xy, yz, zx, tensor shear) and effective
+// plastic strain of element e at its bottom (0), mid (1) and top (2) surface: the integration
+// points nearest to them; at the mid-surface with an even NIP, the through-thickness mean.
+// x gives the element's current frame. For output (VTU).
+void shellSurfaceStress(const domain::ShellBlock& block, const domain::NodeVector& x, std::size_t e,
+                        double out[3][6], double eps_p_out[3]);
+
+}  // namespace crumple::elements

@@ -1,0 +1,401 @@
+// Plane-stress elasticity and J2 plasticity for shell integration points (see plane_stress.hpp).
+//
+// Notation (Simo & Taylor 1986; Simo & Hughes 1998, sec. 3.4), vectors of plane stress with
+// tensor shear components:
+//   C      plane-stress elasticity  E/(1-nu^2) [1 nu 0; nu 1 0; 0 0 (1-nu)] (acting on
+//          tensor shear: s_xy = 2 G e_xy)
+//   P      the projection with 1/2 s.P.s = J2 of the 3D stress (s_xx, s_yy, 0, s_xy):
+//          s.P.s = (s_xx + s_yy)^2 / 6 + (s_xx - s_yy)^2 / 2 + 2 s_xy^2
+//   xi     relative stress s - alpha (alpha: back stress in plane-stress form, the plane tensor
+//          with the deviator of the 3D back stress)
+//   q      von Mises stress sqrt(3/2 xi.P.xi)
+// Flow and hardening: plastic strain rate gamma P xi (engineering shear), effective plastic
+// strain rate 2/3 gamma q, back stress rate 2/3 Hk gamma xi (Prager's rule written for the
+// plane-stress form of alpha). C P and P share the eigenvectors (1, 1, 0), (1, -1, 0),
+// (0, 0, 1), so the backward-Euler return is diagonal in them:
+//   xi_k = xi_k^trial / (1 + m_k dgamma),  m_1 = E / (3 (1 - nu)) + 2/3 Hk,  m_2 = 2 G + 2/3 Hk
+// (m_2 for both the (1, -1, 0) and the shear mode), and consistency
+//   g(dgamma) = q(dgamma) - sigma_y(eps_p + 2/3 dgamma q(dgamma)) = 0
+// is one scalar equation. q(dgamma) is convex and decreasing, so Newton's method from
+// dgamma = 0 approaches the root from below; a bracket [lo, hi] (hi from q <= q_trial /
+// (1 + min(m) dgamma) and sigma_y >= its current value) guards the iteration where the
+// hardening curve bends the other way. Each point iterates until its own Newton step is below
+// 1e-13 of dgamma, so a point's result does not depend on the other points in the batch.
+//
+// The thickness strain increment that keeps sigma_zz = 0 is the elastic part -nu/E (ds_xx +
+// ds_yy) plus the plastic part -(deps^p_xx + deps^p_yy) = -dgamma (xi_xx + xi_yy) / 3
+// (plastic incompressibility).
+#include "materials/plane_stress.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace crumple::materials {
+
+double youngModulus(const Moduli& m) {
+  return 9.0 * m.bulk * m.shear / (3.0 * m.bulk + m.shear);
+}
+
+double poissonRatio(const Moduli& m) {
+  return (3.0 * m.bulk - 2.0 * m.shear) / (2.0 * (3.0 * m.bulk + m.shear));
+}
+
+namespace {
+
+constexpr double kTwoThirds = 2.0 / 3.0;
+constexpr double kNewtonTolerance = 1e-13;
+// Points per chunk of the linear-hardening return (stack scratch).
+constexpr int kChunk = 64;
+
+// Restrict-qualified views of a PlaneStressPoints (see soa.hpp for why these are members of a
+// struct passed by value).
+struct Views {
+  double* __restrict s0;
+  double* __restrict s1;
+  double* __restrict s2;
+  const double* __restrict d0;
+  const double* __restrict d1;
+  const double* __restrict d2;
+  double* __restrict dzz;
+  double* __restrict ep;
+  double* __restrict a0;
+  double* __restrict a1;
+  double* __restrict a2;
+  uint8_t* __restrict failed;
+};
+
+Views viewsOf(const PlaneStressPoints& b) {
+  return Views{b.s[0],  b.s[1],  b.s[2],     b.de[0],    b.de[1],    b.de[2],
+               b.de_zz, b.eps_p, b.alpha[0], b.alpha[1], b.alpha[2], b.failed};
+}
+
+struct ElasticConstants {
+  double E = 0, nu = 0;
+  double E1 = 0;    // E / (1 - nu^2)
+  double G2 = 0;    // 2 G
+  double nu_E = 0;  // nu / E
+  double m1 = 0;    // E / (3 (1 - nu)): the (1, 1, 0) eigenvalue of C P
+};
+
+ElasticConstants elasticConstantsOf(const Moduli& m) {
+  ElasticConstants c;
+  c.E = youngModulus(m);
+  c.nu = poissonRatio(m);
+  c.E1 = c.E / (1.0 - c.nu * c.nu);
+  c.G2 = 2.0 * m.shear;
+  c.nu_E = c.nu / c.E;
+  c.m1 = c.E / (3.0 * (1.0 - c.nu));
+  return c;
+}
+
+// Cowper-Symonds factor 1 + (rate / C)^(1/P) with the effective strain rate of the in-plane
+// increment completed by an incompressible thickness strain, -(de_xx + de_yy): the strain of
+// fully developed plastic flow, where the rate matters (the thickness strain is only known
+// after the return).
+inline double cowperSymonds(double d0, double d1, double d2, double inv_dt, double C,
+                            double inv_P) {
+  const double dz = d0 + d1;
+  const double ee = d0 * d0 + d1 * d1 + dz * dz + 2.0 * d2 * d2;
+  return 1.0 + std::pow(std::sqrt(kTwoThirds * ee) * inv_dt / C, inv_P);
+}
+
+// ---- elastic --------------------------------------------------------------------------------
+[[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] void elasticPlaneStress(
+    Views a, int n, const ElasticConstants c) {
+  const double zz = -c.nu / (1.0 - c.nu);
+  for (int i = 0; i < n; ++i) {
+    const double d0 = a.d0[i], d1 = a.d1[i];
+    a.s0[i] += c.E1 * (d0 + c.nu * d1);
+    a.s1[i] += c.E1 * (d1 + c.nu * d0);
+    a.s2[i] += c.G2 * a.d2[i];
+    a.dzz[i] = zz * (d0 + d1);
+  }
+}
+
+// ---- linear mixed hardening (MAT_003, bilinear MAT_024) --------------------------------------
+struct LinearHardening {
+  ElasticConstants el;
+  double sigy = 0, Hi = 0, Hk = 0;
+  double C = 0, inv_P = 0;  // Cowper-Symonds
+};
+
+// Trial state of a chunk: what the Newton iteration needs per point.
+struct Trial {
+  double t0[kChunk], t1[kChunk], t2[kChunk];  // trial stress
+  double x1[kChunk], x2[kChunk], x3[kChunk];  // trial xi in the eigenbasis: xx+yy, xx-yy, xy
+  double c1[kChunk], c2[kChunk];              // xi.P.xi = c1 / D1^2 + c2 / D2^2
+  double rf[kChunk], ep[kChunk];
+  double dg[kChunk], lo[kChunk], hi[kChunk], live[kChunk];
+};
+
+template <bool kKinematic, bool kRate>
+[[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] void linearPlaneStress(
+    Views a, int n, double dt, const LinearHardening P) {
+  const ElasticConstants& c = P.el;
+  const double m1 = c.m1 + kTwoThirds * P.Hk, m2 = c.G2 + kTwoThirds * P.Hk;
+  const double inv_m_min = 1.0 / std::min(m1, m2);
+  const double inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;
+  const double huge = std::numeric_limits<double>::max();
+  Trial w;
+  for (int base = 0; base < n; base += kChunk) {
+    const int m = std::min(kChunk, n - base);
+    double* __restrict s0 = a.s0 + base;
+    double* __restrict s1 = a.s1 + base;
+    double* __restrict s2 = a.s2 + base;
+    const double* __restrict d0 = a.d0 + base;
+    const double* __restrict d1 = a.d1 + base;
+    const double* __restrict d2 = a.d2 + base;
+    double* __restrict ep = a.ep + base;
+    double* __restrict al0 = kKinematic ? a.a0 + base : nullptr;
+    double* __restrict al1 = kKinematic ? a.a1 + base : nullptr;
+    double* __restrict al2 = kKinematic ? a.a2 + base : nullptr;
+    // Elastic predictor; yield check at the current plastic strain.
+    for (int i = 0; i < m; ++i) {
+      const double t0 = s0[i] + c.E1 * (d0[i] + c.nu * d1[i]);
+      const double t1 = s1[i] + c.E1 * (d1[i] + c.nu * d0[i]);
+      const double t2 = s2[i] + c.G2 * d2[i];
+      w.t0[i] = t0;
+      w.t1[i] = t1;
+      w.t2[i] = t2;
+      double xx = t0, yy = t1, xy = t2;
+      if constexpr (kKinematic) {
+        xx -= al0[i];
+        yy -= al1[i];
+        xy -= al2[i];
+      }
+      const double x1 = xx + yy, x2 = xx - yy;
+      w.x1[i] = x1;
+      w.x2[i] = x2;
+      w.x3[i] = xy;
+      const double c1 = x1 * x1 * (1.0 / 6.0);
+      const double c2 = 0.5 * x2 * x2 + 2.0 * xy * xy;
+      w.c1[i] = c1;
+      w.c2[i] = c2;
+      double rf = 1.0;
+      if constexpr (kRate) rf = cowperSymonds(d0[i], d1[i], d2[i], inv_dt, P.C, P.inv_P);
+      w.rf[i] = rf;
+      const double e = ep[i];
+      w.ep[i] = e;
+      const double q = std::sqrt(1.5 * (c1 + c2));
+      const double sy = rf * (P.sigy + P.Hi * e);
+      w.dg[i] = 0.0;
+      w.lo[i] = 0.0;
+      // Root bound: q(dgamma) <= q_trial / (1 + min(m) dgamma) and sigma_y >= sy (Hi >= 0).
+      w.hi[i] = sy > 0.0 ? 2.0 * (q / sy - 1.0) * inv_m_min : huge;
+      w.live[i] = q > sy ? 1.0 : 0.0;
+    }
+    // Newton iterations; a converged point keeps its value (selects, no branch).
+    for (int it = 0; it < kPlaneStressMaxIterations; ++it) {
+      double any = 0.0;
+      for (int i = 0; i < m; ++i) {
+        const double dg = w.dg[i];
+        const double i1 = 1.0 / (1.0 + m1 * dg), i2 = 1.0 / (1.0 + m2 * dg);
+        const double u1 = w.c1[i] * i1 * i1, u2 = w.c2[i] * i2 * i2;
+        const double q = std::sqrt(1.5 * (u1 + u2));
+        const double dq = -1.5 * (u1 * m1 * i1 + u2 * m2 * i2) / q;  // d q / d dgamma
+        const double H = w.rf[i] * P.Hi;
+        const double g = q - w.rf[i] * (P.sigy + P.Hi * (w.ep[i] + kTwoThirds * dg * q));
+        const double dg_dgamma = dq - H * kTwoThirds * (q + dg * dq);
+        const double lo = g > 0.0 ? dg : w.lo[i];
+        const double hi = g > 0.0 ? w.hi[i] : dg;
+        double next = dg - g / dg_dgamma;
+        next = (next > lo && next < hi) ? next : 0.5 * (lo + hi);
+        const bool live = w.live[i] != 0.0;
+        const bool converged = !(std::abs(next - dg) > kNewtonTolerance * next);
+        w.dg[i] = live ? next : dg;
+        w.lo[i] = live ? lo : w.lo[i];
+        w.hi[i] = live ? hi : w.hi[i];
+        const double still = live && !converged ? 1.0 : 0.0;
+        w.live[i] = still;
+        any += still;
+      }
+      if (any == 0.0) break;
+    }
+    // Returned stress, back stress, plastic strain and thickness strain.
+    for (int i = 0; i < m; ++i) {
+      const double dg = w.dg[i];
+      const double i1 = 1.0 / (1.0 + m1 * dg), i2 = 1.0 / (1.0 + m2 * dg);
+      const double y1 = w.x1[i] * i1, y2 = w.x2[i] * i2;
+      const double xx = 0.5 * (y1 + y2), yy = 0.5 * (y1 - y2), xy = w.x3[i] * i2;
+      const double q = std::sqrt(1.5 * (w.c1[i] * i1 * i1 + w.c2[i] * i2 * i2));
+      const bool plastic = dg > 0.0;
+      double n0 = xx, n1 = yy, n2 = xy;
+      if constexpr (kKinematic) {
+        const double ca = kTwoThirds * P.Hk * dg;
+        const double b0 = al0[i] + ca * xx, b1 = al1[i] + ca * yy, b2 = al2[i] + ca * xy;
+        n0 += b0;
+        n1 += b1;
+        n2 += b2;
+        al0[i] = plastic ? b0 : al0[i];
+        al1[i] = plastic ? b1 : al1[i];
+        al2[i] = plastic ? b2 : al2[i];
+      }
+      n0 = plastic ? n0 : w.t0[i];
+      n1 = plastic ? n1 : w.t1[i];
+      n2 = plastic ? n2 : w.t2[i];
+      a.dzz[base + i] = -c.nu_E * ((n0 + n1) - (s0[i] + s1[i])) - dg * (xx + yy) * (1.0 / 3.0);
+      s0[i] = n0;
+      s1[i] = n1;
+      s2[i] = n2;
+      ep[i] = w.ep[i] + (plastic ? kTwoThirds * dg * q : 0.0);
+    }
+  }
+}
+
+// Failure by effective plastic strain: set where reached (a failed point stays failed because
+// its plastic strain never decreases).
+void markFailed(PlaneStressPoints& b, double limit) {
+  if (b.failed == nullptr) return;
+  uint8_t* __restrict failed = b.failed;
+  if (!(limit > 0.0) || b.eps_p == nullptr) {
+    std::fill(failed, failed + b.n, uint8_t{0});
+    return;
+  }
+  const double* __restrict ep = b.eps_p;
+  for (int i = 0; i < b.n; ++i) failed[i] = static_cast<uint8_t>(ep[i] >= limit ? 1 : 0);
+}
+
+template <bool kKinematic>
+void linearUpdate(PlaneStressPoints& b, const LinearHardening& P) {
+  if (P.C > 0.0) {
+    linearPlaneStress<kKinematic, true>(viewsOf(b), b.n, b.dt, P);
+  } else {
+    linearPlaneStress<kKinematic, false>(viewsOf(b), b.n, b.dt, P);
+  }
+}
+
+// ---- piecewise-linear yield curve (MAT_024 with LCSS) ---------------------------------------
+// Flow stress and slope of the curve at eps, with the segment convention of
+// model::Curve::valueExtrapolated: segment k holds [x[k], x[k+1]), clamped to the end segments
+// (linear extrapolation beyond them); a single point is a constant flow stress.
+void curveAt(const std::vector<double>& x, const std::vector<double>& y, double eps, double& h,
+             double& slope) {
+  if (x.size() == 1) {
+    h = y[0];
+    slope = 0.0;
+    return;
+  }
+  auto it = std::upper_bound(x.begin(), x.end(), eps);
+  std::size_t k = it == x.begin() ? 0 : static_cast<std::size_t>(it - x.begin()) - 1;
+  k = std::min(k, x.size() - 2);
+  const double dx = x[k + 1] - x[k];
+  if (dx <= 0.0) {
+    h = y[k + 1];
+    slope = 0.0;
+    return;
+  }
+  slope = (y[k + 1] - y[k]) / dx;
+  h = y[k] + (y[k + 1] - y[k]) * (eps - x[k]) / dx;
+}
+
+// The same return as linearPlaneStress (no back stress) with the curve's flow stress and
+// slope looked up at the current iterate; one point at a time (the segment search does not
+// vectorise).
+template <bool kRate>
+void curvePlaneStress(PlaneStressPoints& b, const PiecewiseLinear& law) {
+  const ElasticConstants c = elasticConstantsOf(law.moduli);
+  const double m1 = c.m1, m2 = c.G2;
+  const double inv_dt = b.dt > 0.0 ? 1.0 / b.dt : 0.0;
+  const double inv_P = kRate ? 1.0 / law.p : 0.0;
+  for (int i = 0; i < b.n; ++i) {
+    const double d0 = b.de[0][i], d1 = b.de[1][i], d2 = b.de[2][i];
+    const double s0 = b.s[0][i], s1 = b.s[1][i];
+    const double t0 = s0 + c.E1 * (d0 + c.nu * d1);
+    const double t1 = s1 + c.E1 * (d1 + c.nu * d0);
+    const double t2 = b.s[2][i] + c.G2 * d2;
+    const double x1 = t0 + t1, x2 = t0 - t1;
+    const double c1 = x1 * x1 * (1.0 / 6.0), c2 = 0.5 * x2 * x2 + 2.0 * t2 * t2;
+    const double rf = kRate ? cowperSymonds(d0, d1, d2, inv_dt, law.c, inv_P) : 1.0;
+    const double e = b.eps_p[i];
+    double h, slope;
+    curveAt(law.curve_eps, law.curve_sig, e, h, slope);
+    const double q_trial = std::sqrt(1.5 * (c1 + c2));
+    double dg = 0.0;
+    if (q_trial > rf * h) {
+      double lo = 0.0;
+      double hi = rf * h > 0.0 ? 2.0 * (q_trial / (rf * h) - 1.0) / std::min(m1, m2)
+                               : std::numeric_limits<double>::max();
+      for (int it = 0; it < kPlaneStressMaxIterations; ++it) {
+        const double i1 = 1.0 / (1.0 + m1 * dg), i2 = 1.0 / (1.0 + m2 * dg);
+        const double u1 = c1 * i1 * i1, u2 = c2 * i2 * i2;
+        const double q = std::sqrt(1.5 * (u1 + u2));
+        const double dq = -1.5 * (u1 * m1 * i1 + u2 * m2 * i2) / q;
+        curveAt(law.curve_eps, law.curve_sig, e + kTwoThirds * dg * q, h, slope);
+        const double g = q - rf * h;
+        const double dg_dgamma = dq - rf * slope * kTwoThirds * (q + dg * dq);
+        if (g > 0.0) {
+          lo = dg;
+        } else {
+          hi = dg;
+        }
+        double next = dg - g / dg_dgamma;
+        next = (next > lo && next < hi) ? next : 0.5 * (lo + hi);
+        const bool converged = !(std::abs(next - dg) > kNewtonTolerance * next);
+        dg = next;
+        if (converged) break;
+      }
+    }
+    const double i1 = 1.0 / (1.0 + m1 * dg), i2 = 1.0 / (1.0 + m2 * dg);
+    const double y1 = x1 * i1, y2 = x2 * i2;
+    const bool plastic = dg > 0.0;
+    const double n0 = plastic ? 0.5 * (y1 + y2) : t0;
+    const double n1 = plastic ? 0.5 * (y1 - y2) : t1;
+    const double n2 = plastic ? t2 * i2 : t2;
+    const double q = std::sqrt(1.5 * (c1 * i1 * i1 + c2 * i2 * i2));
+    b.de_zz[i] = -c.nu_E * ((n0 + n1) - (s0 + s1)) - dg * (n0 + n1) * (1.0 / 3.0);
+    b.s[0][i] = n0;
+    b.s[1][i] = n1;
+    b.s[2][i] = n2;
+    b.eps_p[i] = e + (plastic ? kTwoThirds * dg * q : 0.0);
+  }
+}
+
+}  // namespace
+
+void updatePlaneStress(const Elastic& law, PlaneStressPoints& b) {
+  elasticPlaneStress(viewsOf(b), b.n, elasticConstantsOf(law.moduli));
+  if (b.failed != nullptr) std::fill(b.failed, b.failed + b.n, uint8_t{0});
+}
+
+void updatePlaneStress(const PlasticKinematic& law, PlaneStressPoints& b) {
+  LinearHardening P;
+  P.el = elasticConstantsOf(law.moduli);
+  P.sigy = law.sigy;
+  const double Ep = P.el.E * law.etan / (P.el.E - law.etan);
+  P.Hi = law.beta * Ep;
+  P.Hk = (1.0 - law.beta) * Ep;
+  if (law.src > 0.0 && law.srp > 0.0) {
+    P.C = law.src;
+    P.inv_P = 1.0 / law.srp;
+  }
+  linearUpdate<true>(b, P);
+  markFailed(b, law.fs);
+}
+
+void updatePlaneStress(const PiecewiseLinear& law, PlaneStressPoints& b) {
+  const bool rate = law.c > 0.0 && law.p > 0.0;
+  if (!law.curve_eps.empty()) {
+    if (rate) {
+      curvePlaneStress<true>(b, law);
+    } else {
+      curvePlaneStress<false>(b, law);
+    }
+  } else {
+    // Bilinear: isotropic linear hardening (no back stress needed).
+    LinearHardening P;
+    P.el = elasticConstantsOf(law.moduli);
+    P.sigy = law.sigy;
+    P.Hi = P.el.E * law.etan / (P.el.E - law.etan);
+    if (rate) {
+      P.C = law.c;
+      P.inv_P = 1.0 / law.p;
+    }
+    linearUpdate<false>(b, P);
+  }
+  markFailed(b, law.fail);
+}
+
+}  // namespace crumple::materials

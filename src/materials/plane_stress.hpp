@@ -1,0 +1,51 @@
+// Plane-stress updates of the laws for shell integration points: the in-plane stress
+// (xx, yy, xy) advances over one step while the normal stress sigma_zz stays zero; the thickness
+// strain increment that this requires is returned for the thickness update. Transverse shear is
+// elastic and is left to the element.
+//
+// Plastic laws use the plane-stress return mapping of Simo & Taylor (1986), "A return mapping
+// algorithm for plane stress elastoplasticity", IJNME 22:649-670 (also Simo & Hughes,
+// Computational Inelasticity, 1998, sec. 3.4): the return is solved in the three-dimensional
+// space of plane stress, so sigma_zz is zero by construction, and the consistency condition is
+// one scalar equation in the plastic multiplier, solved by Newton's method to convergence
+// (relative step below 1e-13) for each point. The converged stress is the one the 3D radial
+// return (materials.hpp) gives when it is fed the returned thickness strain; the unit tests
+// check this.
+//
+// Like materials.hpp, a law is applied to a batch of points held as structure of arrays, with
+// the overload chosen at compile time (no virtual call per point), and a point's result never
+// depends on the other points of the batch (each point iterates until its own convergence).
+#pragma once
+
+#include <cstdint>
+
+#include "materials/materials.hpp"
+
+namespace crumple::materials {
+
+// A batch of n shell integration points; every pointer addresses n contiguous values. Shear
+// components are tensor components (de_xy = D_xy dt), as in PointBatch.
+struct PlaneStressPoints {
+  int n = 0;
+  double dt = 0.0;
+  double* s[3] = {};          // in-plane stress xx, yy, xy in the element frame, in/out
+  const double* de[3] = {};   // in-plane strain increment xx, yy, xy, in
+  double* de_zz = nullptr;    // out: thickness strain increment (sigma_zz stays 0)
+  double* eps_p = nullptr;    // effective plastic strain, in/out (plastic laws)
+  double* alpha[3] = {};      // back stress xx, yy, xy in plane-stress form (kinematic laws)
+  uint8_t* failed = nullptr;  // out: 1 where the point has reached the failure strain, else 0
+};
+
+// Young's modulus and Poisson's ratio from the moduli every law stores.
+double youngModulus(const Moduli& m);
+double poissonRatio(const Moduli& m);
+
+// Newton iterations allowed per point before the return gives up on convergence (it keeps the
+// last iterate); a return from an explicit step converges in 2 to 6.
+inline constexpr int kPlaneStressMaxIterations = 60;
+
+void updatePlaneStress(const Elastic& law, PlaneStressPoints& b);
+void updatePlaneStress(const PlasticKinematic& law, PlaneStressPoints& b);
+void updatePlaneStress(const PiecewiseLinear& law, PlaneStressPoints& b);
+
+}  // namespace crumple::materials
