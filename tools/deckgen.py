@@ -15,6 +15,21 @@ class Mesh:
     def __init__(self) -> None:
         self.nodes: list[tuple[float, float, float]] = []
         self.solids: list[tuple[int, list[int]]] = []  # (part id, 8 node ids)
+        self.shells: list[tuple[int, list[int]]] = []  # (part id, 4 node ids; n3 == n4 triangle)
+        self.beams: list[tuple[int, list[int]]] = []  # (part id, [n1, n2, orientation node])
+        self.discretes: list[tuple[int, list[int]]] = []  # (part id, [n1, n2])
+
+    def add_shell(self, part: int, nodes: list[int]) -> int:
+        self.shells.append((part, nodes))
+        return len(self.shells)
+
+    def add_beam(self, part: int, nodes: list[int]) -> int:
+        self.beams.append((part, nodes))
+        return len(self.beams)
+
+    def add_discrete(self, part: int, nodes: list[int]) -> int:
+        self.discretes.append((part, nodes))
+        return len(self.discretes)
 
     def add_node(self, x: float, y: float, z: float) -> int:
         self.nodes.append((x, y, z))
@@ -31,9 +46,16 @@ class Mesh:
         out = ["*NODE"]
         for i, (x, y, z) in enumerate(self.nodes, start=1):
             out.append(f"{i:8d}{x:16.9g}{y:16.9g}{z:16.9g}{0:8d}{0:8d}")
-        out.append("*ELEMENT_SOLID")
-        for e, (part, ns) in enumerate(self.solids, start=1):
-            out.append(f"{e:8d}{part:8d}" + "".join(f"{n:8d}" for n in ns))
+        if self.solids:
+            out.append("*ELEMENT_SOLID")
+            for e, (part, ns) in enumerate(self.solids, start=1):
+                out.append(f"{e:8d}{part:8d}" + "".join(f"{n:8d}" for n in ns))
+        for keyword, elements in (("*ELEMENT_SHELL", self.shells), ("*ELEMENT_BEAM", self.beams),
+                                  ("*ELEMENT_DISCRETE", self.discretes)):
+            if elements:
+                out.append(keyword)
+                for e, (part, ns) in enumerate(elements, start=1):
+                    out.append(f"{e:8d}{part:8d}" + "".join(f"{n:8d}" for n in ns))
         return "\n".join(out) + "\n"
 
 

@@ -6,6 +6,8 @@
                       SPC, follower pressure, nodal load, gravity, prescribed velocity with
                       birth/death, a moving stonewall with friction, rotating initial velocity,
                       stiffness hourglass control, mass scaling and history nodes.
+  structures.k        shells (plastic BT with NIP 5, C0 triangles), solids, Hughes-Liu and
+                      resultant beams, a truss, a spring and a damper in one model.
 """
 
 from __future__ import annotations
@@ -108,11 +110,141 @@ $     mass        v0
 """
 
 
+def structures(nx: int = 16, ny: int = 8) -> str:
+    """Units mm, ms, kg, GPa. Every structural element at once: a plastic Belytschko-Tsay plate
+    (NIP 5) clamped on one edge with a C0-triangle elastic flange along another, a solid block
+    under its free corner, a Hughes-Liu stiffener, resultant beams and a truss, springs and a
+    damper to fixed ground nodes; driven by a prescribed edge velocity and a nodal load."""
+    mesh = Mesh()
+    lx, ly = 80.0, 40.0
+    g = {}
+    for j in range(ny + 1):
+        for i in range(nx + 1):
+            g[i, j] = mesh.add_node(lx * i / nx, ly * j / ny, 0.0)
+    for j in range(ny):
+        for i in range(nx):
+            mesh.add_shell(1, [g[i, j], g[i + 1, j], g[i + 1, j + 1], g[i, j + 1]])
+    # Flange: triangles rising from the edge y = ly.
+    f = {i: mesh.add_node(lx * i / nx, ly, 8.0) for i in range(nx + 1)}
+    for i in range(nx):
+        mesh.add_shell(2, [g[i, ny], g[i + 1, ny], f[i + 1], f[i + 1]])
+        mesh.add_shell(2, [g[i, ny], f[i + 1], f[i], f[i]])
+    # A 2 x 2 x 2 block of solids under the free corner (sharing the plate's nodes).
+    b = {}
+    for k in range(3):
+        for j in range(3):
+            for i in range(3):
+                ii, jj = nx - 2 + i, j
+                b[i, j, k] = g[ii, jj] if k == 2 else mesh.add_node(lx * ii / nx, ly * jj / ny, -5.0 + 2.5 * k)
+    for k in range(2):
+        for j in range(2):
+            for i in range(2):
+                mesh.add_solid(3, [b[i, j, k], b[i + 1, j, k], b[i + 1, j + 1, k], b[i, j + 1, k],
+                                   b[i, j, k + 1], b[i + 1, j, k + 1], b[i + 1, j + 1, k + 1], b[i, j + 1, k + 1]])
+    orient = mesh.add_node(0.0, -100.0, 0.0)
+    # Stiffener along the middle line (Hughes-Liu), resultant beams on the edge y = 0, a truss
+    # across the diagonal.
+    for i in range(nx):
+        mesh.add_beam(4, [g[i, ny // 2], g[i + 1, ny // 2], orient])
+        mesh.add_beam(5, [g[i, 0], g[i + 1, 0], orient])
+    mesh.add_beam(6, [g[0, ny], g[nx, 0], 0])
+    ground = [mesh.add_node(lx, ly * j / ny, -20.0) for j in (0, ny)]
+    mesh.add_discrete(7, [g[nx, 0], ground[0]])
+    mesh.add_discrete(8, [g[nx, ny], ground[1]])
+    fixed = [g[0, j] for j in range(ny + 1)] + [f[0]]
+    driven = [g[nx, j] for j in range(ny + 1)]
+    return f"""*KEYWORD
+*TITLE
+structures: shells, triangles, solids, beams, truss, springs (parallel determinism test)
+*CONTROL_TERMINATION
+       1.0
+*CONTROL_SHELL
+$   wrpang     esort     irnxx    istupd    theory       bwc     miter      proj
+      20.0         1        -1         1         2         1         1         0
+*DATABASE_GLSTAT
+      0.05
+*DATABASE_MATSUM
+      0.05
+*DATABASE_BINARY_D3PLOT
+       0.5
+*PART
+plastic plate (BT, NIP 5)
+         1         1         1
+*PART
+flange (C0 triangles)
+         2         2         2
+*PART
+corner block
+         3         3         2
+*PART
+stiffener (Hughes-Liu)
+         4         4         2
+*PART
+edge beams (resultant)
+         5         5         2
+*PART
+truss
+         6         6         1
+*PART
+spring
+         7         7         3
+*PART
+damper
+         8         7         4
+*SECTION_SHELL
+         1         2    0.8333         5
+       1.2       1.2       1.2       1.2
+*SECTION_SHELL
+         2         4    0.8333         3
+       1.0       1.0       1.0       1.0
+*SECTION_SOLID
+         3         1
+*SECTION_BEAM
+         4         1    0.8333         2         0
+       4.0       4.0       2.0       2.0
+*SECTION_BEAM
+         5         2    0.8333         2         0
+       8.0      2.67      10.7       5.0       8.0
+*SECTION_BEAM
+         6         3
+       3.0
+*SECTION_DISCRETE
+         7         0
+*MAT_PIECEWISE_LINEAR_PLASTICITY
+$      mid        ro         e        pr      sigy      etan
+         1   7.85e-6     210.0       0.3      0.25       1.0
+*MAT_ELASTIC
+         2   7.85e-6     210.0       0.3
+*MAT_SPRING_ELASTIC
+         3       5.0
+*MAT_DAMPER_VISCOUS
+         4      0.02
+*DEFINE_CURVE
+         1
+                 0.0                 0.0
+                 0.2                 1.0
+                10.0                 1.0
+{node_set(1, fixed, "clamped edge")}*BOUNDARY_SPC_SET
+         1         0         1         1         1         1         1         1
+{node_set(2, driven, "driven edge")}*BOUNDARY_PRESCRIBED_MOTION_SET
+$     nsid       dof       vad      lcid        sf
+         2         3         0         1      -5.0
+*BOUNDARY_SPC_NODE
+{ground[0]:10d}         0         1         1         1         1         1         1
+{ground[1]:10d}         0         1         1         1         1         1         1
+{orient:10d}         0         1         1         1         1         1         1
+*LOAD_NODE_POINT
+{f[nx // 2]:10d}         2         1       0.2
+{mesh.keyword_text()}*END
+"""
+
+
 def main() -> None:
     out = ROOT / "tests" / "data" / "decks"
     out.mkdir(parents=True, exist_ok=True)
     (out / "mixed_conditions.k").write_text(mixed_conditions())
-    print("wrote tests/data/decks/mixed_conditions.k")
+    (out / "structures.k").write_text(structures())
+    print("wrote tests/data/decks/mixed_conditions.k and structures.k")
 
 
 if __name__ == "__main__":

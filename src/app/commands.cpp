@@ -37,20 +37,25 @@ std::string modelSummary(const model::Model& m, const solver::Solver& s) {
   out += fmt::format("deck: {}\n", m.deck_path);
   if (!m.title.empty()) out += fmt::format("title: {}\n", m.title);
   out += fmt::format("nodes: {}\nsolid elements: {}\n", m.nodes.size(), m.solids.size());
-  std::map<int32_t, std::size_t> per_part;
-  for (int32_t p : m.solids.part) ++per_part[p];
-  for (const auto& [p, count] : per_part) {
-    const auto& part = m.parts[static_cast<std::size_t>(p)];
+  if (m.shells.size() > 0) out += fmt::format("shell elements: {}\n", m.shells.size());
+  if (m.beams.size() > 0) out += fmt::format("beam elements: {}\n", m.beams.size());
+  if (m.discretes.size() > 0) out += fmt::format("discrete elements: {}\n", m.discretes.size());
+  std::map<std::pair<int32_t, int>, std::size_t> per_part;
+  for (std::size_t g = 0; g < m.numElements(); ++g)
+    ++per_part[{m.elementPart(g), int(m.element(g).first)}];
+  static constexpr const char* kPlural[] = {"solids", "shells", "beams", "discretes"};
+  for (const auto& [key, count] : per_part) {
+    const auto& part = m.parts[static_cast<std::size_t>(key.first)];
     const auto& mat = m.materials[static_cast<std::size_t>(part.material)];
-    out += fmt::format("  part {}{}: {} solids, {} {} (density {:g})\n", part.id,
-                       part.title.empty() ? "" : " \"" + part.title + "\"", count, model::materialKeyword(mat.law),
-                       mat.id, mat.rho);
+    out += fmt::format("  part {}{}: {} {}, {} {} (density {:g})\n", part.id,
+                       part.title.empty() ? "" : " \"" + part.title + "\"", count,
+                       kPlural[key.second], model::materialKeyword(mat.law), mat.id, mat.rho);
   }
   out += fmt::format("total mass: {:.6g}\n", s.totalMass());
   if (s.addedMass() > 0.0)
     out += fmt::format("mass added by scaling (DT2MS): {:.6g} ({:.3g}%)\n", s.addedMass(),
                        100.0 * s.addedMass() / s.totalMass());
-  out += fmt::format("initial time step: {:.6g} (element {}, TSSFAC {:g})\n", s.initialDt(),
+  out += fmt::format("initial time step: {:.6g} ({}, TSSFAC {:g})\n", s.initialDt(),
                      s.initialDtElement(), m.controls.tssfac);
   out += fmt::format("end time: {:g}\n", m.controls.end_time);
   return out;
@@ -294,7 +299,7 @@ int runCommand(const RunOptions& opt) {
   if (s.cycle() > 0 && info.wall_s > info.setup_s)
     say(fmt::format("set-up {:.3f} s; {:.3g} element-cycles per second in the cycle loop\n",
                     info.setup_s,
-                    double(sd.global_solids) * double(s.cycle()) / (info.wall_s - info.setup_s)));
+                    double(sd.global_elements) * double(s.cycle()) / (info.wall_s - info.setup_s)));
   if (show) std::printf("%s termination; results in %s\n", info.termination.c_str(), dir.c_str());
   return status;
 }

@@ -26,6 +26,8 @@ Boundary::Boundary(const model::Model& m, const domain::Subdomain& sd) {
   for (const auto& s : m.spcs) {
     const int32_t n = sd.localNode(s.node);
     if (n != model::kNone && (s.dofs & 7)) spc_.emplace_back(n, s.dofs);
+    // Rotational freedoms exist only at nodes of shells and beams (sd.rotations).
+    if (n != model::kNone && (s.dofs >> 3) && sd.rotations) spc_rot_.emplace_back(n, s.dofs >> 3);
   }
   for (const auto& p : m.prescribed) {
     const int32_t n = sd.localNode(p.node);
@@ -113,6 +115,9 @@ double Boundary::applyKinematics(double t, double dt_n, double dt_half, domain::
         impose(3 * static_cast<std::size_t>(n) + c, 0.0);
         sd.a[3 * static_cast<std::size_t>(n) + c] = 0.0;
       }
+  for (const auto& [n, mask] : spc_rot_)
+    for (int c = 0; c < 3; ++c)
+      if (mask & (1u << c)) sd.w[3 * static_cast<std::size_t>(n) + c] = 0.0;
   const double t_half = t + 0.5 * dt_half;
   const double t_next = t + dt_half;
   for (const auto& m : motion_) {

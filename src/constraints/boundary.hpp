@@ -82,6 +82,7 @@ class Boundary {
                            const std::vector<double>& forces, const comm::Communicator& comm);
 
   std::vector<std::pair<int32_t, model::DofMask>> spc_;
+  std::vector<std::pair<int32_t, model::DofMask>> spc_rot_;  // rotational SPC (bits: rx, ry, rz)
   std::vector<Motion> motion_;
   std::vector<NodalLoad> loads_;
   std::vector<Pressure> pressure_;

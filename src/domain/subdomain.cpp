@@ -1,8 +1,8 @@
 #include "domain/subdomain.hpp"
 
 #include <algorithm>
-#include <map>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <set>
 #include <stdexcept>
@@ -91,8 +91,8 @@ struct Corner {
   int32_t node;    // model node
   int64_t source;  // global source number (element g, or num_elements + segment)
   int32_t corner;
-  int32_t slot;      // local or ghost slot
-  bool rotational;   // a moment corner (shells, beams)
+  int32_t slot;     // local or ghost slot
+  bool rotational;  // a moment corner (shells, beams)
   bool operator<(const Corner& o) const {
     if (node != o.node) return node < o.node;
     if (source != o.source) return source < o.source;
@@ -326,8 +326,19 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
     b.law = materials::makeLaw(mat, model);
     b.rho0 = mat.rho;
     b.rigid = isRigid(model, part);
-    b.section = {sec.elform, sec.cst, sec.ts1, sec.ts2, sec.tt1, sec.tt2, sec.a,
-                 sec.iss,    sec.itt, sec.j,   sec.sa,  sec.shrf};
+    b.section.elform = sec.elform;
+    b.section.cst = sec.cst;
+    b.section.ts1 = sec.ts1;
+    b.section.ts2 = sec.ts2;
+    b.section.tt1 = sec.tt1;
+    b.section.tt2 = sec.tt2;
+    b.section.a = sec.a;
+    b.section.iss = sec.iss;
+    b.section.itt = sec.itt;
+    b.section.j = sec.j;
+    b.section.sa = sec.sa;
+    b.section.shear_factor = sec.shrf;
+    b.section.qr = sec.qr;
     b.orientation.resize(b.size());
     for (std::size_t k = 0; k < b.size(); ++k) {
       const auto e = static_cast<std::size_t>(b.elem[k]);
@@ -491,10 +502,9 @@ int64_t findIn(const Blocks& blocks, int32_t index, F&& value) {
 }
 template <class F>
 int64_t findElement(const Subdomain& sd, int64_t global_index, F&& value) {
-  int f = model::kFamilies - 1;
-  while (f > 0 && global_index < sd.family_offset[std::size_t(f)]) --f;
+  const model::Family f = sd.familyOf(global_index);
   const auto index = static_cast<int32_t>(global_index - sd.family_offset[std::size_t(f)]);
-  switch (static_cast<model::Family>(f)) {
+  switch (f) {
     case model::Family::Shell:
       return findIn(sd.shell_blocks, index, value);
     case model::Family::Beam:

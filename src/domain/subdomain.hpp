@@ -134,7 +134,7 @@ struct Subdomain {
   std::size_t num_local_slots = 0;
   GatherPlan internal;    // element force slots -> nodal internal force (and mass)
   GatherPlan rotational;  // element moment slots -> nodal moment (and rotational inertia)
-  GatherPlan pressure;  // pressure slots -> nodal external force
+  GatherPlan pressure;    // pressure slots -> nodal external force
   std::vector<PeerExchange> peers;
 
   // Sizes of the whole model (this rank holds only part of it).
@@ -149,6 +149,12 @@ struct Subdomain {
   // User id and part id of an element held here, by global element index; 0 if not held.
   int64_t elementId(int64_t global_index) const;
   int64_t elementPart(int64_t global_index) const;
+  // Family of a global element index.
+  model::Family familyOf(int64_t global_index) const {
+    int k = model::kFamilies - 1;
+    while (k > 0 && global_index < family_offset[std::size_t(k)]) --k;
+    return static_cast<model::Family>(k);
+  }
   // Global index of element `index` of a family.
   int64_t globalElement(model::Family family, int32_t index) const {
     return family_offset[static_cast<std::size_t>(family)] + index;

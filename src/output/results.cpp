@@ -9,6 +9,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "elements/shell.hpp"
+
 namespace crumple::output {
 
 namespace {
@@ -149,28 +151,88 @@ void ResultsWriter::writePlotState(const solver::Solver& s) {
   std::vector<double> disp(3 * nn);
   for (std::size_t i = 0; i < 3 * nn; ++i) disp[i] = sd.x[i] - sd.x0[i];
 
-  // Cells: active elements in global element order across blocks.
+  // Cells: active elements in global element order across blocks and families. Shells give
+  // their mid-surface stress as "stress" and the outer surfaces as stress_top/_bottom
+  // (solids give the same tensor in all three), in global axes.
   struct Cell {
-    int32_t elem;
-    const domain::SolidBlock* blk;
+    int64_t elem;  // global element index
+    model::Family family;
+    const domain::BlockBase* blk;
     std::size_t k;
   };
   std::vector<Cell> cells;
   for (const auto& blk : sd.solid_blocks)
     for (std::size_t k = 0; k < blk.size(); ++k)
-      if (blk.active[k]) cells.push_back({blk.elem[k], &blk, k});
+      if (blk.active[k]) cells.push_back({blk.elem[k], model::Family::Solid, &blk, k});
+  for (const auto& blk : sd.shell_blocks)
+    for (std::size_t k = 0; k < blk.size(); ++k)
+      if (blk.active[k])
+        cells.push_back(
+            {sd.globalElement(model::Family::Shell, blk.elem[k]), model::Family::Shell, &blk, k});
+  for (const auto& blk : sd.beam_blocks)
+    for (std::size_t k = 0; k < blk.size(); ++k)
+      if (blk.active[k])
+        cells.push_back(
+            {sd.globalElement(model::Family::Beam, blk.elem[k]), model::Family::Beam, &blk, k});
+  for (const auto& blk : sd.discrete_blocks)
+    for (std::size_t k = 0; k < blk.size(); ++k)
+      cells.push_back({sd.globalElement(model::Family::Discrete, blk.elem[k]),
+                       model::Family::Discrete, &blk, k});
   std::sort(cells.begin(), cells.end(),
             [](const Cell& a, const Cell& b) { return a.elem < b.elem; });
   const std::size_t nc = cells.size();
-  std::vector<int32_t> conn(8 * nc);
-  std::vector<double> stress(6 * nc), eps(nc), von_mises(nc);
+  std::vector<int32_t> conn(8 * nc, 0);
+  std::vector<uint8_t> sizes(nc);
+  std::vector<double> stress(6 * nc, 0.0), stress_top(6 * nc, 0.0), stress_bottom(6 * nc, 0.0);
+  std::vector<double> eps(nc, 0.0), eps_top(nc, 0.0), eps_bottom(nc, 0.0), von_mises(nc);
+  std::vector<double> thickness(nc, 0.0), axial_force(nc, 0.0);
   std::vector<int64_t> part(nc), rank(nc, sd.rank), elem_id(nc);
   for (std::size_t i = 0; i < nc; ++i) {
     const auto& c = cells[i];
-    for (int a = 0; a < 8; ++a) conn[8 * i + a] = c.blk->conn[c.k][a];
-    double sg[6];
-    for (int k = 0; k < 6; ++k) stress[6 * i + k] = sg[k] = c.blk->sigAt(k, c.k);
-    eps[i] = c.blk->eps_p.empty() ? 0.0 : c.blk->eps_p[c.k];
+    double layers[3][6] = {};
+    double eps_layers[3] = {};
+    switch (c.family) {
+      case model::Family::Solid: {
+        const auto& b = static_cast<const domain::SolidBlock&>(*c.blk);
+        sizes[i] = 8;
+        for (int a = 0; a < 8; ++a) conn[8 * i + a] = b.conn[c.k][a];
+        for (int l = 0; l < 3; ++l) {
+          for (int k = 0; k < 6; ++k) layers[l][k] = b.sigAt(k, c.k);
+          eps_layers[l] = b.eps_p.empty() ? 0.0 : b.eps_p[c.k];
+        }
+        break;
+      }
+      case model::Family::Shell: {
+        const auto& b = static_cast<const domain::ShellBlock&>(*c.blk);
+        sizes[i] = 4;
+        for (int a = 0; a < 4; ++a) conn[8 * i + a] = b.conn[c.k][a];
+        elements::shellSurfaceStress(b, sd.x, c.k, layers, eps_layers);
+        thickness[i] = b.thick[c.k];
+        break;
+      }
+      case model::Family::Beam: {
+        const auto& b = static_cast<const domain::BeamBlock&>(*c.blk);
+        sizes[i] = 2;
+        for (int a = 0; a < 2; ++a) conn[8 * i + a] = b.conn[c.k][a];
+        break;
+      }
+      case model::Family::Discrete: {
+        const auto& b = static_cast<const domain::DiscreteBlock&>(*c.blk);
+        sizes[i] = 2;
+        for (int a = 0; a < 2; ++a) conn[8 * i + a] = b.conn[c.k][a];
+        axial_force[i] = b.force.empty() ? 0.0 : b.force[c.k];
+        break;
+      }
+    }
+    for (int k = 0; k < 6; ++k) {
+      stress_bottom[6 * i + k] = layers[0][k];
+      stress[6 * i + k] = layers[1][k];
+      stress_top[6 * i + k] = layers[2][k];
+    }
+    eps_bottom[i] = eps_layers[0];
+    eps[i] = eps_layers[1];
+    eps_top[i] = eps_layers[2];
+    const double* sg = layers[1];
     const double p = (sg[0] + sg[1] + sg[2]) / 3.0;
     const double j2 =
         0.5 * ((sg[0] - p) * (sg[0] - p) + (sg[1] - p) * (sg[1] - p) + (sg[2] - p) * (sg[2] - p)) +
@@ -179,7 +241,7 @@ void ResultsWriter::writePlotState(const solver::Solver& s) {
     part[i] = c.blk->part_id;
     elem_id[i] = c.blk->elem_id[c.k];
   }
-  MeshView mesh{nn, sd.x.data(), nc, conn.data()};
+  MeshView mesh{nn, sd.x.data(), nc, conn.data(), sizes.data()};
   std::vector<FieldView> fields = {
       {"node_id", Association::Point, 1, nullptr, sd.node_id.data()},
       {"displacement", Association::Point, 3, disp.data(), nullptr},
@@ -191,7 +253,15 @@ void ResultsWriter::writePlotState(const solver::Solver& s) {
       {"stress", Association::Cell, 6, stress.data(), nullptr},
       {"von_mises", Association::Cell, 1, von_mises.data(), nullptr},
       {"effective_plastic_strain", Association::Cell, 1, eps.data(), nullptr},
+      {"stress_top", Association::Cell, 6, stress_top.data(), nullptr},
+      {"stress_bottom", Association::Cell, 6, stress_bottom.data(), nullptr},
+      {"effective_plastic_strain_top", Association::Cell, 1, eps_top.data(), nullptr},
+      {"effective_plastic_strain_bottom", Association::Cell, 1, eps_bottom.data(), nullptr},
+      {"thickness", Association::Cell, 1, thickness.data(), nullptr},
+      {"axial_force", Association::Cell, 1, axial_force.data(), nullptr},
   };
+  if (sd.rotations)
+    fields.push_back({"angular_velocity", Association::Point, 3, sd.w.data(), nullptr});
   const int state = plot_count_++;
   if (!comm_.distributed()) {
     const std::string name = fmt::format("{}/state_{:05d}.vtu", kStatesFolder, state);
@@ -216,16 +286,20 @@ void ResultsWriter::writePlotState(const solver::Solver& s) {
 std::string ResultsWriter::stateDigestGlobal(const solver::Solver& s) const {
   // Every rank sends (id, x, v) of the nodes it owns; rank 0 orders them by id.
   const auto& sd = s.subdomain();
+  // With shells or beams the angular velocities join the velocities in the digest.
   struct Record {
     int64_t id;
-    double x[3], v[3];
+    double x[3], v[3], w[3];
   };
   std::vector<char> mine;
   for (std::size_t n = 0; n < sd.numNodes(); ++n) {
     if (!sd.node_owned[n]) continue;
     Record r{sd.node_id[n],
              {sd.x[3 * n], sd.x[3 * n + 1], sd.x[3 * n + 2]},
-             {sd.v[3 * n], sd.v[3 * n + 1], sd.v[3 * n + 2]}};
+             {sd.v[3 * n], sd.v[3 * n + 1], sd.v[3 * n + 2]},
+             {0.0, 0.0, 0.0}};
+    if (sd.rotations)
+      for (int c = 0; c < 3; ++c) r.w[c] = sd.w[3 * n + std::size_t(c)];
     const auto* p = reinterpret_cast<const char*>(&r);
     mine.insert(mine.end(), p, p + sizeof(Record));
   }
@@ -240,6 +314,7 @@ std::string ResultsWriter::stateDigestGlobal(const solver::Solver& s) const {
   for (const auto& r : recs) {
     x.insert(x.end(), r.x, r.x + 3);
     v.insert(v.end(), r.v, r.v + 3);
+    if (sd.rotations) v.insert(v.end(), r.w, r.w + 3);
   }
   return stateDigest(x, v);
 }
@@ -262,7 +337,7 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
   j["cycles"] = s.cycle();
   j["wall_s"] = info.wall_s;
   const auto& sd = s.subdomain();
-  const double element_cycles = double(sd.global_solids) * double(s.cycle());
+  const double element_cycles = double(sd.global_elements) * double(s.cycle());
   // The rate of the time-stepping loop: set-up (reading the deck, partitioning) is reported
   // apart, as setup_s, and would otherwise hide the solver's speed on short runs.
   const double loop_s = info.wall_s - info.setup_s;
@@ -272,8 +347,11 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
   j["timing"] = {{"elements", t.elements},       {"contact", t.contact},
                  {"constraints", t.constraints}, {"communication", t.communication},
                  {"output", seconds_},           {"other", std::max(0.0, info.wall_s - accounted)}};
-  j["counts"] = {
-      {"nodes", sd.global_nodes}, {"solids", sd.global_solids}, {"shells", 0}, {"beams", 0}};
+  j["counts"] = {{"nodes", sd.global_nodes},
+                 {"solids", sd.global_solids},
+                 {"shells", sd.global_family[std::size_t(model::Family::Shell)]},
+                 {"beams", sd.global_family[std::size_t(model::Family::Beam)]},
+                 {"discretes", sd.global_family[std::size_t(model::Family::Discrete)]}};
   j["energy"] = {{"kinetic", e.kinetic},
                  {"internal", e.internal},
                  {"hourglass", e.hourglass},

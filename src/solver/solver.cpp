@@ -7,6 +7,9 @@
 #include <cmath>
 #include <limits>
 
+#include "elements/beam.hpp"
+#include "elements/discrete.hpp"
+#include "elements/shell.hpp"
 #include "util/error.hpp"
 
 namespace crumple::solver {
@@ -69,19 +72,52 @@ void Solver::exchangeSharedSlots() {
   endSharedExchange();
 }
 
-int64_t Solver::controllingElement(int32_t local_best, bool holds_global_min) const {
-  // The smallest user id among the elements at the global minimum step: ascending user ids
-  // follow model indices, so this is the same element whatever the partition.
+int64_t Solver::controllingElement(int64_t local_best, bool holds_global_min) const {
+  // The lowest global index among the elements at the global minimum step: the same element
+  // whatever the partition.
   constexpr int64_t kNoElement = std::numeric_limits<int64_t>::max();
-  const int64_t id = comm_.minAll(holds_global_min ? sd_.elementId(local_best) : kNoElement);
-  return id == kNoElement ? 0 : id;
+  const int64_t g = comm_.minAll(holds_global_min ? local_best : kNoElement);
+  return g == kNoElement ? -1 : g;
 }
+
+std::string Solver::elementLabel(int64_t global_index) const {
+  if (global_index < 0) return "none";
+  constexpr int64_t kNoElement = std::numeric_limits<int64_t>::max();
+  const int64_t held = sd_.elementId(global_index);
+  const int64_t id = comm_.minAll(held != 0 ? held : kNoElement);
+  const int64_t part = comm_.minAll(held != 0 ? sd_.elementPart(global_index) : kNoElement);
+  return fmt::format("{} element {} (part {})", model::familyName(sd_.familyOf(global_index)), id,
+                     part);
+}
+
+namespace {
+// Keeps the smaller step, and on a tie the lower global element index (the same element
+// whatever the partition).
+void keepMin(double dt, int64_t elem, double& dt_min, int64_t& dt_elem) {
+  if (elem >= 0 && (dt < dt_min || (dt == dt_min && elem < dt_elem))) {
+    dt_min = dt;
+    dt_elem = elem;
+  }
+}
+// Slots per element of each block kind (blocks.hpp, "Slot layout").
+template <class Block>
+constexpr std::size_t kSlotsPer = 8;
+template <>
+constexpr std::size_t kSlotsPer<domain::BeamBlock> = 4;
+template <>
+constexpr std::size_t kSlotsPer<domain::DiscreteBlock> = 2;
+template <class Block>
+void zeroSlots(const Block& b, std::vector<double>& slots) {
+  std::fill(slots.begin() + std::ptrdiff_t(3 * b.slot_offset),
+            slots.begin() + std::ptrdiff_t(3 * (b.slot_offset + kSlotsPer<Block> * b.size())), 0.0);
+}
+}  // namespace
 
 void Solver::initialize() {
   const auto& ctl = model_.controls;
   std::vector<std::vector<double>> element_dt(sd_.solid_blocks.size());
   double dt_min = 1e300;
-  int32_t dt_elem = -1;
+  int64_t dt_elem = -1;
   for (std::size_t ib = 0; ib < sd_.solid_blocks.size(); ++ib) {
     auto& blk = sd_.solid_blocks[ib];
     elements::markIsolatedElements(blk, sd_.internal);
@@ -92,17 +128,64 @@ void Solver::initialize() {
           "ordering (LS-DYNA: nodes 1-4 one face, 5-8 the opposite face, right-handed)",
           sd_.elementId(st.bad_elem), blk.part_id));
     }
-    if (st.dt_elem >= 0 && (st.dt_min < dt_min || (st.dt_min == dt_min && st.dt_elem < dt_elem))) {
-      dt_min = st.dt_min;
-      dt_elem = st.dt_elem;
-    }
+    // Rigid elements have no stable step of their own.
+    if (!blk.rigid) keepMin(st.dt_min, st.dt_elem, dt_min, dt_elem);
   }
+  // Shells and beams: never mass-scaled here, so kept apart from the solids' minimum.
+  double dt_other = 1e300;
+  int64_t dt_other_elem = -1;
+  std::vector<double> dts;
+  for (auto& blk : sd_.shell_blocks) {
+    elements::resizeShellBlock(blk, blk.size());
+    const auto st = elements::initializeShells(blk, sd_.x0, sd_.slots.data(), dts);
+    if (st.bad_elem >= 0)
+      throw util::NumericalError(fmt::format(
+          "shell element {} (part {}) has zero area: check its nodes",
+          sd_.elementId(sd_.globalElement(model::Family::Shell, st.bad_elem)), blk.part_id));
+    if (!blk.rigid && st.dt_elem >= 0)
+      keepMin(st.dt_min, sd_.globalElement(model::Family::Shell, st.dt_elem), dt_other,
+              dt_other_elem);
+  }
+  for (auto& blk : sd_.beam_blocks) {
+    elements::resizeBeamBlock(blk, blk.size());
+    const auto st = elements::initializeBeams(blk, sd_.x0, sd_.slots.data(), dts);
+    if (st.bad_elem >= 0)
+      throw util::NumericalError(fmt::format(
+          "beam element {} (part {}) has zero length",
+          sd_.elementId(sd_.globalElement(model::Family::Beam, st.bad_elem)), blk.part_id));
+    if (!blk.rigid && st.dt_elem >= 0)
+      keepMin(st.dt_min, sd_.globalElement(model::Family::Beam, st.dt_elem), dt_other,
+              dt_other_elem);
+  }
+  for (auto& blk : sd_.discrete_blocks) {
+    elements::resizeDiscreteBlock(blk, blk.size());
+    elements::initializeDiscretes(blk, sd_.x0, sd_.slots.data());
+  }
+  // Element masses of shells and beams (the sum of their corners' lumped masses, which the
+  // kernels split equally among distinct corners), for the per-part sums of matsum.
+  auto elementMasses = [&](const auto& blk, std::size_t per, std::size_t forces) {
+    std::vector<double> m(blk.size(), 0.0);
+    for (std::size_t e = 0; e < blk.size(); ++e)
+      for (std::size_t a = 0; a < forces; ++a)
+        m[e] += sd_.slots[3 * (blk.slot_offset + per * e + a)];
+    return m;
+  };
+  shell_mass_.clear();
+  for (const auto& blk : sd_.shell_blocks) shell_mass_.push_back(elementMasses(blk, 8, 4));
+  beam_mass_.clear();
+  for (const auto& blk : sd_.beam_blocks) beam_mass_.push_back(elementMasses(blk, 4, 2));
   exchangeSharedSlots();
   gather(sd_.internal, sd_.mass, 1);
+  if (sd_.rotations) gather(sd_.rotational, sd_.inertia, 1);
   // Point masses (*ELEMENT_MASS) belong to their node on every rank that holds it.
   for (const auto& pm : model_.point_masses)
     if (const int32_t n = sd_.localNode(pm.node); n != model::kNone)
       sd_.mass[static_cast<std::size_t>(n)] += pm.mass;
+  // Springs: their step needs the masses of their nodes.
+  for (const auto& blk : sd_.discrete_blocks)
+    for (std::size_t e = 0; e < blk.size(); ++e)
+      keepMin(elements::discreteStableStep(blk, sd_.mass, e),
+              sd_.globalElement(model::Family::Discrete, blk.elem[e]), dt_other, dt_other_elem);
   std::vector<double> physical_mass = sd_.mass;
 
   // Mass scaling (*CONTROL_TIMESTEP DT2MS): elements whose step TSSFAC*dt_e is below |DT2MS|
@@ -111,6 +194,10 @@ void Solver::initialize() {
   if (ctl.dt2ms != 0.0) {
     const double target = std::abs(ctl.dt2ms);
     bool any = false;
+    // Only solids are scaled: the other blocks' slots must add nothing to the added mass.
+    for (const auto& blk : sd_.shell_blocks) zeroSlots(blk, sd_.slots);
+    for (const auto& blk : sd_.beam_blocks) zeroSlots(blk, sd_.slots);
+    for (const auto& blk : sd_.discrete_blocks) zeroSlots(blk, sd_.slots);
     for (std::size_t ib = 0; ib < sd_.solid_blocks.size(); ++ib) {
       auto& blk = sd_.solid_blocks[ib];
       blk.mass_scale.assign(blk.paddedSize(), 1.0);
@@ -131,18 +218,23 @@ void Solver::initialize() {
       gather(sd_.internal, sd_.mass_added, 1);
       for (std::size_t n = 0; n < sd_.numNodes(); ++n) sd_.mass[n] += sd_.mass_added[n];
       dt_min = 1e300;
+      dt_elem = -1;
       for (std::size_t ib = 0; ib < sd_.solid_blocks.size(); ++ib) {
         const auto& blk = sd_.solid_blocks[ib];
-        for (std::size_t e = 0; e < blk.size(); ++e) {
-          const double dte = element_dt[ib][e] * std::sqrt(blk.mass_scale[e]);
-          if (dte < dt_min || (dte == dt_min && blk.elem[e] < dt_elem)) {
-            dt_min = dte;
-            dt_elem = blk.elem[e];
-          }
-        }
+        if (blk.rigid) continue;
+        for (std::size_t e = 0; e < blk.size(); ++e)
+          keepMin(element_dt[ib][e] * std::sqrt(blk.mass_scale[e]), blk.elem[e], dt_min, dt_elem);
       }
     }
   }
+  keepMin(dt_other, dt_other_elem, dt_min, dt_elem);
+  // Rigid elements give mass only: their slots stay zero from here on.
+  for (const auto& blk : sd_.solid_blocks)
+    if (blk.rigid) zeroSlots(blk, sd_.slots);
+  for (const auto& blk : sd_.shell_blocks)
+    if (blk.rigid) zeroSlots(blk, sd_.slots);
+  for (const auto& blk : sd_.beam_blocks)
+    if (blk.rigid) zeroSlots(blk, sd_.slots);
   total_mass_ = 0.0;
   added_mass_ = 0.0;
   for (std::size_t n = 0; n < sd_.numNodes(); ++n)
@@ -160,6 +252,7 @@ void Solver::initialize() {
 
   const double dt_global = comm_.minAll(dt_min);
   dt_initial_elem_ = controllingElement(dt_elem, dt_elem >= 0 && dt_min == dt_global);
+  dt_initial_label_ = elementLabel(dt_initial_elem_);
   dt_next_ = ctl.tssfac * dt_global;
   if (ctl.dt_init > 0.0) dt_next_ = std::min(dt_next_, ctl.dt_init);
   dt_initial_ = dt_next_;
@@ -178,57 +271,91 @@ bool Solver::finished() const {
 }
 
 void Solver::computeElementGroup(Group group, ElementPass& pass) {
-  for (auto& blk : sd_.solid_blocks) {
-    const std::size_t first = group == Group::Shared ? 0 : blk.shared_end;
-    const std::size_t last = group == Group::Shared ? blk.shared_end : blk.size();
-    if (first >= last) continue;
-    const auto st = blk.elform == 2
-                        ? elements::computeFullSolidForces(blk, sd_.x, sd_.v, dt_, bv_,
-                                                           sd_.slots.data(), first, last)
-                        : elements::computeSolidForces(blk, sd_.x, sd_.v, dt_, bv_,
-                                                       sd_.slots.data(), first, last);
-    if (st.dt_elem >= 0 &&
-        (st.dt_min < pass.dt_min || (st.dt_min == pass.dt_min && st.dt_elem < pass.dt_elem))) {
-      pass.dt_min = st.dt_min;
-      pass.dt_elem = st.dt_elem;
+  auto range = [&](const domain::BlockBase& blk) {
+    return group == Group::Shared ? std::pair{std::size_t(0), blk.shared_end}
+                                  : std::pair{blk.shared_end, blk.size()};
+  };
+  auto merge = [&](const elements::BlockStatus& st, model::Family family) {
+    if (st.dt_elem >= 0)
+      keepMin(st.dt_min, sd_.globalElement(family, st.dt_elem), pass.dt_min, pass.dt_elem);
+    if (st.bad_elem >= 0) {
+      const int64_t bad = sd_.globalElement(family, st.bad_elem);
+      if (pass.bad < 0 || bad < pass.bad) pass.bad = bad;
     }
-    if (st.bad_elem >= 0 && (pass.bad < 0 || st.bad_elem < pass.bad)) pass.bad = st.bad_elem;
     eroded_ += st.eroded;
+  };
+  for (auto& blk : sd_.solid_blocks) {
+    const auto [first, last] = range(blk);
+    if (first >= last || blk.rigid) continue;
+    merge(blk.elform == 2 ? elements::computeFullSolidForces(blk, sd_.x, sd_.v, dt_, bv_,
+                                                             sd_.slots.data(), first, last)
+                          : elements::computeSolidForces(blk, sd_.x, sd_.v, dt_, bv_,
+                                                         sd_.slots.data(), first, last),
+          model::Family::Solid);
+  }
+  for (auto& blk : sd_.shell_blocks) {
+    const auto [first, last] = range(blk);
+    if (first >= last || blk.rigid) continue;
+    merge(
+        elements::computeShellForces(blk, sd_.x, sd_.v, sd_.w, dt_, sd_.slots.data(), first, last),
+        model::Family::Shell);
+  }
+  for (auto& blk : sd_.beam_blocks) {
+    const auto [first, last] = range(blk);
+    if (first >= last || blk.rigid) continue;
+    merge(elements::computeBeamForces(blk, sd_.x, sd_.v, sd_.w, dt_, sd_.slots.data(), first, last),
+          model::Family::Beam);
+  }
+  for (auto& blk : sd_.discrete_blocks) {
+    const auto [first, last] = range(blk);
+    if (first >= last) continue;
+    merge(elements::computeDiscreteForces(blk, sd_.x, sd_.v, dt_, sd_.slots.data(), first, last),
+          model::Family::Discrete);
+    // A spring's step depends on its (tangent) stiffness and its nodes' masses.
+    for (std::size_t e = first; e < last; ++e)
+      keepMin(elements::discreteStableStep(blk, sd_.mass, e),
+              sd_.globalElement(model::Family::Discrete, blk.elem[e]), pass.dt_min, pass.dt_elem);
   }
 }
 
 void Solver::finishElementPass(const ElementPass& pass) {
   const double dt_min = pass.dt_min;
-  const int32_t dt_elem = pass.dt_elem, bad = pass.bad;
+  const int64_t dt_elem = pass.dt_elem, bad = pass.bad;
   constexpr int64_t kNoElement = std::numeric_limits<int64_t>::max();
   const int64_t bad_id = comm_.minAll(bad >= 0 ? sd_.elementId(bad) : kNoElement);
   if (bad_id != kNoElement) {
     // The rank holding the element names its part; user ids ascend with model indices.
     const int64_t part =
         comm_.minAll(bad >= 0 && sd_.elementId(bad) == bad_id ? sd_.elementPart(bad) : kNoElement);
-    throw util::NumericalError(
-        fmt::format("negative volume in solid element {} (part {}) at cycle {}, time {:.6g}",
-                    bad_id, part, cycle_, time_));
+    // The family of the element: the lowest global index with that user id on any rank.
+    const int64_t family = comm_.minAll(
+        bad >= 0 && sd_.elementId(bad) == bad_id ? int64_t(sd_.familyOf(bad)) : kNoElement);
+    const bool solid = family == int64_t(model::Family::Solid);
+    throw util::NumericalError(fmt::format("{} in {} element {} (part {}) at cycle {}, time {:.6g}",
+                                           solid ? "negative volume" : "collapsed geometry",
+                                           model::familyName(static_cast<model::Family>(family)),
+                                           bad_id, part, cycle_, time_));
   }
   const double dt_global = comm_.minAll(dt_min);
-  const int64_t dt_elem_id = controllingElement(dt_elem, dt_elem >= 0 && dt_min == dt_global);
+  const int64_t dt_elem_global = controllingElement(dt_elem, dt_elem >= 0 && dt_min == dt_global);
   double dt_new = model_.controls.tssfac * dt_global;
   if (model_.controls.dt_max_curve != model::kNone)
     dt_new = std::min(
         dt_new, model_.curves[static_cast<std::size_t>(model_.controls.dt_max_curve)].value(time_));
   if (!(dt_new > 0.0) || !std::isfinite(dt_new)) {
-    throw util::NumericalError(fmt::format(
-        "time step collapsed to {:.3g} at cycle {}, time {:.6g} (controlling element {})", dt_new,
-        cycle_, time_, dt_elem_id));
+    throw util::NumericalError(
+        fmt::format("time step collapsed to {:.3g} at cycle {}, time {:.6g} (controlling {})",
+                    dt_new, cycle_, time_, elementLabel(dt_elem_global)));
   }
   if (model_.controls.dt_min_ratio > 0.0 && dt_new < model_.controls.dt_min_ratio * dt_initial_) {
     throw util::NumericalError(fmt::format(
         "time step {:.3g} fell below DTMIN x initial step ({:.3g}) at cycle {}, time {:.6g} "
-        "(controlling element {})",
-        dt_new, model_.controls.dt_min_ratio * dt_initial_, cycle_, time_, dt_elem_id));
+        "(controlling {})",
+        dt_new, model_.controls.dt_min_ratio * dt_initial_, cycle_, time_,
+        elementLabel(dt_elem_global)));
   }
   dt_next_ = dt_new;
-  dt_elem_ = dt_elem_id;
+  dt_elem_ = dt_elem_global;
 }
 
 void Solver::updateKinematics() {
@@ -254,6 +381,22 @@ void Solver::updateKinematics() {
       sd_.a[i] = m > 0.0 ? (sd_.f[i] + sd_.f_ext[i]) / m : 0.0;
       sd_.v[i] = v_prev + dt_n * sd_.a[i];
       non_finite |= std::isfinite(sd_.v[i]) ? 0 : 1;
+    }
+  }
+  // Rotations: omega(n+1/2) = omega(n-1/2) + dt M / I with the lumped (scaled) rotary
+  // inertia of the shells and beams (Belytschko, Lin & Tsay 1984; the element kernels keep
+  // their own frames, so no nodal rotation needs to be integrated).
+  if (sd_.rotations) {
+    w_old_.resize(sd_.w.size());
+#pragma omp parallel for schedule(static) reduction(| : non_finite)
+    for (std::size_t n = 0; n < nn; ++n) {
+      const double inertia = sd_.inertia[n];
+      for (int c = 0; c < 3; ++c) {
+        const std::size_t i = 3 * n + c;
+        w_old_[i] = sd_.w[i];
+        if (inertia > 0.0) sd_.w[i] += dt_n * (sd_.moment[i] + sd_.moment_ext[i]) / inertia;
+        non_finite |= std::isfinite(sd_.w[i]) ? 0 : 1;
+      }
     }
   }
   non_finite_ = non_finite != 0;
@@ -305,6 +448,7 @@ void Solver::step() {
   endSharedExchange();
   auto t4 = Clock::now();
   gather(sd_.internal, sd_.f, 3);
+  if (sd_.rotations) gather(sd_.rotational, sd_.moment, 3);
   gather(sd_.pressure, sd_.f_ext, 3);
   auto t5 = Clock::now();
   finishElementPass(pass);
@@ -336,6 +480,15 @@ Energies Solver::energies() const {
       e.internal += blk.e_int[k];
       e.hourglass += blk.e_hg[k];
     }
+  for (const auto& blk : sd_.shell_blocks)
+    for (std::size_t k = 0; k < blk.size(); ++k) {
+      e.internal += blk.e_int[k];
+      e.hourglass += blk.e_hg[k];
+    }
+  for (const auto& blk : sd_.beam_blocks)
+    for (std::size_t k = 0; k < blk.size(); ++k) e.internal += blk.e_int[k];
+  for (const auto& blk : sd_.discrete_blocks)
+    for (std::size_t k = 0; k < blk.size(); ++k) e.internal += blk.e_int[k];
   // Energies are reported at t(n), the time level of the stresses from the last element pass
   // and of the work integrals: the kinetic energy uses v(n) = (v(n-1/2) + v(n+1/2)) / 2.
   const bool stepped = v_old_.size() == sd_.v.size();
@@ -348,6 +501,17 @@ Energies Solver::energies() const {
     // included, as the work of the forces goes into it too); the added mass is reported.
     const double m = sd_.mass[n];
     e.kinetic += 0.5 * m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (sd_.rotations) {
+      // Rotational kinetic energy of the rotary inertia, at omega(n) likewise.
+      const bool spun = w_old_.size() == sd_.w.size();
+      double w2 = 0.0;
+      for (int c = 0; c < 3; ++c) {
+        const std::size_t i = 3 * n + std::size_t(c);
+        const double wc = spun ? 0.5 * (w_old_[i] + sd_.w[i]) : sd_.w[i];
+        w2 += wc * wc;
+      }
+      e.kinetic += 0.5 * sd_.inertia[n] * w2;
+    }
   }
   const auto sums =
       comm_.sumOrdered({e.kinetic, e.internal, e.hourglass, external_work_, rigidwall_energy_});
@@ -384,6 +548,35 @@ std::vector<PartSums> Solver::partSums() const {
         for (int c = 0; c < 3; ++c) p[4 + c] += corner_mass * v[c];
       }
     }
+  }
+  // Shells and beams: the element mass split equally among its distinct nodes.
+  auto addStructural = [&](const auto& blocks, const std::vector<std::vector<double>>& masses) {
+    for (std::size_t ib = 0; ib < blocks.size(); ++ib) {
+      const auto& blk = blocks[ib];
+      double* p = &local[kFields * static_cast<std::size_t>(blk.part)];
+      p[0] += double(blk.size());
+      for (std::size_t k = 0; k < blk.size(); ++k) {
+        p[2] += blk.e_int[k];
+        if constexpr (std::is_same_v<std::decay_t<decltype(blk)>, domain::ShellBlock>)
+          p[3] += blk.e_hg[k];
+        const auto& conn = blk.conn[k];
+        const std::size_t corners =
+            conn.size() == 4 && conn[2] == conn[3] ? 3 : 2 + (conn.size() == 4 ? 2 : 0);
+        const double corner_mass = masses[ib][k] / double(corners);
+        for (std::size_t a = 0; a < corners; ++a) {
+          const double* v = &sd_.v[3 * static_cast<std::size_t>(conn[a])];
+          p[1] += 0.5 * corner_mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+          for (int c = 0; c < 3; ++c) p[4 + c] += corner_mass * v[c];
+        }
+      }
+    }
+  };
+  addStructural(sd_.shell_blocks, shell_mass_);
+  addStructural(sd_.beam_blocks, beam_mass_);
+  for (const auto& blk : sd_.discrete_blocks) {
+    double* p = &local[kFields * static_cast<std::size_t>(blk.part)];
+    p[0] += double(blk.size());
+    for (std::size_t k = 0; k < blk.size(); ++k) p[2] += blk.e_int[k];
   }
   const auto total = comm_.sumOrdered(local);
   std::vector<PartSums> out;

@@ -60,7 +60,8 @@ class Solver {
   double addedMass() const { return added_mass_; }
   double totalMass() const { return total_mass_; }
   double initialDt() const { return dt_initial_; }
-  int64_t initialDtElement() const { return dt_initial_elem_; }  // user element id
+  // "shell element 12 (part 3)": the element controlling the initial step.
+  const std::string& initialDtElement() const { return dt_initial_label_; }
   int64_t erodedElements() const { return eroded_; }
   const Timing& timing() const { return timing_; }
   Timing& timing() { return timing_; }
@@ -71,8 +72,8 @@ class Solver {
   // One element pass: the minimum stable step found and any inverted element.
   struct ElementPass {
     double dt_min = 1e300;
-    int32_t dt_elem = -1;  // model index
-    int32_t bad = -1;      // model index
+    int64_t dt_elem = -1;  // global element index
+    int64_t bad = -1;      // global element index
   };
   enum class Group { Shared, Interior };
   // Element kernels over one group of every block (elements at shared nodes, or the rest).
@@ -87,7 +88,10 @@ class Solver {
   void gather(const domain::GatherPlan& plan, std::vector<double>& out, int components) const;
   void updateKinematics();
   // User id of the element controlling the step, agreed by all ranks (collective).
-  int64_t controllingElement(int32_t local_best, bool holds_global_min) const;
+  // Global index of the element controlling the step, agreed by all ranks (collective).
+  int64_t controllingElement(int64_t local_best, bool holds_global_min) const;
+  // "solid element 7 (part 2)" for a global element index (collective).
+  std::string elementLabel(int64_t global_index) const;
 
   const model::Model& model_;
   domain::Subdomain& sd_;
@@ -100,14 +104,17 @@ class Solver {
   double dt_ = 0.0;       // dt(n-1/2): the step that brought the state to time_
   double dt_next_ = 0.0;  // dt(n+1/2) from the latest element pass
   double dt_initial_ = 0.0;
-  int64_t dt_initial_elem_ = 0;
-  int64_t dt_elem_ = 0;
+  int64_t dt_initial_elem_ = -1;
+  std::string dt_initial_label_;
+  int64_t dt_elem_ = -1;  // global index of the element controlling the step
   double total_mass_ = 0.0, added_mass_ = 0.0;
   int64_t eroded_ = 0;
 
   // Work and wall energy of the nodes this rank owns; summed over ranks when reported.
   double external_work_ = 0.0, rigidwall_energy_ = 0.0, initial_energy_ = 0.0;
-  domain::NodeVector v_old_;
+  domain::NodeVector v_old_, w_old_;
+  // Element masses per shell / beam block (matsum).
+  std::vector<std::vector<double>> shell_mass_, beam_mass_;
   bool non_finite_ = false;  // the last velocity update produced a NaN or an infinity
   Timing timing_;
 };

@@ -189,7 +189,7 @@ class Check(clitest.TempDirTest):
         # Initial step: TSSFAC 0.9 x L / (c (Q2 + sqrt(1 + Q2^2))) with the default linear bulk
         # viscosity Q2 = 0.06 (docs/theory.md); the bar is 10 x 10 x 100 mm in 2 x 2 x 100 hexes
         # (5 x 5 x 1 mm, nu = 0): L = V / largest face = 1 mm, c = sqrt(E / rho).
-        m = re.search(r"(?m)^initial time step: (\S+) \(element (\d+), TSSFAC 0\.9\)$", out)
+        m = re.search(r"(?m)^initial time step: (\S+) \(solid element (\d+) \(part \d+\), TSSFAC 0\.9\)$", out)
         self.assertIsNotNone(m, describe(p))
         c = (210.0 / 7.85e-6) ** 0.5
         q = 0.06 + (1 + 0.06 ** 2) ** 0.5
@@ -209,7 +209,7 @@ class Check(clitest.TempDirTest):
         self.assertRegex(p.stdout, r"(?m)^nodes: 8$")
         self.assertRegex(p.stdout, r"(?m)^solid elements: 1$")
         self.assertRegex(p.stdout, r"(?m)^total mass: 7\.85e-0?6$", describe(p))
-        self.assertRegex(p.stdout, r"(?m)^initial time step: \S+ \(element 1, TSSFAC 0\.9\)$")
+        self.assertRegex(p.stdout, r"(?m)^initial time step: \S+ \(solid element 1 \(part \d+\), TSSFAC 0\.9\)$")
         for keyword, reason in (("*DATABASE_ELOUT", "output not written yet"),
                                 ("*DATABASE_SPCFORC", "output not written yet"),
                                 ("*CONTROL_PARALLEL", "MPP/SMP")):
@@ -231,7 +231,7 @@ class Check(clitest.TempDirTest):
         p = crumple("check", "two.k", cwd=self.tmp)
         self.assertEqual(p.returncode, 0, describe(p))
         self.assertRegex(p.stdout, r"(?m)^solid elements: 2$", describe(p))
-        m = re.search(r"(?m)^initial time step: (\S+) \(element 77,", p.stdout)
+        m = re.search(r"(?m)^initial time step: (\S+) \(solid element 77 ", p.stdout)
         self.assertIsNotNone(m, "the smaller element 77 controls the step" + describe(p))
         # Cube of side h: L = h; c = sqrt((K + 4G/3) / rho) with E = 210, nu = 0.3; the linear
         # bulk viscosity Q2 = 0.06 enters the step; and both cubes share no node with another

@@ -51,7 +51,7 @@ class RealDecks(clitest.TempDirTest):
         return p
 
     def initial_step(self, p):
-        m = re.search(r"(?m)^initial time step: (\S+) \(element (\d+), TSSFAC", p.stdout)
+        m = re.search(r"(?m)^initial time step: (\S+) \(solid element (\d+) \(part \d+\), TSSFAC", p.stdout)
         self.assertIsNotNone(m, describe(p))
         dt = float(m.group(1))
         self.assertTrue(math.isfinite(dt) and dt > 0.0, describe(p))

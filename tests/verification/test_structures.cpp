@@ -1,0 +1,252 @@
+// Shells, beams and springs through the whole pipeline (deck -> model -> subdomain -> solver)
+// against beam theory (shared/reference/verification.md #3 and #4): the first bending
+// frequency of a cantilever strip and its tip deflection under a slowly applied load, plus a
+// spring-mass oscillator.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "harness.hpp"
+
+namespace {
+
+using crumple::testing::Simulation;
+
+// Steel strip in mm, ms, kg, GPa (kN). nu = 0, so that a strip and a beam of the same section
+// have the same bending stiffness E I whatever the width (no anticlastic plate effect).
+constexpr double kE = 210.0, kRho = 7.85e-6, kL = 100.0, kB = 10.0, kT = 1.0;
+constexpr double kI = kB * kT * kT * kT / 12.0, kA = kB * kT;
+
+// f1 = (1.8751^2 / 2 pi) sqrt(E I / (rho A L^4)), Euler-Bernoulli cantilever.
+double cantileverPeriod() {
+  const double f1 =
+      1.8751 * 1.8751 / (2.0 * M_PI) * std::sqrt(kE * kI / (kRho * kA * std::pow(kL, 4)));
+  return 1.0 / f1;
+}
+
+// The static deflection shape of a tip-loaded cantilever, xi = x / L, tip value 1: close to
+// the first mode, so an initial velocity in this shape excites almost only mode 1.
+double staticShape(double xi) {
+  return 0.5 * xi * xi * (3.0 - xi);
+}
+
+std::string termination(double t) {
+  return fmt::format("*CONTROL_TERMINATION\n{:10.6g}\n", t);
+}
+
+// A cantilever strip of nx x ny Belytschko-Tsay shells in the x-y plane, clamped at x = 0
+// (all six freedoms). Node (i, j) has id 1 + i + (nx + 1) j. `extra` adds loads and controls;
+// `initial_speed` > 0 gives a z velocity in the static deflection shape.
+std::string stripDeck(int nx, int ny, int elform, const std::string& extra, double initial_speed,
+                      bool triangles = false) {
+  std::string s = "*KEYWORD\n*TITLE\ncantilever strip\n" + extra;
+  s += fmt::format("*MAT_ELASTIC\n         1{:10.4g}{:10.4g}       0.0\n", kRho, kE);
+  s += fmt::format(
+      "*SECTION_SHELL\n         1{:10d}{:10.4g}         3\n{:10.4g}{:10.4g}{:10.4g}{:10.4g}\n",
+      elform, 5.0 / 6.0, kT, kT, kT, kT);
+  s += "*PART\nstrip\n         1         1         1\n*NODE\n";
+  auto id = [&](int i, int j) { return 1 + i + (nx + 1) * j; };
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i)
+      s += fmt::format("{:8d}{:16.9g}{:16.9g}{:16.9g}\n", id(i, j), kL * i / nx, kB * j / ny, 0.0);
+  s += "*ELEMENT_SHELL\n";
+  int e = 1;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      if (triangles) {
+        s += fmt::format("{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}\n", e++, 1, id(i, j), id(i + 1, j),
+                         id(i + 1, j + 1), id(i + 1, j + 1));
+        s += fmt::format("{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}\n", e++, 1, id(i, j), id(i + 1, j + 1),
+                         id(i, j + 1), id(i, j + 1));
+      } else {
+        s += fmt::format("{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}\n", e++, 1, id(i, j), id(i + 1, j),
+                         id(i + 1, j + 1), id(i, j + 1));
+      }
+    }
+  s += "*BOUNDARY_SPC_NODE\n";
+  for (int j = 0; j <= ny; ++j)
+    s += fmt::format(
+        "{:10d}         0         1         1         1         1         1         1\n", id(0, j));
+  if (initial_speed > 0) {
+    s += "*INITIAL_VELOCITY_NODE\n";
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 1; i <= nx; ++i)
+        s += fmt::format("{:10d}{:10.4g}{:10.4g}{:10.6g}\n", id(i, j), 0.0, 0.0,
+                         initial_speed * staticShape(double(i) / nx));
+  }
+  return s + "*END\n";
+}
+
+// A cantilever of n beam elements along x, clamped at node 1, orientation node 1000 on +y so
+// that the local s axis is y and z deflection bends about s (I_ss = b t^3 / 12).
+std::string beamDeck(int n, int elform, const std::string& extra, double initial_speed) {
+  std::string s = "*KEYWORD\n*TITLE\ncantilever beam\n" + extra;
+  s += fmt::format("*MAT_ELASTIC\n         1{:10.4g}{:10.4g}       0.0\n", kRho, kE);
+  if (elform == 1)
+    s += fmt::format(
+        "*SECTION_BEAM\n         1         1{:10.4g}         2         0\n"
+        "{:10.4g}{:10.4g}{:10.4g}{:10.4g}\n",
+        5.0 / 6.0, kB, kB, kT, kT);
+  else
+    s += fmt::format(
+        "*SECTION_BEAM\n         1         2{:10.4g}         2         0\n"
+        "{:10.4g}{:10.6g}{:10.6g}{:10.6g}{:10.4g}\n",
+        5.0 / 6.0, kA, kI, kT * kB * kB * kB / 12.0, 0.0, kA);
+  s += "*PART\nbeam\n         1         1         1\n*NODE\n";
+  for (int i = 0; i <= n; ++i)
+    s += fmt::format("{:8d}{:16.9g}{:16.9g}{:16.9g}\n", i + 1, kL * i / n, 0.0, 0.0);
+  s += fmt::format("{:8d}{:16.9g}{:16.9g}{:16.9g}\n", 1000, 0.0, 10.0, 0.0);
+  s += "*ELEMENT_BEAM\n";
+  for (int i = 0; i < n; ++i)
+    s += fmt::format("{:8d}{:8d}{:8d}{:8d}{:8d}\n", i + 1, 1, i + 1, i + 2, 1000);
+  s += "*BOUNDARY_SPC_NODE\n         1         0         1         1         1         1         1 "
+       "        1\n";
+  // The orientation node is fixed (it carries no element mass).
+  s += "      1000         0         1         1         1         1         1         1\n";
+  if (initial_speed > 0) {
+    s += "*INITIAL_VELOCITY_NODE\n";
+    for (int i = 1; i <= n; ++i)
+      s += fmt::format("{:10d}{:10.4g}{:10.4g}{:10.6g}\n", i + 1, 0.0, 0.0,
+                       initial_speed * staticShape(double(i) / n));
+  }
+  return s + "*END\n";
+}
+
+// Period of the tip's free vibration from the first two downward zero crossings of its z
+// displacement (linear interpolation between cycles).
+double measuredPeriod(Simulation& sim, int64_t tip) {
+  std::vector<double> crossings;
+  double z_prev = 0.0, t_prev = 0.0;
+  sim.run([&](const crumple::solver::Solver& s) {
+    const double z = sim.x(tip, 2) - sim.x0(tip, 2);
+    if (z_prev > 0.0 && z <= 0.0)
+      crossings.push_back(t_prev + (s.time() - t_prev) * z_prev / (z_prev - z));
+    z_prev = z;
+    t_prev = s.time();
+  });
+  EXPECT_GE(crossings.size(), 2u);
+  return crossings.size() >= 2 ? crossings[1] - crossings[0] : 0.0;
+}
+
+// Mean tip deflection over the hold after a slow ramp of the tip load P: the residual
+// vibration averages out over whole periods.
+double quasiStaticTip(Simulation& sim, int64_t tip, double t_hold) {
+  double sum = 0.0, time = 0.0;
+  sim.run([&](const crumple::solver::Solver& s) {
+    if (s.time() <= t_hold) return;
+    sum += (sim.x(tip, 2) - sim.x0(tip, 2)) * s.dt();
+    time += s.dt();
+  });
+  return sum / time;
+}
+
+// Ramp over 4 periods, hold for 2: tip load split over the tip nodes in `loads`.
+std::string tipLoad(double period, const std::string& loads) {
+  return termination(6.0 * period) +
+         fmt::format(
+             "*DEFINE_CURVE\n         1\n{:20.6g}{:20.6g}\n{:20.6g}{:20.6g}\n{:20.6g}{:20.6g}\n",
+             0.0, 0.0, 4.0 * period, 1.0, 1000.0, 1.0) +
+         "*LOAD_NODE_POINT\n" + loads;
+}
+
+constexpr double kP = 1e-3;  // kN: tip deflection 1.9 mm, 2% of the length (small rotation)
+double tipDeflection() {
+  return kP * kL * kL * kL / (3.0 * kE * kI);
+}
+
+// 20 x 2 Belytschko-Tsay shells: within 2% of the Euler-Bernoulli frequency (the mesh gives
+// about 0.3% discretisation error on a cantilever; rotary inertia scaling adds little).
+TEST(VerificationShell, CantileverFirstFrequency) {
+  const double period = cantileverPeriod();
+  auto sim = Simulation::fromText("shell_cantilever_f1",
+                                  stripDeck(20, 2, 2, termination(1.7 * period), 0.05));
+  const double measured = measuredPeriod(*sim, 21);
+  EXPECT_NEAR(measured / period, 1.0, 0.02) << "measured " << measured << " ms, theory " << period;
+  const auto e = sim->solver->energies();
+  EXPECT_NEAR(e.ratio, 1.0, 0.01);
+  EXPECT_LT(e.hourglass, 0.05 * e.initial);
+}
+
+TEST(VerificationShell, CantileverTipDeflection) {
+  const double period = cantileverPeriod();
+  // Tip nodes 21, 42, 63 carry P/4, P/2, P/4 (a consistent edge load).
+  const std::string loads = fmt::format(
+      "{:10d}         3         1{:10.4g}\n{:10d}         3         1{:10.4g}\n{:10d}         3    "
+      "     1{:10.4g}\n",
+      21, kP / 4, 42, kP / 2, 63, kP / 4);
+  auto sim = Simulation::fromText("shell_cantilever_tip",
+                                  stripDeck(20, 2, 2, tipLoad(period, loads), 0.0));
+  const double tip = quasiStaticTip(*sim, 42, 4.0 * period);
+  EXPECT_NEAR(tip / tipDeflection(), 1.0, 0.03)
+      << "tip " << tip << " mm, theory " << tipDeflection();
+}
+
+// C0 triangles (two per quad): constant-curvature elements are stiffer in bending on a
+// coarse mesh, so 5% is the fair bound here.
+TEST(VerificationShell, TriangleCantileverFirstFrequency) {
+  const double period = cantileverPeriod();
+  auto sim = Simulation::fromText("tria_cantilever_f1",
+                                  stripDeck(20, 2, 4, termination(1.7 * period), 0.05, true));
+  const double measured = measuredPeriod(*sim, 21);
+  EXPECT_NEAR(measured / period, 1.0, 0.05) << "measured " << measured << " ms, theory " << period;
+}
+
+class VerificationBeam : public ::testing::TestWithParam<int> {};
+
+TEST_P(VerificationBeam, CantileverFirstFrequency) {
+  const double period = cantileverPeriod();
+  auto sim = Simulation::fromText(fmt::format("beam{}_cantilever_f1", GetParam()),
+                                  beamDeck(20, GetParam(), termination(1.7 * period), 0.05));
+  const double measured = measuredPeriod(*sim, 21);
+  EXPECT_NEAR(measured / period, 1.0, 0.02) << "measured " << measured << " ms, theory " << period;
+  EXPECT_NEAR(sim->solver->energies().ratio, 1.0, 0.01);
+}
+
+TEST_P(VerificationBeam, CantileverTipDeflection) {
+  const double period = cantileverPeriod();
+  const std::string load = fmt::format("{:10d}         3         1{:10.4g}\n", 21, kP);
+  auto sim = Simulation::fromText(fmt::format("beam{}_cantilever_tip", GetParam()),
+                                  beamDeck(20, GetParam(), tipLoad(period, load), 0.0));
+  const double tip = quasiStaticTip(*sim, 21, 4.0 * period);
+  EXPECT_NEAR(tip / tipDeflection(), 1.0, 0.03)
+      << "tip " << tip << " mm, theory " << tipDeflection();
+}
+
+INSTANTIATE_TEST_SUITE_P(HughesLiuAndResultant, VerificationBeam, ::testing::Values(1, 2));
+
+// A mass on a spring: omega = sqrt(k / m); the spring's energy plus the kinetic energy stay
+// constant (central differences conserve a modified energy; 1% is generous at 60 steps per
+// period).
+TEST(VerificationDiscrete, SpringMassFrequency) {
+  const double k = 1.0, m = 1.0;  // kN/mm, kg: omega = 1 / ms
+  const std::string deck =
+      "*KEYWORD\n" + termination(10.0) +
+      // TSSFAC 0.1: the spring's own step (sqrt(2 m1 m2 / (k (m1 + m2))), 1 ms here) would give
+      // 7 steps per period and a 3% period error from the central-difference scheme itself.
+      "*CONTROL_TIMESTEP\n       0.0       0.1\n" +
+      "*MAT_SPRING_ELASTIC\n         1       1.0\n*SECTION_DISCRETE\n         1         0\n"
+      "*PART\nspring\n         2         1         1\n"
+      "*NODE\n       1             0.0             0.0             0.0\n"
+      "       2            10.0             0.0             0.0\n"
+      "*ELEMENT_DISCRETE\n       1       2       1       2\n"
+      "*ELEMENT_MASS\n       9       2             1.0\n      10       1             1.0\n"
+      "*BOUNDARY_SPC_NODE\n         1         0         1         1         1\n"
+      "*INITIAL_VELOCITY_NODE\n         2       0.1\n*END\n";
+  auto sim = Simulation::fromText("spring_mass", deck);
+  double t_prev = 0.0, x_prev = 0.0;
+  std::vector<double> down;
+  sim->run([&](const crumple::solver::Solver& s) {
+    const double x = sim->x(2, 0) - 10.0;
+    if (x_prev > 0.0 && x <= 0.0)
+      down.push_back(t_prev + (s.time() - t_prev) * x_prev / (x_prev - x));
+    x_prev = x;
+    t_prev = s.time();
+  });
+  ASSERT_GE(down.size(), 1u);
+  // First downward crossing at half a period.
+  EXPECT_NEAR(down[0], M_PI * std::sqrt(m / k), 0.01 * M_PI);
+  EXPECT_NEAR(sim->solver->energies().ratio, 1.0, 0.01);
+}
+
+}  // namespace
