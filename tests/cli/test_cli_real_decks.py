@@ -51,7 +51,7 @@ class RealDecks(clitest.TempDirTest):
         return p
 
     def initial_step(self, p):
-        m = re.search(r"(?m)^initial time step: (\S+) \(solid element (\d+) \(part \d+\), TSSFAC", p.stdout)
+        m = re.search(r"(?m)^initial time step: (\S+) \((solid|shell) element (\d+) \(part \d+\), TSSFAC", p.stdout)
         self.assertIsNotNone(m, describe(p))
         dt = float(m.group(1))
         self.assertTrue(math.isfinite(dt) and dt > 0.0, describe(p))
@@ -97,19 +97,23 @@ class RealDecks(clitest.TempDirTest):
         s = self.short_run(self.deck(PROJECTILE), 20 * dt)
         self.assertGreater(s["energy"]["total"], 0.0)
 
-    def test_ball_plate_cannot_run(self):
-        p = self.check(BALL_PLATE, 1)
-        self.assertIn("cannot run yet", p.stderr, describe(p))
-        self.assertIn("*MAT_RIGID", p.stderr, describe(p))
+    def test_ball_plate_check_and_run(self):
+        # A rigid ball (*MAT_RIGID solids) on a plastic shell plate: everything but the contact
+        # is read; the contact is listed as not acted on, and --strict refuses the run.
+        p = self.check(BALL_PLATE, 0)
+        self.assertRegex(p.stdout, r"(?m)^shell elements: 256$", describe(p))
+        self.assertRegex(p.stdout, r"(?m)^  part 2 \"ball\": 1512 solids, \*MAT_RIGID 2", describe(p))
         table = unsupported_table(p.stdout)
-        self.assertIn("*MAT_RIGID", table, describe(p))
-        self.assertIn("*ELEMENT_SHELL", table, describe(p))
         self.assertIn("*CONTACT_AUTOMATIC_SINGLE_SURFACE", table, describe(p))
-        # `run` refuses it too, before creating results.
-        out = os.path.join(self.tmp, "out")
-        p = crumple("run", self.deck(BALL_PLATE), "-o", out, "-q", cwd=self.tmp)
+        self.assertNotIn("*ELEMENT_SHELL", table, describe(p))
+        dt = self.initial_step(p)
+        s = self.short_run(self.deck(BALL_PLATE), 20 * dt)
+        self.assertGreater(s["counts"]["shells"], 0)
+        self.assertAlmostEqual(s["energy"]["ratio"], 1.0, delta=0.01)
+        out = os.path.join(self.tmp, "strict")
+        p = crumple("run", self.deck(BALL_PLATE), "-o", out, "-q", "--strict", cwd=self.tmp)
         self.assertEqual(p.returncode, 1, describe(p))
-        self.assertIn("*MAT_RIGID", p.stderr, describe(p))
+        self.assertIn("*CONTACT_AUTOMATIC_SINGLE_SURFACE", p.stderr, describe(p))
         self.assertFalse(os.path.exists(os.path.join(out, "summary.json")))
 
 
