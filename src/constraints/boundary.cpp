@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace crumple::constraints {
@@ -17,6 +18,49 @@ double curveValue(const model::Curve* c, double t) {
 
 double dot(const model::Vec3& a, const double* b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// Signed distance from point p to a geometric wall (positive outside) and the outward unit
+// normal of the nearest surface point (*RIGIDWALL_GEOMETRIC, Keyword Manual): a prism is the
+// box spanned from the tail by l (LENL), m = n x l (LENM) and -n (LENP); a cylinder of radius R
+// around the axis from the tail along n, of length LENCYL (0: infinite; its end caps are not
+// walls); a sphere of radius R about the tail. Points a finite cylinder does not span are
+// outside (+infinity).
+double surfaceGap(const model::RigidWallPlanar& d, const model::Vec3& m_axis, const double* p,
+                  double* normal) {
+  using Shape = model::RigidWallPlanar::Shape;
+  const double rel[3] = {p[0] - d.tail[0], p[1] - d.tail[1], p[2] - d.tail[2]};
+  if (d.shape == Shape::Sphere) {
+    const double r = std::sqrt(rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2]);
+    if (r == 0.0) return std::numeric_limits<double>::infinity();
+    for (int c = 0; c < 3; ++c) normal[c] = rel[c] / r;
+    return r - d.radius;
+  }
+  if (d.shape == Shape::Cylinder) {
+    const double along = dot(d.normal, rel);
+    if (d.length > 0.0 && (along < 0.0 || along > d.length))
+      return std::numeric_limits<double>::infinity();
+    const double radial[3] = {rel[0] - along * d.normal[0], rel[1] - along * d.normal[1],
+                              rel[2] - along * d.normal[2]};
+    const double r =
+        std::sqrt(radial[0] * radial[0] + radial[1] * radial[1] + radial[2] * radial[2]);
+    if (r == 0.0) return std::numeric_limits<double>::infinity();
+    for (int c = 0; c < 3; ++c) normal[c] = radial[c] / r;
+    return r - d.radius;
+  }
+  // Prism: the finite flat wall at the tail with depth LENP behind it (along -n), so that its
+  // top face acts as the flat wall. Inside when all three box coordinates are within range;
+  // the nearest face wins.
+  const double s = dot(d.l_axis, rel), t = dot(m_axis, rel), q = -dot(d.normal, rel);
+  const double depth[6] = {s, d.lenl - s, t, d.lenm - t, d.lenp - q, q};
+  int best = 0;
+  for (int k = 1; k < 6; ++k)
+    if (depth[k] < depth[best]) best = k;
+  if (depth[best] < 0.0) return std::numeric_limits<double>::infinity();  // outside the box
+  const model::Vec3& axis = best < 2 ? d.l_axis : best < 4 ? m_axis : d.normal;
+  const double sign = best % 2 == 0 ? -1.0 : 1.0;
+  for (int c = 0; c < 3; ++c) normal[c] = sign * axis[c];
+  return -depth[best];
 }
 
 }  // namespace
@@ -161,6 +205,7 @@ double Boundary::applyRigidWalls(double dt_n, double dt_half, domain::Subdomain&
                 nrm[2] * d.l_axis[0] - nrm[0] * d.l_axis[2],
                 nrm[0] * d.l_axis[1] - nrm[1] * d.l_axis[0]};
     }
+    const bool plane = d.shape == model::RigidWallPlanar::Shape::Plane;
     for (int32_t node : w.nodes) {
       const std::size_t n = static_cast<std::size_t>(node);
       const double m = sd.mass[n];
@@ -168,22 +213,38 @@ double Boundary::applyRigidWalls(double dt_n, double dt_half, domain::Subdomain&
       double* v = &sd.v[3 * n];
       const double* x = &sd.x[3 * n];
       const double rel[3] = {x[0] - d.tail[0], x[1] - d.tail[1], x[2] - d.tail[2]};
-      const double gap_now = dot(nrm, rel) - w.displacement;
-      const double gap_next = gap_now + dt_half * (dot(nrm, v) - w.velocity);
-      if (gap_next >= 0.0) continue;
-      // Only nodes in front of the wall at the start of the step are stopped by it; a node
-      // already far behind (outside a finite wall's edge, or a sign slip) is left alone.
-      if (gap_now < -1e-3 * std::max(1.0, std::abs(dot(nrm, rel)))) continue;
-      if (d.finite) {
-        const double s = dot(d.l_axis, rel), r = dot(m_axis, rel);
-        if (s < 0.0 || s > d.lenl || r < 0.0 || r > d.lenm) continue;
+      double gap_next = 0.0;
+      double normal[3] = {nrm[0], nrm[1], nrm[2]};
+      if (plane) {
+        const double gap_now = dot(nrm, rel) - w.displacement;
+        gap_next = gap_now + dt_half * (dot(nrm, v) - w.velocity);
+        if (gap_next >= 0.0) continue;
+        // Only nodes in front of the wall at the start of the step are stopped by it; a node
+        // already far behind (outside a finite wall's edge, or a sign slip) is left alone.
+        if (gap_now < -1e-3 * std::max(1.0, std::abs(dot(nrm, rel)))) continue;
+        if (d.finite) {
+          const double s = dot(d.l_axis, rel), r = dot(m_axis, rel);
+          if (s < 0.0 || s > d.lenl || r < 0.0 || r > d.lenm) continue;
+        }
+      } else {
+        // Prism, cylinder, sphere: the signed distance of the predicted position to the
+        // surface and the outward normal there; a node already inside at the start of the
+        // step is left alone, as for the plane.
+        const double p[3] = {x[0] + dt_half * v[0], x[1] + dt_half * v[1], x[2] + dt_half * v[2]};
+        double unused[3];
+        gap_next = surfaceGap(d, m_axis, p, normal);
+        if (gap_next >= 0.0) continue;
+        if (surfaceGap(d, m_axis, x, unused) < -1e-3 * std::max(1.0, d.radius + d.lenp)) continue;
       }
-      // Normal correction that puts the node on the plane at the end of the step.
+      // Normal correction that puts the node on the surface at the end of the step.
       const double dvn = -gap_next / dt_half;
-      double v_new[3] = {v[0] + dvn * nrm[0], v[1] + dvn * nrm[1], v[2] + dvn * nrm[2]};
+      const double* nrm_node = normal;
+      double v_new[3] = {v[0] + dvn * nrm_node[0], v[1] + dvn * nrm_node[1],
+                         v[2] + dvn * nrm_node[2]};
       if (d.fric > 0.0) {
-        const double vn = dot(nrm, v_new);
-        double vt[3] = {v_new[0] - vn * nrm[0], v_new[1] - vn * nrm[1], v_new[2] - vn * nrm[2]};
+        const double vn = nrm_node[0] * v_new[0] + nrm_node[1] * v_new[1] + nrm_node[2] * v_new[2];
+        double vt[3] = {v_new[0] - vn * nrm_node[0], v_new[1] - vn * nrm_node[1],
+                        v_new[2] - vn * nrm_node[2]};
         const double vt_mag = std::sqrt(vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2]);
         const double limit = d.fric * dvn;  // Coulomb: |tangential impulse| <= mu * normal one
         const double scale = vt_mag > limit ? limit / vt_mag : 1.0;

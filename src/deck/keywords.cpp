@@ -108,36 +108,36 @@ std::vector<KeywordSpec> makeTables() {
                 {"card 1",
                  {I("SECID"), I("ELFORM", 1), I("AET"), A("UNUSED1", 10, {}, Q),
                   A("UNUSED2", 10, {}, Q), A("UNUSED3", 10, {}, Q), R("COHOFF"), R("GASKETT")}}}});
-  t.push_back({"*SECTION_SHELL",
-               {titleCard(),
-                {"card 1",
-                 {I("SECID"), I("ELFORM", 2, Z), R("SHRF", 1, Z), I("NIP", 2, Z), R("PROPT", 1, Z),
-                  I("QR/IRID"), I("ICOMP"), I("SETYP", 1, Z)}},
-                {"card 2",
-                 {R("T1"), R("T2"), R("T3"), R("T4"), R("NLOC"), R("MAREA"), I("IDOF"),
-                  I("EDGSET")}}}});
-  t.push_back({"*SECTION_BEAM",
-               {titleCard(),
-                {"card 1",
-                 {I("SECID"), I("ELFORM", 1, Z), R("SHRF", 1, Z), I("QR/IRID", 2, Z), I("CST"),
-                  R("SCOOR"), R("NSM"), R("NAUPD", 0, Q)}},
-                {"integrated card",
-                 {R("TS1"), R("TS2"), R("TT1"), R("TT2"), R("NSLOC"), R("NTLOC")}},
-                {"resultant card", {R("A"), R("ISS"), R("ITT"), R("J"), R("SA"), R("IST")}}}});
+  t.push_back(
+      {"*SECTION_SHELL",
+       {titleCard(),
+        {"card 1",
+         {I("SECID"), I("ELFORM", 2, Z), R("SHRF", 1, Z), I("NIP", 2, Z), R("PROPT", 1, Z),
+          I("QR/IRID"), I("ICOMP"), I("SETYP", 1, Z)}},
+        {"card 2",
+         {R("T1"), R("T2"), R("T3"), R("T4"), R("NLOC"), R("MAREA"), I("IDOF"), I("EDGSET")}}}});
+  t.push_back(
+      {"*SECTION_BEAM",
+       {titleCard(),
+        {"card 1",
+         {I("SECID"), I("ELFORM", 1, Z), R("SHRF", 1, Z), I("QR/IRID", 2, Z), I("CST"), R("SCOOR"),
+          R("NSM"), R("NAUPD", 0, Q)}},
+        {"integrated card", {R("TS1"), R("TS2"), R("TT1"), R("TT2"), R("NSLOC"), R("NTLOC")}},
+        {"resultant card", {R("A"), R("ISS"), R("ITT"), R("J"), R("SA"), R("IST")}}}});
   t.push_back({"*SECTION_DISCRETE",
                {titleCard(),
                 {"card 1", {I("SECID"), I("DRO"), R("KD"), R("V0"), R("CL"), R("FD")}},
                 {"card 2", {R("CDL"), R("TDL")}}}});
-  t.push_back({"*MAT_RIGID",
-               {titleCard(),
-                {"card 1",
-                 {I("MID"), R("RO"), R("E"), R("PR"), R("N"), R("COUPLE"), R("M"), R("ALIAS")}},
-                {"card 2", {R("CMO"), R("CON1"), R("CON2")}},
-                {"card 3", {R("LCO/A1"), R("A2"), R("A3"), R("V1"), R("V2"), R("V3")}}}});
+  t.push_back(
+      {"*MAT_RIGID",
+       {titleCard(),
+        {"card 1", {I("MID"), R("RO"), R("E"), R("PR"), R("N"), R("COUPLE"), R("M"), R("ALIAS")}},
+        {"card 2", {R("CMO"), R("CON1"), R("CON2")}},
+        {"card 3", {R("LCO/A1"), R("A2"), R("A3"), R("V1"), R("V2"), R("V3")}}}});
   t.push_back({"*MAT_SPRING_ELASTIC", {titleCard(), {"card 1", {I("MID"), R("K")}}}});
   t.push_back({"*MAT_DAMPER_VISCOUS", {titleCard(), {"card 1", {I("MID"), R("DC")}}}});
-  t.push_back({"*MAT_SPRING_NONLINEAR_ELASTIC",
-               {titleCard(), {"card 1", {I("MID"), I("LCD"), I("LCR")}}}});
+  t.push_back(
+      {"*MAT_SPRING_NONLINEAR_ELASTIC", {titleCard(), {"card 1", {I("MID"), I("LCD"), I("LCR")}}}});
   t.push_back(
       {"*MAT_ELASTIC",
        {titleCard(), {"card 1", {I("MID"), R("RO"), R("E"), R("PR"), R("DA"), R("DB"), R("K")}}}});
@@ -193,13 +193,13 @@ std::vector<KeywordSpec> makeTables() {
                {{"card 1",
                  {I("NPOPT", 0, Q), I("NEECHO", 0, Q), I("NREFUP", 0, Q), I("IACCOP", 0, Q),
                   R("OPIFS", 0, Q), I("IPNINT", 0, Q), I("IKEDIT", 0, Q), I("IFLUSH", 0, Q)}}}});
-  t.push_back({"*CONTROL_SHELL",
-               {{"card 1",
-                 {R("WRPANG", 20, Z), I("ESORT"), I("IRNXX", -1, Z), I("ISTUPD"), I("THEORY", 2, Z),
-                  I("BWC", 2, Z), I("MITER", 1, Z), I("PROJ")}},
-                {"card 2",
-                 {R("ROTASCL", 1, Z), I("INTGRD"), I("LAMSHT", 0, Q), I("CSTYP6", 1, Z),
-                  I("TSHELL")}}}});
+  t.push_back(
+      {"*CONTROL_SHELL",
+       {{"card 1",
+         {R("WRPANG", 20, Z), I("ESORT"), I("IRNXX", -1, Z), I("ISTUPD"), I("THEORY", 2, Z),
+          I("BWC", 2, Z), I("MITER", 1, Z), I("PROJ")}},
+        {"card 2",
+         {R("ROTASCL", 1, Z), I("INTGRD"), I("LAMSHT", 0, Q), I("CSTYP6", 1, Z), I("TSHELL")}}}});
   t.push_back({"*CONTROL_CONTACT",
                {{"card 1",
                  {R("SLSFAC", 0.1, Z), R("RWPNAL"), I("ISLCHK", 1, Z), I("SHLTHK"),
@@ -317,6 +317,19 @@ std::vector<KeywordSpec> makeTables() {
         {"card 2", {R("XT"), R("YT"), R("ZT"), R("XH"), R("YH"), R("ZH"), R("FRIC"), R("WVEL")}},
         {"finite card", {R("XHEV"), R("YHEV"), R("ZHEV"), R("LENL"), R("LENM")}},
         {"moving card", {R("MASS"), R("V0")}}}});
+  // *RIGIDWALL_GEOMETRIC_<shape>: card 3 depends on the shape (Keyword Manual).
+  for (auto [name, card3] : std::initializer_list<std::pair<std::string_view, CardSpec>>{
+           {"*RIGIDWALL_GEOMETRIC_FLAT",
+            {"card 3", {R("XHEV"), R("YHEV"), R("ZHEV"), R("LENL"), R("LENM")}}},
+           {"*RIGIDWALL_GEOMETRIC_PRISM",
+            {"card 3", {R("XHEV"), R("YHEV"), R("ZHEV"), R("LENL"), R("LENM"), R("LENP")}}},
+           {"*RIGIDWALL_GEOMETRIC_CYLINDER", {"card 3", {R("RADCYL"), R("LENCYL")}}},
+           {"*RIGIDWALL_GEOMETRIC_SPHERE", {"card 3", {R("RADSPH")}}}})
+    t.push_back({name,
+                 {idCard(),
+                  {"card 1", {I("NSID"), I("NSIDEX"), I("BOXID"), R("BIRTH"), R("DEATH", 1e20, Z)}},
+                  {"card 2", {R("XT"), R("YT"), R("ZT"), R("XH"), R("YH"), R("ZH"), R("FRIC")}},
+                  card3}});
   // The id of a definition Crumple does not support (*MAT_RIGID, *SECTION_SHELL, ...): the
   // first field of its first card, kept so that a reference to it can say what it is.
   t.push_back({"*UNSUPPORTED_DEFINITION", {{"card 1", {I("ID")}}}});

@@ -356,6 +356,81 @@ void readRigidWallPlanar(Context& ctx, const deck::Keyword& kw, const KeywordOpt
   ctx.collect(cur);
 }
 
+void readRigidWallGeometric(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  using Shape = RigidWallPlanar::Shape;
+  std::string shape_word;
+  for (auto w : {"FLAT", "PRISM", "CYLINDER", "SPHERE"})
+    if (opts.has(w)) shape_word = w;
+  if (shape_word.empty()) {
+    ctx.rejectKeyword(kw, "a shape option (_FLAT, _PRISM, _CYLINDER or _SPHERE) is required");
+    return;
+  }
+  if (opts.has("MOTION"))
+    ctx.rejectKeyword(kw, "moving geometric walls (_MOTION) are not supported");
+  const auto& spec = keywordSpec("*RIGIDWALL_GEOMETRIC_" + shape_word);
+  CardCursor cur(kw, ctx.deck);
+  RigidWallPlanar w;
+  ++ctx.rigid_wall_count;
+  w.id = ctx.rigid_wall_count;
+  if (opts.has("ID")) {
+    const Card& id = cur.read(spec.card("id card"));
+    if (!id.blank("ID")) w.id = id.integer("ID");
+  }
+  const Card& c = cur.read(spec.card("card 1"));
+  const Card& c2 = cur.read(spec.card("card 2"));
+  const Card& c3 = cur.read(spec.card("card 3"));
+  w.where = c.where();
+  const Model& m = ctx.model;
+  const int64_t nsid = c.integer("NSID"), nsidex = c.integer("NSIDEX");
+  std::vector<char> take(m.nodes.size(), nsid == 0 ? 1 : 0);
+  if (nsid != 0)
+    for (int32_t n : ctx.nodeSet(c, "NSID", nsid)) take[n] = 1;
+  if (nsidex != 0)
+    for (int32_t n : ctx.nodeSet(c, "NSIDEX", nsidex)) take[n] = 0;
+  const Box* box = nullptr;
+  if (const int64_t b = c.integer("BOXID"); b != 0) box = &ctx.box(c, "BOXID", b);
+  for (std::size_t n = 0; n < take.size(); ++n)
+    if (take[n] && (!box || box->contains(m.nodes.x[n])))
+      w.nodes.push_back(static_cast<int32_t>(n));
+  if (c.real("BIRTH") != 0 || c.real("DEATH") != 1e20)
+    ctx.reject(c, c.real("BIRTH") != 0 ? "BIRTH" : "DEATH",
+               "birth and death times of geometric walls are not supported");
+  w.tail = {c2.real("XT"), c2.real("YT"), c2.real("ZT")};
+  w.normal = unit(sub({c2.real("XH"), c2.real("YH"), c2.real("ZH")}, w.tail));
+  if (dot(w.normal, w.normal) == 0.0) c2.fail("XH", "the head coincides with the tail");
+  w.fric = c2.real("FRIC");
+  if (w.fric < 0) c2.fail("FRIC", "must not be negative");
+  if (shape_word == "FLAT" || shape_word == "PRISM") {
+    Vec3 l = sub({c3.real("XHEV"), c3.real("YHEV"), c3.real("ZHEV")}, w.tail);
+    const double ln = dot(l, w.normal);
+    l = unit({l[0] - ln * w.normal[0], l[1] - ln * w.normal[1], l[2] - ln * w.normal[2]});
+    if (dot(l, l) == 0.0) c3.fail("XHEV", "the edge vector l is zero or along the normal");
+    w.finite = true;
+    w.l_axis = l;
+    w.lenl = c3.real("LENL");
+    w.lenm = c3.real("LENM");
+    if (w.lenl <= 0) c3.fail("LENL", "must be positive");
+    if (w.lenm <= 0) c3.fail("LENM", "must be positive");
+    if (shape_word == "PRISM") {
+      w.shape = Shape::Prism;
+      w.lenp = c3.real("LENP");
+      if (w.lenp <= 0) c3.fail("LENP", "must be positive");
+    }
+  } else if (shape_word == "CYLINDER") {
+    w.shape = Shape::Cylinder;
+    w.radius = c3.real("RADCYL");
+    w.length = c3.real("LENCYL");
+    if (w.radius <= 0) c3.fail("RADCYL", "must be positive");
+    if (w.length < 0) c3.fail("LENCYL", "must not be negative");
+  } else {
+    w.shape = Shape::Sphere;
+    w.radius = c3.real("RADSPH");
+    if (w.radius <= 0) c3.fail("RADSPH", "must be positive");
+  }
+  ctx.model.rigid_walls.push_back(std::move(w));
+  ctx.collect(cur);
+}
+
 void finishConditions(Context& ctx) {
   for (const auto& [node, mask] : ctx.spc_masks)
     if (mask) ctx.model.spcs.push_back({node, mask});

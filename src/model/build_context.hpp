@@ -218,6 +218,7 @@ void readLoadSegment(Context&, const deck::Keyword&, const KeywordOptions&);
 void readLoadSegmentSet(Context&, const deck::Keyword&, const KeywordOptions&);
 void readLoadBody(Context&, const deck::Keyword&, const KeywordOptions&);
 void readRigidWallPlanar(Context&, const deck::Keyword&, const KeywordOptions&);
+void readRigidWallGeometric(Context&, const deck::Keyword&, const KeywordOptions&);
 void finishConditions(Context&);
 
 // build_controls.cpp

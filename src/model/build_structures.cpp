@@ -143,8 +143,8 @@ void readSectionShell(Context& ctx, const deck::Keyword& kw, const KeywordOption
       ctx.define(Kind::Section, s.id, c, "SECID");
       ctx.defineUnsupported(Kind::Section, s.id, kw.name + " ELFORM=" + std::to_string(elform),
                             c.where());
-      ctx.reportUnsupported(kw, "ELFORM " + std::to_string(elform) +
-                                    " not supported (2, 4 and 10 are)");
+      ctx.reportUnsupported(
+          kw, "ELFORM " + std::to_string(elform) + " not supported (2, 4 and 10 are)");
       ctx.collect(cur);
       continue;
     }
@@ -254,10 +254,12 @@ void readSectionDiscrete(Context& ctx, const deck::Keyword& kw, const KeywordOpt
     s.id = positiveId(c, "SECID");
     s.where = c.where();
     s.dro = static_cast<int>(c.integer("DRO"));
-    if (s.dro != 0) ctx.reject(c, "DRO", "torsional (rotational) discrete elements are not supported");
+    if (s.dro != 0)
+      ctx.reject(c, "DRO", "torsional (rotational) discrete elements are not supported");
     for (auto f : {"KD", "V0", "CL", "FD"})
       if (c.real(f) != 0)
-        ctx.reject(c, f, "dynamic magnification, clearance and failure of springs are not supported");
+        ctx.reject(c, f,
+                   "dynamic magnification, clearance and failure of springs are not supported");
     for (auto f : {"CDL", "TDL"})
       if (c2.real(f) != 0) ctx.reject(c2, f, "deflection limits of springs are not supported");
     ctx.define(Kind::Section, s.id, c, "SECID");

@@ -151,9 +151,8 @@ int Model::elementNodes(std::size_t g, int32_t out[8]) const {
 }
 
 int32_t Model::elementPart(std::size_t g) const {
-  return onFamily(*this, g, [](const auto& list, int32_t i) {
-    return list.part[static_cast<std::size_t>(i)];
-  });
+  return onFamily(
+      *this, g, [](const auto& list, int32_t i) { return list.part[static_cast<std::size_t>(i)]; });
 }
 
 int64_t Model::elementId(std::size_t g) const {

@@ -61,9 +61,9 @@ struct PiecewiseLinearLaw {  // *MAT_PIECEWISE_LINEAR_PLASTICITY (024)
 // global translations and rotations of the body's centre of mass (Keyword Manual, *MAT_020).
 struct RigidLaw {
   double E = 0, nu = 0;
-  int cmo = 0;        // 0 free, 1 constraints in global directions (CON1 / CON2 codes)
-  int con1 = 0;       // translation code: 0 none, 1 x, 2 y, 3 z, 4 xy, 5 yz, 6 zx, 7 all
-  int con2 = 0;       // rotation code, same digits
+  int cmo = 0;   // 0 free, 1 constraints in global directions (CON1 / CON2 codes)
+  int con1 = 0;  // translation code: 0 none, 1 x, 2 y, 3 z, 4 xy, 5 yz, 6 zx, 7 all
+  int con2 = 0;  // rotation code, same digits
 };
 // *MAT_SPRING_ELASTIC (S01): F = K dL.
 struct SpringElasticLaw {
@@ -256,31 +256,39 @@ struct RigidWallPlanar {
   double lenl = 0, lenm = 0;
   bool moving = false;      // _MOVING: a wall of mass `mass` with initial speed v0
   double mass = 0, v0 = 0;  //   along its normal
+  // *RIGIDWALL_GEOMETRIC_FLAT / _PRISM / _CYLINDER / _SPHERE: fixed, frictionless surfaces
+  // that slave nodes stay outside of. `tail` is the base point, `normal` the unit vector from
+  // tail to head (the flat wall's normal, the prism's depth direction, the cylinder's axis).
+  enum class Shape : uint8_t { Plane = 0, Prism = 1, Cylinder = 2, Sphere = 3 };
+  Shape shape = Shape::Plane;
+  double lenp = 0;    // prism depth along `normal`
+  double radius = 0;  // cylinder, sphere
+  double length = 0;  // cylinder length along the axis; 0 = infinite
   util::SourceLoc where;
 };
 
 // *CONTROL_* values after LS-DYNA defaulting (blank/zero fields mean "default").
 struct Controls {
-  double end_time = 0.0;          // *CONTROL_TERMINATION ENDTIM
-  int64_t end_cycle = 0;          // ENDCYC; 0 = none
-  double dt_min_ratio = 0.0;      // DTMIN (fraction of the initial step); 0 = none
-  double end_mass_ratio = 0.0;    // ENDMAS (% mass increase for termination); 0 = none
-  double tssfac = 0.9;            // *CONTROL_TIMESTEP
-  double dt_init = 0.0;           // DTINIT; 0 = from the elements
-  double dt2ms = 0.0;             // mass scaling; negative: only elements below |DT2MS|
-  int32_t dt_max_curve = kNone;   // LCTM
-  double q_quadratic = 1.5;       // *CONTROL_BULK_VISCOSITY Q1
-  double q_linear = 0.06;         // Q2
-  int hourglass_ihq = 1;          // *CONTROL_HOURGLASS IHQ
-  double hourglass_qh = 0.1;      // QH
-  bool hourglass_energy = false;  // *CONTROL_ENERGY HGEN == 2
-  bool rigidwall_energy = true;   // RWEN == 2 (default)
-  bool erode_on_dtmin = false;    // derived from TDEL of any material
+  double end_time = 0.0;                // *CONTROL_TERMINATION ENDTIM
+  int64_t end_cycle = 0;                // ENDCYC; 0 = none
+  double dt_min_ratio = 0.0;            // DTMIN (fraction of the initial step); 0 = none
+  double end_mass_ratio = 0.0;          // ENDMAS (% mass increase for termination); 0 = none
+  double tssfac = 0.9;                  // *CONTROL_TIMESTEP
+  double dt_init = 0.0;                 // DTINIT; 0 = from the elements
+  double dt2ms = 0.0;                   // mass scaling; negative: only elements below |DT2MS|
+  int32_t dt_max_curve = kNone;         // LCTM
+  double q_quadratic = 1.5;             // *CONTROL_BULK_VISCOSITY Q1
+  double q_linear = 0.06;               // Q2
+  int hourglass_ihq = 1;                // *CONTROL_HOURGLASS IHQ
+  double hourglass_qh = 0.1;            // QH
+  bool hourglass_energy = false;        // *CONTROL_ENERGY HGEN == 2
+  bool rigidwall_energy = true;         // RWEN == 2 (default)
+  bool erode_on_dtmin = false;          // derived from TDEL of any material
   bool shell_bwc = false;               // *CONTROL_SHELL BWC = 1 (warping correction)
   bool shell_thickness_update = false;  // ISTUPD != 0
   bool shell_lobatto = false;           // INTGRD = 1
-  double d3plot_dt = 0.0;         // *DATABASE_BINARY_D3PLOT DT; 0 = first and last state
-  double glstat_dt = 0.0;         // *DATABASE_GLSTAT; 0 = not requested
+  double d3plot_dt = 0.0;               // *DATABASE_BINARY_D3PLOT DT; 0 = first and last state
+  double glstat_dt = 0.0;               // *DATABASE_GLSTAT; 0 = not requested
   double matsum_dt = 0.0;
   double nodout_dt = 0.0;
   double rwforc_dt = 0.0;

@@ -141,6 +141,10 @@ void fields(A& a, M& m) {
         a(w.moving);
         a(w.mass);
         a(w.v0);
+        a(w.shape);
+        a(w.lenp);
+        a(w.radius);
+        a(w.length);
         loc(a, w.where);
       },
       m.rigid_walls);
