@@ -80,7 +80,7 @@ int partitionCommand(const std::string& deck, int parts, const std::string& out_
     partition::writePartitionJson(dir / "partition.json", s, name);
     partition::writePartitionVtu(dir / "partition.vtu", m, rank);
 
-    fmt::print(out, "deck: {}\n{} solids, {} nodes over {} ranks ({}, {:.3f} s)\n", m.deck_path,
+    fmt::print(out, "deck: {}\n{} elements, {} nodes over {} ranks ({}, {:.3f} s)\n", m.deck_path,
                s.elements, s.nodes, parts, name, seconds);
     printTable(s, out);
     fmt::print(out, "load imbalance: {:.2f}% (max weight / mean - 1)\n", 100.0 * s.load_imbalance);
