@@ -300,6 +300,25 @@ void readLoadBody(Context& ctx, const deck::Keyword& kw, const KeywordOptions& o
 
 // Cards in the manual's order: _ID heading, cards 1-2, the _FINITE card, the _MOVING card
 // (Keyword Manual, *RIGIDWALL_PLANAR).
+namespace {
+// Slave nodes of a rigid wall: NSID (0 = every node) less NSIDEX, inside BOXID if given.
+std::vector<int32_t> wallNodes(Context& ctx, const Card& c) {
+  const Model& m = ctx.model;
+  const int64_t nsid = c.integer("NSID"), nsidex = c.integer("NSIDEX");
+  std::vector<char> take(m.nodes.size(), nsid == 0 ? 1 : 0);
+  if (nsid != 0)
+    for (int32_t n : ctx.nodeSet(c, "NSID", nsid)) take[n] = 1;
+  if (nsidex != 0)
+    for (int32_t n : ctx.nodeSet(c, "NSIDEX", nsidex)) take[n] = 0;
+  const Box* box = nullptr;
+  if (const int64_t b = c.integer("BOXID"); b != 0) box = &ctx.box(c, "BOXID", b);
+  std::vector<int32_t> nodes;
+  for (std::size_t n = 0; n < take.size(); ++n)
+    if (take[n] && (!box || box->contains(m.nodes.x[n]))) nodes.push_back(static_cast<int32_t>(n));
+  return nodes;
+}
+}  // namespace
+
 void readRigidWallPlanar(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const auto& spec = keywordSpec("*RIGIDWALL_PLANAR");
   CardCursor cur(kw, ctx.deck);
@@ -313,18 +332,7 @@ void readRigidWallPlanar(Context& ctx, const deck::Keyword& kw, const KeywordOpt
   const Card& c = cur.read(spec.card("card 1"));
   const Card& c2 = cur.read(spec.card("card 2"));
   w.where = c.where();
-  const Model& m = ctx.model;
-  const int64_t nsid = c.integer("NSID"), nsidex = c.integer("NSIDEX");
-  std::vector<char> take(m.nodes.size(), nsid == 0 ? 1 : 0);
-  if (nsid != 0)
-    for (int32_t n : ctx.nodeSet(c, "NSID", nsid)) take[n] = 1;
-  if (nsidex != 0)
-    for (int32_t n : ctx.nodeSet(c, "NSIDEX", nsidex)) take[n] = 0;
-  const Box* box = nullptr;
-  if (const int64_t b = c.integer("BOXID"); b != 0) box = &ctx.box(c, "BOXID", b);
-  for (std::size_t n = 0; n < take.size(); ++n)
-    if (take[n] && (!box || box->contains(m.nodes.x[n])))
-      w.nodes.push_back(static_cast<int32_t>(n));
+  w.nodes = wallNodes(ctx, c);
   w.tail = {c2.real("XT"), c2.real("YT"), c2.real("ZT")};
   w.normal = unit(sub({c2.real("XH"), c2.real("YH"), c2.real("ZH")}, w.tail));
   if (dot(w.normal, w.normal) == 0.0)
@@ -380,18 +388,7 @@ void readRigidWallGeometric(Context& ctx, const deck::Keyword& kw, const Keyword
   const Card& c2 = cur.read(spec.card("card 2"));
   const Card& c3 = cur.read(spec.card("card 3"));
   w.where = c.where();
-  const Model& m = ctx.model;
-  const int64_t nsid = c.integer("NSID"), nsidex = c.integer("NSIDEX");
-  std::vector<char> take(m.nodes.size(), nsid == 0 ? 1 : 0);
-  if (nsid != 0)
-    for (int32_t n : ctx.nodeSet(c, "NSID", nsid)) take[n] = 1;
-  if (nsidex != 0)
-    for (int32_t n : ctx.nodeSet(c, "NSIDEX", nsidex)) take[n] = 0;
-  const Box* box = nullptr;
-  if (const int64_t b = c.integer("BOXID"); b != 0) box = &ctx.box(c, "BOXID", b);
-  for (std::size_t n = 0; n < take.size(); ++n)
-    if (take[n] && (!box || box->contains(m.nodes.x[n])))
-      w.nodes.push_back(static_cast<int32_t>(n));
+  w.nodes = wallNodes(ctx, c);
   if (c.real("BIRTH") != 0 || c.real("DEATH") != 1e20)
     ctx.reject(c, c.real("BIRTH") != 0 ? "BIRTH" : "DEATH",
                "birth and death times of geometric walls are not supported");
