@@ -80,7 +80,7 @@ int64_t Solver::controllingElement(int32_t local_best, bool holds_global_min) co
 void Solver::initialize() {
   const auto& ctl = model_.controls;
   std::vector<std::vector<double>> element_dt(sd_.solid_blocks.size());
-  double dt_min = 1e300;
+  double dt_min = 1e300, rigid_dt = 1e300;
   int32_t dt_elem = -1;
   for (std::size_t ib = 0; ib < sd_.solid_blocks.size(); ++ib) {
     auto& blk = sd_.solid_blocks[ib];
@@ -92,6 +92,12 @@ void Solver::initialize() {
           "ordering (LS-DYNA: nodes 1-4 one face, 5-8 the opposite face, right-handed)",
           sd_.elementId(st.bad_elem), blk.part_id));
     }
+    // Rigid elements give mass only: no time step (unless nothing else sets one), no scaling.
+    if (blk.rigid) {
+      rigid_dt = std::min(rigid_dt, st.dt_min);
+      std::fill(element_dt[ib].begin(), element_dt[ib].end(), 0.0);
+      continue;
+    }
     if (st.dt_elem >= 0 && (st.dt_min < dt_min || (st.dt_min == dt_min && st.dt_elem < dt_elem))) {
       dt_min = st.dt_min;
       dt_elem = st.dt_elem;
@@ -99,6 +105,10 @@ void Solver::initialize() {
   }
   exchangeSharedSlots();
   gather(sd_.internal, sd_.mass, 1);
+  for (const auto& blk : sd_.solid_blocks)
+    if (blk.rigid)
+      std::fill(sd_.slots.begin() + std::ptrdiff_t(3 * blk.slot_offset),
+                sd_.slots.begin() + std::ptrdiff_t(3 * (blk.slot_offset + 8 * blk.size())), 0.0);
   // Point masses (*ELEMENT_MASS) belong to their node on every rank that holds it.
   for (const auto& pm : model_.point_masses)
     if (const int32_t n = sd_.localNode(pm.node); n != model::kNone)
@@ -133,6 +143,7 @@ void Solver::initialize() {
       dt_min = 1e300;
       for (std::size_t ib = 0; ib < sd_.solid_blocks.size(); ++ib) {
         const auto& blk = sd_.solid_blocks[ib];
+        if (blk.rigid) continue;
         for (std::size_t e = 0; e < blk.size(); ++e) {
           const double dte = element_dt[ib][e] * std::sqrt(blk.mass_scale[e]);
           if (dte < dt_min || (dte == dt_min && blk.elem[e] < dt_elem)) {
@@ -157,7 +168,13 @@ void Solver::initialize() {
   for (std::size_t n = 0; n < sd_.numNodes(); ++n)
     for (int c = 0; c < 3; ++c)
       sd_.v[3 * n + c] = model_.initial_velocity[static_cast<std::size_t>(sd_.node_model[n])][c];
+  if (!model_.rigid.empty()) {
+    rigid_ = std::make_unique<constraints::RigidBodies>(model_, sd_, comm_);
+    rigid_->setInitialVelocities(sd_);
+  }
 
+  // A model of rigid parts only runs at the step its rigid elements would have.
+  if (comm_.minAll(dt_min) >= 1e300) dt_min = rigid_dt;
   const double dt_global = comm_.minAll(dt_min);
   dt_initial_elem_ = controllingElement(dt_elem, dt_elem >= 0 && dt_min == dt_global);
   dt_next_ = ctl.tssfac * dt_global;
@@ -179,6 +196,7 @@ bool Solver::finished() const {
 
 void Solver::computeElementGroup(Group group, ElementPass& pass) {
   for (auto& blk : sd_.solid_blocks) {
+    if (blk.rigid) continue;  // no force: the rigid body moves its nodes
     const std::size_t first = group == Group::Shared ? 0 : blk.shared_end;
     const std::size_t last = group == Group::Shared ? blk.shared_end : blk.size();
     if (first >= last) continue;
@@ -212,7 +230,8 @@ void Solver::finishElementPass(const ElementPass& pass) {
   }
   const double dt_global = comm_.minAll(dt_min);
   const int64_t dt_elem_id = controllingElement(dt_elem, dt_elem >= 0 && dt_min == dt_global);
-  double dt_new = model_.controls.tssfac * dt_global;
+  // No deformable element anywhere (rigid parts only): the initial step stays.
+  double dt_new = dt_global >= 1e300 ? dt_initial_ : model_.controls.tssfac * dt_global;
   if (model_.controls.dt_max_curve != model::kNone)
     dt_new = std::min(
         dt_new, model_.curves[static_cast<std::size_t>(model_.controls.dt_max_curve)].value(time_));
@@ -259,7 +278,9 @@ void Solver::updateKinematics() {
   non_finite_ = non_finite != 0;
 
   const auto t0 = Clock::now();
-  double work = boundary_.applyKinematics(time_, dt_n, dt_half, sd_, v_old_);
+  // Rigid bodies first: SPCs and prescribed motion act on free nodes only (build_rigid.cpp).
+  double work = rigid_ ? rigid_->apply(time_, dt_n, dt_half, sd_, v_old_, comm_) : 0.0;
+  work += boundary_.applyKinematics(time_, dt_n, dt_half, sd_, v_old_);
   rigidwall_energy_ += boundary_.applyRigidWalls(dt_n, dt_half, sd_, v_old_, comm_);
   timing_.constraints += seconds(t0, Clock::now());
 
@@ -340,7 +361,8 @@ Energies Solver::energies() const {
   // and of the work integrals: the kinetic energy uses v(n) = (v(n-1/2) + v(n+1/2)) / 2.
   const bool stepped = v_old_.size() == sd_.v.size();
   for (std::size_t n = 0; n < sd_.numNodes(); ++n) {
-    if (!sd_.node_owned[n]) continue;
+    // Nodes of rigid bodies: the bodies' own energy is added below.
+    if (!sd_.node_owned[n] || (rigid_ && rigid_->countsNode(n))) continue;
     double v[3];
     for (int c = 0; c < 3; ++c)
       v[c] = stepped ? 0.5 * (v_old_[3 * n + c] + sd_.v[3 * n + c]) : sd_.v[3 * n + c];
@@ -357,6 +379,9 @@ Energies Solver::energies() const {
   e.external_work = sums[3];
   e.rigidwall = sums[4];
   e.kinetic += boundary_.wallKineticEnergy();  // the same on every rank: added once
+  // Rigid bodies: translation and rotation of the body (the energy its integrator keeps;
+  // with *PART_INERTIA the nodal masses are not the body's), the same on every rank.
+  if (rigid_) e.kinetic += rigid_->kineticEnergy();
   e.total = e.kinetic + e.internal + e.hourglass + e.contact + e.rigidwall;
   e.initial = initial_energy_;
   const double reference = initial_energy_ + e.external_work;
