@@ -453,3 +453,41 @@ TEST(VerificationRigid, NodalRigidBodyKeepsItsShape) {
 }
 
 }  // namespace
+
+namespace {
+
+// The parallel determinism deck (tests/data/decks/rigid_welds.k, tools/make_test_decks.py)
+// must exercise what it is there for: welds failing by force during the run while others hold,
+// the generalized weld failing at its TFAIL, and every kind of body present.
+TEST(VerificationRigid, DeterminismDeckExercisesWeldFailure) {
+  Simulation sim(crumple::testing::sourceDir() / "tests/data/decks/rigid_welds.k");
+  sim.run();
+  const auto* rigid = sim.solver->rigidBodies();
+  int failed = 0, held = 0;
+  for (const auto& w : rigid->welds()) {
+    if (w.id < 100) {
+      // The generalized weld, numbered after the twelve spot welds, lets go at TFAIL.
+      EXPECT_EQ(w.id, 13);
+      EXPECT_TRUE(w.failed);
+      EXPECT_NEAR(w.failure_time, 0.04, 2 * sim.solver->dt());
+      continue;
+    }
+    (w.failed ? failed : held) += 1;
+  }
+  EXPECT_GE(failed, 3);
+  EXPECT_GE(held, 1);
+  int parts = 0, nodal = 0;
+  for (const auto& s : rigid->states()) {
+    parts += s.kind == crumple::constraints::RigidBodyState::Kind::Part;
+    nodal += s.kind == crumple::constraints::RigidBodyState::Kind::Nodal;
+  }
+  EXPECT_EQ(parts, 3);  // the plate, the merged flying body, the anvil
+  EXPECT_EQ(nodal, 1);
+  // *PART_INERTIA velocity: the flying body's centre moved at (2, 0, 1).
+  const auto flying = rigid->states()[1];
+  EXPECT_EQ(flying.id, 3);
+  EXPECT_NEAR(flying.cm[0], 12.0 + 2.0 * sim.solver->time(), 1e-12);
+  EXPECT_NEAR(sim.solver->energies().ratio, 1.0, 0.01);
+}
+
+}  // namespace
