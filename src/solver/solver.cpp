@@ -81,6 +81,7 @@ void Solver::initialize() {
   const auto& ctl = model_.controls;
   std::vector<std::vector<double>> element_dt(sd_.solid_blocks.size());
   double dt_min = 1e300, rigid_dt = 1e300;
+  int32_t rigid_elem = -1;
   int32_t dt_elem = -1;
   for (std::size_t ib = 0; ib < sd_.solid_blocks.size(); ++ib) {
     auto& blk = sd_.solid_blocks[ib];
@@ -94,7 +95,10 @@ void Solver::initialize() {
     }
     // Rigid elements give mass only: no time step (unless nothing else sets one), no scaling.
     if (blk.rigid) {
-      rigid_dt = std::min(rigid_dt, st.dt_min);
+      if (st.dt_elem >= 0 && st.dt_min < rigid_dt) {
+        rigid_dt = st.dt_min;
+        rigid_elem = st.dt_elem;
+      }
       std::fill(element_dt[ib].begin(), element_dt[ib].end(), 0.0);
       continue;
     }
@@ -174,7 +178,10 @@ void Solver::initialize() {
   }
 
   // A model of rigid parts only runs at the step its rigid elements would have.
-  if (comm_.minAll(dt_min) >= 1e300) dt_min = rigid_dt;
+  if (comm_.minAll(dt_min) >= 1e300) {
+    dt_min = rigid_dt;
+    dt_elem = rigid_elem;
+  }
   const double dt_global = comm_.minAll(dt_min);
   dt_initial_elem_ = controllingElement(dt_elem, dt_elem >= 0 && dt_min == dt_global);
   dt_next_ = ctl.tssfac * dt_global;
