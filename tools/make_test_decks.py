@@ -12,7 +12,8 @@
                       parts (*CONSTRAINED_RIGID_BODIES) with an extra node and *PART_INERTIA
                       on one of them; a second elastic block spot welded to the first and
                       pulled off so that welds fail during the run; a generalized weld, a
-                      nodal rigid body, a tied node set and a fully constrained (CMO) anvil.
+                      nodal rigid body, a tied node set, a fully constrained (CMO) anvil and
+                      a spherical joint between the plate's body and block B.
 """
 
 from __future__ import annotations
@@ -147,6 +148,8 @@ def rigid_welds(nx: int = 12, ny: int = 4, nz: int = 4) -> str:
     c = block(mesh, 3, (0.0, 0.0, 40.0), (20.0, 10.0, 10.0), (4, 2, 2))
     d = block(mesh, 4, (25.0, 0.0, 40.0), (10.0, 10.0, 10.0), (2, 2, 2))
     extra = mesh.add_node(40.0, 20.0, 45.0)
+    # A node of the plate's body (an extra node) on B's top face, ball-jointed to B's node there.
+    hinge = mesh.add_node(*mesh.nodes[b[3, 2, nz] - 1])
     # Spot welds between facing nodes of A (x = 60) and B (x = 61); the middle row is one
     # generalized weld of its nodes on both sides.
     welds = []
@@ -226,6 +229,9 @@ $      pid       dof       vad      lcid        sf
          3         4
 *CONSTRAINED_EXTRA_NODES_NODE
          4{extra:10d}
+         2{hinge:10d}
+*CONSTRAINED_JOINT_SPHERICAL
+{hinge:10d}{b[3, 2, nz]:10d}
 {weld_text}{node_set(11, general, "generalized weld")}*CONSTRAINED_GENERALIZED_WELD_SPOT
         11
 $    tfail      epsf        sn        ss         n         m

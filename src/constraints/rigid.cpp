@@ -410,6 +410,87 @@ RigidBodies::RigidBodies(const model::Model& m, const domain::Subdomain& sd,
   }
   for (std::size_t k = 0; k < sets_.size(); ++k)
     for (std::size_t off : recs[nb + k]) sets_[k].mass += all[off];
+
+  // Joints: the mass behind each side of each pair (its body's, or the node's own).
+  for (const auto& j : rd.joints)
+    for (const auto& pair : j.pairs) {
+      JointPair jp;
+      jp.node = pair;
+      for (int s = 0; s < 2; ++s) jp.local[std::size_t(s)] = sd.localNode(pair[std::size_t(s)]);
+      jp.rps = j.rps;
+      jp.damp = j.damp;
+      joints_.push_back(jp);
+    }
+  if (joints_.empty()) return;
+  keys.clear();
+  values.clear();
+  for (std::size_t p = 0; p < joints_.size(); ++p)
+    for (int s = 0; s < 2; ++s) {
+      const int32_t n = joints_[p].local[std::size_t(s)];
+      if (n == model::kNone || !sd.node_owned[std::size_t(n)]) continue;
+      const int32_t g = group_[std::size_t(n)];
+      double side_mass = sd.mass[std::size_t(n)];
+      if (g >= 0 && static_cast<std::size_t>(g) < nb) {
+        // A body resists a push at the node with its mass and, turning about its centre,
+        // with at least I_min / |r|^2: 1 / m_point <= 1 / m + |r|^2 / I_min.
+        const Body& b = bodies_[std::size_t(g)];
+        const double largest = std::max({b.inertia[0], b.inertia[1], b.inertia[2]});
+        double smallest = largest;
+        for (double ik : b.inertia)
+          if (ik > 1e-12 * largest) smallest = std::min(smallest, ik);
+        const Vec3 r = sub(at(sd.x, 3 * std::size_t(n)), b.x_cm);
+        side_mass = 1.0 / (1.0 / b.mass + (smallest > 0.0 ? dot(r, r) / smallest : 0.0));
+        if (b.fixed == 077) side_mass = 0.0;  // a body held fixed: the other side moves alone
+      }
+      keys.push_back(recordKey(int32_t(2 * p) + s, joints_[p].node[std::size_t(s)]));
+      values.push_back(side_mass);
+    }
+  const auto masses = gatherRecords(
+      keys, values, 2 * joints_.size(), [](int32_t) { return 1; }, comm, all);
+  for (std::size_t p = 0; p < joints_.size(); ++p) {
+    const double ma = all[masses[2 * p].at(0)], mb = all[masses[2 * p + 1].at(0)];
+    // 1 / m = 1 / m_a + 1 / m_b; a side of no mass (or held fixed) leaves the other's.
+    joints_[p].mass = ma > 0.0 && mb > 0.0 ? ma * mb / (ma + mb) : std::max(ma, mb);
+  }
+}
+
+void RigidBodies::addJointForces(double dt, domain::Subdomain& sd, const comm::Communicator& comm) {
+  if (joints_.empty()) return;
+  if (joints_.front().k == 0.0 && dt > 0.0)
+    for (JointPair& jp : joints_) {
+      jp.k = 0.5 * jp.rps * jp.mass / (dt * dt);
+      jp.c = 0.2 * jp.damp * std::sqrt(jp.k * jp.mass);  // 2 zeta sqrt(k m), zeta = 0.1
+    }
+  std::vector<int64_t> keys;
+  std::vector<double> values;
+  for (std::size_t p = 0; p < joints_.size(); ++p)
+    for (int s = 0; s < 2; ++s) {
+      const int32_t n = joints_[p].local[std::size_t(s)];
+      if (n == model::kNone || !sd.node_owned[std::size_t(n)]) continue;
+      keys.push_back(recordKey(int32_t(2 * p) + s, joints_[p].node[std::size_t(s)]));
+      for (int c = 0; c < 3; ++c) values.push_back(sd.x[3 * std::size_t(n) + std::size_t(c)]);
+      for (int c = 0; c < 3; ++c) values.push_back(sd.v[3 * std::size_t(n) + std::size_t(c)]);
+    }
+  std::vector<double> all;
+  const auto recs = gatherRecords(
+      keys, values, 2 * joints_.size(), [](int32_t) { return 6; }, comm, all);
+  double stored = 0.0;
+  for (std::size_t p = 0; p < joints_.size(); ++p) {
+    const JointPair& jp = joints_[p];
+    const std::size_t a = recs[2 * p].at(0), b = recs[2 * p + 1].at(0);
+    const Vec3 gap = sub(at(all, b), at(all, a)), dv = sub(at(all, b + 3), at(all, a + 3));
+    // The spring and the damper pull a towards b and b towards a.
+    const Vec3 f = add(scaled(gap, jp.k), scaled(dv, jp.c));
+    stored += 0.5 * jp.k * dot(gap, gap);
+    joint_dissipated_ += jp.c * dot(dv, dv) * dt;
+    for (int s = 0; s < 2; ++s) {
+      const int32_t n = jp.local[std::size_t(s)];
+      if (n == model::kNone) continue;
+      const double sign = s == 0 ? 1.0 : -1.0;
+      for (int c = 0; c < 3; ++c) sd.f_ext[3 * std::size_t(n) + std::size_t(c)] += sign * f[c];
+    }
+  }
+  joint_energy_ = stored + joint_dissipated_;
 }
 
 void RigidBodies::setInitialVelocities(domain::Subdomain& sd) const {

@@ -24,7 +24,8 @@
 //      body's angular velocity (models with rotations).
 // Spot welds check the force they exert on each node after step 2 (from m (v_rigid - v)/dt)
 // and let go when the criterion is met; tied node sets share the mass-weighted mean
-// velocity in their directions.
+// velocity in their directions. Joints are penalty springs between node pairs, applied as
+// external forces before all this (addJointForces).
 //
 // Determinism: every sum over the nodes of a body runs in ascending model node order over all
 // ranks. Each rank contributes the nodes it owns, as (body, model node, values) records that
@@ -74,7 +75,7 @@ class RigidBodies {
   RigidBodies(const model::Model& model, const domain::Subdomain& sd,
               const comm::Communicator& comm);
 
-  bool empty() const { return bodies_.empty() && sets_.empty(); }
+  bool empty() const { return bodies_.empty() && sets_.empty() && joints_.empty(); }
 
   // The bodies' initial velocity fields on their nodes (v, and w with rotations).
   void setInitialVelocities(domain::Subdomain& sd) const;
@@ -86,6 +87,18 @@ class RigidBodies {
   // once.
   double apply(double t, double dt_n, double dt_half, domain::Subdomain& sd,
                const domain::NodeVector& v_old, const comm::Communicator& comm);
+
+  // Collective, once per cycle, after the external forces and before the velocity update:
+  // the penalty forces of the joints (*CONSTRAINED_JOINT_SPHERICAL / _REVOLUTE) from x(n) and
+  // v(n-1/2), added to f_ext of every copy of their nodes. dt = dt(n+1/2); the first call's
+  // step fixes the stiffness, k = RPS m / (2 dt^2) with m = m_a m_b / (m_a + m_b) of the two
+  // sides (a node's mass, or for a node of a rigid body the body's mass as felt at the node,
+  // 1 / (1/m + |r|^2 / I_min)): the joint's own frequency then stays below the step's limit
+  // (omega dt <= sqrt(RPS / 2)), as LS-DYNA scales its joint penalty with the masses and the
+  // time step (Theory Manual, "Rigid Body Joints"). Damping is 10% of critical, times DAMP.
+  void addJointForces(double dt, domain::Subdomain& sd, const comm::Communicator& comm);
+  // Energy stored in the joint springs plus what their dampers dissipated (every rank).
+  double jointEnergy() const { return joint_energy_; }
 
   // Kinetic energy of the bodies at t(n) (translation and rotation, from the mean of the
   // half-step momenta, like the solver's nodal sum); the same on every rank. The solver
@@ -142,8 +155,17 @@ class RigidBodies {
   // Step 2-3 for one body given F and M; returns the constraint work.
   double advance(Body& b, const Vec3& F, const Vec3& M, double t, double dt_n, double dt_half);
 
+  struct JointPair {
+    std::array<int32_t, 2> node{};             // model nodes
+    std::array<int32_t, 2> local{};            // local copies, or model::kNone
+    double rps = 1.0, damp = 1.0, mass = 0.0;  // mass: m_a m_b / (m_a + m_b)
+    double k = 0.0, c = 0.0;
+  };
+
   std::vector<Body> bodies_;  // part and nodal bodies, then welds
   std::vector<TiedSet> sets_;
+  std::vector<JointPair> joints_;  // every pair of every joint, in model order
+  double joint_dissipated_ = 0.0, joint_energy_ = 0.0;
   std::vector<int32_t> group_;    // per local node: body or nb + set index, or -1
   std::vector<uint8_t> in_body_;  // per local node: in an active body (energy counted here)
   bool stepped_ = false;

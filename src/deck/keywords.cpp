@@ -348,6 +348,11 @@ std::vector<KeywordSpec> makeTables() {
         {"card 1",
          {I("NSID"), I("CID", 0, Q), I("FILTER"), I("WINDOW"), I("NPR", 0, Q), I("NPRT", 0, Q)}},
         {"card 2", {R("TFAIL", 1e20, Z), R("EPSF"), R("SN"), R("SS"), R("N"), R("M")}}}});
+  t.push_back({"*CONSTRAINED_JOINT",
+               {idCard(),
+                {"card 1",
+                 {I("N1"), I("N2"), I("N3"), I("N4"), I("N5"), I("N6"), R("RPS", 1, Z),
+                  R("DAMP", 1, Z)}}}});
   t.push_back({"*CONSTRAINED_NODE_SET",
                {{"id card", {I("CNSID")}}, {"card 1", {I("NSID"), I("DOF"), R("TF", 1e20, Z)}}}});
   // The id of a definition Crumple does not support (*MAT_RIGID, *SECTION_SHELL, ...): the

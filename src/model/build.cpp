@@ -306,6 +306,7 @@ const std::vector<Meaning>& meanings() {
       {"*CONSTRAINED_SPOTWELD", 6, readSpotweld, {"ID"}, U::Reject},
       {"*CONSTRAINED_GENERALIZED_WELD", 6, readGeneralizedWeld, {"SPOT", "ID"}, U::Reject},
       {"*CONSTRAINED_NODE_SET", 6, readConstrainedNodeSet, {"ID"}, U::Reject},
+      {"*CONSTRAINED_JOINT", 6, readJoint, {"SPHERICAL", "REVOLUTE", "ID"}, U::Reject},
       {"*CONTROL_TERMINATION", 6, readControlTermination, {}},
       {"*CONTROL_TIMESTEP", 6, readControlTimestep, {}},
       {"*CONTROL_HOURGLASS", 6, readControlHourglass, {}},

@@ -235,6 +235,7 @@ void readPrescribedMotionRigid(Context&, const deck::Keyword&, const KeywordOpti
 void readSpotweld(Context&, const deck::Keyword&, const KeywordOptions&);
 void readGeneralizedWeld(Context&, const deck::Keyword&, const KeywordOptions&);
 void readConstrainedNodeSet(Context&, const deck::Keyword&, const KeywordOptions&);
+void readJoint(Context&, const deck::Keyword&, const KeywordOptions&);
 void finishRigid(Context&);
 
 // build_controls.cpp

@@ -1,7 +1,8 @@
 // Meaning of the rigid-body and nodal-constraint keywords (LS-DYNA Keyword Manual Vol. I):
 // *PART_INERTIA (cards 3-5 of *PART), *CONSTRAINED_RIGID_BODIES, *CONSTRAINED_EXTRA_NODES_NODE
 // and _SET, *CONSTRAINED_NODAL_RIGID_BODY(_SPC), *BOUNDARY_PRESCRIBED_MOTION_RIGID,
-// *CONSTRAINED_SPOTWELD, *CONSTRAINED_GENERALIZED_WELD_SPOT and *CONSTRAINED_NODE_SET.
+// *CONSTRAINED_SPOTWELD, *CONSTRAINED_GENERALIZED_WELD_SPOT, *CONSTRAINED_NODE_SET and
+// *CONSTRAINED_JOINT_SPHERICAL / _REVOLUTE.
 // The readers collect; finishRigid() builds Model::rigid once every keyword is read: one body
 // per *MAT_RIGID part after merges, then the nodal rigid bodies, and checks that no node is
 // subject to two constraints.
@@ -343,6 +344,53 @@ void readConstrainedNodeSet(Context& ctx, const deck::Keyword& kw, const Keyword
     t.dofs = codeMask(static_cast<int>(dof));
     t.tfail = failureTime(c.real("TF"));
     ctx.model.rigid.node_sets.push_back(std::move(t));
+    ctx.collect(cur);
+  }
+}
+
+// *CONSTRAINED_JOINT_SPHERICAL: N1, N2; _REVOLUTE: N1, N2 and N3, N4 on the axis. Each pair
+// must coincide (Keyword Manual, *CONSTRAINED_JOINT: the joint's node pairs are coincident).
+void readJoint(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const bool revolute = opts.has("REVOLUTE");
+  if (revolute == opts.has("SPHERICAL")) {
+    ctx.rejectKeyword(kw, "give one of _SPHERICAL or _REVOLUTE (other joints are not supported)");
+    return;
+  }
+  const auto& spec = keywordSpec("*CONSTRAINED_JOINT");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    JointDef j;
+    j.id = static_cast<int64_t>(ctx.model.rigid.joints.size()) + 1;
+    if (opts.has("ID")) j.id = positiveId(cur.read(spec.card("id card")), "ID");
+    const Card& c = cur.read(spec.card("card 1"));
+    j.where = c.where();
+    j.revolute = revolute;
+    static constexpr const char* kN[4] = {"N1", "N2", "N3", "N4"};
+    const int used = revolute ? 4 : 2;
+    for (int p = 0; p < used; p += 2) {
+      const int32_t a = ctx.node(c, kN[p], c.integer(kN[p]));
+      const int32_t b = ctx.node(c, kN[p + 1], c.integer(kN[p + 1]));
+      if (a == b) c.fail(kN[p + 1], "a joint joins two different nodes");
+      const Vec3& xa = ctx.model.nodes.x[static_cast<std::size_t>(a)];
+      const Vec3& xb = ctx.model.nodes.x[static_cast<std::size_t>(b)];
+      const double scale = std::max({1.0, std::abs(xa[0]), std::abs(xa[1]), std::abs(xa[2])});
+      if (std::hypot(xa[0] - xb[0], xa[1] - xb[1], xa[2] - xb[2]) > 1e-6 * scale)
+        c.fail(kN[p + 1],
+               "the joint's nodes " + std::string(kN[p]) + " and " + kN[p + 1] + " must coincide");
+      j.pairs.push_back({a, b});
+    }
+    if (revolute) {
+      const Vec3& x1 = ctx.model.nodes.x[static_cast<std::size_t>(j.pairs[0][0])];
+      const Vec3& x3 = ctx.model.nodes.x[static_cast<std::size_t>(j.pairs[1][0])];
+      if (x1 == x3) c.fail("N3", "the revolute axis N1-N3 has no length");
+    }
+    for (auto f : {"N5", "N6"})
+      if (c.integer(f) != 0) ctx.reject(c, f, "N5 and N6 belong to joints not supported here");
+    j.rps = c.real("RPS");
+    j.damp = c.real("DAMP");
+    if (!(j.rps > 0)) c.fail("RPS", "must be positive");
+    if (j.damp < 0) c.fail("DAMP", "must not be negative");
+    ctx.model.rigid.joints.push_back(std::move(j));
     ctx.collect(cur);
   }
 }

@@ -7,6 +7,8 @@
 //   spot welds     *CONSTRAINED_SPOTWELD and *CONSTRAINED_GENERALIZED_WELD_SPOT: a small nodal
 //                  rigid body that fails on a force criterion or at a time
 //   tied node sets *CONSTRAINED_NODE_SET: a common velocity in some global directions
+//   joints         *CONSTRAINED_JOINT_SPHERICAL and _REVOLUTE: penalty springs between
+//                  coincident node pairs (the one exception to the rule below)
 //
 // Every node list holds model node indices, ascending and without repeats. A node belongs to
 // at most one of all these (LS-DYNA Keyword Manual, *CONSTRAINED_SPOTWELD remarks: nodes may
@@ -79,12 +81,26 @@ struct TiedNodeSet {
   util::SourceLoc where;
 };
 
+// *CONSTRAINED_JOINT_SPHERICAL (one pair N1-N2) and _REVOLUTE (pairs N1-N2 and N3-N4 on the
+// axis): penalty springs pull each pair of coincident nodes back together.
+struct JointDef {
+  int64_t id = 0;
+  bool revolute = false;
+  std::vector<std::array<int32_t, 2>> pairs;
+  double rps = 1.0;   // relative penalty stiffness
+  double damp = 1.0;  // scale of the default damping
+  util::SourceLoc where;
+};
+
 struct RigidDefinitions {
   // Part bodies in ascending master part id, then nodal rigid bodies in ascending id.
   std::vector<RigidBodyDef> bodies;
-  std::vector<SpotweldDef> welds;  // in ascending id
+  std::vector<SpotweldDef> welds;  // in deck order
   std::vector<TiedNodeSet> node_sets;
-  bool empty() const { return bodies.empty() && welds.empty() && node_sets.empty(); }
+  std::vector<JointDef> joints;  // in deck order
+  bool empty() const {
+    return bodies.empty() && welds.empty() && node_sets.empty() && joints.empty();
+  }
 };
 
 }  // namespace crumple::model

@@ -190,6 +190,17 @@ void fields(A& a, M& m) {
         loc(a, t.where);
       },
       m.rigid.node_sets);
+  a.count(
+      m.rigid.joints.size(),
+      [&](auto& j) {
+        a(j.id);
+        a(j.revolute);
+        a(j.pairs);
+        a(j.rps);
+        a(j.damp);
+        loc(a, j.where);
+      },
+      m.rigid.joints);
   a(m.controls);
   a.count(
       m.unsupported.size(),

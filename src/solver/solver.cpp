@@ -340,6 +340,7 @@ void Solver::step() {
   timing_.elements += seconds(t0, t1) + seconds(t2, t3) + seconds(t4, t5);
   timing_.communication += seconds(t1, t2) + seconds(t3, t4) + seconds(t5, t6);
   boundary_.externalForces(time_, sd_, sd_.f_ext);
+  if (rigid_) rigid_->addJointForces(dt_next_, sd_, comm_);
   timing_.constraints += seconds(t6, Clock::now());
   updateKinematics();
   // A non-finite velocity ends every rank (collective); the lowest node id is named.
@@ -388,7 +389,10 @@ Energies Solver::energies() const {
   e.kinetic += boundary_.wallKineticEnergy();  // the same on every rank: added once
   // Rigid bodies: translation and rotation of the body (the energy its integrator keeps;
   // with *PART_INERTIA the nodal masses are not the body's), the same on every rank.
-  if (rigid_) e.kinetic += rigid_->kineticEnergy();
+  if (rigid_) {
+    e.kinetic += rigid_->kineticEnergy();
+    e.internal += rigid_->jointEnergy();
+  }
   e.total = e.kinetic + e.internal + e.hourglass + e.contact + e.rigidwall;
   e.initial = initial_energy_;
   const double reference = initial_energy_ + e.external_work;

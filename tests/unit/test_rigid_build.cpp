@@ -217,6 +217,45 @@ TEST(RigidBuild, SpotweldsGeneralizedWeldsAndTiedSets) {
   EXPECT_EQ(m.rigid.node_sets[0].tfail, 2.0);
 }
 
+TEST(RigidBuild, SphericalAndRevoluteJoints) {
+  TempDir t;
+  // Nodes 40 and 41 coincide with nodes 8 (1, 1, 1) and 4 (1, 1, 0) of the first cube; joints
+  // may join rigid-body nodes (the exception to one constraint per node).
+  const std::string nodes = "*NODE\n40,1,1,1\n41,1,1,0\n";
+  const Model m =
+      build(t, nodes +
+                   "*CONSTRAINED_JOINT_SPHERICAL\n8,40\n"
+                   "*CONSTRAINED_JOINT_REVOLUTE_ID\n9,hinge\n8,40,4,41,0.0,0.0,2.0,0.5\n");
+  const auto& j = m.rigid.joints;
+  ASSERT_EQ(j.size(), 2u);
+  EXPECT_EQ(j[0].id, 1);
+  EXPECT_FALSE(j[0].revolute);
+  ASSERT_EQ(j[0].pairs.size(), 1u);
+  EXPECT_EQ(j[0].pairs[0], (std::array<int32_t, 2>{m.nodeIndex(8), m.nodeIndex(40)}));
+  EXPECT_EQ(j[0].rps, 1.0);
+  EXPECT_EQ(j[0].damp, 1.0);
+  EXPECT_EQ(j[1].id, 9);
+  EXPECT_TRUE(j[1].revolute);
+  ASSERT_EQ(j[1].pairs.size(), 2u);
+  EXPECT_EQ(j[1].pairs[1], (std::array<int32_t, 2>{m.nodeIndex(4), m.nodeIndex(41)}));
+  EXPECT_EQ(j[1].rps, 2.0);
+  EXPECT_EQ(j[1].damp, 0.5);
+  const Model r = crumple::model::deserialize(crumple::model::serialize(m));
+  ASSERT_EQ(r.rigid.joints.size(), 2u);
+  EXPECT_EQ(r.rigid.joints[1].pairs, j[1].pairs);
+  EXPECT_EQ(r.rigid.joints[1].rps, 2.0);
+
+  const auto apart = t.write("a.k", mesh() + nodes + "*CONSTRAINED_JOINT_SPHERICAL\n8,41\n");
+  EXPECT_EQ(errorOf([&] { readModel(apart); }),
+            apart.string() +
+                ":61: *CONSTRAINED_JOINT_SPHERICAL card 1 field 2 (N2): the joint's nodes N1 and "
+                "N2 must coincide");
+  const auto other = t.write("o.k", mesh() + "*CONSTRAINED_JOINT_CYLINDRICAL\n8,40\n");
+  EXPECT_EQ(
+      errorOf([&] { readModel(other); }),
+      other.string() + ":57: *CONSTRAINED_JOINT_CYLINDRICAL: option _CYLINDRICAL is not supported");
+}
+
 TEST(RigidBuild, ErrorsNameTheConflict) {
   TempDir t;
   auto error = [&](const std::string& extra) {

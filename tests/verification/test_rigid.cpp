@@ -456,6 +456,101 @@ TEST(VerificationRigid, NodalRigidBodyKeepsItsShape) {
 
 namespace {
 
+// *CONSTRAINED_JOINT_SPHERICAL: a rigid block hangs from a fixed rigid block by a ball joint
+// at the middle of its top face and swings under gravity with a small amplitude. Its period is
+// the compound pendulum's, T = 2 pi sqrt(I_pivot / (m g d)) (with the lumped nodal masses), and
+// the penalty keeps the joint closed.
+TEST(VerificationRigid, SphericalJointPendulumPeriod) {
+  Mesh mesh;
+  const auto anvil = mesh.block(1, {-5, -5, 0}, {10, 10, 10}, 2, 2, 1);
+  const auto bob = mesh.block(2, {-5, -5, -40}, {10, 10, 40}, 2, 2, 4);
+  const double g = 10.0, w0 = 0.05;  // mm/ms^2; rad/ms about y, amplitude ~0.04 rad
+  // Initial swing about the pivot (0, 0, 0), on the bob's nodes only.
+  std::string vel = "*INITIAL_VELOCITY_NODE\n";
+  for (int k = 0; k <= 4; ++k)
+    for (int j = 0; j <= 2; ++j)
+      for (int i = 0; i <= 2; ++i) {
+        const Vec3& x = mesh.x(bob(i, j, k));
+        vel += fmt::format("{},{:.17g},0,{:.17g}\n", bob(i, j, k), w0 * x[2], -w0 * x[0]);
+      }
+  auto sim = Simulation::fromText(
+      "spherical_joint",
+      mesh.text(
+          "*MAT_RIGID\n1,7.85e-6,13.125,0.3\n1.0,7.0,7.0\n*MAT_RIGID\n2,7.85e-6,13.125,0.3\n" +
+          kSection + part(1, 1) + part(2, 2) + termination(25.0) + constantCurve(1) +
+          fmt::format("*LOAD_BODY_Z\n1,{}\n", g) +
+          fmt::format("*CONSTRAINED_JOINT_SPHERICAL\n{},{}\n", anvil(1, 1, 0), bob(1, 1, 4)) +
+          vel));
+  // Compound pendulum from the bob's nodal masses: I about the y axis through the pivot.
+  double m = 0.0, i_pivot = 0.0, md = 0.0;
+  for (int k = 0; k <= 4; ++k)
+    for (int j = 0; j <= 2; ++j)
+      for (int i = 0; i <= 2; ++i) {
+        const int n = bob(i, j, k);
+        const double mi = sim->sd.mass[sim->local(n)];
+        const Vec3& x = mesh.x(n);
+        m += mi;
+        md += -mi * x[2];
+        i_pivot += mi * (x[0] * x[0] + x[2] * x[2]);
+      }
+  const double period = 2 * M_PI * std::sqrt(i_pivot / (md * g));
+  std::vector<double> up;  // times omega_y crosses zero upwards
+  double prev = w0, gap = 0.0;
+  sim->run([&](const crumple::solver::Solver& s) {
+    const double w = s.rigidBodies()->states()[1].angular_velocity[1];
+    if (prev < 0.0 && w >= 0.0) up.push_back(s.time() - s.dt() * w / (w - prev));
+    prev = w;
+    gap = std::max(gap, distance(*sim, anvil(1, 1, 0), bob(1, 1, 4)));
+  });
+  ASSERT_GE(up.size(), 2u);
+  const double measured = (up.back() - up.front()) / double(up.size() - 1);
+  EXPECT_NEAR(measured, period, 0.01 * period);
+  // A penalty joint opens by about F / k = 2 F dt^2 / m: here ~1e-4 of the pendulum length.
+  EXPECT_LT(gap, 2e-4 * 40.0);
+  RecordProperty("period_error", std::to_string(measured / period - 1));
+  RecordProperty("joint_gap_mm", std::to_string(gap));
+}
+
+// *CONSTRAINED_JOINT_REVOLUTE: a rigid door hinged on the z axis to a fixed rigid block turns
+// at its initial rate while a load along z on its far corner tries to tilt it: the hinge takes
+// the load, the door stays in its plane and keeps turning about the axis.
+TEST(VerificationRigid, RevoluteJointHingesADoor) {
+  Mesh mesh;
+  const auto frame = mesh.block(1, {-10, 0, 0}, {10, 10, 20}, 2, 2, 4);
+  const auto door = mesh.block(2, {0, 0, 0}, {30, 2, 20}, 3, 1, 4);
+  const double w = 0.5;
+  std::string vel = "*INITIAL_VELOCITY_NODE\n";
+  for (int k = 0; k <= 4; ++k)
+    for (int j = 0; j <= 1; ++j)
+      for (int i = 0; i <= 3; ++i) {
+        const Vec3& x = mesh.x(door(i, j, k));
+        vel += fmt::format("{},{:.17g},{:.17g},0\n", door(i, j, k), -w * x[1], w * x[0]);
+      }
+  const int corner = door(3, 0, 4);
+  auto sim = Simulation::fromText(
+      "revolute_joint",
+      mesh.text("*MAT_RIGID\n1,7.85e-6,210.0,0.3\n1.0,7.0,7.0\n*MAT_RIGID\n2,7.85e-6,210.0,0.3\n" +
+                kSection + part(1, 1) + part(2, 2) + termination(2.0) + constantCurve(1) +
+                fmt::format("*LOAD_NODE_POINT\n{},3,1,0.05\n", corner) +
+                fmt::format("*CONSTRAINED_JOINT_REVOLUTE_ID\n7,hinge\n{},{},{},{}\n",
+                            frame(2, 0, 0), door(0, 0, 0), frame(2, 0, 4), door(0, 0, 4)) +
+                vel));
+  sim->run();
+  const double t = sim->solver->time();
+  // The door's far corner: still at z = 20, at angle w t about the axis.
+  EXPECT_NEAR(sim->x(corner, 2), 20.0, 1e-4);
+  EXPECT_NEAR(std::atan2(sim->x(corner, 1), sim->x(corner, 0)), w * t, 1e-4);
+  EXPECT_NEAR(std::hypot(sim->x(corner, 0), sim->x(corner, 1)), 30.0, 1e-4);
+  // The load does no work; the energy in the joint springs is small.
+  const auto e = sim->solver->energies();
+  EXPECT_NEAR(e.ratio, 1.0, 1e-3);
+  EXPECT_LT(e.internal, 1e-4 * e.kinetic);
+}
+
+}  // namespace
+
+namespace {
+
 // The parallel determinism deck (tests/data/decks/rigid_welds.k, tools/make_test_decks.py)
 // must exercise what it is there for: welds failing by force during the run while others hold,
 // the generalized weld failing at its TFAIL, and every kind of body present.
