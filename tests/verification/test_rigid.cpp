@@ -192,6 +192,8 @@ TEST(VerificationRigid, IntermediateAxisSpinConservesMomentaAndEnergy) {
   }
   // The brick has turned over and the energy has not drifted.
   EXPECT_LT(flip, -0.99);
+  RecordProperty("energy_band", fmt::format("{:.3g}", (ke_max - ke_min) / ke0));
+  RecordProperty("cycles", std::to_string(sim->solver->cycle()));
   EXPECT_LT((ke_max - ke_min) / ke0, 1e-6) << ke_min << " " << ke_max;
   // 100 ms at 0.4 rad/ms: between six and seven turns.
   const double t = sim->solver->time();
@@ -294,6 +296,7 @@ TEST(VerificationRigid, RigidPlatePullsElasticBar) {
   ASSERT_GT(count, 20);
   const double mean = sum / count;
   EXPECT_NEAR(mean, rho * c * v * A, 0.005 * rho * c * v * A);
+  RecordProperty("force_over_rho_c_v_A", std::to_string(mean / (rho * c * v * A)));
   // The plate moved rigidly at v.
   const double t = sim->solver->time();
   EXPECT_NEAR(sim->x(bar(nx, 1, 1), 0) - L, v * t, 1e-12);
