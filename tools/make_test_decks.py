@@ -8,6 +8,14 @@
                       stiffness hourglass control, mass scaling and history nodes.
   structures.k        shells (plastic BT with NIP 5, C0 triangles), solids, Hughes-Liu and
                       resultant beams, a truss, a spring and a damper in one model.
+  rigid_welds.k       rigid bodies and nodal constraints across ranks: a rigid plate sharing
+                      the top nodes of a plastic block, driven down and turned by
+                      *BOUNDARY_PRESCRIBED_MOTION_RIGID; a spinning rigid body of two merged
+                      parts (*CONSTRAINED_RIGID_BODIES) with an extra node and *PART_INERTIA
+                      on one of them; a second elastic block spot welded to the first and
+                      pulled off so that welds fail during the run; a generalized weld, a
+                      nodal rigid body, a tied node set, a fully constrained (CMO) anvil and
+                      a spherical joint between the plate's body and block B.
 """
 
 from __future__ import annotations
@@ -239,12 +247,143 @@ $     nsid       dof       vad      lcid        sf
 """
 
 
+def rigid_welds(nx: int = 12, ny: int = 4, nz: int = 4) -> str:
+    """Units mm, ms, kg, GPa. Block A (part 1, plastic) 60 x 20 x 20 mm on a fixed rigid anvil
+    (part 6, CMO); rigid plate (part 2) on its top face, sharing its nodes; block B (part 5,
+    elastic) 1 mm beyond A's end face x = 60, welded to it; rigid parts 3 and 4 merged, flying
+    and spinning above."""
+    mesh = Mesh()
+    a = block(mesh, 1, (0.0, 0.0, 0.0), (60.0, 20.0, 20.0), (nx, ny, nz))
+    # Rigid plate on top of A: its bottom layer is A's top face.
+    plate = {}
+    for k in range(2):
+        for j in range(ny + 1):
+            for i in range(nx + 1):
+                plate[i, j, k] = a[i, j, nz] if k == 0 else mesh.add_node(60.0 * i / nx, 20.0 * j / ny, 22.0)
+    for j in range(ny):
+        for i in range(nx):
+            mesh.add_solid(2, [plate[i, j, 0], plate[i + 1, j, 0], plate[i + 1, j + 1, 0], plate[i, j + 1, 0],
+                               plate[i, j, 1], plate[i + 1, j, 1], plate[i + 1, j + 1, 1], plate[i, j + 1, 1]])
+    # Anvil under A: shares A's bottom nodes except the row y = 0, which a nodal rigid body takes.
+    anvil = {}
+    for k in range(2):
+        for j in range(ny + 1):
+            for i in range(nx + 1):
+                shared = k == 1 and j > 0
+                anvil[i, j, k] = a[i, j, 0] if shared else mesh.add_node(60.0 * i / nx, 20.0 * j / ny, -2.0 + 2.0 * k - (0.5 if k == 1 else 0.0))
+    for j in range(ny):
+        for i in range(nx):
+            mesh.add_solid(6, [anvil[i, j, 0], anvil[i + 1, j, 0], anvil[i + 1, j + 1, 0], anvil[i, j + 1, 0],
+                               anvil[i, j, 1], anvil[i + 1, j, 1], anvil[i + 1, j + 1, 1], anvil[i, j + 1, 1]])
+    b = block(mesh, 5, (61.0, 0.0, 0.0), (20.0, 20.0, 20.0), (4, ny, nz))
+    c = block(mesh, 3, (0.0, 0.0, 40.0), (20.0, 10.0, 10.0), (4, 2, 2))
+    d = block(mesh, 4, (25.0, 0.0, 40.0), (10.0, 10.0, 10.0), (2, 2, 2))
+    extra = mesh.add_node(40.0, 20.0, 45.0)
+    # A node of the plate's body (an extra node) on B's top face, ball-jointed to B's node there.
+    hinge = mesh.add_node(*mesh.nodes[b[3, 2, nz] - 1])
+    # Spot welds between facing nodes of A (x = 60) and B (x = 61); the middle row is one
+    # generalized weld of its nodes on both sides.
+    welds = []
+    general = []
+    for k in range(nz + 1):
+        for j in range(ny + 1):
+            if k == nz // 2 and 0 < j < ny:
+                general += [a[nx, j, k], b[0, j, k]]
+            elif 0 < k < nz:  # the bottom row is on the anvil, the top one on the plate
+                welds.append((a[nx, j, k], b[0, j, k]))
+    # Strengths rising weld by weld: some fail early, some late, some hold to the end.
+    weld_text = "*CONSTRAINED_SPOTWELD_ID\n" + "".join(
+        f"{100 + w:10d}\n{n1:10d}{n2:10d}{0.8 + 0.4 * w:10.3g}{0.6:10.3g}{2.0:10.3g}{2.0:10.3g}\n"
+        for w, (n1, n2) in enumerate(welds))
+    pulled = [b[4, j, k] for j in range(ny + 1) for k in range(nz + 1)]
+    nodal = [a[i, 0, 0] for i in range(0, nx + 1, 3)]
+    tied = [b[2, j, nz] for j in range(ny + 1)]
+    return f"""*KEYWORD
+*TITLE
+rigid bodies, spot welds and tied nodes across ranks (parallel determinism test)
+*CONTROL_TERMINATION
+      0.06
+*DATABASE_GLSTAT
+     0.005
+*DATABASE_BINARY_D3PLOT
+      0.03
+*PART
+plastic block A
+         1         1         1
+*PART
+rigid plate
+         2         1         2
+*PART_INERTIA
+flying rigid body (master)
+         3         1         3
+$       xc        yc        zc        tm      ircs    nodeid
+      12.0       5.0      45.0    0.0125
+$      ixx       ixy       ixz       iyy       iyz       izz
+      0.25      0.01       0.0      0.65       0.0       0.8
+$      vtx       vty       vtz       vrx       vry       vrz
+       2.0       0.0       1.0       0.3       0.1       0.5
+*PART
+flying rigid body (merged)
+         4         1         4
+*PART
+elastic block B
+         5         1         5
+*PART
+anvil
+         6         1         6
+*SECTION_SOLID
+         1         1
+*MAT_PIECEWISE_LINEAR_PLASTICITY
+$      mid        ro         e        pr      sigy      etan
+         1   7.85e-6     210.0       0.3      0.25       2.0
+*MAT_RIGID
+         2   7.85e-6     210.0       0.3
+*MAT_RIGID
+         3   7.85e-6     210.0       0.3
+*MAT_RIGID
+         4   2.70e-6      70.0      0.33
+*MAT_ELASTIC
+         5   2.70e-6      70.0      0.33
+*MAT_RIGID
+         6   7.85e-6     210.0       0.3
+       1.0       7.0       7.0
+*DEFINE_CURVE
+         1
+                 0.0                 0.0
+                0.01                 1.0
+                 1.0                 1.0
+*BOUNDARY_PRESCRIBED_MOTION_RIGID
+$      pid       dof       vad      lcid        sf
+         2         3         0         1      -2.0
+         2         5         0         1      0.02
+*CONSTRAINED_RIGID_BODIES
+         3         4
+*CONSTRAINED_EXTRA_NODES_NODE
+         4{extra:10d}
+         2{hinge:10d}
+*CONSTRAINED_JOINT_SPHERICAL
+{hinge:10d}{b[3, 2, nz]:10d}
+{weld_text}{node_set(11, general, "generalized weld")}*CONSTRAINED_GENERALIZED_WELD_SPOT
+        11
+$    tfail      epsf        sn        ss         n         m
+      0.04
+{node_set(12, nodal, "nodal rigid body")}*CONSTRAINED_NODAL_RIGID_BODY
+        70         0        12
+{node_set(13, tied, "tied nodes")}*CONSTRAINED_NODE_SET
+        13         3
+{node_set(14, pulled, "pulled face")}*BOUNDARY_PRESCRIBED_MOTION_SET
+        14         1         0         1       4.0
+{mesh.keyword_text()}*END
+"""
+
+
 def main() -> None:
     out = ROOT / "tests" / "data" / "decks"
     out.mkdir(parents=True, exist_ok=True)
     (out / "mixed_conditions.k").write_text(mixed_conditions())
     (out / "structures.k").write_text(structures())
-    print("wrote tests/data/decks/mixed_conditions.k and structures.k")
+    (out / "rigid_welds.k").write_text(rigid_welds())
+    print("wrote tests/data/decks/mixed_conditions.k, structures.k and rigid_welds.k")
 
 
 if __name__ == "__main__":

@@ -98,11 +98,17 @@ std::vector<KeywordSpec> makeTables() {
                  {I("EID", 0, 0, 8), I("PID", 0, 0, 8), I("N1", 0, 0, 8), I("N2", 0, 0, 8),
                   I("VID", 0, 0, 8), R("S", 1, Z, 16), I("PF", 0, 0, 8), R("OFFSET", 0, 0, 16)}}}});
   // ---- parts, sections, materials -----------------------------------------------------------
+  // *PART; _INERTIA adds cards 3-5 (and card 6 for IRCS=1) after card 2 of each part.
   t.push_back({"*PART",
                {{"card 1", {A("HEADING", 70)}},
                 {"card 2",
                  {I("PID"), I("SECID"), I("MID"), I("EOSID"), I("HGID"), I("GRAV"), I("ADPOPT"),
-                  I("TMID")}}}});
+                  I("TMID")}},
+                {"inertia card 3", {R("XC"), R("YC"), R("ZC"), R("TM"), I("IRCS"), I("NODEID")}},
+                {"inertia card 4", {R("IXX"), R("IXY"), R("IXZ"), R("IYY"), R("IYZ"), R("IZZ")}},
+                {"inertia card 5", {R("VTX"), R("VTY"), R("VTZ"), R("VRX"), R("VRY"), R("VRZ")}},
+                {"inertia card 6",
+                 {R("XL"), R("YL"), R("ZL"), R("XLIP"), R("YLIP"), R("ZLIP"), I("CID")}}}});
   t.push_back({"*SECTION_SOLID",
                {titleCard(),
                 {"card 1",
@@ -330,6 +336,38 @@ std::vector<KeywordSpec> makeTables() {
                   {"card 1", {I("NSID"), I("NSIDEX"), I("BOXID"), R("BIRTH"), R("DEATH", 1e20, Z)}},
                   {"card 2", {R("XT"), R("YT"), R("ZT"), R("XH"), R("YH"), R("ZH"), R("FRIC")}},
                   card3}});
+  t.push_back({"*BOUNDARY_PRESCRIBED_MOTION_RIGID",
+               {idCard(),
+                {"card 1",
+                 {I("PID"), I("DOF"), I("VAD"), I("LCID"), R("SF", 1, Z), I("VID"),
+                  R("DEATH", 1e28, Z), R("BIRTH")}}}});
+  // ---- rigid bodies and nodal constraints ------------------------------------------------------
+  t.push_back({"*CONSTRAINED_RIGID_BODIES", {{"card 1", {I("PIDM"), I("PIDS"), I("IFLAG")}}}});
+  t.push_back({"*CONSTRAINED_EXTRA_NODES_NODE", {{"card 1", {I("PID"), I("NID"), I("IFLAG")}}}});
+  t.push_back({"*CONSTRAINED_EXTRA_NODES_SET", {{"card 1", {I("PID"), I("NSID"), I("IFLAG")}}}});
+  t.push_back(
+      {"*CONSTRAINED_NODAL_RIGID_BODY",
+       {{"card 1",
+         {I("PID"), I("CID"), I("NSID"), I("PNODE"), I("IPRT", 0, Q), I("DRFLAG"), I("RRFLAG")}},
+        {"spc card", {R("CMO"), R("CON1"), R("CON2")}}}});
+  t.push_back({"*CONSTRAINED_SPOTWELD",
+               {{"id card", {I("WID")}},
+                {"card 1",
+                 {I("N1"), I("N2"), R("SN"), R("SS"), R("N"), R("M"), R("TF", 1e20, Z),
+                  R("EP", 1e20, Z)}}}});
+  t.push_back(
+      {"*CONSTRAINED_GENERALIZED_WELD_SPOT",
+       {{"id card", {I("WID")}},
+        {"card 1",
+         {I("NSID"), I("CID", 0, Q), I("FILTER"), I("WINDOW"), I("NPR", 0, Q), I("NPRT", 0, Q)}},
+        {"card 2", {R("TFAIL", 1e20, Z), R("EPSF"), R("SN"), R("SS"), R("N"), R("M")}}}});
+  t.push_back({"*CONSTRAINED_JOINT",
+               {idCard(),
+                {"card 1",
+                 {I("N1"), I("N2"), I("N3"), I("N4"), I("N5"), I("N6"), R("RPS", 1, Z),
+                  R("DAMP", 1, Z)}}}});
+  t.push_back({"*CONSTRAINED_NODE_SET",
+               {{"id card", {I("CNSID")}}, {"card 1", {I("NSID"), I("DOF"), R("TF", 1e20, Z)}}}});
   // The id of a definition Crumple does not support (*MAT_RIGID, *SECTION_SHELL, ...): the
   // first field of its first card, kept so that a reference to it can say what it is.
   t.push_back({"*UNSUPPORTED_DEFINITION", {{"card 1", {I("ID")}}}});

@@ -1,7 +1,7 @@
 // Deck -> Model driver: matches each keyword to its meaning (a table below), runs the
 // meanings in dependency order (definitions before the things that refer to them), and
 // collects what is not supported. The meanings live in build_mesh.cpp, build_sets.cpp,
-// build_conditions.cpp and build_controls.cpp.
+// build_conditions.cpp, build_controls.cpp, build_structures.cpp and build_rigid.cpp.
 #include "model/build.hpp"
 
 #include <algorithm>
@@ -269,7 +269,7 @@ const std::vector<Meaning>& meanings() {
        Kind::Material},
       {"*MAT_S04", 1, readMatSpringNonlinear, {"TITLE"}, U::Definition, Kind::Material},
       {"*HOURGLASS", 1, readHourglass, {"TITLE"}, U::Definition, Kind::Hourglass},
-      {"*PART", 2, readParts, {}, U::Reject},
+      {"*PART", 2, readParts, {"INERTIA"}, U::Reject},
       {"*ELEMENT_SOLID", 3, readSolids, {}, U::Reject},
       {"*ELEMENT_SHELL", 3, readShells, {"THICKNESS"}, U::Reject},
       {"*ELEMENT_BEAM", 3, readBeams, {}, U::Reject},
@@ -304,6 +304,14 @@ const std::vector<Meaning>& meanings() {
        readRigidWallGeometric,
        {"FLAT", "PRISM", "CYLINDER", "SPHERE", "ID", "MOTION"},
        U::Reject},
+      {"*BOUNDARY_PRESCRIBED_MOTION_RIGID", 6, readPrescribedMotionRigid, {"ID"}, U::Reject},
+      {"*CONSTRAINED_RIGID_BODIES", 6, readRigidBodies, {}, U::Reject},
+      {"*CONSTRAINED_EXTRA_NODES", 6, readExtraNodes, {"NODE", "SET"}, U::Reject},
+      {"*CONSTRAINED_NODAL_RIGID_BODY", 6, readNodalRigidBody, {"SPC"}, U::Reject},
+      {"*CONSTRAINED_SPOTWELD", 6, readSpotweld, {"ID"}, U::Reject},
+      {"*CONSTRAINED_GENERALIZED_WELD", 6, readGeneralizedWeld, {"SPOT", "ID"}, U::Reject},
+      {"*CONSTRAINED_NODE_SET", 6, readConstrainedNodeSet, {"ID"}, U::Reject},
+      {"*CONSTRAINED_JOINT", 6, readJoint, {"SPHERICAL", "REVOLUTE", "ID"}, U::Reject},
       {"*CONTROL_TERMINATION", 6, readControlTermination, {}},
       {"*CONTROL_TIMESTEP", 6, readControlTimestep, {}},
       {"*CONTROL_HOURGLASS", 6, readControlHourglass, {}},
@@ -478,6 +486,7 @@ Model readModel(const std::filesystem::path& path, const ReadOptions& options) {
         break;
     }
   }
+  finishRigid(ctx);
   finishConditions(ctx);
   finishControls(ctx);
   if (model.nodes.size() == 0)

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <string_view>
@@ -53,6 +54,8 @@ struct Box {
 struct Frame {
   std::array<Vec3, 3> axis{};
 };
+
+struct RigidInput;  // build_rigid.cpp
 
 class Context {
  public:
@@ -143,6 +146,8 @@ class Context {
   int64_t d3plot_npltc = 0;
   int64_t erode_flag = 0;  // *CONTROL_TIMESTEP ERODE
   int rigid_wall_count = 0;
+  // What the rigid-body keywords collected (build_rigid.cpp), made into Model::rigid last.
+  std::shared_ptr<RigidInput> rigid_input;
 
  private:
   std::map<std::pair<Kind, int64_t>, util::SourceLoc> defined_;
@@ -220,6 +225,19 @@ void readLoadBody(Context&, const deck::Keyword&, const KeywordOptions&);
 void readRigidWallPlanar(Context&, const deck::Keyword&, const KeywordOptions&);
 void readRigidWallGeometric(Context&, const deck::Keyword&, const KeywordOptions&);
 void finishConditions(Context&);
+
+// build_rigid.cpp: rigid bodies, spot welds, tied node sets (finishRigid before
+// finishConditions: it turns SPCs on rigid-body nodes into constraints of the body)
+void readPartInertia(Context&, deck::CardCursor& cur, int64_t part_id);  // *PART_INERTIA cards
+void readRigidBodies(Context&, const deck::Keyword&, const KeywordOptions&);
+void readExtraNodes(Context&, const deck::Keyword&, const KeywordOptions&);
+void readNodalRigidBody(Context&, const deck::Keyword&, const KeywordOptions&);
+void readPrescribedMotionRigid(Context&, const deck::Keyword&, const KeywordOptions&);
+void readSpotweld(Context&, const deck::Keyword&, const KeywordOptions&);
+void readGeneralizedWeld(Context&, const deck::Keyword&, const KeywordOptions&);
+void readConstrainedNodeSet(Context&, const deck::Keyword&, const KeywordOptions&);
+void readJoint(Context&, const deck::Keyword&, const KeywordOptions&);
+void finishRigid(Context&);
 
 // build_controls.cpp
 void readTitle(Context&, const deck::Keyword&, const KeywordOptions&);

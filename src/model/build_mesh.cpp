@@ -204,7 +204,7 @@ void finishSolids(Context& ctx) {
                });
 }
 
-void readParts(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+void readParts(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const auto& spec = keywordSpec("*PART");
   CardCursor cur(kw, ctx.deck);
   // One keyword may hold several parts, each a heading card and card 2.
@@ -242,6 +242,7 @@ void readParts(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
                  "equation of state " + std::to_string(eos) +
                      " is not used: the supported materials have their own pressure response",
                  c.where());
+    if (opts.has("INERTIA")) readPartInertia(ctx, cur, p.id);
     ctx.model.parts.push_back(std::move(p));
     ctx.part_problem.push_back(std::move(problem));
     ctx.collect(cur);

@@ -15,6 +15,7 @@
 #include <variant>
 #include <vector>
 
+#include "model/rigid.hpp"
 #include "util/source_loc.hpp"
 
 namespace crumple::model {
@@ -340,6 +341,7 @@ struct Model {
   std::vector<Vec3> initial_velocity;   // per node (zero if none given)
   std::vector<PointMass> point_masses;  // *ELEMENT_MASS, in deck order
   std::vector<int32_t> history_nodes;   // *DATABASE_HISTORY_NODE, in deck order
+  RigidDefinitions rigid;               // rigid bodies, spot welds, tied node sets
 
   Controls controls;
   std::vector<UnsupportedKeyword> unsupported;

@@ -151,6 +151,60 @@ void fields(A& a, M& m) {
   a(m.initial_velocity);
   a(m.point_masses);
   a(m.history_nodes);
+  a.count(
+      m.rigid.bodies.size(),
+      [&](auto& b) {
+        a(b.id);
+        a(b.nodal);
+        a(b.parts);
+        a(b.nodes);
+        a(b.fixed);
+        a(b.inertia_given);
+        a(b.mass);
+        a(b.cm);
+        a(b.tensor);
+        a(b.velocity_given);
+        a(b.v0);
+        a(b.w0);
+        a(b.motions);
+        loc(a, b.where);
+      },
+      m.rigid.bodies);
+  a.count(
+      m.rigid.welds.size(),
+      [&](auto& w) {
+        a(w.id);
+        a(w.nodes);
+        a(w.sn);
+        a(w.ss);
+        a(w.n);
+        a(w.m);
+        a(w.tfail);
+        a(w.generalized);
+        loc(a, w.where);
+      },
+      m.rigid.welds);
+  a.count(
+      m.rigid.node_sets.size(),
+      [&](auto& t) {
+        a(t.id);
+        a(t.nodes);
+        a(t.dofs);
+        a(t.tfail);
+        loc(a, t.where);
+      },
+      m.rigid.node_sets);
+  a.count(
+      m.rigid.joints.size(),
+      [&](auto& j) {
+        a(j.id);
+        a(j.revolute);
+        a(j.pairs);
+        a(j.rps);
+        a(j.damp);
+        loc(a, j.where);
+      },
+      m.rigid.joints);
   a(m.controls);
   a.count(
       m.unsupported.size(),

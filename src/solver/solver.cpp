@@ -116,8 +116,8 @@ void zeroSlots(const Block& b, std::vector<double>& slots) {
 void Solver::initialize() {
   const auto& ctl = model_.controls;
   std::vector<std::vector<double>> element_dt(sd_.solid_blocks.size());
-  double dt_min = 1e300;
-  int64_t dt_elem = -1;
+  double dt_min = 1e300, rigid_dt = 1e300;
+  int64_t dt_elem = -1, rigid_elem = -1;
   for (std::size_t ib = 0; ib < sd_.solid_blocks.size(); ++ib) {
     auto& blk = sd_.solid_blocks[ib];
     elements::markIsolatedElements(blk, sd_.internal);
@@ -128,8 +128,16 @@ void Solver::initialize() {
           "ordering (LS-DYNA: nodes 1-4 one face, 5-8 the opposite face, right-handed)",
           sd_.elementId(st.bad_elem), blk.part_id));
     }
-    // Rigid elements have no stable step of their own.
-    if (!blk.rigid) keepMin(st.dt_min, st.dt_elem, dt_min, dt_elem);
+    // Rigid elements give mass only: no time step (unless nothing else sets one), no scaling.
+    if (blk.rigid) {
+      if (st.dt_elem >= 0 && st.dt_min < rigid_dt) {
+        rigid_dt = st.dt_min;
+        rigid_elem = st.dt_elem;
+      }
+      std::fill(element_dt[ib].begin(), element_dt[ib].end(), 0.0);
+      continue;
+    }
+    keepMin(st.dt_min, st.dt_elem, dt_min, dt_elem);
   }
   // Shells and beams: never mass-scaled here, so kept apart from the solids' minimum.
   double dt_other = 1e300;
@@ -249,7 +257,16 @@ void Solver::initialize() {
   for (std::size_t n = 0; n < sd_.numNodes(); ++n)
     for (int c = 0; c < 3; ++c)
       sd_.v[3 * n + c] = model_.initial_velocity[static_cast<std::size_t>(sd_.node_model[n])][c];
+  if (!model_.rigid.empty()) {
+    rigid_ = std::make_unique<constraints::RigidBodies>(model_, sd_, comm_);
+    rigid_->setInitialVelocities(sd_);
+  }
 
+  // A model of rigid parts only runs at the step its rigid elements would have.
+  if (comm_.minAll(dt_min) >= 1e300) {
+    dt_min = rigid_dt;
+    dt_elem = rigid_elem;
+  }
   const double dt_global = comm_.minAll(dt_min);
   dt_initial_elem_ = controllingElement(dt_elem, dt_elem >= 0 && dt_min == dt_global);
   dt_initial_label_ = elementLabel(dt_initial_elem_);
@@ -338,7 +355,8 @@ void Solver::finishElementPass(const ElementPass& pass) {
   }
   const double dt_global = comm_.minAll(dt_min);
   const int64_t dt_elem_global = controllingElement(dt_elem, dt_elem >= 0 && dt_min == dt_global);
-  double dt_new = model_.controls.tssfac * dt_global;
+  // No deformable element anywhere (rigid parts only): the initial step stays.
+  double dt_new = dt_global >= 1e300 ? dt_initial_ : model_.controls.tssfac * dt_global;
   if (model_.controls.dt_max_curve != model::kNone)
     dt_new = std::min(
         dt_new, model_.curves[static_cast<std::size_t>(model_.controls.dt_max_curve)].value(time_));
@@ -402,7 +420,9 @@ void Solver::updateKinematics() {
   non_finite_ = non_finite != 0;
 
   const auto t0 = Clock::now();
-  double work = boundary_.applyKinematics(time_, dt_n, dt_half, sd_, v_old_);
+  // Rigid bodies first: SPCs and prescribed motion act on free nodes only (build_rigid.cpp).
+  double work = rigid_ ? rigid_->apply(time_, dt_n, dt_half, sd_, v_old_, comm_) : 0.0;
+  work += boundary_.applyKinematics(time_, dt_n, dt_half, sd_, v_old_);
   rigidwall_energy_ += boundary_.applyRigidWalls(dt_n, dt_half, sd_, v_old_, comm_);
   timing_.constraints += seconds(t0, Clock::now());
 
@@ -456,6 +476,7 @@ void Solver::step() {
   timing_.elements += seconds(t0, t1) + seconds(t2, t3) + seconds(t4, t5);
   timing_.communication += seconds(t1, t2) + seconds(t3, t4) + seconds(t5, t6);
   boundary_.externalForces(time_, sd_, sd_.f_ext);
+  if (rigid_) rigid_->addJointForces(dt_next_, sd_, comm_);
   timing_.constraints += seconds(t6, Clock::now());
   updateKinematics();
   // A non-finite velocity ends every rank (collective); the lowest node id is named.
@@ -493,7 +514,8 @@ Energies Solver::energies() const {
   // and of the work integrals: the kinetic energy uses v(n) = (v(n-1/2) + v(n+1/2)) / 2.
   const bool stepped = v_old_.size() == sd_.v.size();
   for (std::size_t n = 0; n < sd_.numNodes(); ++n) {
-    if (!sd_.node_owned[n]) continue;
+    // Nodes of rigid bodies: the bodies' own energy is added below.
+    if (!sd_.node_owned[n] || (rigid_ && rigid_->countsNode(n))) continue;
     double v[3];
     for (int c = 0; c < 3; ++c)
       v[c] = stepped ? 0.5 * (v_old_[3 * n + c] + sd_.v[3 * n + c]) : sd_.v[3 * n + c];
@@ -521,6 +543,12 @@ Energies Solver::energies() const {
   e.external_work = sums[3];
   e.rigidwall = sums[4];
   e.kinetic += boundary_.wallKineticEnergy();  // the same on every rank: added once
+  // Rigid bodies: translation and rotation of the body (the energy its integrator keeps;
+  // with *PART_INERTIA the nodal masses are not the body's), the same on every rank.
+  if (rigid_) {
+    e.kinetic += rigid_->kineticEnergy();
+    e.internal += rigid_->jointEnergy();
+  }
   e.total = e.kinetic + e.internal + e.hourglass + e.contact + e.rigidwall;
   e.initial = initial_energy_;
   const double reference = initial_energy_ + e.external_work;

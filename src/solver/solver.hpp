@@ -8,15 +8,18 @@
 //                           (follower pressure travels the same way)
 //   finishElementPass       inverted elements end the run; next step = TSSFAC x global min
 //   externalForces          nodal loads, gravity (Boundary)
-//   updateKinematics        a = F/m, v(n+1/2), SPC, prescribed motion, stonewalls, x(n+1)
+//   updateKinematics        a = F/m, v(n+1/2), rigid bodies and nodal constraints, SPC,
+//                           prescribed motion, stonewalls, x(n+1)
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "comm/communicator.hpp"
 #include "constraints/boundary.hpp"
+#include "constraints/rigid.hpp"
 #include "domain/subdomain.hpp"
 #include "elements/hex8.hpp"
 #include "model/model.hpp"
@@ -67,6 +70,8 @@ class Solver {
   Timing& timing() { return timing_; }
   const domain::Subdomain& subdomain() const { return sd_; }
   const constraints::Boundary& boundary() const { return boundary_; }
+  // Rigid bodies, spot welds and tied node sets; null when the model has none.
+  const constraints::RigidBodies* rigidBodies() const { return rigid_.get(); }
 
  private:
   // One element pass: the minimum stable step found and any inverted element.
@@ -98,6 +103,7 @@ class Solver {
   comm::Communicator& comm_;
   constraints::Boundary boundary_;
   elements::BulkViscosity bv_;
+  std::unique_ptr<constraints::RigidBodies> rigid_;  // built in initialize(), after the masses
 
   double time_ = 0.0, end_time_ = 0.0;
   int64_t cycle_ = 0;

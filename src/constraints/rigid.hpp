@@ -1,0 +1,174 @@
+// Rigid bodies, spot welds and tied node sets at run time (the Model side is
+// src/model/rigid.hpp).
+//
+// A body (a *MAT_RIGID part with its merged parts and extra nodes, a nodal rigid body, or a
+// spot weld until it fails) has a mass, a centre x_cm, a velocity V, an angular momentum L
+// about x_cm (global axes) and an orientation q of its principal axes. Each cycle, after the
+// nodal velocity update v(n+1/2) = v(n-1/2) + dt a(n) and before SPCs and prescribed nodal
+// motion, apply():
+//   1. sums the force F and the moment M about x_cm(n) of its nodes (f + f_ext, and nodal
+//      moments when the model has rotations);
+//   2. kicks V += dt F / m, L += dt M (LS-DYNA Theory Manual, "Rigid Body Dynamics"), imposes
+//      CMO constraints and *BOUNDARY_PRESCRIBED_MOTION_RIGID on V and on the angular velocity;
+//   3. drifts x_cm += dt V and turns q by the free rotation at fixed L, with the symmetric
+//      splitting of Dullweber, Leimkuhler and McLachlan (J. Chem. Phys. 107, 5840, 1997):
+//      exact rotations about the principal axes 1, 2, 3, 2, 1 with half, half, full, half,
+//      half steps. It is symplectic and time-reversible, L is unchanged by the drift, so a
+//      torque-free body keeps L to the last bit and its energy without drift; q stays a unit
+//      quaternion. A body with rotations constrained or prescribed turns instead by the exact
+//      exponential map of its (constrained) angular velocity, exp(dt omega) q;
+//   4. gives each node the velocity that carries it from its place on the body at t(n) to
+//      its place at t(n+1): v = V + (R(q(n+1)) - R(q(n))) X / dt, X its body coordinates, so
+//      that the solver's x += dt v moves the nodes rigidly (the secant of the rotation: with
+//      omega x r instead a spinning body would grow by dt^2 |omega|^2 / 2 a step); w = the
+//      body's angular velocity (models with rotations).
+// Spot welds check the force they exert on each node after step 2 (from m (v_rigid - v)/dt)
+// and let go when the criterion is met; tied node sets share the mass-weighted mean
+// velocity in their directions. Joints are penalty springs between node pairs, applied as
+// external forces before all this (addJointForces).
+//
+// Determinism: every sum over the nodes of a body runs in ascending model node order over all
+// ranks. Each rank contributes the nodes it owns, as (body, model node, values) records that
+// comm.allGather collects on every rank; the records are sorted by (body, node) and summed in
+// that order. Every rank then holds the same body states, bit for bit, for any number of ranks
+// and threads; a node held by several ranks gets the same velocity on each.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "comm/communicator.hpp"
+#include "domain/subdomain.hpp"
+#include "model/model.hpp"
+
+namespace crumple::constraints {
+
+using Vec3 = std::array<double, 3>;
+
+// One body's state for output (rbdout) and tests, at the end of the last step.
+struct RigidBodyState {
+  int64_t id = 0;  // master part id, nodal rigid body id, or weld id
+  enum class Kind : uint8_t { Part, Nodal, Weld } kind = Kind::Part;
+  double mass = 0.0;
+  Vec3 cm{};                // centre of mass at t(n+1)
+  Vec3 velocity{};          // V(n+1/2)
+  Vec3 angular_velocity{};  // rotation of the last step / dt, global axes
+  Vec3 angular_momentum{};  // about the centre, global axes, at (n+1/2)
+  // Force and moment of the constraints (CMO, prescribed motion) on the body in the last step.
+  Vec3 reaction_force{}, reaction_moment{};
+};
+
+struct WeldState {
+  int64_t id = 0;
+  bool failed = false;
+  double failure_time = 0.0;
+  // Force of the weld on its most loaded node in the last step it held: normal (tension
+  // positive) and shear magnitude.
+  double normal_force = 0.0, shear_force = 0.0;
+};
+
+class RigidBodies {
+ public:
+  // Collective (every rank, after the nodal masses are assembled and sd.v holds the initial
+  // velocities): mass, centre, inertia tensor and initial motion of every body.
+  RigidBodies(const model::Model& model, const domain::Subdomain& sd,
+              const comm::Communicator& comm);
+
+  bool empty() const { return bodies_.empty() && sets_.empty() && joints_.empty(); }
+
+  // The bodies' initial velocity fields on their nodes (v, and w with rotations).
+  void setInitialVelocities(domain::Subdomain& sd) const;
+
+  // Collective, once per cycle, right after v(n+1/2) = v(n-1/2) + dt_n a: moves the bodies,
+  // welds and tied sets and writes their nodes' v, a (and w). t = t(n), dt_n the step centred
+  // on t(n), dt_half = dt(n+1/2); v_old = v(n-1/2). Returns the work of the body constraints
+  // (CMO, prescribed rigid motion) on rank 0, and 0 elsewhere, so a sum over ranks counts it
+  // once.
+  double apply(double t, double dt_n, double dt_half, domain::Subdomain& sd,
+               const domain::NodeVector& v_old, const comm::Communicator& comm);
+
+  // Collective, once per cycle, after the external forces and before the velocity update:
+  // the penalty forces of the joints (*CONSTRAINED_JOINT_SPHERICAL / _REVOLUTE) from x(n) and
+  // v(n-1/2), added to f_ext of every copy of their nodes. dt = dt(n+1/2); the first call's
+  // step fixes the stiffness, k = RPS m / (2 dt^2) with m = m_a m_b / (m_a + m_b) of the two
+  // sides (a node's mass, or for a node of a rigid body the body's mass as felt at the node,
+  // 1 / (1/m + |r|^2 / I_min)): the joint's own frequency then stays below the step's limit
+  // (omega dt <= sqrt(RPS / 2)), as LS-DYNA scales its joint penalty with the masses and the
+  // time step (Theory Manual, "Rigid Body Joints"). Damping is 10% of critical, times DAMP.
+  void addJointForces(double dt, domain::Subdomain& sd, const comm::Communicator& comm);
+  // Energy stored in the joint springs plus what their dampers dissipated (every rank).
+  double jointEnergy() const { return joint_energy_; }
+
+  // Kinetic energy of the bodies at t(n) (translation and rotation, from the mean of the
+  // half-step momenta, like the solver's nodal sum); the same on every rank. The solver
+  // reports this for the nodes where countsNode() is true instead of their nodal energy.
+  double kineticEnergy() const;
+  bool countsNode(std::size_t local_node) const {
+    return !in_body_.empty() && in_body_[local_node] != 0;
+  }
+
+  std::vector<RigidBodyState> states() const;  // bodies, then welds, in model order
+  std::vector<WeldState> welds() const;
+
+ private:
+  using Quat = std::array<double, 4>;  // unit quaternion w, x, y, z
+  struct Motion {
+    int dof;
+    model::MotionKind kind;
+    const model::Curve* curve;
+    double sf, birth, death;
+  };
+  struct Body {
+    int64_t id = 0;
+    RigidBodyState::Kind kind = RigidBodyState::Kind::Part;
+    double mass = 0.0;
+    Vec3 inertia{};                          // principal moments
+    Quat q{1, 0, 0, 0}, q_prev{1, 0, 0, 0};  // principal axes -> global, t(n+1) and t(n)
+    Vec3 x_cm{}, x_cm_prev{}, x_cm0{};
+    Vec3 V{}, V_prev{}, L{}, L_prev{}, omega{};
+    Vec3 angle{};  // accumulated rotation about the global axes (prescribed rotations)
+    Vec3 reaction_f{}, reaction_m{};
+    uint8_t fixed = 0;
+    std::vector<Motion> motions;
+    std::vector<int32_t> local;  // local nodes of the body held here
+    std::vector<Vec3> X;         // their body coordinates
+    // Welds: failure data and the body coordinates of every node (all ranks).
+    bool weld = false, active = true;
+    double sn = 0, ss = 0, n = 2, m = 2, tfail = 0, failure_time = 0;
+    double fn = 0, fs = 0;
+    std::vector<Vec3> all_X;
+  };
+  struct TiedSet {
+    double mass = 0.0;
+    uint8_t dofs = 0;
+    double tfail = 0;
+    std::vector<int32_t> local;
+  };
+
+  int width(int32_t group) const;
+  // The spatial inverse inertia R diag(1/I) R^T of a body at orientation q (0 on degenerate
+  // axes: bodies of collinear point masses have no inertia about their line).
+  static void inverseInertia(const Body& b, const Quat& q, double a[3][3]);
+  // L = J w = R diag(I) R^T w.
+  static Vec3 angularMomentum(const Body& b, const Quat& q, const Vec3& w);
+  // Step 2-3 for one body given F and M; returns the constraint work.
+  double advance(Body& b, const Vec3& F, const Vec3& M, double t, double dt_n, double dt_half);
+
+  struct JointPair {
+    std::array<int32_t, 2> node{};             // model nodes
+    std::array<int32_t, 2> local{};            // local copies, or model::kNone
+    double rps = 1.0, damp = 1.0, mass = 0.0;  // mass: m_a m_b / (m_a + m_b)
+    double k = 0.0, c = 0.0;
+  };
+
+  std::vector<Body> bodies_;  // part and nodal bodies, then welds
+  std::vector<TiedSet> sets_;
+  std::vector<JointPair> joints_;  // every pair of every joint, in model order
+  double joint_dissipated_ = 0.0, joint_energy_ = 0.0;
+  std::vector<int32_t> group_;    // per local node: body or nb + set index, or -1
+  std::vector<uint8_t> in_body_;  // per local node: in an active body (energy counted here)
+  bool stepped_ = false;
+};
+
+}  // namespace crumple::constraints

@@ -1,0 +1,645 @@
+// Meaning of the rigid-body and nodal-constraint keywords (LS-DYNA Keyword Manual Vol. I):
+// *PART_INERTIA (cards 3-5 of *PART), *CONSTRAINED_RIGID_BODIES, *CONSTRAINED_EXTRA_NODES_NODE
+// and _SET, *CONSTRAINED_NODAL_RIGID_BODY(_SPC), *BOUNDARY_PRESCRIBED_MOTION_RIGID,
+// *CONSTRAINED_SPOTWELD, *CONSTRAINED_GENERALIZED_WELD_SPOT, *CONSTRAINED_NODE_SET and
+// *CONSTRAINED_JOINT_SPHERICAL / _REVOLUTE.
+// The readers collect; finishRigid() builds Model::rigid once every keyword is read: one body
+// per *MAT_RIGID part after merges, then the nodal rigid bodies, and checks that no node is
+// subject to two constraints.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+
+#include "model/build_context.hpp"
+#include "util/error.hpp"
+
+namespace crumple::model::build {
+
+using deck::Card;
+using deck::CardCursor;
+using deck::keywordSpec;
+
+// What the readers collect before the bodies can be formed (parts, sets and merges must all
+// be known first).
+struct RigidInput {
+  struct Inertia {
+    RigidBodyDef values;  // inertia_given, mass, cm, tensor, velocity_given, v0, w0
+    int32_t cm_node = kNone;
+    std::string context;  // "deck.k:12: *PART inertia card 3 field 4 (TM)" for messages
+  };
+  std::map<int64_t, Inertia> inertia;  // by part id
+  struct Merge {
+    int32_t master, slave;
+    bool iflag;
+    std::string context;
+  };
+  std::vector<Merge> merges;
+  struct Extra {
+    int32_t part;
+    std::vector<int32_t> nodes;
+    bool iflag;
+    std::string context;
+  };
+  std::vector<Extra> extras;
+  struct Nodal {
+    RigidBodyDef body;
+    std::string context;
+  };
+  std::vector<Nodal> nodal;
+  struct Motion {
+    int64_t pid;
+    RigidMotion motion;
+    std::string context;
+  };
+  std::vector<Motion> motions;
+  std::vector<bool> weld_explicit_id;
+};
+
+namespace {
+
+RigidInput& input(Context& ctx) {
+  if (!ctx.rigid_input) ctx.rigid_input = std::make_shared<RigidInput>();
+  return *ctx.rigid_input;
+}
+
+[[noreturn]] void failAt(const std::string& context, const std::string& message) {
+  throw util::InputError(context + ": " + message);
+}
+
+// CON1/CON2 codes (Keyword Manual, *MAT_RIGID): 1 x, 2 y, 3 z, 4 xy, 5 yz, 6 zx, 7 xyz.
+uint8_t codeMask(int code) {
+  static constexpr uint8_t masks[8] = {0, 1, 2, 4, 3, 6, 5, 7};
+  return masks[code];
+}
+
+// CMO, CON1, CON2 of *MAT_RIGID card 2 or the _SPC card of a nodal rigid body, as a mask.
+uint8_t constraintMask(Context& ctx, const Card& c) {
+  const double cmo = c.real("CMO");
+  if (cmo == -1.0) {
+    ctx.reject(c, "CMO", "constraints in a local coordinate system (CMO=-1) are not supported");
+    return 0;
+  }
+  if (cmo != 0.0 && cmo != 1.0) c.fail("CMO", "must be 0, 1 or -1");
+  const double con1 = c.real("CON1"), con2 = c.real("CON2");
+  if (cmo == 0.0) return 0;
+  if (con1 < 0 || con1 > 7 || con1 != std::floor(con1)) c.fail("CON1", "must be 0 to 7");
+  if (con2 < 0 || con2 > 7 || con2 != std::floor(con2)) c.fail("CON2", "must be 0 to 7");
+  return static_cast<uint8_t>(codeMask(int(con1)) | (codeMask(int(con2)) << 3));
+}
+
+bool isRigidPart(const Model& m, int32_t part) {
+  const Part& p = m.parts[static_cast<std::size_t>(part)];
+  return p.material != kNone &&
+         std::holds_alternative<RigidLaw>(m.materials[static_cast<std::size_t>(p.material)].law);
+}
+
+int32_t rigidPart(Context& ctx, const Card& c, std::string_view field) {
+  const int32_t p = ctx.part(c, field, c.integer(field));
+  if (!isRigidPart(ctx.model, p))
+    c.fail(field, "part " + std::to_string(c.integer(field)) + " is not rigid (*MAT_RIGID)");
+  return p;
+}
+
+void sortUnique(std::vector<int32_t>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+double failureTime(double tf) {
+  return tf >= 1e20 ? std::numeric_limits<double>::infinity() : tf;
+}
+
+// SN, SS, N, M of a weld: a term counts when its force is positive, and then needs a positive
+// exponent (the manual gives no default).
+void readWeldFailure(const Card& c, SpotweldDef& w) {
+  w.sn = c.real("SN");
+  w.ss = c.real("SS");
+  w.n = c.real("N");
+  w.m = c.real("M");
+  if (w.sn < 0) c.fail("SN", "must not be negative (0: no normal-force failure)");
+  if (w.ss < 0) c.fail("SS", "must not be negative (0: no shear-force failure)");
+  if (w.sn > 0 && !(w.n > 0)) c.fail("N", "the exponent of the normal force must be positive");
+  if (w.ss > 0 && !(w.m > 0)) c.fail("M", "the exponent of the shear force must be positive");
+}
+
+}  // namespace
+
+void readPartInertia(Context& ctx, CardCursor& cur, int64_t part_id) {
+  const auto& spec = keywordSpec("*PART");
+  const Card& c3 = cur.read(spec.card("inertia card 3"));
+  const Card& c4 = cur.read(spec.card("inertia card 4"));
+  const Card& c5 = cur.read(spec.card("inertia card 5"));
+  if (c3.integer("IRCS") != 0) {
+    // Card 6 follows; read it so that the next part starts at the right line.
+    const Card& c6 = cur.read(spec.card("inertia card 6"));
+    for (auto f : {"XL", "YL", "ZL", "XLIP", "YLIP", "ZLIP", "CID"}) c6.real(f);
+    ctx.reject(c3, "IRCS", "an inertia tensor in local axes (IRCS=1) is not supported");
+  }
+  RigidInput::Inertia in;
+  RigidBodyDef& b = in.values;
+  b.inertia_given = true;
+  b.mass = c3.real("TM");
+  if (!(b.mass > 0)) c3.fail("TM", "the translational mass must be positive");
+  b.cm = {c3.real("XC"), c3.real("YC"), c3.real("ZC")};
+  if (const int64_t n = c3.integer("NODEID"); n != 0) {
+    in.cm_node = ctx.node(c3, "NODEID", n);
+    b.cm = ctx.model.nodes.x[static_cast<std::size_t>(in.cm_node)];
+  }
+  static constexpr const char* kT[6] = {"IXX", "IXY", "IXZ", "IYY", "IYZ", "IZZ"};
+  for (int k = 0; k < 6; ++k) b.tensor[static_cast<std::size_t>(k)] = c4.real(kT[k]);
+  // A tensor of inertia is positive definite: its diagonal, and each 2 x 2 minor, positive.
+  const auto& t = b.tensor;
+  for (int k : {0, 3, 5})
+    if (!(t[std::size_t(k)] > 0)) c4.fail(kT[k], "a principal moment must be positive");
+  if (!(t[0] * t[3] > t[1] * t[1] && t[3] * t[5] > t[4] * t[4] && t[0] * t[5] > t[2] * t[2]))
+    c4.fail("IXY", "the inertia tensor is not positive definite");
+  b.v0 = {c5.real("VTX"), c5.real("VTY"), c5.real("VTZ")};
+  b.w0 = {c5.real("VRX"), c5.real("VRY"), c5.real("VRZ")};
+  for (double v : {b.v0[0], b.v0[1], b.v0[2], b.w0[0], b.w0[1], b.w0[2]})
+    if (v != 0.0) b.velocity_given = true;
+  in.context = c3.context("TM");
+  input(ctx).inertia[part_id] = std::move(in);
+}
+
+void readRigidBodies(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*CONSTRAINED_RIGID_BODIES").card("card 1");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec);
+    const int32_t master = rigidPart(ctx, c, "PIDM");
+    const int32_t slave = rigidPart(ctx, c, "PIDS");
+    if (master == slave) c.fail("PIDS", "a part cannot be merged with itself");
+    input(ctx).merges.push_back({master, slave, c.integer("IFLAG") != 0, c.context("IFLAG")});
+    ctx.collect(cur);
+  }
+}
+
+void readExtraNodes(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const bool set = opts.has("SET");
+  if (set == opts.has("NODE")) {
+    ctx.rejectKeyword(kw, "give one of _NODE or _SET");
+    return;
+  }
+  const auto& spec =
+      keywordSpec(set ? "*CONSTRAINED_EXTRA_NODES_SET" : "*CONSTRAINED_EXTRA_NODES_NODE")
+          .card("card 1");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec);
+    RigidInput::Extra e{rigidPart(ctx, c, "PID"), {}, c.integer("IFLAG") != 0, c.context("IFLAG")};
+    if (set)
+      e.nodes = ctx.nodeSet(c, "NSID", c.integer("NSID"));
+    else
+      e.nodes = {ctx.node(c, "NID", c.integer("NID"))};
+    input(ctx).extras.push_back(std::move(e));
+    ctx.collect(cur);
+  }
+}
+
+void readNodalRigidBody(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*CONSTRAINED_NODAL_RIGID_BODY");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec.card("card 1"));
+    RigidInput::Nodal nb;
+    RigidBodyDef& b = nb.body;
+    b.nodal = true;
+    b.id = positiveId(c, "PID");
+    b.where = c.where();
+    nb.context = c.context("PID");
+    if (c.integer("CID") != 0)
+      ctx.reject(c, "CID", "output in a local coordinate system (CID) is not supported");
+    // NSID 0 means the set whose id is PID (Keyword Manual, *CONSTRAINED_NODAL_RIGID_BODY).
+    const int64_t nsid = c.integer("NSID") != 0 ? c.integer("NSID") : b.id;
+    b.nodes = ctx.nodeSet(c, "NSID", nsid);
+    if (const int64_t pnode = c.integer("PNODE"); pnode != 0) {
+      b.nodes.push_back(ctx.node(c, "PNODE", pnode));
+      ctx.ignore(kw.name, "PNODE",
+                 "node " + std::to_string(pnode) +
+                     " joins the body where it is; it is not moved to the centre of mass",
+                 c.where());
+    }
+    sortUnique(b.nodes);
+    for (auto f : {"DRFLAG", "RRFLAG"})
+      if (c.integer(f) != 0)
+        ctx.reject(c, f, "releasing freedoms of nodal rigid bodies is not supported");
+    if (opts.has("SPC")) b.fixed = constraintMask(ctx, cur.read(spec.card("spc card")));
+    input(ctx).nodal.push_back(std::move(nb));
+    ctx.collect(cur);
+  }
+}
+
+void readPrescribedMotionRigid(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*BOUNDARY_PRESCRIBED_MOTION_RIGID");
+  CardCursor cur(kw, ctx.deck);
+  if (opts.has("ID")) cur.read(spec.card("id card"));
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec.card("card 1"));
+    RigidMotion m;
+    // DOF 1-3 translations of the centre of mass, 5-7 rotations about the global axes
+    // (Keyword Manual, *BOUNDARY_PRESCRIBED_MOTION_RIGID); the others need a direction
+    // vector or local axes.
+    const int64_t dof = c.integer("DOF");
+    if (!((dof >= 1 && dof <= 3) || (dof >= 5 && dof <= 7))) {
+      ctx.reject(c, "DOF", "DOF " + std::to_string(dof) + " is not supported (1-3 and 5-7 are)");
+      ctx.collect(cur);
+      continue;
+    }
+    m.dof = static_cast<int>(dof <= 3 ? dof - 1 : dof - 2);
+    const int64_t vad = c.integer("VAD");
+    if (vad < 0 || vad > 2) {
+      ctx.reject(c, "VAD", "VAD " + std::to_string(vad) + " is not supported (0, 1, 2 are)");
+      ctx.collect(cur);
+      continue;
+    }
+    m.kind = static_cast<uint8_t>(vad);
+    m.curve = ctx.curve(c, "LCID", c.integer("LCID"));
+    m.sf = c.real("SF");
+    c.integer("VID");  // the direction of DOF 4 and 8 only
+    const double death = c.real("DEATH");
+    m.death = death >= 1e28 ? std::numeric_limits<double>::infinity() : death;
+    m.birth = c.real("BIRTH");
+    if (m.birth >= m.death) c.fail("DEATH", "the motion ends before it begins (BIRTH)");
+    input(ctx).motions.push_back({c.integer("PID"), m, c.context("PID")});
+    ctx.collect(cur);
+  }
+}
+
+void readSpotweld(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*CONSTRAINED_SPOTWELD");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    SpotweldDef w;
+    w.id = static_cast<int64_t>(ctx.model.rigid.welds.size()) + 1;
+    if (opts.has("ID")) w.id = positiveId(cur.read(spec.card("id card")), "WID");
+    const Card& c = cur.read(spec.card("card 1"));
+    w.where = c.where();
+    const int32_t n1 = ctx.node(c, "N1", c.integer("N1"));
+    const int32_t n2 = ctx.node(c, "N2", c.integer("N2"));
+    if (n1 == n2) c.fail("N2", "a spot weld needs two different nodes");
+    // The normal of the weld runs from node to node, so they must not coincide (Keyword
+    // Manual: spot welds join non-contiguous nodal pairs).
+    const Vec3& a = ctx.model.nodes.x[static_cast<std::size_t>(n1)];
+    const Vec3& b = ctx.model.nodes.x[static_cast<std::size_t>(n2)];
+    if (a == b) c.fail("N2", "the welded nodes coincide; a spot weld joins separate nodes");
+    w.nodes = {std::min(n1, n2), std::max(n1, n2)};
+    readWeldFailure(c, w);
+    w.tfail = failureTime(c.real("TF"));
+    const double ep = c.real("EP");
+    if (ep > 0 && ep < 1e20)
+      ctx.reject(c, "EP", "failure by the plastic strain of the welded elements is not supported");
+    ctx.model.rigid.welds.push_back(std::move(w));
+    input(ctx).weld_explicit_id.push_back(opts.has("ID"));
+    ctx.collect(cur);
+  }
+}
+
+void readGeneralizedWeld(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  if (!opts.has("SPOT")) {
+    ctx.rejectKeyword(kw, "only spot welds (_SPOT) are supported");
+    return;
+  }
+  const auto& spec = keywordSpec("*CONSTRAINED_GENERALIZED_WELD_SPOT");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    SpotweldDef w;
+    w.generalized = true;
+    w.id = static_cast<int64_t>(ctx.model.rigid.welds.size()) + 1;
+    if (opts.has("ID")) w.id = positiveId(cur.read(spec.card("id card")), "WID");
+    const Card& c = cur.read(spec.card("card 1"));
+    const Card& c2 = cur.read(spec.card("card 2"));
+    w.where = c.where();
+    w.nodes = ctx.nodeSet(c, "NSID", c.integer("NSID"));
+    if (w.nodes.size() < 2) c.fail("NSID", "a weld needs at least two nodes");
+    // Force filtering changes when a weld fails; it is refused rather than left out.
+    if (c.integer("FILTER") > 1)
+      ctx.reject(c, "FILTER", "filtering of the weld forces is not supported");
+    c.integer("WINDOW");
+    readWeldFailure(c2, w);
+    w.tfail = failureTime(c2.real("TFAIL"));
+    const double epsf = c2.real("EPSF");
+    if (epsf > 0 && epsf < 1e20)
+      ctx.reject(c2, "EPSF",
+                 "failure by the plastic strain of the welded elements is not supported");
+    ctx.model.rigid.welds.push_back(std::move(w));
+    input(ctx).weld_explicit_id.push_back(opts.has("ID"));
+    ctx.collect(cur);
+  }
+}
+
+void readConstrainedNodeSet(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*CONSTRAINED_NODE_SET");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    TiedNodeSet t;
+    t.id = static_cast<int64_t>(ctx.model.rigid.node_sets.size()) + 1;
+    if (opts.has("ID")) t.id = positiveId(cur.read(spec.card("id card")), "CNSID");
+    const Card& c = cur.read(spec.card("card 1"));
+    t.where = c.where();
+    t.nodes = ctx.nodeSet(c, "NSID", c.integer("NSID"));
+    const int64_t dof = c.integer("DOF");
+    if (dof < 1 || dof > 7) c.fail("DOF", "must be 1 to 7 (x, y, z, xy, yz, zx, xyz)");
+    t.dofs = codeMask(static_cast<int>(dof));
+    t.tfail = failureTime(c.real("TF"));
+    ctx.model.rigid.node_sets.push_back(std::move(t));
+    ctx.collect(cur);
+  }
+}
+
+// *CONSTRAINED_JOINT_SPHERICAL: N1, N2; _REVOLUTE: N1, N2 and N3, N4 on the axis. Each pair
+// must coincide (Keyword Manual, *CONSTRAINED_JOINT: the joint's node pairs are coincident).
+void readJoint(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const bool revolute = opts.has("REVOLUTE");
+  if (revolute == opts.has("SPHERICAL")) {
+    ctx.rejectKeyword(kw, "give one of _SPHERICAL or _REVOLUTE (other joints are not supported)");
+    return;
+  }
+  const auto& spec = keywordSpec("*CONSTRAINED_JOINT");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    JointDef j;
+    j.id = static_cast<int64_t>(ctx.model.rigid.joints.size()) + 1;
+    if (opts.has("ID")) j.id = positiveId(cur.read(spec.card("id card")), "ID");
+    const Card& c = cur.read(spec.card("card 1"));
+    j.where = c.where();
+    j.revolute = revolute;
+    static constexpr const char* kN[4] = {"N1", "N2", "N3", "N4"};
+    const int used = revolute ? 4 : 2;
+    for (int p = 0; p < used; p += 2) {
+      const int32_t a = ctx.node(c, kN[p], c.integer(kN[p]));
+      const int32_t b = ctx.node(c, kN[p + 1], c.integer(kN[p + 1]));
+      if (a == b) c.fail(kN[p + 1], "a joint joins two different nodes");
+      const Vec3& xa = ctx.model.nodes.x[static_cast<std::size_t>(a)];
+      const Vec3& xb = ctx.model.nodes.x[static_cast<std::size_t>(b)];
+      const double scale = std::max({1.0, std::abs(xa[0]), std::abs(xa[1]), std::abs(xa[2])});
+      if (std::hypot(xa[0] - xb[0], xa[1] - xb[1], xa[2] - xb[2]) > 1e-6 * scale)
+        c.fail(kN[p + 1],
+               "the joint's nodes " + std::string(kN[p]) + " and " + kN[p + 1] + " must coincide");
+      j.pairs.push_back({a, b});
+    }
+    if (revolute) {
+      const Vec3& x1 = ctx.model.nodes.x[static_cast<std::size_t>(j.pairs[0][0])];
+      const Vec3& x3 = ctx.model.nodes.x[static_cast<std::size_t>(j.pairs[1][0])];
+      if (x1 == x3) c.fail("N3", "the revolute axis N1-N3 has no length");
+    }
+    for (auto f : {"N5", "N6"})
+      if (c.integer(f) != 0) ctx.reject(c, f, "N5 and N6 belong to joints not supported here");
+    j.rps = c.real("RPS");
+    j.damp = c.real("DAMP");
+    if (!(j.rps > 0)) c.fail("RPS", "must be positive");
+    if (j.damp < 0) c.fail("DAMP", "must not be negative");
+    ctx.model.rigid.joints.push_back(std::move(j));
+    ctx.collect(cur);
+  }
+}
+
+namespace {
+
+// What owns a node: a body, a weld or a tied node set.
+struct Owner {
+  enum Kind : uint8_t { None, Body, Weld, NodeSet } kind = None;
+  int32_t index = kNone;
+};
+
+std::string describe(const Model& m, Owner o) {
+  switch (o.kind) {
+    case Owner::Body: {
+      const auto& b = m.rigid.bodies[static_cast<std::size_t>(o.index)];
+      return b.nodal ? "nodal rigid body " + std::to_string(b.id) + " (" + b.where.str() + ")"
+                     : "the rigid body of part " + std::to_string(b.id);
+    }
+    case Owner::Weld: {
+      const auto& w = m.rigid.welds[static_cast<std::size_t>(o.index)];
+      return std::string(w.generalized ? "*CONSTRAINED_GENERALIZED_WELD_SPOT "
+                                       : "*CONSTRAINED_SPOTWELD ") +
+             std::to_string(w.id) + " (" + w.where.str() + ")";
+    }
+    case Owner::NodeSet: {
+      const auto& t = m.rigid.node_sets[static_cast<std::size_t>(o.index)];
+      return "*CONSTRAINED_NODE_SET " + std::to_string(t.id) + " (" + t.where.str() + ")";
+    }
+    case Owner::None:
+      break;
+  }
+  return "nothing";
+}
+
+}  // namespace
+
+void finishRigid(Context& ctx) {
+  Model& m = ctx.model;
+  RigidDefinitions& rd = m.rigid;
+  RigidInput& in = input(ctx);
+  const std::size_t np = m.parts.size();
+
+  // Weld ids: explicit ones must be unique (the others are numbered in deck order).
+  std::map<int64_t, std::size_t> weld_ids;
+  for (std::size_t k = 0; k < rd.welds.size(); ++k) {
+    if (!in.weld_explicit_id[k]) continue;
+    auto [it, fresh] = weld_ids.emplace(rd.welds[k].id, k);
+    if (!fresh)
+      throw util::InputError(rd.welds[k].where.str() + ": weld " + std::to_string(rd.welds[k].id) +
+                             " is already defined at " + rd.welds[it->second].where.str());
+  }
+
+  // ---- bodies of rigid parts: union of merged parts, the master's root first ---------------
+  std::vector<int32_t> parent(np);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](int32_t p) {
+    while (parent[std::size_t(p)] != p) p = parent[std::size_t(p)];
+    return p;
+  };
+  for (const auto& mg : in.merges) {
+    const int32_t a = root(mg.master), b = root(mg.slave);
+    if (a != b) parent[std::size_t(b)] = a;
+  }
+  std::vector<int32_t> part_body(np, kNone);
+  std::map<int32_t, std::vector<int32_t>> groups;  // root part -> parts
+  for (int32_t p = 0; p < int32_t(np); ++p)
+    if (isRigidPart(m, p)) groups[root(p)].push_back(p);
+  // A merged body is named by its topmost master, the root of its group.
+  std::vector<std::pair<int64_t, int32_t>> order;  // (root part id, root)
+  for (const auto& [r, parts] : groups) order.emplace_back(m.parts[std::size_t(r)].id, r);
+  std::sort(order.begin(), order.end());
+  for (const auto& [id, r] : order) {
+    RigidBodyDef b;
+    b.id = id;
+    b.where = m.parts[std::size_t(r)].where;
+    b.parts.push_back(r);
+    for (int32_t p : groups[r])
+      if (p != r) b.parts.push_back(p);
+    for (int32_t p : b.parts) {
+      const auto& pn = ctx.partNodes(p);
+      b.nodes.insert(b.nodes.end(), pn.begin(), pn.end());
+    }
+    const Part& master = m.parts[std::size_t(r)];
+    const auto& law = std::get<RigidLaw>(m.materials[std::size_t(master.material)].law);
+    if (law.cmo == 1)
+      b.fixed = static_cast<uint8_t>(codeMask(law.con1) | (codeMask(law.con2) << 3));
+    for (int32_t p : b.parts) {
+      if (p == r) continue;
+      const auto& l =
+          std::get<RigidLaw>(m.materials[std::size_t(m.parts[std::size_t(p)].material)].law);
+      if (l.cmo != 0)
+        ctx.ignore("*MAT_RIGID", "CMO",
+                   "part " + std::to_string(m.parts[std::size_t(p)].id) + " is merged into part " +
+                       std::to_string(id) + ", whose constraints apply to the whole body",
+                   m.parts[std::size_t(p)].where);
+    }
+    const auto body = static_cast<int32_t>(rd.bodies.size());
+    for (int32_t p : b.parts) part_body[std::size_t(p)] = body;
+    rd.bodies.push_back(std::move(b));
+  }
+  // *PART_INERTIA belongs to a rigid part that leads its body.
+  for (auto& [pid, inertia] : in.inertia) {
+    const int32_t p = m.partIndex(pid);
+    if (p == kNone || !isRigidPart(m, p))
+      failAt(inertia.context, "*PART_INERTIA applies to rigid parts (*MAT_RIGID) only; part " +
+                                  std::to_string(pid) + " is not rigid");
+    if (part_body[std::size_t(p)] == kNone) continue;
+    RigidBodyDef& b = rd.bodies[std::size_t(part_body[std::size_t(p)])];
+    if (b.parts.front() != p)
+      failAt(inertia.context, "part " + std::to_string(pid) + " is merged into part " +
+                                  std::to_string(b.id) +
+                                  " (*CONSTRAINED_RIGID_BODIES): its *PART_INERTIA would be "
+                                  "lost; give the inertia of the merged body on the master");
+    const auto& v = inertia.values;
+    b.inertia_given = true;
+    b.mass = v.mass;
+    b.cm = v.cm;
+    b.tensor = v.tensor;
+    b.velocity_given = v.velocity_given;
+    b.v0 = v.v0;
+    b.w0 = v.w0;
+    if (inertia.cm_node != kNone) b.nodes.push_back(inertia.cm_node);
+  }
+  // IFLAG = 1 asks that merged parts and extra nodes update a *PART_INERTIA: not supported.
+  for (const auto& mg : in.merges)
+    if (mg.iflag && rd.bodies[std::size_t(part_body[std::size_t(mg.master)])].inertia_given)
+      failAt(mg.context,
+             "updating the *PART_INERTIA of the master with the merged parts is not supported");
+  for (const auto& e : in.extras) {
+    RigidBodyDef& b = rd.bodies[std::size_t(part_body[std::size_t(e.part)])];
+    if (e.iflag && b.inertia_given)
+      failAt(e.context, "updating a *PART_INERTIA with the extra nodes is not supported");
+    b.nodes.insert(b.nodes.end(), e.nodes.begin(), e.nodes.end());
+  }
+  for (auto& b : rd.bodies) sortUnique(b.nodes);
+
+  // ---- nodal rigid bodies, ascending id -------------------------------------------------------
+  std::stable_sort(in.nodal.begin(), in.nodal.end(),
+                   [](const auto& a, const auto& b) { return a.body.id < b.body.id; });
+  for (std::size_t k = 0; k < in.nodal.size(); ++k) {
+    const auto& nb = in.nodal[k];
+    if (k > 0 && in.nodal[k - 1].body.id == nb.body.id)
+      failAt(nb.context, "nodal rigid body " + std::to_string(nb.body.id) +
+                             " is already defined at " + in.nodal[k - 1].body.where.str());
+    if (m.partIndex(nb.body.id) != kNone)
+      failAt(nb.context, "PID " + std::to_string(nb.body.id) +
+                             " is a *PART; a nodal rigid body needs an id of its own");
+    if (nb.body.nodes.empty()) failAt(nb.context, "the nodal rigid body has no nodes");
+    rd.bodies.push_back(nb.body);
+  }
+  // Rigid parts without elements or extra nodes move nothing: no body.
+  std::vector<int32_t> renumber(rd.bodies.size(), kNone);
+  {
+    std::vector<RigidBodyDef> kept;
+    for (std::size_t k = 0; k < rd.bodies.size(); ++k)
+      if (!rd.bodies[k].nodes.empty()) {
+        renumber[k] = static_cast<int32_t>(kept.size());
+        kept.push_back(std::move(rd.bodies[k]));
+      }
+    rd.bodies = std::move(kept);
+    for (auto& b : part_body)
+      if (b != kNone) b = renumber[std::size_t(b)];
+  }
+
+  // ---- prescribed rigid motion: by part (the part's body) or nodal rigid body id -------------
+  for (const auto& mo : in.motions) {
+    int32_t body = kNone;
+    if (const int32_t p = m.partIndex(mo.pid); p != kNone) {
+      if (!isRigidPart(m, p))
+        failAt(mo.context, "part " + std::to_string(mo.pid) + " is not rigid (*MAT_RIGID)");
+      body = part_body[std::size_t(p)];
+    } else {
+      for (std::size_t k = 0; k < rd.bodies.size(); ++k)
+        if (rd.bodies[k].nodal && rd.bodies[k].id == mo.pid) body = int32_t(k);
+      if (body == kNone)
+        failAt(mo.context,
+               "part or nodal rigid body " + std::to_string(mo.pid) + " is not defined");
+    }
+    if (body != kNone) rd.bodies[std::size_t(body)].motions.push_back(mo.motion);
+  }
+
+  // ---- one constraint per node ---------------------------------------------------------------
+  std::vector<Owner> owner(m.nodes.size());
+  auto claim = [&](const std::vector<int32_t>& nodes, Owner o, const util::SourceLoc& where) {
+    for (int32_t n : nodes) {
+      Owner& cur = owner[std::size_t(n)];
+      if (cur.kind != Owner::None)
+        throw util::InputError(where.str() + ": node " +
+                               std::to_string(m.nodes.id[std::size_t(n)]) + " belongs to " +
+                               describe(m, cur) + " and to " + describe(m, o) +
+                               (cur.kind == Owner::Body && o.kind == Owner::Body
+                                    ? "; merge rigid bodies with *CONSTRAINED_RIGID_BODIES"
+                                    : "; a node may take one rigid-body or nodal constraint only"));
+      cur = o;
+    }
+  };
+  for (std::size_t k = 0; k < rd.bodies.size(); ++k)
+    claim(rd.bodies[k].nodes, {Owner::Body, int32_t(k)}, rd.bodies[k].where);
+  for (std::size_t k = 0; k < rd.welds.size(); ++k)
+    claim(rd.welds[k].nodes, {Owner::Weld, int32_t(k)}, rd.welds[k].where);
+  for (std::size_t k = 0; k < rd.node_sets.size(); ++k)
+    claim(rd.node_sets[k].nodes, {Owner::NodeSet, int32_t(k)}, rd.node_sets[k].where);
+
+  // SPCs on rigid-body nodes become constraints of the body's centre of mass, as LS-DYNA
+  // converts them; on weld and tied nodes they would fight the constraint.
+  std::vector<char> noted(rd.bodies.size(), 0);
+  for (auto it = ctx.spc_masks.begin(); it != ctx.spc_masks.end();) {
+    const auto [node, mask] = *it;
+    const Owner o = owner[std::size_t(node)];
+    const std::string nid = std::to_string(m.nodes.id[std::size_t(node)]);
+    if (o.kind == Owner::Body && mask) {
+      auto& b = rd.bodies[std::size_t(o.index)];
+      b.fixed |= mask;
+      if (!noted[std::size_t(o.index)]++)
+        ctx.ignore("*BOUNDARY_SPC", "NID",
+                   "node " + nid + " of " + describe(m, o) +
+                       ": nodal constraints of a rigid body constrain its centre of mass "
+                       "instead (as LS-DYNA converts them)",
+                   b.where);
+      it = ctx.spc_masks.erase(it);
+      continue;
+    }
+    const bool conflict =
+        (o.kind == Owner::Weld && mask) ||
+        (o.kind == Owner::NodeSet && (mask & rd.node_sets[std::size_t(o.index)].dofs));
+    if (conflict)
+      throw util::InputError(
+          (o.kind == Owner::Weld ? rd.welds[std::size_t(o.index)].where
+                                 : rd.node_sets[std::size_t(o.index)].where)
+              .str() +
+          ": node " + nid + " of " + describe(m, o) +
+          " also has a single-point constraint (*BOUNDARY_SPC or *NODE TC/RC); a constrained "
+          "node may not take further constraints");
+    ++it;
+  }
+  for (const auto& pm : m.prescribed) {
+    const Owner o = owner[std::size_t(pm.node)];
+    const bool conflict =
+        o.kind == Owner::Body || o.kind == Owner::Weld ||
+        (o.kind == Owner::NodeSet && (rd.node_sets[std::size_t(o.index)].dofs & (1u << pm.dof)));
+    if (!conflict) continue;
+    const std::string nid = std::to_string(m.nodes.id[std::size_t(pm.node)]);
+    throw util::InputError(
+        "*BOUNDARY_PRESCRIBED_MOTION: node " + nid + " belongs to " + describe(m, o) +
+        (o.kind == Owner::Body
+             ? "; prescribe the motion of a rigid body with *BOUNDARY_PRESCRIBED_MOTION_RIGID"
+             : "; a constrained node may not take a prescribed motion"));
+  }
+}
+
+}  // namespace crumple::model::build
