@@ -163,6 +163,8 @@ TEST(VerificationShell, CantileverFirstFrequency) {
                                   stripDeck(20, 2, 2, termination(1.7 * period), 0.05));
   const double measured = measuredPeriod(*sim, 21);
   EXPECT_NEAR(measured / period, 1.0, 0.02) << "measured " << measured << " ms, theory " << period;
+  std::printf("[ figure ] %s f1 ratio %.4f\n",
+              ::testing::UnitTest::GetInstance()->current_test_info()->name(), period / measured);
   const auto e = sim->solver->energies();
   EXPECT_NEAR(e.ratio, 1.0, 0.01);
   EXPECT_LT(e.hourglass, 0.05 * e.initial);
@@ -180,6 +182,9 @@ TEST(VerificationShell, CantileverTipDeflection) {
   const double tip = quasiStaticTip(*sim, 42, 4.0 * period);
   EXPECT_NEAR(tip / tipDeflection(), 1.0, 0.03)
       << "tip " << tip << " mm, theory " << tipDeflection();
+  std::printf("[ figure ] %s tip ratio %.4f\n",
+              ::testing::UnitTest::GetInstance()->current_test_info()->name(),
+              tip / tipDeflection());
 }
 
 // C0 triangles (two per quad): constant-curvature elements are stiffer in bending on a
@@ -190,6 +195,8 @@ TEST(VerificationShell, TriangleCantileverFirstFrequency) {
                                   stripDeck(20, 2, 4, termination(1.7 * period), 0.05, true));
   const double measured = measuredPeriod(*sim, 21);
   EXPECT_NEAR(measured / period, 1.0, 0.05) << "measured " << measured << " ms, theory " << period;
+  std::printf("[ figure ] %s f1 ratio %.4f\n",
+              ::testing::UnitTest::GetInstance()->current_test_info()->name(), period / measured);
 }
 
 // A plastic hinge at the clamp: an elastic-perfectly-plastic strip (*MAT_003, ETAN = 0), its
@@ -264,6 +271,8 @@ TEST_P(VerificationBeam, CantileverFirstFrequency) {
                                   beamDeck(20, GetParam(), termination(1.7 * period), 0.05));
   const double measured = measuredPeriod(*sim, 21);
   EXPECT_NEAR(measured / period, 1.0, 0.02) << "measured " << measured << " ms, theory " << period;
+  std::printf("[ figure ] %s f1 ratio %.4f\n",
+              ::testing::UnitTest::GetInstance()->current_test_info()->name(), period / measured);
   EXPECT_NEAR(sim->solver->energies().ratio, 1.0, 0.01);
 }
 
@@ -275,6 +284,9 @@ TEST_P(VerificationBeam, CantileverTipDeflection) {
   const double tip = quasiStaticTip(*sim, 21, 4.0 * period);
   EXPECT_NEAR(tip / tipDeflection(), 1.0, 0.03)
       << "tip " << tip << " mm, theory " << tipDeflection();
+  std::printf("[ figure ] %s tip ratio %.4f\n",
+              ::testing::UnitTest::GetInstance()->current_test_info()->name(),
+              tip / tipDeflection());
 }
 
 INSTANTIATE_TEST_SUITE_P(HughesLiuAndResultant, VerificationBeam, ::testing::Values(1, 2));
