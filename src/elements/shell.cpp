@@ -1,42 +1,45 @@
 // Belytschko-Lin-Tsay shell and C0 triangle kernels (see shell.hpp).
 //
 // Notation: corners a = 0..3 (LS-DYNA nodes 1..4); a triangle has corner 3 on corner 2's node.
-// Frame (BLT 1984 sec. 2; LS-DYNA Theory Manual, BLT shell, "co-rotational coordinates"):
-//   e3 = r20 x r31 / |r20 x r31| (the diagonals), e1 = side 0-1 minus its e3 part, normalised,
-//   e2 = e3 x e1. Hatted quantities are components in this frame; (x_a, y_a) the corners'
-//   in-plane coordinates.
-// One-point quadrature at the centre (BLT eq. 13): B1 = dN/dx = (y1-y3, y2-y0, y3-y1, y0-y2)/2A,
-// B2 = dN/dy = (x3-x1, x0-x2, x1-x3, x2-x0)/2A, 2A = (x2-x0)(y3-y1) - (x3-x1)(y2-y0).
+// Frame (BLT 1984; LS-DYNA Theory Manual, Belytschko-Lin-Tsay shell, corotational
+// coordinates): e3 = r20 x r31 / |r20 x r31| (the diagonals), e1 = side 0-1 minus its e3 part,
+// normalised (LS-DYNA's default), e2 = e3 x e1. Components in this frame are "local"; (x_a,
+// y_a) are the corners' in-plane coordinates.
+// One-point quadrature at the centre: B1 = dN/dx = (y1-y3, y2-y0, y3-y1, y0-y2) / 2A,
+// B2 = dN/dy = (x3-x1, x0-x2, x1-x3, x2-x0) / 2A, 2A = (x2-x0)(y3-y1) - (x3-x1)(y2-y0).
 // Velocity strains at height z (Mindlin kinematics: the fibre turns with the nodal rotation
-// theta, so u_x = z theta_y, u_y = -z theta_x), BLT eqs. 17-21:
+// theta, so u_x = z theta_y, u_y = -z theta_x; BLT 1984, velocity strains):
 //   d_xx = B1.vx + z B1.ty                   d_yy = B2.vy - z B2.tx
 //   2 d_xy = B2.vx + B1.vy + z (B2.ty - B1.tx)
 //   2 d_xz = B1.vz + ty_mean                 2 d_yz = B2.vz - tx_mean   (mean of the corners)
-// The rates use the mid-step geometry x(n) - dt/2 v(n-1/2) and its frame, as the hex kernel
-// does: a rigid rotation then gives zero strain to round-off however large the step's angle
-// (the midpoint rule; the current geometry would give a strain of (1 - cos dtheta) a step).
+// The rates (and the hourglass rates) use the mid-step geometry x(n) - dt/2 v(n-1/2) and its
+// frame, as the hex kernel does: a rigid rotation then gives zero strain to round-off however
+// large the step's angle (the midpoint rule; the current geometry would give a strain of
+// (1 - cos dtheta) a step).
 // Resultants over the thickness t with the rule's weights w_i at z_i = zeta_i t / 2:
 //   N = t sum w_i s_i,  M = t^2/2 sum w_i zeta_i s_i,  Q = kappa t tau (tau elastic, uniform),
 // and the corner forces and moments are the derivatives of the internal power
-// A (N.d_m + M.kappa + Q.gamma) with respect to the corner velocities (BLT eq. 26):
+// A (N.d_m + M.kappa + Q.gamma) with respect to the corner velocities:
 //   fx_a = A (B1 Nxx + B2 Nxy)        mx_a = A (-B2 Myy - B1 Mxy - Qy / 4)
 //   fy_a = A (B2 Nyy + B1 Nxy)        my_a = A ( B1 Mxx + B2 Mxy + Qx / 4)
 //   fz_a = A (B1 Qx + B2 Qy)          (no drilling moment)
-// evaluated with the geometry and frame at x(n). The slots get minus these, turned to the
-// global frame (the force on the node, as the hex kernel writes f_a = -sigma.B_a).
+// (BLT's nodal forces, with M defined here as +sum z s; LS-DYNA writes m = -sum z s), evaluated
+// with the geometry and frame at x(n). The slots get minus these, turned to the global frame
+// (the force on the node, as the hex kernel writes f_a = -sigma.B_a).
 //
-// Hourglass control (BLT sec. 4; LS-DYNA Theory Manual, BLT shell, "hourglass control"): the
+// Hourglass control (BLT 1984; LS-DYNA Theory Manual, BT shell hourglass control): the
 // projected vector gamma_a = h_a - (h.x) B1_a - (h.y) B2_a, h = (1, -1, 1, -1), is orthogonal to
 // every linear field, so rigid motions and the patch test give no hourglass rate. Five modes:
 // membrane gamma.vx, gamma.vy; bending gamma.tx, gamma.ty; transverse gamma.vz, with the
 // stiffnesses (QM the hourglass coefficient, B.B = sum of B1^2 + B2^2)
 //   membrane QM E t A B.B / 8,   bending QM E t^3 A B.B / 192,   transverse QM kappa G t^3 B.B / 12
-// (LS-DYNA's forms for membrane and bending; the transverse one written so that it is a
-// stiffness, like the twist stiffness G t^3 B.B / 6 of a square plate that the one-point
-// quadrature misses). IHQ 4, 5: resistances accumulated from the rates (stored in the element
-// frame, so they turn with it); IHQ 1-3: viscous, the same stiffness times L_s / c (a damping
-// ratio of at most QM for every hourglass mode; the hex's viscous coefficient is 1.33 times its
-// stiffness times L/c in the same sense).
+// (membrane and bending as in the LS-DYNA manual's BT hourglass section; the transverse one
+// written so that it is a stiffness, force per length, scaled like the twist stiffness
+// G t^3 B.B / 6 of a square plate, the mode the one-point quadrature misses). IHQ 4, 5:
+// resistances accumulated from the rates (stored in the element frame, so they turn with it);
+// IHQ 1-3: viscous, the same stiffness times L_s / c, a damping ratio of at most QM for every
+// hourglass mode (the hex's viscous coefficient is 1.33 times its stiffness times L/c in the
+// same sense).
 //
 // Warping (Belytschko, Wong & Chiang 1992, "Advances in one-point quadrature shell elements",
 // CMAME 96:93-107): in a warped element the corners sit at heights z_a = +-z_w h_a off the mean
@@ -48,21 +51,23 @@
 // and the transpose adds (gamma.z)(Q_m1 B1_a + Q_m2 B2_a) to fz_a, which restores moment
 // balance. (The membrane strain is unaffected: B.h = 0.)
 //
-// C0 triangle (BSC 1984): the same frame, membrane (constant strain: the quadrilateral formulas
-// with corners 2 and 3 on one node give the CST gradients) and constant curvature from the
-// linear rotation field. Transverse shear with one-point quadrature at the centroid would lock
-// in bending (two constraints per triangle); as in BSC's treatment it is built from the
-// tangential shear along the three edges, which for a bending mode is the exact Timoshenko
-// condition of each edge: the edge value (w_j - w_i) / L + mean(beta_i, beta_j).t (beta =
-// (ty, -tx)) and the lowest-order edge (Nedelec) field through the three edge values,
-// evaluated at the centroid:
+// C0 triangle (Belytschko, Stolarski & Carpenter 1984): the same frame, membrane (constant
+// strain: the quadrilateral formulas with corners 2 and 3 on one node give the CST gradients)
+// and constant curvature from the linear rotation field. Transverse shear with one-point
+// quadrature at the centroid locks in bending (two constraints per triangle, a strip of split
+// quadrilaterals cannot bend); BSC avoid locking by a special treatment of the shear. Here the
+// transverse shear is built from the tangential shear along the three edges, the Timoshenko
+// condition of each edge, (w_j - w_i) / L + mean(beta_i, beta_j).t (beta = (ty, -tx)), through
+// the lowest-order edge (Nedelec) field, evaluated at the centroid (the assumed shear of the
+// MITC3 triangle: Lee & Bathe 2004, Comput. Struct. 82:945-962):
 //   gamma = 1/3 sum_edges [(w_j - w_i) + (beta_i + beta_j)/2 . (x_j - x_i)] (grad N_j - grad N_i).
 // It is exact for every field with constant shear and zero for rigid motions; the forces are
-// its transpose. No hourglass control (none needed: three nodes, one point).
+// its transpose. No hourglass control (three nodes, one point: no hourglass modes).
 //
 // Plasticity: the plane-stress return of materials/plane_stress.hpp at every point. A point
 // that reaches the failure strain carries no stress; the element erodes when every point
-// through the thickness has failed (LS-DYNA's default for shells with a failure strain).
+// through the thickness has failed (LS-DYNA erodes shells when all through-thickness points
+// have failed; its NUMFIP-type controls are not implemented).
 // Thickness update (ISTUPD): t += t sum w_i deps_zz,i with the points' thickness strains.
 #include "elements/shell.hpp"
 
@@ -244,7 +249,7 @@ inline void gatherCorners(const domain::ShellBlock& b, std::size_t first, int n,
 struct ShellScratch {
   NodalShell x, v, w, xm;
   NodalShell fg, mg;  // corner forces and moments on the nodes, global frame
-  double s[3][kMaxPoints], s_old[3][kMaxPoints], de[3][kMaxPoints], alpha[3][kMaxPoints];
+  double s[3][kMaxPoints], de[3][kMaxPoints], alpha[3][kMaxPoints];
   double dzz[kMaxPoints], ep[kMaxPoints];
   uint8_t failed[kMaxPoints];
   double zeros[5 * kShellBatch] = {};  // the "stored" resistances of the viscous forms
@@ -264,6 +269,17 @@ ShellConstants constantsOf(const materials::Law& law, double rho0) {
   c.G = m.shear;
   c.wave_speed = std::sqrt(c.E / (rho0 * (1.0 - c.nu * c.nu)));
   return c;
+}
+
+// Effective plastic strain at failure (0: none).
+double failureStrainOf(const materials::Elastic&) {
+  return 0.0;
+}
+double failureStrainOf(const materials::PlasticKinematic& law) {
+  return law.fs;
+}
+double failureStrainOf(const materials::PiecewiseLinear& law) {
+  return law.fail;
 }
 
 bool lawIsPlastic(const materials::Law& law) {
@@ -302,6 +318,7 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
   const double bwc = blk.bwc ? 1.0 : 0.0;
   const bool thickness_update = blk.thickness_update;
   const bool scaled_mass = !blk.mass_scale.empty();
+  const bool can_fail = failureStrainOf(law) > 0.0;
   double zeta[kMaxShellPoints], weight[kMaxShellPoints];
   for (int i = 0; i < nip; ++i) {
     zeta[i] = blk.zeta[static_cast<std::size_t>(i)];
@@ -405,18 +422,26 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
       }
 
       // --- plane-stress update at every point through the thickness ---------------------------
+      // The stress work is the midpoint rule, (s_old + s) / 2 : de summed over the points: its
+      // s_old half is taken here, as the stresses are loaded.
+      Lanes work;
+      for (int l = 0; l < B; ++l) work[l] = 0.0;
       for (int p = 0; p < nip; ++p) {
-        const double zp = 0.5 * zeta[p];
+        const double zp = 0.5 * zeta[p], wp = 0.5 * weight[p];
+        const double* rec = sig_batch + 3 * p * B;
         for (int l = 0; l < B; ++l) {
           const double z = zp * thick[l];
           const int i = p * B + l;
-          s.de[0][i] = (dxm[l] + z * kx[l]) * dt;
-          s.de[1][i] = (dym[l] + z * ky[l]) * dt;
-          s.de[2][i] = 0.5 * (gxy[l] + z * kxy[l]) * dt;
-        }
-        for (int k = 0; k < 3; ++k) {
-          const double* rec = sig_batch + (3 * p + k) * B;
-          for (int l = 0; l < B; ++l) s.s[k][p * B + l] = s.s_old[k][p * B + l] = rec[l];
+          const double d0 = (dxm[l] + z * kx[l]) * dt, d1 = (dym[l] + z * ky[l]) * dt,
+                       d2 = 0.5 * (gxy[l] + z * kxy[l]) * dt;
+          const double s0 = rec[l], s1 = rec[B + l], s2 = rec[2 * B + l];
+          s.de[0][i] = d0;
+          s.de[1][i] = d1;
+          s.de[2][i] = d2;
+          s.s[0][i] = s0;
+          s.s[1][i] = s1;
+          s.s[2][i] = s2;
+          work[l] += wp * (s0 * d0 + s1 * d1 + 2.0 * s2 * d2);
         }
       }
       if constexpr (Law::kPlastic)
@@ -436,13 +461,13 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
         }
         pts.de_zz = s.dzz;
         pts.eps_p = Law::kPlastic ? s.ep : nullptr;
-        pts.failed = s.failed;
+        pts.failed = can_fail ? s.failed : nullptr;
         materials::updatePlaneStress(law, pts);
       }
       // A failed point carries no stress; the element erodes when all its points have failed.
       Lanes failed_points;
       for (int l = 0; l < B; ++l) failed_points[l] = 0.0;
-      if constexpr (Law::kPlastic) {
+      if (can_fail) {
         for (int i = 0; i < npts; ++i) {
           const bool f = s.failed[i] != 0;
           for (int k = 0; k < 3; ++k) s.s[k][i] = f ? 0.0 : s.s[k][i];
@@ -452,7 +477,7 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
       }
 
       // --- transverse shear (elastic), energy, thickness, resultants --------------------------
-      Lanes tau_yz, tau_zx, de_int, t_new, work, ezz, nxx, nyy, nxy, mxx, myy, mxy, qx, qy;
+      Lanes tau_yz, tau_zx, de_int, t_new, ezz, nxx, nyy, nxy, mxx, myy, mxy, qx, qy;
       {
         double* rec_yz = sig_batch + (3 * nip) * B;
         double* rec_zx = sig_batch + (3 * nip + 1) * B;
@@ -462,16 +487,15 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
           tau_zx[l] = old_zx + mc.G * gxz[l] * dt;
           de_int[l] =
               kappa * 0.5 * ((old_yz + tau_yz[l]) * gyz[l] + (old_zx + tau_zx[l]) * gxz[l]) * dt;
-          work[l] = ezz[l] = nxx[l] = nyy[l] = nxy[l] = mxx[l] = myy[l] = mxy[l] = 0.0;
+          ezz[l] = nxx[l] = nyy[l] = nxy[l] = mxx[l] = myy[l] = mxy[l] = 0.0;
         }
       }
       for (int p = 0; p < nip; ++p) {
-        const double wp = weight[p], wz = weight[p] * zeta[p];
+        const double wp = weight[p], wz = weight[p] * zeta[p], hw = 0.5 * weight[p];
         for (int l = 0; l < B; ++l) {
           const int i = p * B + l;
-          work[l] += wp * (0.5 * ((s.s_old[0][i] + s.s[0][i]) * s.de[0][i] +
-                                  (s.s_old[1][i] + s.s[1][i]) * s.de[1][i]) +
-                           (s.s_old[2][i] + s.s[2][i]) * s.de[2][i]);
+          work[l] +=
+              hw * (s.s[0][i] * s.de[0][i] + s.s[1][i] * s.de[1][i] + 2.0 * s.s[2][i] * s.de[2][i]);
           ezz[l] += wp * s.dzz[i];
           nxx[l] += wp * s.s[0][i];
           nyy[l] += wp * s.s[1][i];
@@ -500,9 +524,8 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
       Lanes inv_c_dt, area, de_hg, dte;
       for (int l = 0; l < B; ++l) {
         // Mass scaling slows the element's waves: c / sqrt(scale) enters the stable step only.
-        inv_c_dt[l] = scaled_mass
-                          ? std::sqrt(blk.mass_scale[first + static_cast<std::size_t>(l)]) * inv_c
-                          : inv_c;
+        inv_c_dt[l] =
+            scaled_mass ? std::sqrt(blk.mass_scale[laneElement(first, n, l)]) * inv_c : inv_c;
       }
       // The stored resistances copied to the stack: the loop below then has no pointer that
       // might alias its stores, and GCC vectorises it.
@@ -588,24 +611,26 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
       }
 
       // --- store state (whole batch), then per element: slots, erosion, stable step ----------
-      const uint8_t* alive = &blk.active[first];
+      Lanes alive;  // 1 for an element not eroded (as double: the selects below vectorise)
+      for (int l = 0; l < B; ++l)
+        alive[l] = blk.active[first + static_cast<std::size_t>(l)] ? 1.0 : 0.0;
       for (int p = 0; p < nip; ++p)
         for (int k = 0; k < 3; ++k) {
           double* rec = sig_batch + (3 * p + k) * B;
-          for (int l = 0; l < B; ++l) rec[l] = alive[l] ? s.s[k][p * B + l] : 0.0;
+          for (int l = 0; l < B; ++l) rec[l] = alive[l] != 0.0 ? s.s[k][p * B + l] : 0.0;
         }
       {
         double* rec_yz = sig_batch + (3 * nip) * B;
         double* rec_zx = sig_batch + (3 * nip + 1) * B;
         for (int l = 0; l < B; ++l) {
-          rec_yz[l] = alive[l] ? tau_yz[l] : 0.0;
-          rec_zx[l] = alive[l] ? tau_zx[l] : 0.0;
+          rec_yz[l] = alive[l] != 0.0 ? tau_yz[l] : 0.0;
+          rec_zx[l] = alive[l] != 0.0 ? tau_zx[l] : 0.0;
         }
       }
       if constexpr (Law::kPlastic)
         for (int i = 0; i < npts; ++i) {
           const int l = i % B;
-          ep_batch[i] = alive[l] ? s.ep[i] : ep_batch[i];
+          ep_batch[i] = alive[l] != 0.0 ? s.ep[i] : ep_batch[i];
         }
       if constexpr (Law::kKinematic)
         for (int k = 0; k < 3; ++k)
@@ -614,13 +639,14 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
       if (stiffness_hg) {
         double* hgq_batch = blk.hgq.data() + first * 5;
         for (int mode = 0; mode < 5; ++mode)
-          for (int l = 0; l < B; ++l) hgq_batch[mode * B + l] = alive[l] ? hg_new[mode][l] : 0.0;
+          for (int l = 0; l < B; ++l)
+            hgq_batch[mode * B + l] = alive[l] != 0.0 ? hg_new[mode][l] : 0.0;
       }
       for (int l = 0; l < B; ++l) {
         const std::size_t e = first + static_cast<std::size_t>(l);
-        blk.thick[e] = alive[l] ? t_new[l] : blk.thick[e];
-        blk.e_int[e] += alive[l] ? de_int[l] : 0.0;
-        blk.e_hg[e] += alive[l] ? de_hg[l] : 0.0;
+        blk.thick[e] = alive[l] != 0.0 ? t_new[l] : blk.thick[e];
+        blk.e_int[e] += alive[l] != 0.0 ? de_int[l] : 0.0;
+        blk.e_hg[e] += alive[l] != 0.0 ? de_hg[l] : 0.0;
       }
       for (int l = 0; l < n; ++l) {
         const std::size_t e = first + static_cast<std::size_t>(l);
@@ -631,7 +657,7 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
         }
         if (!(area[l] > 0.0) && (st.bad_elem < 0 || blk.elem[e] < st.bad_elem))
           st.bad_elem = blk.elem[e];
-        if (Law::kPlastic && failed_points[l] == static_cast<double>(nip)) {
+        if (can_fail && failed_points[l] == static_cast<double>(nip)) {
           blk.active[e] = 0;
           blk.failed[e] = 1;
           for (int k = 0; k < fields; ++k) blk.sig[domain::ShellBlock::blocked(fields, k, e)] = 0.0;

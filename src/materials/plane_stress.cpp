@@ -48,8 +48,10 @@ double poissonRatio(const Moduli& m) {
 namespace {
 
 constexpr double kTwoThirds = 2.0 / 3.0;
-// The iteration stops once a Newton step is below 1e-8 of dgamma and applies that step: with
-// quadratic convergence the error left is of order 1e-16 of dgamma (round-off).
+// The iteration stops once a step is below this fraction of dgamma and applies that step: the
+// linear-hardening return converges cubically (Halley), the error left is then of order 1e-15
+// of dgamma, round-off; the curve return (Newton, quadratic) uses kNewtonTolerance.
+constexpr double kHalleyTolerance = 1e-5;
 constexpr double kNewtonTolerance = 1e-8;
 // A residual this small relative to q is round-off: the point is on the yield surface (the
 // relative step may then stay above kNewtonTolerance when dgamma itself is tiny).
@@ -170,15 +172,20 @@ struct Trial {
 // dgamma) becomes, multiplied out,
 //   P(dgamma) = 3/2 (c1 D2^2 + c2 D1^2) K^2 - sy^2 D1^2 D2^2 = 0,   K = 1 - k dgamma,
 // a quartic whose root in [0, 1/k) is the return: P > 0 below it (q > sigma_y), P < 0 above.
-// Newton's method on P needs one division per step and no square root.
-inline void consistency(double c1, double c2, double sy, double k, double m1, double m2, double dg,
-                        double& p, double& dp) {
+// Halley's method on P (cubic convergence) needs one division per step and no square root:
+//   next = dgamma - 2 P P' / (2 P'^2 - P P'').
+inline double halleyStep(double c1, double c2, double sy, double k, double m1, double m2, double dg,
+                         double& p) {
   const double d1 = 1.0 + m1 * dg, d2 = 1.0 + m2 * dg, kk = 1.0 - k * dg;
   const double a = 1.5 * (c1 * d2 * d2 + c2 * d1 * d1);
   const double da = 3.0 * (c1 * m2 * d2 + c2 * m1 * d1);
-  const double s2 = sy * sy, dd = d1 * d2;
-  p = a * kk * kk - s2 * dd * dd;
-  dp = (da * kk - 2.0 * k * a) * kk - 2.0 * s2 * dd * (m1 * d2 + m2 * d1);
+  const double dda = 3.0 * (c1 * m2 * m2 + c2 * m1 * m1);
+  const double s2 = sy * sy, e = d1 * d2, de = m1 * d2 + m2 * d1;
+  p = a * kk * kk - s2 * e * e;
+  const double dp = (da * kk - 2.0 * k * a) * kk - 2.0 * s2 * e * de;
+  const double ddp =
+      (dda * kk - 4.0 * k * da) * kk + 2.0 * k * k * a - 2.0 * s2 * (de * de + 2.0 * m1 * m2 * e);
+  return dg - 2.0 * p * dp / (2.0 * dp * dp - p * ddp);
 }
 
 template <bool kKinematic, bool kRate>
@@ -252,23 +259,22 @@ template <bool kKinematic, bool kRate>
       }
       continue;
     }
-    // Newton iterations on P; a converged point keeps its value (selects, no branch).
+    // Halley iterations on P; a converged point keeps its value (selects, no branch).
     for (int it = 0; it < kPlaneStressMaxIterations; ++it) {
       double any = 0.0;
 #pragma omp simd reduction(+ : any)
       for (int i = 0; i < m; ++i) {
         const double dg = w.dg[i];
-        double p, dp;
-        consistency(w.c1[i], w.c2[i], w.sy[i], w.k[i], m1, m2, dg, p, dp);
+        double p;
+        double next = halleyStep(w.c1[i], w.c2[i], w.sy[i], w.k[i], m1, m2, dg, p);
         const double lo = p > 0.0 ? dg : w.lo[i];
         const double hi = p > 0.0 ? w.hi[i] : dg;
-        double next = dg - p / dp;
         // Bitwise & (no short circuit): the loop body stays branch-free. K = 1 - k dgamma must
         // stay positive (beyond it the quartic has roots of no meaning).
         next = ((next >= lo) & (next <= hi) & (w.k[i] * next < 1.0)) ? next : 0.5 * (lo + hi);
         const double d12 = (1.0 + m1 * dg) * (1.0 + m2 * dg);
         const bool live = w.live[i] != 0.0;
-        const bool moving = (std::abs(next - dg) > kNewtonTolerance * next) &
+        const bool moving = (std::abs(next - dg) > kHalleyTolerance * next) &
                             (std::abs(p) > kResidualFloor * w.sy[i] * w.sy[i] * d12 * d12);
         w.dg[i] = live ? next : dg;
         w.lo[i] = live ? lo : w.lo[i];
