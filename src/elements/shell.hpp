@@ -49,9 +49,12 @@ void resizeShellBlock(domain::ShellBlock& block, std::size_t n);
 // The inertia is the scaled rotary inertia of Kennedy, Belytschko & Lin (1986), "Recent
 // developments in explicit finite element techniques and their application to reactor
 // structures", Nucl. Eng. Des. 97:1-24, with the plate's own t^2/12 as a floor for thick
-// elements: it keeps the rotational modes (transverse shear against rotary inertia:
-// omega^2 = 8 kappa G / (rho A)) below the membrane limit 2 c / L_s, so rotations do not
-// control the step (see shell.cpp). element_dt[e] = L_s / c (shellTimeStep).
+// elements. It keeps the stiffest rotational mode, uniform rotation against the transverse
+// shear (omega^2 = kappa G t A / (rho t A^2 / 8) = 8 kappa G / (rho A) = 2.6 E / (rho A) at
+// nu = 0.3), below the membrane limit (2 / dt)^2 = 4 c^2 / L_s^2 = 4.4 E / (rho A) of a square
+// element, so rotations do not control the step (tested: random rotation rates on free meshes
+// at TSSFAC 0.95). element_dt[e] = L_s / c (shellTimeStep). bad_elem: an element with a
+// non-positive area or thickness.
 BlockStatus initializeShells(domain::ShellBlock& block, const domain::NodeVector& x0, double* slots,
                              std::vector<double>& element_dt);
 
@@ -60,7 +63,12 @@ BlockStatus initializeShells(domain::ShellBlock& block, const domain::NodeVector
 // dt = dt(n-1/2). Corner forces go to slots[3 (slot_offset + 8 e + a) + c] and corner moments
 // to slots[3 (slot_offset + 8 e + 4 + a) + c], global frame, in the hex kernel's convention:
 // the force the element exerts on the node (minus the internal force vector), so that the
-// solver takes a = (f + f_ext) / m. Also energies, erosion and the stable step.
+// solver takes a = (f + f_ext) / m and alpha = m_slots / I. A triangle's corner 3 slots are
+// zero (its node's share is at corner 2). Also energies (e_int, e_hg incremented), erosion
+// (active = 0, slots zero, counted in `eroded`), the stable step (dt_min, dt_elem) and
+// bad_elem (an element whose area is not positive).
+// Element type: a quadrilateral with n3 == n4 runs as the C0 triangle whatever elform says;
+// every other element runs as the Belytschko-Lin-Tsay quadrilateral (also under elform 4).
 BlockStatus computeShellForces(domain::ShellBlock& block, const domain::NodeVector& x,
                                const domain::NodeVector& v, const domain::NodeVector& w, double dt,
                                double* slots, std::size_t first, std::size_t last);

@@ -16,11 +16,13 @@
 //   xi_k = xi_k^trial / (1 + m_k dgamma),  m_1 = E / (3 (1 - nu)) + 2/3 Hk,  m_2 = 2 G + 2/3 Hk
 // (m_2 for both the (1, -1, 0) and the shear mode), and consistency
 //   g(dgamma) = q(dgamma) - sigma_y(eps_p + 2/3 dgamma q(dgamma)) = 0
-// is one scalar equation. q(dgamma) is convex and decreasing, so Newton's method from
-// dgamma = 0 approaches the root from below; a bracket [lo, hi] (hi from q <= q_trial /
+// is one scalar equation, solved by Newton's method from the root of the one-mode problem
+// (exact when xi^trial has a single mode). A bracket [lo, hi] (hi from q <= q_trial /
 // (1 + min(m) dgamma) and sigma_y >= its current value) guards the iteration where the
 // hardening curve bends the other way. Each point iterates until its own Newton step is below
-// 1e-13 of dgamma, so a point's result does not depend on the other points in the batch.
+// 1e-8 of dgamma (and applies it: the quadratic convergence leaves an error of order 1e-16) or
+// its residual is round-off (1e-15 q), so a point's result does not depend on the other points
+// in the batch.
 //
 // The thickness strain increment that keeps sigma_zz = 0 is the elastic part -nu/E (ds_xx +
 // ds_yy) plus the plastic part -(deps^p_xx + deps^p_yy) = -dgamma (xi_xx + xi_yy) / 3
@@ -46,7 +48,14 @@ double poissonRatio(const Moduli& m) {
 namespace {
 
 constexpr double kTwoThirds = 2.0 / 3.0;
-constexpr double kNewtonTolerance = 1e-13;
+// The iteration stops once a step is below this fraction of dgamma and applies that step: the
+// linear-hardening return converges cubically (Halley), the error left is then of order 1e-15
+// of dgamma, round-off; the curve return (Newton, quadratic) uses kNewtonTolerance.
+constexpr double kHalleyTolerance = 1e-5;
+constexpr double kNewtonTolerance = 1e-8;
+// A residual this small relative to q is round-off: the point is on the yield surface (the
+// relative step may then stay above kNewtonTolerance when dgamma itself is tiny).
+constexpr double kResidualFloor = 1e-15;
 // Points per chunk of the linear-hardening return (stack scratch).
 constexpr int kChunk = 64;
 
@@ -102,6 +111,32 @@ inline double cowperSymonds(double d0, double d1, double d2, double inv_dt, doub
   return 1.0 + std::pow(std::sqrt(kTwoThirds * ee) * inv_dt / C, inv_P);
 }
 
+// First Newton iterate: the exact root when the trial relative stress has one mode only
+// (q = q_trial / (1 + m dgamma)), with m the modes' mean weighted by their share of xi.P.xi;
+// sy the current flow stress and H its slope. Saves the 3-5 iterations of a start from zero.
+inline double firstGuess(double q, double sy, double H, double c1, double c2, double m1,
+                         double m2) {
+  // (q - sy) / (sy m + 2/3 H q) with m = (c1 m1 + c2 m2) / (c1 + c2): one division.
+  const double c = c1 + c2;
+  return (q - sy) * c / (sy * (c1 * m1 + c2 * m2) + kTwoThirds * H * q * c);
+}
+
+// 1 / (1 + m1 dgamma) and 1 / (1 + m2 dgamma) with one division.
+inline void inverseFactors(double m1, double m2, double dg, double& i1, double& i2) {
+  const double d1 = 1.0 + m1 * dg, d2 = 1.0 + m2 * dg;
+  const double inv = 1.0 / (d1 * d2);
+  i1 = d2 * inv;
+  i2 = d1 * inv;
+}
+
+// Newton's step for g = q - sigma_y: g / g' = g q / N, with (S = u1 m1 i1 + u2 m2 i2, so that
+// dq/dgamma = -3/2 S / q; H the flow stress slope; q2 = q^2)
+//   g' = dq - H 2/3 (q + dgamma dq) = N / q,  N = S (H dgamma - 3/2) - 2/3 H q^2,
+// which needs no division by q.
+inline double newtonDenominator(double S, double q2, double H, double dg) {
+  return S * (H * dg - 1.5) - kTwoThirds * H * q2;
+}
+
 // ---- elastic --------------------------------------------------------------------------------
 [[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] void elasticPlaneStress(
     Views a, int n, const ElasticConstants c) {
@@ -127,9 +162,31 @@ struct Trial {
   double t0[kChunk], t1[kChunk], t2[kChunk];  // trial stress
   double x1[kChunk], x2[kChunk], x3[kChunk];  // trial xi in the eigenbasis: xx+yy, xx-yy, xy
   double c1[kChunk], c2[kChunk];              // xi.P.xi = c1 / D1^2 + c2 / D2^2
-  double rf[kChunk], ep[kChunk];
+  double sy[kChunk], k[kChunk];               // flow stress sy + k dgamma q (see below)
   double dg[kChunk], lo[kChunk], hi[kChunk], live[kChunk];
 };
+
+// Linear hardening makes consistency a polynomial. With the flow stress at the end of the step
+// sigma_y = sy + Hi' 2/3 dgamma q (sy = rf (sigy + Hi eps_p), Hi' = rf Hi), q = sigma_y gives
+// q = sy / (1 - k dgamma), k = 2/3 Hi', and q^2 = 3/2 (c1 / D1^2 + c2 / D2^2) (D = 1 + m
+// dgamma) becomes, multiplied out,
+//   P(dgamma) = 3/2 (c1 D2^2 + c2 D1^2) K^2 - sy^2 D1^2 D2^2 = 0,   K = 1 - k dgamma,
+// a quartic whose root in [0, 1/k) is the return: P > 0 below it (q > sigma_y), P < 0 above.
+// Halley's method on P (cubic convergence) needs one division per step and no square root:
+//   next = dgamma - 2 P P' / (2 P'^2 - P P'').
+inline double halleyStep(double c1, double c2, double sy, double k, double m1, double m2, double dg,
+                         double& p) {
+  const double d1 = 1.0 + m1 * dg, d2 = 1.0 + m2 * dg, kk = 1.0 - k * dg;
+  const double a = 1.5 * (c1 * d2 * d2 + c2 * d1 * d1);
+  const double da = 3.0 * (c1 * m2 * d2 + c2 * m1 * d1);
+  const double dda = 3.0 * (c1 * m2 * m2 + c2 * m1 * m1);
+  const double s2 = sy * sy, e = d1 * d2, de = m1 * d2 + m2 * d1;
+  p = a * kk * kk - s2 * e * e;
+  const double dp = (da * kk - 2.0 * k * a) * kk - 2.0 * s2 * e * de;
+  const double ddp =
+      (dda * kk - 4.0 * k * da) * kk + 2.0 * k * k * a - 2.0 * s2 * (de * de + 2.0 * m1 * m2 * e);
+  return dg - 2.0 * p * dp / (2.0 * dp * dp - p * ddp);
+}
 
 template <bool kKinematic, bool kRate>
 [[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] void linearPlaneStress(
@@ -153,6 +210,8 @@ template <bool kKinematic, bool kRate>
     double* __restrict al1 = kKinematic ? a.a1 + base : nullptr;
     double* __restrict al2 = kKinematic ? a.a2 + base : nullptr;
     // Elastic predictor; yield check at the current plastic strain.
+    double plastic_points = 0.0;
+#pragma omp simd reduction(+ : plastic_points)
     for (int i = 0; i < m; ++i) {
       const double t0 = s0[i] + c.E1 * (d0[i] + c.nu * d1[i]);
       const double t1 = s1[i] + c.E1 * (d1[i] + c.nu * d0[i]);
@@ -176,52 +235,67 @@ template <bool kKinematic, bool kRate>
       w.c2[i] = c2;
       double rf = 1.0;
       if constexpr (kRate) rf = cowperSymonds(d0[i], d1[i], d2[i], inv_dt, P.C, P.inv_P);
-      w.rf[i] = rf;
-      const double e = ep[i];
-      w.ep[i] = e;
+      const double sy = rf * (P.sigy + P.Hi * ep[i]);
+      const double k = kTwoThirds * rf * P.Hi;
+      w.sy[i] = sy;
+      w.k[i] = k;
       const double q = std::sqrt(1.5 * (c1 + c2));
-      const double sy = rf * (P.sigy + P.Hi * e);
-      w.dg[i] = 0.0;
+      const double live = q > sy ? 1.0 : 0.0;
+      w.dg[i] = live != 0.0 ? firstGuess(q, sy, rf * P.Hi, c1, c2, m1, m2) : 0.0;
       w.lo[i] = 0.0;
       // Root bound: q(dgamma) <= q_trial / (1 + min(m) dgamma) and sigma_y >= sy (Hi >= 0).
       w.hi[i] = sy > 0.0 ? 2.0 * (q / sy - 1.0) * inv_m_min : huge;
-      w.live[i] = q > sy ? 1.0 : 0.0;
+      w.live[i] = live;
+      plastic_points += live;
     }
-    // Newton iterations; a converged point keeps its value (selects, no branch).
+    // An elastic chunk (the common case) takes the trial state as it is: the general path below
+    // gives the same bits for an elastic point (dgamma = 0 subtracts exact zeros).
+    if (plastic_points == 0.0) {
+      for (int i = 0; i < m; ++i) {
+        a.dzz[base + i] = -c.nu_E * ((w.t0[i] + w.t1[i]) - (s0[i] + s1[i]));
+        s0[i] = w.t0[i];
+        s1[i] = w.t1[i];
+        s2[i] = w.t2[i];
+      }
+      continue;
+    }
+    // Halley iterations on P; a converged point keeps its value (selects, no branch).
     for (int it = 0; it < kPlaneStressMaxIterations; ++it) {
       double any = 0.0;
+#pragma omp simd reduction(+ : any)
       for (int i = 0; i < m; ++i) {
         const double dg = w.dg[i];
-        const double i1 = 1.0 / (1.0 + m1 * dg), i2 = 1.0 / (1.0 + m2 * dg);
-        const double u1 = w.c1[i] * i1 * i1, u2 = w.c2[i] * i2 * i2;
-        const double q = std::sqrt(1.5 * (u1 + u2));
-        const double dq = -1.5 * (u1 * m1 * i1 + u2 * m2 * i2) / q;  // d q / d dgamma
-        const double H = w.rf[i] * P.Hi;
-        const double g = q - w.rf[i] * (P.sigy + P.Hi * (w.ep[i] + kTwoThirds * dg * q));
-        const double dg_dgamma = dq - H * kTwoThirds * (q + dg * dq);
-        const double lo = g > 0.0 ? dg : w.lo[i];
-        const double hi = g > 0.0 ? w.hi[i] : dg;
-        double next = dg - g / dg_dgamma;
-        next = (next > lo && next < hi) ? next : 0.5 * (lo + hi);
+        double p;
+        double next = halleyStep(w.c1[i], w.c2[i], w.sy[i], w.k[i], m1, m2, dg, p);
+        const double lo = p > 0.0 ? dg : w.lo[i];
+        const double hi = p > 0.0 ? w.hi[i] : dg;
+        // Bitwise & (no short circuit): the loop body stays branch-free. K = 1 - k dgamma must
+        // stay positive (beyond it the quartic has roots of no meaning).
+        next = ((next >= lo) & (next <= hi) & (w.k[i] * next < 1.0)) ? next : 0.5 * (lo + hi);
+        const double d12 = (1.0 + m1 * dg) * (1.0 + m2 * dg);
         const bool live = w.live[i] != 0.0;
-        const bool converged = !(std::abs(next - dg) > kNewtonTolerance * next);
+        const bool moving = (std::abs(next - dg) > kHalleyTolerance * next) &
+                            (std::abs(p) > kResidualFloor * w.sy[i] * w.sy[i] * d12 * d12);
         w.dg[i] = live ? next : dg;
         w.lo[i] = live ? lo : w.lo[i];
         w.hi[i] = live ? hi : w.hi[i];
-        const double still = live && !converged ? 1.0 : 0.0;
+        const double still = live & moving ? 1.0 : 0.0;
         w.live[i] = still;
         any += still;
       }
       if (any == 0.0) break;
     }
     // Returned stress, back stress, plastic strain and thickness strain.
+#pragma omp simd
     for (int i = 0; i < m; ++i) {
       const double dg = w.dg[i];
-      const double i1 = 1.0 / (1.0 + m1 * dg), i2 = 1.0 / (1.0 + m2 * dg);
+      double i1, i2;
+      inverseFactors(m1, m2, dg, i1, i2);
       const double y1 = w.x1[i] * i1, y2 = w.x2[i] * i2;
       const double xx = 0.5 * (y1 + y2), yy = 0.5 * (y1 - y2), xy = w.x3[i] * i2;
-      const double q = std::sqrt(1.5 * (w.c1[i] * i1 * i1 + w.c2[i] * i2 * i2));
       const bool plastic = dg > 0.0;
+      // q at the end of the step is the flow stress there, sy / (1 - k dgamma).
+      const double q = w.sy[i] / (1.0 - w.k[i] * dg);
       double n0 = xx, n1 = yy, n2 = xy;
       if constexpr (kKinematic) {
         const double ca = kTwoThirds * P.Hk * dg;
@@ -240,7 +314,7 @@ template <bool kKinematic, bool kRate>
       s0[i] = n0;
       s1[i] = n1;
       s2[i] = n2;
-      ep[i] = w.ep[i] + (plastic ? kTwoThirds * dg * q : 0.0);
+      ep[i] = ep[i] + (plastic ? kTwoThirds * dg * q : 0.0);
     }
   }
 }
@@ -315,30 +389,34 @@ void curvePlaneStress(PlaneStressPoints& b, const PiecewiseLinear& law) {
     const double q_trial = std::sqrt(1.5 * (c1 + c2));
     double dg = 0.0;
     if (q_trial > rf * h) {
+      dg = firstGuess(q_trial, rf * h, rf * slope, c1, c2, m1, m2);
       double lo = 0.0;
       double hi = rf * h > 0.0 ? 2.0 * (q_trial / (rf * h) - 1.0) / std::min(m1, m2)
                                : std::numeric_limits<double>::max();
       for (int it = 0; it < kPlaneStressMaxIterations; ++it) {
-        const double i1 = 1.0 / (1.0 + m1 * dg), i2 = 1.0 / (1.0 + m2 * dg);
+        double i1, i2;
+        inverseFactors(m1, m2, dg, i1, i2);
         const double u1 = c1 * i1 * i1, u2 = c2 * i2 * i2;
-        const double q = std::sqrt(1.5 * (u1 + u2));
-        const double dq = -1.5 * (u1 * m1 * i1 + u2 * m2 * i2) / q;
+        const double q2 = 1.5 * (u1 + u2);
+        const double q = std::sqrt(q2);
         curveAt(law.curve_eps, law.curve_sig, e + kTwoThirds * dg * q, h, slope);
         const double g = q - rf * h;
-        const double dg_dgamma = dq - rf * slope * kTwoThirds * (q + dg * dq);
         if (g > 0.0) {
           lo = dg;
         } else {
           hi = dg;
         }
-        double next = dg - g / dg_dgamma;
-        next = (next > lo && next < hi) ? next : 0.5 * (lo + hi);
-        const bool converged = !(std::abs(next - dg) > kNewtonTolerance * next);
+        double next =
+            dg - g * q / newtonDenominator(u1 * m1 * i1 + u2 * m2 * i2, q2, rf * slope, dg);
+        next = (next >= lo && next <= hi) ? next : 0.5 * (lo + hi);
+        const bool converged =
+            !(std::abs(next - dg) > kNewtonTolerance * next) || !(std::abs(g) > kResidualFloor * q);
         dg = next;
         if (converged) break;
       }
     }
-    const double i1 = 1.0 / (1.0 + m1 * dg), i2 = 1.0 / (1.0 + m2 * dg);
+    double i1, i2;
+    inverseFactors(m1, m2, dg, i1, i2);
     const double y1 = x1 * i1, y2 = x2 * i2;
     const bool plastic = dg > 0.0;
     const double n0 = plastic ? 0.5 * (y1 + y2) : t0;

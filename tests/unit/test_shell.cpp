@@ -16,6 +16,7 @@
 #include <cstring>
 #include <numeric>
 #include <random>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -482,26 +483,33 @@ void rotateRigidly(ShellBlock& blk, const NodeVector& x0, const double axis[3], 
 }
 
 // A rigid rotation of 90 degrees, about the normal and about a skew axis, leaves a distorted
-// patch unstressed and does no hourglass work, with viscous and stiffness hourglass control.
+// patch unstressed and does no hourglass work, with viscous and stiffness hourglass control,
+// as quadrilaterals and as C0 triangles (each quadrilateral split along a diagonal).
 TEST(ShellSpin, RigidRotationGivesNoStressAndNoHourglassEnergy) {
   const Plane pl = tiltedPlane();
   const Patch pt = distortedPatch(pl);
+  std::vector<Conn> triangles;
+  for (const Conn& c : pt.conn) {
+    triangles.push_back({c[0], c[1], c[2], c[2]});
+    triangles.push_back({c[0], c[2], c[3], c[3]});
+  }
   const double skew[3] = {1 / std::sqrt(3.0), -1 / std::sqrt(3.0), 1 / std::sqrt(3.0)};
-  for (int ihq : {1, 4})
-    for (const double* axis : {pl.n, skew}) {
-      ShellBlock blk = makeBlock(pt.conn, 0.1, bilinear024(0.25, 2.0), 5, ihq, 0.1);
-      std::vector<double> slots(3 * 8 * blk.size()), dt_e;
-      el::initializeShells(blk, pt.x0, slots.data(), dt_e);
-      rotateRigidly(blk, pt.x0, axis, 200, slots);
-      for (std::size_t e = 0; e < blk.size(); ++e) {
-        for (int p = 0; p < blk.nip; ++p)
-          for (int k = 0; k < 3; ++k) EXPECT_NEAR(blk.sigAt(k, p, e), 0.0, 1e-11) << ihq;
-        for (int k = 0; k < 2; ++k) EXPECT_NEAR(blk.shearAt(k, e), 0.0, 1e-11) << ihq;
-        EXPECT_NEAR(blk.e_hg[e], 0.0, 1e-22) << ihq;
-        EXPECT_NEAR(blk.e_int[e], 0.0, 1e-22) << ihq;
-        EXPECT_NEAR(blk.thick[e], 0.1, 1e-15);
+  for (const std::vector<Conn>* conn : {&pt.conn, &std::as_const(triangles)})
+    for (int ihq : {1, 4})
+      for (const double* axis : {pl.n, skew}) {
+        ShellBlock blk = makeBlock(*conn, 0.1, bilinear024(0.25, 2.0), 5, ihq, 0.1);
+        std::vector<double> slots(3 * 8 * blk.size()), dt_e;
+        el::initializeShells(blk, pt.x0, slots.data(), dt_e);
+        rotateRigidly(blk, pt.x0, axis, 200, slots);
+        for (std::size_t e = 0; e < blk.size(); ++e) {
+          for (int p = 0; p < blk.nip; ++p)
+            for (int k = 0; k < 3; ++k) EXPECT_NEAR(blk.sigAt(k, p, e), 0.0, 1e-11) << ihq;
+          for (int k = 0; k < 2; ++k) EXPECT_NEAR(blk.shearAt(k, e), 0.0, 1e-11) << ihq;
+          EXPECT_NEAR(blk.e_hg[e], 0.0, 1e-22) << ihq;
+          EXPECT_NEAR(blk.e_int[e], 0.0, 1e-22) << ihq;
+          EXPECT_NEAR(blk.thick[e], 0.1, 1e-15);
+        }
       }
-    }
 }
 
 // A warped element (corners 0.05 above and below its mean plane) turned rigidly about an

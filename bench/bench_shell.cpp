@@ -1,0 +1,174 @@
+// Shell kernel throughput: one Belytschko-Tsay pass (mid-step strains, NIP plane-stress points,
+// resultants, hourglass control, forces and moments, energies, stable step) plus the ordered
+// nodal gather of forces and moments, on a 400 x 250 plate (100k elements; 40 x 250 = 10k fits
+// in cache). Reports ns per element-cycle; run with OMP_NUM_THREADS=1 and =2 for the speed-up.
+//   build/release/bench/crumple_bench --benchmark_filter=Shell
+#include <benchmark/benchmark.h>
+#include <omp.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+#include "domain/blocks.hpp"
+#include "elements/shell.hpp"
+#include "materials/materials.hpp"
+
+namespace {
+
+using namespace crumple;
+
+struct Plate {
+  domain::ShellBlock blk;
+  domain::NodeVector x, v, w;
+  std::vector<double> slots, f, m;
+  // Gather plan: per node, its element corners in element order (as the solver's plan).
+  std::vector<int32_t> ptr, corner;
+};
+
+Plate plate(int nx, int ny, const materials::Law& law, int nip, int ihq) {
+  Plate p;
+  const auto node = [&](int i, int j) { return int32_t(i + (nx + 1) * j); };
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) {
+      // A mild in-plane distortion and warping so no shortcut of a flat grid applies.
+      p.x.push_back(i + 0.05 * std::sin(j));
+      p.x.push_back(j + 0.05 * std::cos(i));
+      p.x.push_back(0.02 * std::sin(i + 2 * j));
+    }
+  auto& b = p.blk;
+  b.law = law;
+  b.rho0 = 7.85e-6;
+  b.nip = nip;
+  b.ihq = ihq;
+  b.qm = 0.1;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      b.conn.push_back({node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)});
+  b.corner_thickness.assign(b.conn.size(), {0.1, 0.1, 0.1, 0.1});
+  b.elem.resize(b.conn.size());
+  std::iota(b.elem.begin(), b.elem.end(), 0);
+  b.elem_id.assign(b.elem.begin(), b.elem.end());
+  elements::resizeShellBlock(b, b.size());
+  p.slots.assign(3 * 8 * b.size(), 0.0);
+  std::vector<double> dt_e;
+  elements::initializeShells(b, p.x, p.slots.data(), dt_e);
+  // A stretching, shearing, bending velocity field large enough to yield the plastic law.
+  const std::size_t nn = p.x.size() / 3;
+  p.v.resize(3 * nn);
+  p.w.resize(3 * nn);
+  for (std::size_t k = 0; k < nn; ++k) {
+    const double* q = &p.x[3 * k];
+    p.v[3 * k] = 2.0 * q[1] - 1.0 * q[0];
+    p.v[3 * k + 1] = 0.5 * q[0];
+    p.v[3 * k + 2] = 0.1 * (q[0] + q[1]);
+    p.w[3 * k] = 0.3 * q[1];
+    p.w[3 * k + 1] = -0.2 * q[0];
+    p.w[3 * k + 2] = 0.0;
+  }
+  p.ptr.assign(nn + 1, 0);
+  for (const auto& c : b.conn)
+    for (int a = 0; a < 4; ++a) ++p.ptr[std::size_t(c[a]) + 1];
+  std::partial_sum(p.ptr.begin(), p.ptr.end(), p.ptr.begin());
+  p.corner.resize(std::size_t(p.ptr.back()));
+  std::vector<int32_t> fill(p.ptr.begin(), p.ptr.end() - 1);
+  for (std::size_t e = 0; e < b.size(); ++e)
+    for (int a = 0; a < 4; ++a)
+      p.corner[std::size_t(fill[std::size_t(b.conn[e][a])]++)] = int32_t(8 * e + a);
+  p.f.resize(3 * nn);
+  p.m.resize(3 * nn);
+  return p;
+}
+
+void runShell(benchmark::State& state, const materials::Law& law, int ihq, int warmup = 0) {
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  Plate p = plate(static_cast<int>(state.range(1)), 250, law, 5, ihq);
+  const double dt = 1e-5;
+  const std::size_t nn = p.x.size() / 3;
+  const bool gather = state.range(2) != 0;
+  // Cycles before timing: load the points up to (and past) yield.
+  for (int k = 0; k < warmup; ++k)
+    elements::computeShellForces(p.blk, p.x, p.v, p.w, dt, p.slots.data());
+  for (auto _ : state) {
+    elements::computeShellForces(p.blk, p.x, p.v, p.w, dt, p.slots.data());
+    if (gather) {
+#pragma omp parallel for schedule(static)
+      for (std::size_t n = 0; n < nn; ++n) {
+        double sf[3] = {0, 0, 0}, sm[3] = {0, 0, 0};
+        for (int32_t k = p.ptr[n]; k < p.ptr[n + 1]; ++k) {
+          const double* fs = &p.slots[3 * std::size_t(p.corner[std::size_t(k)])];
+          const double* ms = fs + 12;  // the moment slot of the same corner
+          for (int c = 0; c < 3; ++c) {
+            sf[c] += fs[c];
+            sm[c] += ms[c];
+          }
+        }
+        for (int c = 0; c < 3; ++c) {
+          p.f[3 * n + c] = sf[c];
+          p.m[3 * n + c] = sm[c];
+        }
+      }
+    }
+    benchmark::DoNotOptimize(p.f.data());
+    benchmark::DoNotOptimize(p.slots.data());
+  }
+  const double elems = double(p.blk.size());
+  state.counters["ns_per_element_cycle"] =
+      benchmark::Counter(elems * double(state.iterations()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["elements"] = elems;
+}
+
+materials::Law plastic024() {
+  materials::PiecewiseLinear law;
+  law.moduli = materials::moduliFromYoung(210.0, 0.3);
+  law.sigy = 0.001;  // yields at once under the imposed strain rate
+  law.etan = 1.0;
+  return law;
+}
+
+// Crash-like plasticity: SIGY 0.3 GPa, and strain increments of about 1e-5 a step (strain
+// rates of about 1000/s), so that every point, once past yield, overshoots the yield surface by
+// about 1 % a step. Timed after 300 cycles, when all points are plastic.
+void ShellPlastic024Crash(benchmark::State& s) {
+  materials::PiecewiseLinear law;
+  law.moduli = materials::moduliFromYoung(210.0, 0.3);
+  law.sigy = 0.3;
+  law.etan = 1.0;
+  runShell(s, law, 1, 300);
+}
+void ShellElastic(benchmark::State& s) {
+  runShell(s, materials::Elastic{materials::moduliFromYoung(210.0, 0.3)}, 1);
+}
+void ShellPlastic024Viscous(benchmark::State& s) {
+  runShell(s, plastic024(), 1);
+}
+void ShellPlastic024Stiffness(benchmark::State& s) {
+  runShell(s, plastic024(), 4);
+}
+
+// Args: threads, elements along x (400 x 250 = 100k; 40 x 250 = 10k, in cache), gather (1) or
+// the kernel alone (0).
+void shellArgs(benchmark::internal::Benchmark* b) {
+  b->Args({1, 400, 1})
+      ->Args({2, 400, 1})
+      ->Args({1, 400, 0})
+      ->Args({1, 40, 1})
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime();
+}
+BENCHMARK(ShellPlastic024Viscous)->Apply(shellArgs);
+BENCHMARK(ShellPlastic024Stiffness)->Apply(shellArgs);
+BENCHMARK(ShellPlastic024Crash)->Apply(shellArgs);
+BENCHMARK(ShellElastic)->Apply(shellArgs);
+// A fixed amount of work, for instruction counts under callgrind:
+//   valgrind --tool=callgrind --toggle-collect='*shellBlockForces*' crumple_bench
+//     --benchmark_filter=ShellCounted   -> Ir / (10 iterations x 10,000 elements)
+void ShellCounted(benchmark::State& s) {
+  ShellPlastic024Viscous(s);
+}
+BENCHMARK(ShellCounted)->Args({1, 40, 0})->Iterations(10)->Unit(benchmark::kMillisecond);
+
+}  // namespace
