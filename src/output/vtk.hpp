@@ -19,8 +19,8 @@ struct MeshView {
   std::size_t num_points = 0;
   const double* points = nullptr;  // packed xyz, 3*num_points (current coordinates)
   std::size_t num_cells = 0;
-  const int32_t* hex_nodes = nullptr;     // 8*num_cells indices into points (stride 8)
-  const uint8_t* cell_sizes = nullptr;    // nodes per cell (8, 4 or 2); nullptr: all 8
+  const int32_t* hex_nodes = nullptr;   // 8*num_cells indices into points (stride 8)
+  const uint8_t* cell_sizes = nullptr;  // nodes per cell (8, 4 or 2); nullptr: all 8
 };
 
 enum class Association { Point, Cell };

@@ -54,8 +54,9 @@ std::vector<int32_t> elementWeights(const model::Model& model, const Options& op
         part.hourglass != model::kNone && std::size_t(part.hourglass) < model.hourglass.size()
             ? model.hourglass[std::size_t(part.hourglass)].ihq
             : model.controls.hourglass_ihq;
-    const bool rigid = mat != model::kNone && std::size_t(mat) < model.materials.size() &&
-                       std::holds_alternative<model::RigidLaw>(model.materials[std::size_t(mat)].law);
+    const bool rigid =
+        mat != model::kNone && std::size_t(mat) < model.materials.size() &&
+        std::holds_alternative<model::RigidLaw>(model.materials[std::size_t(mat)].law);
     const bool plastic = part_weight[p] == kWeightSolidPlastic;
     if (rigid) {
       part_weight[p] = kWeightRigid;
