@@ -139,20 +139,22 @@ void Solver::initialize() {
     }
     keepMin(st.dt_min, st.dt_elem, dt_min, dt_elem);
   }
-  // Shells and beams: never mass-scaled here, so kept apart from the solids' minimum.
+  // Beams and springs: never mass-scaled, so kept apart from the minimum of solids and shells.
   double dt_other = 1e300;
   int64_t dt_other_elem = -1;
   std::vector<double> dts;
-  for (auto& blk : sd_.shell_blocks) {
+  std::vector<std::vector<double>> shell_dt(sd_.shell_blocks.size());
+  for (std::size_t ib = 0; ib < sd_.shell_blocks.size(); ++ib) {
+    auto& blk = sd_.shell_blocks[ib];
     elements::resizeShellBlock(blk, blk.size());
-    const auto st = elements::initializeShells(blk, sd_.x0, sd_.slots.data(), dts);
+    const auto st = elements::initializeShells(blk, sd_.x0, sd_.slots.data(), shell_dt[ib]);
+    if (blk.rigid) std::fill(shell_dt[ib].begin(), shell_dt[ib].end(), 0.0);
     if (st.bad_elem >= 0)
       throw util::NumericalError(fmt::format(
           "shell element {} (part {}) has zero area: check its nodes",
           sd_.elementId(sd_.globalElement(model::Family::Shell, st.bad_elem)), blk.part_id));
     if (!blk.rigid && st.dt_elem >= 0)
-      keepMin(st.dt_min, sd_.globalElement(model::Family::Shell, st.dt_elem), dt_other,
-              dt_other_elem);
+      keepMin(st.dt_min, sd_.globalElement(model::Family::Shell, st.dt_elem), dt_min, dt_elem);
   }
   for (auto& blk : sd_.beam_blocks) {
     elements::resizeBeamBlock(blk, blk.size());
@@ -202,9 +204,26 @@ void Solver::initialize() {
   if (ctl.dt2ms != 0.0) {
     const double target = std::abs(ctl.dt2ms);
     bool any = false;
-    // Only solids are scaled: the other blocks' slots must add nothing to the added mass.
-    for (const auto& blk : sd_.shell_blocks) zeroSlots(blk, sd_.slots);
+    // Solids and shells are scaled; beams and springs add nothing to the added mass.
     for (const auto& blk : sd_.beam_blocks) zeroSlots(blk, sd_.slots);
+    // A shell's corner masses and rotary inertias (still in its slots from initialisation)
+    // grow by the same factor, so that its rotational modes slow down with the translational
+    // ones (the kernel's inertia is proportional to the corner mass).
+    for (std::size_t ib = 0; ib < sd_.shell_blocks.size(); ++ib) {
+      auto& blk = sd_.shell_blocks[ib];
+      blk.mass_scale.assign(blk.paddedSize(), 1.0);
+      for (std::size_t e = 0; e < blk.size(); ++e) {
+        double* slot = sd_.slots.data() + 3 * (blk.slot_offset + 8 * e);
+        const double step = ctl.tssfac * shell_dt[ib][e];
+        double factor = 0.0;
+        if (step > 0.0 && step < target) {
+          blk.mass_scale[e] = (target / step) * (target / step);
+          factor = blk.mass_scale[e] - 1.0;
+          any = true;
+        }
+        for (int a = 0; a < 8; ++a) slot[3 * a] *= factor;
+      }
+    }
     for (const auto& blk : sd_.discrete_blocks) zeroSlots(blk, sd_.slots);
     for (std::size_t ib = 0; ib < sd_.solid_blocks.size(); ++ib) {
       auto& blk = sd_.solid_blocks[ib];
@@ -225,6 +244,11 @@ void Solver::initialize() {
       exchangeSharedSlots();
       gather(sd_.internal, sd_.mass_added, 1);
       for (std::size_t n = 0; n < sd_.numNodes(); ++n) sd_.mass[n] += sd_.mass_added[n];
+      if (sd_.rotations) {
+        std::vector<double> inertia_added(sd_.numNodes(), 0.0);
+        gather(sd_.rotational, inertia_added, 1);
+        for (std::size_t n = 0; n < sd_.numNodes(); ++n) sd_.inertia[n] += inertia_added[n];
+      }
       dt_min = 1e300;
       dt_elem = -1;
       for (std::size_t ib = 0; ib < sd_.solid_blocks.size(); ++ib) {
@@ -232,6 +256,13 @@ void Solver::initialize() {
         if (blk.rigid) continue;
         for (std::size_t e = 0; e < blk.size(); ++e)
           keepMin(element_dt[ib][e] * std::sqrt(blk.mass_scale[e]), blk.elem[e], dt_min, dt_elem);
+      }
+      for (std::size_t ib = 0; ib < sd_.shell_blocks.size(); ++ib) {
+        const auto& blk = sd_.shell_blocks[ib];
+        if (blk.rigid) continue;
+        for (std::size_t e = 0; e < blk.size(); ++e)
+          keepMin(shell_dt[ib][e] * std::sqrt(blk.mass_scale[e]),
+                  sd_.globalElement(model::Family::Shell, blk.elem[e]), dt_min, dt_elem);
       }
     }
   }

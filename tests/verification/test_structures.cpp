@@ -263,6 +263,32 @@ TEST(VerificationShell, PlasticHingeCollapseLoad) {
   EXPECT_LT(sim->solver->energies().hourglass, 0.1 * sim->solver->energies().internal);
 }
 
+// Mass scaling of shells (*CONTROL_TIMESTEP DT2MS < 0): every element of the uniform strip is
+// below |DT2MS|, so each gets its density scaled by (|DT2MS| / (TSSFAC dt_e))^2; the added
+// mass is exactly M (scale - 1), the step is |DT2MS|, and the strip vibrates at the frequency
+// of the heavier strip (rotary inertia scaled with the mass, so the run stays stable).
+TEST(VerificationShell, MassScalingSlowsTheStripAsAHeavierOne) {
+  const double target = 2e-3;
+  const double c = std::sqrt(kE / kRho), dt_e = (kL / 20) / c;  // L_s = A / longest side
+  const double scale = std::pow(target / (0.9 * dt_e), 2);
+  const double period = cantileverPeriod() * std::sqrt(scale);
+  auto sim = Simulation::fromText(
+      "shell_mass_scaling",
+      stripDeck(20, 2, 2,
+                termination(1.7 * period) +
+                    fmt::format("*CONTROL_TIMESTEP\n       0.0       0.9         0       0.0"
+                                "{:10.4g}\n",
+                                -target),
+                0.05));
+  const double mass = kRho * kT * kB * kL;
+  EXPECT_NEAR(sim->solver->totalMass(), mass, 1e-12 * mass);
+  EXPECT_NEAR(sim->solver->addedMass() / (mass * (scale - 1.0)), 1.0, 1e-9);
+  EXPECT_NEAR(sim->solver->initialDt(), target, 1e-12);
+  const double measured = measuredPeriod(*sim, 21);
+  EXPECT_NEAR(measured / period, 1.0, 0.02) << "measured " << measured << " ms, theory " << period;
+  EXPECT_NEAR(sim->solver->energies().ratio, 1.0, 0.01);
+}
+
 class VerificationBeam : public ::testing::TestWithParam<int> {};
 
 TEST_P(VerificationBeam, CantileverFirstFrequency) {
