@@ -44,12 +44,14 @@ std::string modelSummary(const model::Model& m, const solver::Solver& s) {
   for (std::size_t g = 0; g < m.numElements(); ++g)
     ++per_part[{m.elementPart(g), int(m.element(g).first)}];
   static constexpr const char* kPlural[] = {"solids", "shells", "beams", "discretes"};
+  static constexpr const char* kSingular[] = {"solid", "shell", "beam", "discrete"};
   for (const auto& [key, count] : per_part) {
     const auto& part = m.parts[static_cast<std::size_t>(key.first)];
     const auto& mat = m.materials[static_cast<std::size_t>(part.material)];
     out += fmt::format("  part {}{}: {} {}, {} {} (density {:g})\n", part.id,
                        part.title.empty() ? "" : " \"" + part.title + "\"", count,
-                       kPlural[key.second], model::materialKeyword(mat.law), mat.id, mat.rho);
+                       count == 1 ? kSingular[key.second] : kPlural[key.second],
+                       model::materialKeyword(mat.law), mat.id, mat.rho);
   }
   out += fmt::format("total mass: {:.6g}\n", s.totalMass());
   if (s.addedMass() > 0.0)
