@@ -80,7 +80,9 @@ struct ShellBlock : BlockBase {
   //   alpha: 3 nip fields, back stress in plane-stress form (kinematic laws), else empty
   //   hgq:   5 fields, hourglass resistances of the stiffness forms (membrane x, y, bending
   //          x, y, transverse), else empty
-  std::vector<double> sig, eps_p, alpha, hgq;
+  //   drill: 4 fields, the corners' drilling moments (about the element normal) of the
+  //          drilling-rotation constraint (src/elements/shell.cpp, "Drilling rotations")
+  std::vector<double> sig, eps_p, alpha, hgq, drill;
   static std::size_t blocked(int fields, int field, std::size_t e) {
     return (e / kShellBatch) * std::size_t(fields) * kShellBatch +
            std::size_t(field) * kShellBatch + e % kShellBatch;
@@ -101,6 +103,8 @@ struct ShellBlock : BlockBase {
     return alpha[blocked(3 * nip, 3 * point + k, e)];
   }
   double& hgqAt(int mode, std::size_t e) { return hgq[blocked(5, mode, e)]; }
+  double& drillAt(int corner, std::size_t e) { return drill[blocked(4, corner, e)]; }
+  double drillAt(int corner, std::size_t e) const { return drill[blocked(4, corner, e)]; }
   bool isTriangle(std::size_t e) const { return conn[e][2] == conn[e][3]; }
   std::size_t paddedSize() const {
     return (elem.size() + kShellBatch - 1) / kShellBatch * kShellBatch;

@@ -22,7 +22,7 @@
 // A (N.d_m + M.kappa + Q.gamma) with respect to the corner velocities:
 //   fx_a = A (B1 Nxx + B2 Nxy)        mx_a = A (-B2 Myy - B1 Mxy - Qy / 4)
 //   fy_a = A (B2 Nyy + B1 Nxy)        my_a = A ( B1 Mxx + B2 Mxy + Qx / 4)
-//   fz_a = A (B1 Qx + B2 Qy)          (no drilling moment)
+//   fz_a = A (B1 Qx + B2 Qy)          (the drilling moment: below)
 // (BLT's nodal forces, with M defined here as +sum z s; LS-DYNA writes m = -sum z s), evaluated
 // with the geometry and frame at x(n). The slots get minus these, turned to the global frame
 // (the force on the node, as the hex kernel writes f_a = -sigma.B_a).
@@ -50,6 +50,47 @@
 //   q_m1 = gamma.vx + (gamma.z) B1.vz,  q_m2 = gamma.vy + (gamma.z) B2.vz,
 // and the transpose adds (gamma.z)(Q_m1 B1_a + Q_m2 B2_a) to fz_a, which restores moment
 // balance. (The membrane strain is unaffected: B.h = 0.)
+//
+// Drilling rotations. A node carries three rotation rates and an element uses only their
+// in-plane components (tx, ty), so the component along the element normal (the drilling
+// rotation) has neither stiffness nor load where the elements at a node are coplanar. Where two
+// neighbours meet at an angle s (any bent or curved mesh), a rotation rate w of the node about
+// their mean normal turns each of them about its own in-plane axis at +-w s / 2: with the
+// rotation rates of the other corners this makes patterns that strain neither element (no
+// curvature, no transverse shear) and move only the bending hourglass modes (gamma.tx,
+// gamma.ty). The corner moments about the two elements' in-plane axes then have a component
+// of order s along the mean normal wherever they differ, which one-point elements do at their
+// corners (their moments are constant per element; in the strip below, bent about its width
+// with nu = 0.3 and clamped, M_yy and Q_y alternate in sign from element to element, Q_y at
+// 40% of Q_x, from the first millimetres of deflection). A stiffness hourglass form (IHQ 4, 5)
+// resists those patterns, with a stiffness of order s^2; the viscous forms (IHQ 1-3) cannot
+// hold a steady moment, so the node spins up about the normal under a steady torque, and the
+// bending hourglass modes it drives take the element's moments out (the structure unloads).
+// Measured on the 100 x 10 x 2 mm strip of tests/verification/test_structures.cpp, 20 x 2
+// elements, tip driven down 17 mm in 30 ms, IHQ 1: elastic (nu = 0.3), the edge nodes spun at
+// 3.8 rad/ms about the normal (in-plane rates below 0.06), rotational kinetic energy 0.096
+// against 0.525 internal, clamp reaction 10% below the nu = 0 strip; perfectly plastic, the
+// reaction fell from 0.98 P_c to 0.33 P_c with hourglass energy 0.135 against 0.059 internal.
+// Neither the time step (TSSFAC 0.4) nor the hourglass coefficient (QM 1e-6 to 0.3) changed
+// it; with nu = 0 nothing spun.
+// The constraint (Hughes & Brezzi 1989, "On drilling degrees of freedom", CMAME 72:105-121,
+// as a penalty; the fictitious drilling stiffness of flat shell elements, Kanok-Nukulchai
+// 1979, IJNME 14:179-200) ties each corner's rotation about the normal to the membrane's
+// spin, with a resistance accumulated like the stiffness hourglass forms (in the element
+// frame, midpoint energy):
+//   r_a = w_a.e3 - (dvy/dx - dvx/dy) / 2,   m_a += k_d r_a dt,   k_d = 0.01 E t^3 / 12
+// (a hundredth of the plate's bending rigidity per corner: in the strip above the results do
+// not change between 0.001 and 0.1; it adds at most k_d / I_a = 0.04 E / (rho A) to a squared
+// rotational frequency, with the t^2 / 12 floor of the inertia, a hundredth of the step's
+// limit 4.4 E / (rho A)). The corner moments m_a act about e3, and the reaction of their sum
+// on the membrane spin gives the in-plane forces (the transpose of the rate)
+//   fx_a += B2_a sum(m) / 2,   fy_a -= B1_a sum(m) / 2,
+// so that the element's forces and moments stay self-equilibrated. A rigid motion has r = 0 (a
+// spin about the normal turns the nodes and the membrane alike). The constraint's work counts
+// as hourglass energy (an artificial stabilisation, like hourglass work). With it the strip
+// above, elastic, bends as the nu = 0 strip does (internal energy 0.646 against 0.525), and
+// the plastic hinge holds 1.006 P_c with IHQ 1 (1.055 with IHQ 4, 1.067 before). Triangles have
+// none (they have no hourglass modes for the drilling rotation to drive).
 //
 // C0 triangle (Belytschko, Stolarski & Carpenter 1984): the same frame, membrane (constant
 // strain: the quadrilateral formulas with corners 2 and 3 on one node give the CST gradients)
@@ -89,6 +130,9 @@ using Lanes = double[kShellBatch];
 using NodalShell = double[3][4][kShellBatch];  // [component][corner][lane]
 
 constexpr double kH[4] = {1.0, -1.0, 1.0, -1.0};  // hourglass base vector
+// Drilling stiffness of a corner as a fraction of the plate's bending rigidity E t^3 / 12
+// (see the file comment, "Drilling rotations").
+constexpr double kDrillStiffness = 0.01;
 constexpr int kMaxPoints = kMaxShellPoints * kShellBatch;
 
 // The corotational frame of one element and the one-point gradient operator in it. Built
@@ -316,6 +360,7 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
   const double hg_dt = stiffness_hg ? dt : 0.0, hg_visc = stiffness_hg ? 0.0 : inv_c;
   const double hg_old_weight = stiffness_hg ? 0.5 : 0.0, hg_new_weight = stiffness_hg ? 0.5 : 1.0;
   const double bwc = blk.bwc ? 1.0 : 0.0;
+  const double drill_coef = kDrillStiffness * mc.E * (1.0 / 12.0);
   const bool thickness_update = blk.thickness_update;
   const bool scaled_mass = !blk.mass_scale.empty();
   const bool can_fail = failureStrainOf(law) > 0.0;
@@ -358,17 +403,18 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
         for (int a = 0; a < 4; ++a)
           for (int l = 0; l < B; ++l) s.xm[c][a][l] = s.x[c][a][l] - 0.5 * dt * s.v[c][a][l];
       Lanes dxm, dym, gxy, kx, ky, kxy, gxz, gyz, area_mid;
-      double qdot[5][B];
+      double qdot[5][B], rdrill[4][B];
       for (int l = 0; l < B; ++l) {
         const LaneFrame f = frameAt(s.xm, l);
-        double vx[4], vy[4], vz[4], tx[4], ty[4];
+        double vx[4], vy[4], vz[4], tx[4], ty[4], tz[4];
         onAxis(f, 0, s.v, l, vx);
         onAxis(f, 1, s.v, l, vy);
         onAxis(f, 2, s.v, l, vz);
         onAxis(f, 0, s.w, l, tx);
         onAxis(f, 1, s.w, l, ty);
+        onAxis(f, 2, s.w, l, tz);
         double sxx = 0, syy = 0, sxy = 0, cx = 0, cy = 0, cxy = 0, sz1 = 0, sz2 = 0, stx = 0,
-               sty = 0;
+               sty = 0, spin = 0;
         for (int a = 0; a < 4; ++a) {
           sxx += f.b1[a] * vx[a];
           syy += f.b2[a] * vy[a];
@@ -380,7 +426,11 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
           sz2 += f.b2[a] * vz[a];
           stx += tx[a];
           sty += ty[a];
+          spin += f.b1[a] * vy[a] - f.b2[a] * vx[a];
         }
+        // Drilling rates: each corner's rotation rate about the normal less the membrane's
+        // spin (dvy/dx - dvx/dy) / 2.
+        for (int a = 0; a < 4; ++a) rdrill[a][l] = tz[a] - 0.5 * spin;
         dxm[l] = sxx;
         dym[l] = syy;
         gxy[l] = sxy;
@@ -529,9 +579,14 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
       }
       // The stored resistances copied to the stack: the loop below then has no pointer that
       // might alias its stores, and GCC vectorises it.
-      double hg_new[5][B], hg_prev[5][B];
+      double hg_new[5][B], hg_prev[5][B], drill_new[4][B], drill_prev[4][B];
       for (int mode = 0; mode < 5; ++mode)
         for (int l = 0; l < B; ++l) hg_prev[mode][l] = hg_old[mode * B + l];
+      {
+        const double* drill_old = blk.drill.data() + first * 4;
+        for (int a = 0; a < 4; ++a)
+          for (int l = 0; l < B; ++l) drill_prev[a][l] = drill_old[a * B + l];
+      }
       for (int l = 0; l < B; ++l) {
         const LaneFrame f = frameAt(s.x, l);
         const double A = f.area;
@@ -576,10 +631,21 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
           hg_new[mode][l] = hf[mode];
           e_hg += (hg_old_weight * old + hg_new_weight * hf[mode]) * qdot[mode][l] * dt;
         }
+        // Drilling moments (none for triangles), accumulated like the stiffness hourglass
+        // resistances; the membrane spin's share goes to the in-plane forces.
+        const double kd = quad * drill_coef * t * t * t;
+        double mz[4], drill_sum = 0.0;
+        for (int a = 0; a < 4; ++a) {
+          const double old = drill_prev[a][l];
+          mz[a] = old + kd * rdrill[a][l] * dt;
+          drill_new[a][l] = mz[a];
+          drill_sum += mz[a];
+          e_hg += 0.5 * (old + mz[a]) * rdrill[a][l] * dt;
+        }
         de_hg[l] = e_hg;
         for (int a = 0; a < 4; ++a) {
-          fx[a] += hf[0] * g[a];
-          fy[a] += hf[1] * g[a];
+          fx[a] += hf[0] * g[a] + 0.5 * f.b2[a] * drill_sum;
+          fy[a] += hf[1] * g[a] - 0.5 * f.b1[a] * drill_sum;
           fz[a] += hf[4] * g[a] + gz * (hf[0] * f.b1[a] + hf[1] * f.b2[a]);
           mx[a] += hf[2] * g[a];
           my[a] += hf[3] * g[a];
@@ -588,7 +654,7 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
         for (int c = 0; c < 3; ++c)
           for (int a = 0; a < 4; ++a) {
             s.fg[c][a][l] = -(f.e[0][c] * fx[a] + f.e[1][c] * fy[a] + f.e[2][c] * fz[a]);
-            s.mg[c][a][l] = -(f.e[0][c] * mx[a] + f.e[1][c] * my[a]);
+            s.mg[c][a][l] = -(f.e[0][c] * mx[a] + f.e[1][c] * my[a] + f.e[2][c] * mz[a]);
           }
       }
       if (any_tri) {
@@ -642,6 +708,12 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
           for (int l = 0; l < B; ++l)
             hgq_batch[mode * B + l] = alive[l] != 0.0 ? hg_new[mode][l] : 0.0;
       }
+      {
+        double* drill_batch = blk.drill.data() + first * 4;
+        for (int a = 0; a < 4; ++a)
+          for (int l = 0; l < B; ++l)
+            drill_batch[a * B + l] = alive[l] != 0.0 ? drill_new[a][l] : 0.0;
+      }
       for (int l = 0; l < B; ++l) {
         const std::size_t e = first + static_cast<std::size_t>(l);
         blk.thick[e] = alive[l] != 0.0 ? t_new[l] : blk.thick[e];
@@ -663,6 +735,7 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
           for (int k = 0; k < fields; ++k) blk.sig[domain::ShellBlock::blocked(fields, k, e)] = 0.0;
           if (stiffness_hg)
             for (int mode = 0; mode < 5; ++mode) blk.hgqAt(mode, e) = 0.0;
+          for (int a = 0; a < 4; ++a) blk.drillAt(a, e) = 0.0;
           std::fill(slot, slot + 24, 0.0);
           ++st.eroded;
           continue;
@@ -790,6 +863,7 @@ void resizeShellBlock(domain::ShellBlock& blk, std::size_t n) {
   } else {
     blk.hgq.clear();
   }
+  blk.drill.assign(padded * 4, 0.0);
 }
 
 double shellTimeStep(double area, double longest_side, bool triangle, double wave_speed) {

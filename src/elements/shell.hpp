@@ -10,7 +10,10 @@
 // rigid rotation changes none of them. Velocity strains at the mid-surface with one-point
 // quadrature in the plane, NIP points through the thickness with a plane-stress law
 // (materials/plane_stress.hpp), elastic transverse shear with the shear factor, resultants to
-// corner forces and moments. Theory notes in src/elements/shell.cpp.
+// corner forces and moments, hourglass control and a drilling-rotation constraint (a small
+// stiffness tying each corner's rotation about the normal to the membrane's spin, without
+// which a bent mesh with viscous hourglass control spins its nodes about the normal). Theory
+// notes in src/elements/shell.cpp.
 //
 // Kernels work on batches of kShellBatch elements held as structure of arrays, like the hex
 // kernel (elements/hex8.hpp): lanes beyond the batch's count replicate its last element.
@@ -35,9 +38,9 @@ void throughThicknessRule(int nip, bool lobatto, std::vector<double>& zeta,
                           std::vector<double>& weight);
 
 // Allocates the per-element state of n elements, padded to whole batches: thickness, areas,
-// energies, flags, stresses; plastic strain and back stress only if the law has them;
-// hourglass resistances only for the stiffness forms (IHQ 4, 5). Sets the through-thickness
-// rule from nip and lobatto. Everything starts at zero and active.
+// energies, flags, stresses, drilling moments; plastic strain and back stress only if the law
+// has them; hourglass resistances only for the stiffness forms (IHQ 4, 5). Sets the
+// through-thickness rule from nip and lobatto. Everything starts at zero and active.
 void resizeShellBlock(domain::ShellBlock& block, std::size_t n);
 
 // Thickness (mean of the corner thicknesses), area and stable step of every element; writes

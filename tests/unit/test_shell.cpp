@@ -382,9 +382,10 @@ Patch distortedPatch(const Plane& pl) {
 
 class ShellPatch : public ::testing::TestWithParam<int> {};
 
-// Membrane patch test: a linear in-plane velocity field (stretch, shear and spin) gives the
+// Membrane patch test: a linear in-plane velocity field (stretch, shear and spin, the nodes
+// turning about the normal with the field's spin, as the drilling constraint asks) gives the
 // same plane stress in every element of a distorted patch, exactly the plane-stress Hooke
-// value; no hourglass work; the interior node is in equilibrium.
+// value; no hourglass or drilling work; the interior node is in equilibrium.
 TEST_P(ShellPatch, LinearFieldGivesUniformStressAndBalancedInteriorNode) {
   const Plane pl = tiltedPlane();
   const Patch pt = distortedPatch(pl);
@@ -395,11 +396,13 @@ TEST_P(ShellPatch, LinearFieldGivesUniformStressAndBalancedInteriorNode) {
   const double G2[2][2] = {{1e-3, 4e-4}, {-1e-4, -3e-4}};
   const double dt = 1e-2;
   NodeVector v(27, 0.0), w(27, 0.0), x(27);
+  const double spin = 0.5 * (G2[1][0] - G2[0][1]);  // about n = p x q
   for (int k = 0; k < 9; ++k)
     for (int c = 0; c < 3; ++c) {
       const double vu = G2[0][0] * pt.uv[k][0] + G2[0][1] * pt.uv[k][1];
       const double vv = G2[1][0] * pt.uv[k][0] + G2[1][1] * pt.uv[k][1];
       v[3 * k + c] = vu * pl.p[c] + vv * pl.q[c];
+      w[3 * k + c] = spin * pl.n[c];
     }
   // x(n) = x0 + dt/2 v: the mid-step geometry is x0.
   for (int i = 0; i < 27; ++i) x[i] = pt.x0[i] + 0.5 * dt * v[i];
@@ -432,6 +435,7 @@ TEST_P(ShellPatch, LinearFieldGivesUniformStressAndBalancedInteriorNode) {
   }
   // Forces of the stress state at x0 (no motion): the interior node 4 is in equilibrium.
   std::fill(v.begin(), v.end(), 0.0);
+  std::fill(w.begin(), w.end(), 0.0);
   el::computeShellForces(blk, pt.x0, v, w, dt, slots.data());
   std::vector<double> f, m;
   gather(blk, slots, 9, f, m);
@@ -531,6 +535,64 @@ TEST(ShellSpin, WarpingCorrectionRemovesRigidRotationHourglassWork) {
   }
   EXPECT_GT(e_hg[0], 1e-6);
   EXPECT_NEAR(e_hg[1], 0.0, 1e-22);
+}
+
+// Drilling constraint: one corner of a flat quadrilateral (in a tilted plane) turning about
+// the normal while the membrane stands still is resisted at that corner by the stiffness
+// k_d = 0.01 E t^3 / 12, m = -k_d theta (theta the angle turned), with the drilling work
+// 1/2 k_d theta^2 in the hourglass energy; the in-plane forces from the membrane spin's
+// reaction make the element's forces and moments self-equilibrated (no net force, no net
+// moment about the origin). Without the constraint a node of a bent mesh spins freely about
+// the normal under the torque of its elements (src/elements/shell.cpp, "Drilling rotations";
+// tests/verification/test_structures.cpp, PlasticHingeHoldsWithViscousHourglass). A
+// triangle has none.
+TEST(ShellDrill, CornerTurningAboutTheNormalIsResistedAndSelfEquilibrated) {
+  const Plane pl = tiltedPlane();
+  const double uv[4][2] = {{0, 0}, {1, 0}, {1.1, 0.9}, {0, 1}};
+  NodeVector x0;
+  for (const auto& p : uv)
+    for (int c = 0; c < 3; ++c) x0.push_back(p[0] * pl.p[c] + p[1] * pl.q[c]);
+  const double t = 0.1, rate = 0.3, dt = 1e-3;
+  const int steps = 50;
+  const double kd = 0.01 * kE * t * t * t / 12.0, theta = rate * dt * steps;
+  for (bool triangle : {false, true}) {
+    const Conn conn = triangle ? Conn{0, 1, 2, 2} : Conn{0, 1, 2, 3};
+    for (int ihq : {1, 4}) {
+      ShellBlock blk = makeBlock({conn}, t, elasticLaw(), 3, ihq, 0.1);
+      std::vector<double> slots(3 * 8), dt_e;
+      el::initializeShells(blk, x0, slots.data(), dt_e);
+      NodeVector v(12, 0.0), w(12, 0.0);
+      for (int c = 0; c < 3; ++c) w[c] = rate * pl.n[c];  // corner 0 turns about the normal
+      for (int n = 0; n < steps; ++n) el::computeShellForces(blk, x0, v, w, dt, slots.data());
+      std::vector<double> f, m;
+      gather(blk, slots, 4, f, m);
+      double m0n = 0.0;
+      for (int c = 0; c < 3; ++c) m0n += m[c] * pl.n[c];
+      // Net force and net moment about the origin (x cross f plus the corner moments).
+      double net_f[3] = {0, 0, 0}, net_m[3] = {0, 0, 0};
+      for (int k = 0; k < 4; ++k) {
+        const double* xk = &x0[3 * k];
+        const double* fk = &f[3 * k];
+        const double cross[3] = {xk[1] * fk[2] - xk[2] * fk[1], xk[2] * fk[0] - xk[0] * fk[2],
+                                 xk[0] * fk[1] - xk[1] * fk[0]};
+        for (int c = 0; c < 3; ++c) {
+          net_f[c] += fk[c];
+          net_m[c] += cross[c] + m[3 * k + c];
+        }
+      }
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(net_f[c], 0.0, 1e-12 * kd * theta) << triangle << " " << ihq;
+        EXPECT_NEAR(net_m[c], 0.0, 1e-12 * kd * theta) << triangle << " " << ihq;
+      }
+      if (triangle) {
+        EXPECT_EQ(m0n, 0.0) << ihq;
+        EXPECT_EQ(blk.e_hg[0], 0.0) << ihq;
+      } else {
+        EXPECT_NEAR(m0n, -kd * theta, 1e-12 * kd * theta) << ihq;
+        EXPECT_NEAR(blk.e_hg[0], 0.5 * kd * theta * theta, 1e-12 * kd * theta * theta) << ihq;
+      }
+    }
+  }
 }
 
 class ShellBending : public ::testing::TestWithParam<std::pair<int, bool>> {};

@@ -4,7 +4,10 @@
 // spring-mass oscillator.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <vector>
 
 #include "harness.hpp"
@@ -205,15 +208,15 @@ TEST(VerificationShell, TriangleCantileverFirstFrequency) {
 // plastic stress block to 0.9449 M_p (sum of w_i |z_i| over the points), which is the discrete
 // model's capacity in uniaxial stress; the measured plateau of the clamp reaction is averaged
 // over the last third of the run.
-TEST(VerificationShell, PlasticHingeCollapseLoad) {
-  const double sigy = 0.25, t = 2.0;
-  const double pc = sigy * kB * t * t / 4.0 / kL;  // kN
-  // Stiffness hourglass control (IHQ 4), as analysts use on plastic shells: with the viscous
-  // form the hinge's hourglass modes grow once the section is fully plastic (documented in
-  // docs/theory.md, "Shells").
+constexpr double kHingeSigy = 0.25, kHingeT = 2.0;
+constexpr double kHingePc = kHingeSigy * kB * kHingeT * kHingeT / 4.0 / kL;  // kN
+
+// The hinge deck; `hourglass` is a *CONTROL_HOURGLASS card, or empty for the default (IHQ 1,
+// viscous).
+std::string plasticHingeDeck(const std::string& hourglass) {
   std::string deck =
       stripDeck(20, 2, 2,
-                termination(30.0) + "*CONTROL_HOURGLASS\n         4      0.05\n" +
+                termination(30.0) + hourglass +
                     "*DEFINE_CURVE\n         2\n                 0.0                 0.0\n"
                     "                 2.0                 1.0\n"
                     "              1000.0                 1.0\n"
@@ -226,21 +229,36 @@ TEST(VerificationShell, PlasticHingeCollapseLoad) {
   // Perfectly plastic steel, 2 mm thick, 5 points through the thickness.
   const auto replace = [&](const std::string& from, const std::string& to) {
     const auto at = deck.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    deck.replace(at, from.size(), to);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) deck.replace(at, from.size(), to);
   };
   replace(
       fmt::format("*MAT_ELASTIC\n         1{:10.4g}{:10.4g}       0.0\n", kRho, kE),
       fmt::format("*MAT_PLASTIC_KINEMATIC\n         1{:10.4g}{:10.4g}       0.3{:10.4g}       0.0"
                   "       1.0\n",
-                  kRho, kE, sigy));
+                  kRho, kE, kHingeSigy));
   replace(fmt::format("{:10.4g}         3\n", 5.0 / 6.0),
           fmt::format("{:10.4g}         5\n", 5.0 / 6.0));
   replace(fmt::format("{:10.4g}{:10.4g}{:10.4g}{:10.4g}\n", kT, kT, kT, kT),
-          fmt::format("{:10.4g}{:10.4g}{:10.4g}{:10.4g}\n", t, t, t, t));
-  auto sim = Simulation::fromText("shell_plastic_hinge", deck);
-  double sum = 0.0, time = 0.0;
+          fmt::format("{:10.4g}{:10.4g}{:10.4g}{:10.4g}\n", kHingeT, kHingeT, kHingeT, kHingeT));
+  return deck;
+}
+
+struct HingeRun {
+  double plateau = 0.0;   // mean clamp reaction over 20-30 ms, kN
+  double tip = 0.0;       // final z of the middle tip node
+  double max_drop = 0.0;  // largest fall of the internal energy below its running maximum
+  crumple::solver::Energies energies;
+};
+
+HingeRun runPlasticHinge(const std::string& name, const std::string& deck) {
+  auto sim = Simulation::fromText(name, deck);
+  HingeRun r;
+  double sum = 0.0, time = 0.0, peak = 0.0;
   sim->run([&](const crumple::solver::Solver& s) {
+    const double internal = s.energies().internal;
+    peak = std::max(peak, internal);
+    r.max_drop = std::max(r.max_drop, peak - internal);
     if (s.time() < 20.0) return;
     // The clamped nodes' internal force balances the tip load (quasi-static).
     double reaction = 0.0;
@@ -248,19 +266,109 @@ TEST(VerificationShell, PlasticHingeCollapseLoad) {
     sum += reaction * s.dt();
     time += s.dt();
   });
-  const double plateau = std::abs(sum / time);
-  // Between the uniaxial-stress capacity (a beam) and the plane-strain one (2 / sqrt(3) higher:
-  // the strip's plastic flow across its width is only partly free on a 10 x 2 mm section
-  // meshed two elements wide), each with 3% for the dynamics of the slow drive.
-  const double lower = 0.9449 * pc, upper = 2.0 / std::sqrt(3.0) * 0.9449 * pc;
-  EXPECT_GT(plateau, 0.97 * lower) << "plateau " << plateau << " kN, P_c " << pc;
-  EXPECT_LT(plateau, 1.03 * upper) << "plateau " << plateau << " kN, P_c " << pc;
-  std::printf("[ figure ] plastic hinge plateau %.4g kN = %.3f P_c (band %.3f-%.3f)\n", plateau,
-              plateau / pc, lower / pc, upper / pc);
-  // The tip went 17 mm down: about three times the elastic deflection at P_c, so the hinge
-  // formed; and it did not unload (a perfectly plastic hinge keeps its moment).
-  EXPECT_LT(sim->x(42, 2), -17.0);
-  EXPECT_LT(sim->solver->energies().hourglass, 0.1 * sim->solver->energies().internal);
+  r.plateau = std::abs(sum / time);
+  r.tip = sim->x(42, 2);
+  r.energies = sim->solver->energies();
+  return r;
+}
+
+// Between the uniaxial-stress capacity (a beam) and the plane-strain one (2 / sqrt(3) higher:
+// the strip's plastic flow across its width is only partly free on a 10 x 2 mm section
+// meshed two elements wide), each with 3% for the dynamics of the slow drive. The tip went
+// 17 mm down: about three times the elastic deflection at P_c, so the hinge formed.
+void expectHingeHolds(const HingeRun& r) {
+  const double lower = 0.9449 * kHingePc, upper = 2.0 / std::sqrt(3.0) * 0.9449 * kHingePc;
+  EXPECT_GT(r.plateau, 0.97 * lower) << "plateau " << r.plateau << " kN, P_c " << kHingePc;
+  EXPECT_LT(r.plateau, 1.03 * upper) << "plateau " << r.plateau << " kN, P_c " << kHingePc;
+  std::printf("[ figure ] %s plastic hinge plateau %.4g kN = %.3f P_c (band %.3f-%.3f)\n",
+              ::testing::UnitTest::GetInstance()->current_test_info()->name(), r.plateau,
+              r.plateau / kHingePc, lower / kHingePc, upper / kHingePc);
+  std::printf(
+      "[ figure ] %s energies: internal %.4g, hourglass %.3g, kinetic %.3g, largest "
+      "fall of the internal energy %.3g\n",
+      ::testing::UnitTest::GetInstance()->current_test_info()->name(), r.energies.internal,
+      r.energies.hourglass, r.energies.kinetic, r.max_drop);
+  EXPECT_LT(r.tip, -17.0);
+  EXPECT_LT(r.energies.hourglass, 0.1 * r.energies.internal);
+  // A perfectly plastic hinge keeps its moment: the structure does not unload (the internal
+  // energy only grows, to the elastic swings of the slow drive), and the drive's kinetic
+  // energy (1/6 m v^2 = 0.001) is all there is.
+  EXPECT_LT(r.max_drop, 0.01 * r.energies.internal);
+  EXPECT_LT(r.energies.kinetic, 0.01 * r.energies.internal);
+  EXPECT_NEAR(r.energies.ratio, 1.0, 0.01);
+}
+
+// Stiffness hourglass control (IHQ 4), as analysts use on plastic shells.
+TEST(VerificationShell, PlasticHingeCollapseLoad) {
+  expectHingeHolds(runPlasticHinge("shell_plastic_hinge",
+                                   plasticHingeDeck("*CONTROL_HOURGLASS\n         4      0.05\n")));
+}
+
+// The default viscous hourglass control (IHQ 1). Without the drilling-rotation constraint
+// (src/elements/shell.cpp, "Drilling rotations") the edge nodes spun about the normal once the
+// strip had bent: the clamp reaction fell from 0.98 P_c to 0.33 P_c, the internal energy from
+// 0.124 to 0.059 (elastic unloading) while the kinetic energy rose to 0.095 and the hourglass
+// energy to 0.135.
+TEST(VerificationShell, PlasticHingeHoldsWithViscousHourglass) {
+  expectHingeHolds(runPlasticHinge("shell_plastic_hinge_ihq1", plasticHingeDeck("")));
+}
+
+// A clamped square plate (100 x 100 x 1 mm, 20 x 20 Belytschko-Tsay shells, NIP 5, *MAT_003
+// with sigma_y 0.25 GPa, ETAN 1 GPa) struck by a velocity of 30 mm/ms in its first-mode shape
+// sin(pi x / L) sin(pi y / L), with the default viscous hourglass control: in 2 ms the plate
+// absorbs nearly all of the kinetic energy in plastic work, and kinetic + internal +
+// hourglass energy stays within 1% of the initial kinetic energy throughout (measured: at most
+// +0.53%, also with IHQ 4 and before the drilling constraint; a step-like velocity patch swings
+// by a few percent at TSSFAC 0.9, falling with dt^2: the half-step velocities' kinetic energy
+// of the mesh-scale modes, not the shell).
+TEST(VerificationShell, PlasticPlateImpactEnergyBalance) {
+  const int n = 20;
+  const double L = 100.0, t = 1.0, v0 = 30.0;
+  std::string s = "*KEYWORD\n*TITLE\nplate impact\n" + termination(2.0);
+  s += fmt::format(
+      "*MAT_PLASTIC_KINEMATIC\n         1{:10.4g}{:10.4g}       0.3      0.25       1.0       "
+      "1.0\n",
+      kRho, kE);
+  s += fmt::format(
+      "*SECTION_SHELL\n         1         2{:10.4g}         5\n{:10.4g}{:10.4g}{:10.4g}{:10.4g}\n",
+      5.0 / 6.0, t, t, t, t);
+  s += "*PART\nplate\n         1         1         1\n*NODE\n";
+  auto id = [&](int i, int j) { return 1 + i + (n + 1) * j; };
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      s += fmt::format("{:8d}{:16.9g}{:16.9g}{:16.9g}\n", id(i, j), L * i / n, L * j / n, 0.0);
+  s += "*ELEMENT_SHELL\n";
+  int e = 1;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      s += fmt::format("{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}\n", e++, 1, id(i, j), id(i + 1, j),
+                       id(i + 1, j + 1), id(i, j + 1));
+  s += "*BOUNDARY_SPC_NODE\n";
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      if (i == 0 || i == n || j == 0 || j == n)
+        s += fmt::format(
+            "{:10d}         0         1         1         1         1         1         1\n",
+            id(i, j));
+  s += "*INITIAL_VELOCITY_NODE\n";
+  for (int j = 1; j < n; ++j)
+    for (int i = 1; i < n; ++i)
+      s += fmt::format("{:10d}{:10.4g}{:10.4g}{:10.5f}\n", id(i, j), 0.0, 0.0,
+                       -v0 * std::sin(M_PI * i / n) * std::sin(M_PI * j / n));
+  s += "*END\n";
+  auto sim = Simulation::fromText("shell_plate_impact", s);
+  double worst = 0.0;
+  sim->run([&](const crumple::solver::Solver& solver) {
+    worst = std::max(worst, std::abs(solver.energies().ratio - 1.0));
+  });
+  const auto en = sim->solver->energies();
+  EXPECT_LT(worst, 0.01);
+  EXPECT_GT(en.internal, 0.9 * en.initial);
+  EXPECT_LT(en.hourglass, 0.05 * en.internal);
+  std::printf(
+      "[ figure ] plastic plate impact: largest |total / initial - 1| %.4f; internal %.4g, "
+      "hourglass %.3g, kinetic %.3g of initial %.4g\n",
+      worst, en.internal, en.hourglass, en.kinetic, en.initial);
 }
 
 // Mass scaling of shells (*CONTROL_TIMESTEP DT2MS < 0): every element of the uniform strip is
