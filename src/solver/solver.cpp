@@ -204,42 +204,31 @@ void Solver::initialize() {
   if (ctl.dt2ms != 0.0) {
     const double target = std::abs(ctl.dt2ms);
     bool any = false;
-    // Solids and shells are scaled; beams and springs add nothing to the added mass.
+    // Solids and shells are scaled; beams and springs add nothing to the added mass. The
+    // slots still hold each corner's lumped mass (and a shell corner's rotary inertia) from
+    // initialisation: they become the added mass, (scale - 1) times that. A shell's inertia
+    // grows with its mass, so that its rotational modes slow down with the translational ones.
     for (const auto& blk : sd_.beam_blocks) zeroSlots(blk, sd_.slots);
-    // A shell's corner masses and rotary inertias (still in its slots from initialisation)
-    // grow by the same factor, so that its rotational modes slow down with the translational
-    // ones (the kernel's inertia is proportional to the corner mass).
-    for (std::size_t ib = 0; ib < sd_.shell_blocks.size(); ++ib) {
-      auto& blk = sd_.shell_blocks[ib];
-      blk.mass_scale.assign(blk.paddedSize(), 1.0);
-      for (std::size_t e = 0; e < blk.size(); ++e) {
-        double* slot = sd_.slots.data() + 3 * (blk.slot_offset + 8 * e);
-        const double step = ctl.tssfac * shell_dt[ib][e];
-        double factor = 0.0;
-        if (step > 0.0 && step < target) {
-          blk.mass_scale[e] = (target / step) * (target / step);
-          factor = blk.mass_scale[e] - 1.0;
-          any = true;
-        }
-        for (int a = 0; a < 8; ++a) slot[3 * a] *= factor;
-      }
-    }
     for (const auto& blk : sd_.discrete_blocks) zeroSlots(blk, sd_.slots);
-    for (std::size_t ib = 0; ib < sd_.solid_blocks.size(); ++ib) {
-      auto& blk = sd_.solid_blocks[ib];
-      blk.mass_scale.assign(blk.paddedSize(), 1.0);
-      for (std::size_t e = 0; e < blk.size(); ++e) {
-        double* slot = sd_.slots.data() + 3 * (blk.slot_offset + 8 * e);
-        const double step = ctl.tssfac * element_dt[ib][e];
-        double extra = 0.0;
-        if (step > 0.0 && step < target) {
-          blk.mass_scale[e] = (target / step) * (target / step);
-          extra = blk.rho0 * blk.vol0[e] / 8.0 * (blk.mass_scale[e] - 1.0);
-          any = true;
+    auto scaleMasses = [&](auto& blocks, const std::vector<std::vector<double>>& steps) {
+      for (std::size_t ib = 0; ib < blocks.size(); ++ib) {
+        auto& blk = blocks[ib];
+        blk.mass_scale.assign(blk.paddedSize(), 1.0);
+        for (std::size_t e = 0; e < blk.size(); ++e) {
+          double* slot = sd_.slots.data() + 3 * (blk.slot_offset + 8 * e);
+          const double step = ctl.tssfac * steps[ib][e];
+          double factor = 0.0;
+          if (step > 0.0 && step < target) {
+            blk.mass_scale[e] = (target / step) * (target / step);
+            factor = blk.mass_scale[e] - 1.0;
+            any = true;
+          }
+          for (int a = 0; a < 8; ++a) slot[3 * a] *= factor;
         }
-        for (int a = 0; a < 8; ++a) slot[3 * a] = extra;
       }
-    }
+    };
+    scaleMasses(sd_.solid_blocks, element_dt);
+    scaleMasses(sd_.shell_blocks, shell_dt);
     if (comm_.anyAll(any)) {
       exchangeSharedSlots();
       gather(sd_.internal, sd_.mass_added, 1);
@@ -251,19 +240,18 @@ void Solver::initialize() {
       }
       dt_min = 1e300;
       dt_elem = -1;
-      for (std::size_t ib = 0; ib < sd_.solid_blocks.size(); ++ib) {
-        const auto& blk = sd_.solid_blocks[ib];
-        if (blk.rigid) continue;
-        for (std::size_t e = 0; e < blk.size(); ++e)
-          keepMin(element_dt[ib][e] * std::sqrt(blk.mass_scale[e]), blk.elem[e], dt_min, dt_elem);
-      }
-      for (std::size_t ib = 0; ib < sd_.shell_blocks.size(); ++ib) {
-        const auto& blk = sd_.shell_blocks[ib];
-        if (blk.rigid) continue;
-        for (std::size_t e = 0; e < blk.size(); ++e)
-          keepMin(shell_dt[ib][e] * std::sqrt(blk.mass_scale[e]),
-                  sd_.globalElement(model::Family::Shell, blk.elem[e]), dt_min, dt_elem);
-      }
+      auto scaledSteps = [&](const auto& blocks, const std::vector<std::vector<double>>& steps,
+                             model::Family family) {
+        for (std::size_t ib = 0; ib < blocks.size(); ++ib) {
+          const auto& blk = blocks[ib];
+          if (blk.rigid) continue;
+          for (std::size_t e = 0; e < blk.size(); ++e)
+            keepMin(steps[ib][e] * std::sqrt(blk.mass_scale[e]),
+                    sd_.globalElement(family, blk.elem[e]), dt_min, dt_elem);
+        }
+      };
+      scaledSteps(sd_.solid_blocks, element_dt, model::Family::Solid);
+      scaledSteps(sd_.shell_blocks, shell_dt, model::Family::Shell);
     }
   }
   keepMin(dt_other, dt_other_elem, dt_min, dt_elem);
