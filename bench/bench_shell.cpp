@@ -1,8 +1,9 @@
-// Shell kernel throughput: one Belytschko-Tsay pass (mid-step strains, NIP plane-stress points,
+// Shell kernel throughput: one Belytschko-Tsay pass (mid-step strains, 5 plane-stress points,
 // resultants, hourglass control, forces and moments, energies, stable step) plus the ordered
-// nodal gather of forces and moments, on a 400 x 250 plate (100k elements; 40 x 250 = 10k fits
-// in cache). Reports ns per element-cycle; run with OMP_NUM_THREADS=1 and =2 for the speed-up.
-//   build/release/bench/crumple_bench --benchmark_filter=Shell
+// nodal gather of forces and moments, on a mildly distorted and warped 400 x 250 plate (100k
+// elements; 40 x 250 = 10k fits in cache). Reports ns per element-cycle. The thread count is
+// the first argument (omp_set_num_threads), so one run gives 1 and 2 threads:
+//   build/release/bench/crumple_bench --benchmark_filter=Shell --benchmark_min_time=1
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
