@@ -317,12 +317,12 @@ std::vector<int32_t> wallNodes(Context& ctx, const Card& c) {
     if (take[n] && (!box || box->contains(m.nodes.x[n]))) nodes.push_back(static_cast<int32_t>(n));
   return nodes;
 }
-}  // namespace
 
-void readRigidWallPlanar(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
-  const auto& spec = keywordSpec("*RIGIDWALL_PLANAR");
-  CardCursor cur(kw, ctx.deck);
-  RigidWallPlanar w;
+// The cards every rigid wall starts with: the _ID heading, card 1 (slave nodes) and card 2
+// (tail, head, FRIC). Returns card 1 for the reader's own fields.
+const Card& readWallStart(Context& ctx, CardCursor& cur, const deck::KeywordSpec& spec,
+                          const KeywordOptions& opts, RigidWallPlanar& w,
+                          std::string_view head_problem) {
   ++ctx.rigid_wall_count;
   w.id = ctx.rigid_wall_count;
   if (opts.has("ID")) {
@@ -335,24 +335,34 @@ void readRigidWallPlanar(Context& ctx, const deck::Keyword& kw, const KeywordOpt
   w.nodes = wallNodes(ctx, c);
   w.tail = {c2.real("XT"), c2.real("YT"), c2.real("ZT")};
   w.normal = unit(sub({c2.real("XH"), c2.real("YH"), c2.real("ZH")}, w.tail));
-  if (dot(w.normal, w.normal) == 0.0)
-    c2.fail("XH", "the head of the normal coincides with its tail");
+  if (dot(w.normal, w.normal) == 0.0) c2.fail("XH", head_problem);
   w.fric = c2.real("FRIC");
   if (w.fric < 0) c2.fail("FRIC", "must not be negative");
-  if (opts.has("FINITE")) {
-    const Card& f = cur.read(spec.card("finite card"));
-    Vec3 l = sub({f.real("XHEV"), f.real("YHEV"), f.real("ZHEV")}, w.tail);
-    // The edge lies in the wall: keep the part of l normal to the wall normal.
-    const double ln = dot(l, w.normal);
-    l = unit({l[0] - ln * w.normal[0], l[1] - ln * w.normal[1], l[2] - ln * w.normal[2]});
-    if (dot(l, l) == 0.0) f.fail("XHEV", "the edge vector l is zero or along the normal");
-    w.finite = true;
-    w.l_axis = l;
-    w.lenl = f.real("LENL");
-    w.lenm = f.real("LENM");
-    if (w.lenl <= 0) f.fail("LENL", "must be positive");
-    if (w.lenm <= 0) f.fail("LENM", "must be positive");
-  }
+  return c;
+}
+
+// A finite rectangle in the wall: edge l from XHEV (its part normal to the wall normal), LENL
+// along l and LENM along n x l (the _FINITE card of planar walls, card 3 of flat and prism).
+void readFiniteEdge(const Card& f, RigidWallPlanar& w) {
+  Vec3 l = sub({f.real("XHEV"), f.real("YHEV"), f.real("ZHEV")}, w.tail);
+  const double ln = dot(l, w.normal);
+  l = unit({l[0] - ln * w.normal[0], l[1] - ln * w.normal[1], l[2] - ln * w.normal[2]});
+  if (dot(l, l) == 0.0) f.fail("XHEV", "the edge vector l is zero or along the normal");
+  w.finite = true;
+  w.l_axis = l;
+  w.lenl = f.real("LENL");
+  w.lenm = f.real("LENM");
+  if (w.lenl <= 0) f.fail("LENL", "must be positive");
+  if (w.lenm <= 0) f.fail("LENM", "must be positive");
+}
+}  // namespace
+
+void readRigidWallPlanar(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*RIGIDWALL_PLANAR");
+  CardCursor cur(kw, ctx.deck);
+  RigidWallPlanar w;
+  readWallStart(ctx, cur, spec, opts, w, "the head of the normal coincides with its tail");
+  if (opts.has("FINITE")) readFiniteEdge(cur.read(spec.card("finite card")), w);
   if (opts.has("MOVING")) {
     const Card& mv = cur.read(spec.card("moving card"));
     w.moving = true;
@@ -378,36 +388,13 @@ void readRigidWallGeometric(Context& ctx, const deck::Keyword& kw, const Keyword
   const auto& spec = keywordSpec("*RIGIDWALL_GEOMETRIC_" + shape_word);
   CardCursor cur(kw, ctx.deck);
   RigidWallPlanar w;
-  ++ctx.rigid_wall_count;
-  w.id = ctx.rigid_wall_count;
-  if (opts.has("ID")) {
-    const Card& id = cur.read(spec.card("id card"));
-    if (!id.blank("ID")) w.id = id.integer("ID");
-  }
-  const Card& c = cur.read(spec.card("card 1"));
-  const Card& c2 = cur.read(spec.card("card 2"));
+  const Card& c = readWallStart(ctx, cur, spec, opts, w, "the head coincides with the tail");
   const Card& c3 = cur.read(spec.card("card 3"));
-  w.where = c.where();
-  w.nodes = wallNodes(ctx, c);
   if (c.real("BIRTH") != 0 || c.real("DEATH") != 1e20)
     ctx.reject(c, c.real("BIRTH") != 0 ? "BIRTH" : "DEATH",
                "birth and death times of geometric walls are not supported");
-  w.tail = {c2.real("XT"), c2.real("YT"), c2.real("ZT")};
-  w.normal = unit(sub({c2.real("XH"), c2.real("YH"), c2.real("ZH")}, w.tail));
-  if (dot(w.normal, w.normal) == 0.0) c2.fail("XH", "the head coincides with the tail");
-  w.fric = c2.real("FRIC");
-  if (w.fric < 0) c2.fail("FRIC", "must not be negative");
   if (shape_word == "FLAT" || shape_word == "PRISM") {
-    Vec3 l = sub({c3.real("XHEV"), c3.real("YHEV"), c3.real("ZHEV")}, w.tail);
-    const double ln = dot(l, w.normal);
-    l = unit({l[0] - ln * w.normal[0], l[1] - ln * w.normal[1], l[2] - ln * w.normal[2]});
-    if (dot(l, l) == 0.0) c3.fail("XHEV", "the edge vector l is zero or along the normal");
-    w.finite = true;
-    w.l_axis = l;
-    w.lenl = c3.real("LENL");
-    w.lenm = c3.real("LENM");
-    if (w.lenl <= 0) c3.fail("LENL", "must be positive");
-    if (w.lenm <= 0) c3.fail("LENM", "must be positive");
+    readFiniteEdge(c3, w);
     if (shape_word == "PRISM") {
       w.shape = Shape::Prism;
       w.lenp = c3.real("LENP");

@@ -305,55 +305,49 @@ void readMatRigid(Context& ctx, const deck::Keyword& kw, const KeywordOptions& o
 }
 
 namespace {
-// Spring and damper materials have no density: a Material with RO = 0.
-Material springMaterial(Context& ctx, const Card& c, std::string t) {
+// Spring and damper materials (*MAT_S01, S02, S04): card 1 only, no density (RO = 0). `law`
+// reads and checks the card's own fields and returns the law.
+template <class ReadLaw>
+void readSpringMaterial(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts,
+                        std::string_view keyword, ReadLaw&& law) {
+  const auto& spec = keywordSpec(keyword);
+  CardCursor cur(kw, ctx.deck);
+  std::string t = readTitleCard(cur, spec, opts);
+  const Card& c = cur.read(spec.card("card 1"));
   Material m;
   m.id = positiveId(c, "MID");
   ctx.define(Kind::Material, m.id, c, "MID");
   m.title = std::move(t);
   m.where = c.where();
-  return m;
+  m.law = law(c);
+  ctx.model.materials.push_back(std::move(m));
+  ctx.collect(cur);
 }
 }  // namespace
 
 void readMatSpringElastic(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
-  const auto& spec = keywordSpec("*MAT_SPRING_ELASTIC");
-  CardCursor cur(kw, ctx.deck);
-  std::string t = readTitleCard(cur, spec, opts);
-  const Card& c = cur.read(spec.card("card 1"));
-  Material m = springMaterial(ctx, c, std::move(t));
-  SpringElasticLaw law{c.real("K")};
-  if (!(law.k > 0)) c.fail("K", "the spring stiffness must be positive");
-  m.law = law;
-  ctx.model.materials.push_back(std::move(m));
-  ctx.collect(cur);
+  readSpringMaterial(ctx, kw, opts, "*MAT_SPRING_ELASTIC", [](const Card& c) {
+    SpringElasticLaw law{c.real("K")};
+    if (!(law.k > 0)) c.fail("K", "the spring stiffness must be positive");
+    return law;
+  });
 }
 
 void readMatDamperViscous(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
-  const auto& spec = keywordSpec("*MAT_DAMPER_VISCOUS");
-  CardCursor cur(kw, ctx.deck);
-  std::string t = readTitleCard(cur, spec, opts);
-  const Card& c = cur.read(spec.card("card 1"));
-  Material m = springMaterial(ctx, c, std::move(t));
-  DamperViscousLaw law{c.real("DC")};
-  if (!(law.dc > 0)) c.fail("DC", "the damping constant must be positive");
-  m.law = law;
-  ctx.model.materials.push_back(std::move(m));
-  ctx.collect(cur);
+  readSpringMaterial(ctx, kw, opts, "*MAT_DAMPER_VISCOUS", [](const Card& c) {
+    DamperViscousLaw law{c.real("DC")};
+    if (!(law.dc > 0)) c.fail("DC", "the damping constant must be positive");
+    return law;
+  });
 }
 
 void readMatSpringNonlinear(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
-  const auto& spec = keywordSpec("*MAT_SPRING_NONLINEAR_ELASTIC");
-  CardCursor cur(kw, ctx.deck);
-  std::string t = readTitleCard(cur, spec, opts);
-  const Card& c = cur.read(spec.card("card 1"));
-  Material m = springMaterial(ctx, c, std::move(t));
-  SpringNonlinearLaw law{ctx.curve(c, "LCD", c.integer("LCD"))};
-  if (c.integer("LCR") != 0)
-    ctx.reject(c, "LCR", "rate-dependent spring scaling (LCR) is not supported");
-  m.law = law;
-  ctx.model.materials.push_back(std::move(m));
-  ctx.collect(cur);
+  readSpringMaterial(ctx, kw, opts, "*MAT_SPRING_NONLINEAR_ELASTIC", [&](const Card& c) {
+    SpringNonlinearLaw law{ctx.curve(c, "LCD", c.integer("LCD"))};
+    if (c.integer("LCR") != 0)
+      ctx.reject(c, "LCR", "rate-dependent spring scaling (LCR) is not supported");
+    return law;
+  });
 }
 
 void readControlShell(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
