@@ -43,46 +43,37 @@ std::vector<int32_t> elementWeights(const model::Model& model, const Options& op
   // rate effects, a pow) to the elastic update; stiffness hourglass control (IHQ 4-5) adds its
   // hourglass stress update. A part without a material (only in a tolerant `check` read)
   // counts as elastic.
-  std::vector<int32_t> part_weight(model.parts.size(), kWeightSolidElastic);
-  for (std::size_t p = 0; p < model.parts.size(); ++p) {
-    const auto& part = model.parts[p];
-    const int32_t mat = part.material;
-    if (mat != model::kNone && std::size_t(mat) < model.materials.size() &&
-        !std::holds_alternative<model::ElasticLaw>(model.materials[std::size_t(mat)].law))
-      part_weight[p] = kWeightSolidPlastic;
+  auto partWeight = [&](const model::Part& part) -> int32_t {
+    const model::MaterialLaw* law =
+        part.material != model::kNone && std::size_t(part.material) < model.materials.size()
+            ? &model.materials[std::size_t(part.material)].law
+            : nullptr;
+    if (law && std::holds_alternative<model::RigidLaw>(*law)) return kWeightRigid;
+    const bool plastic = law && (std::holds_alternative<model::PlasticKinematicLaw>(*law) ||
+                                 std::holds_alternative<model::PiecewiseLinearLaw>(*law));
+    switch (part.section_kind) {
+      case model::SectionKind::Shell:
+        return plastic ? kWeightShellPlastic : kWeightShellElastic;
+      case model::SectionKind::Beam:
+        return kWeightBeam;
+      case model::SectionKind::Discrete:
+        return kWeightDiscrete;
+      case model::SectionKind::Solid:
+        break;
+    }
+    const int32_t base = plastic ? kWeightSolidPlastic : kWeightSolidElastic;
+    const bool full = part.section != model::kNone &&
+                      std::size_t(part.section) < model.solid_sections.size() &&
+                      model.solid_sections[std::size_t(part.section)].elform == 2;
+    if (full) return base * kWeightFullyIntegratedFactor / 10;  // 8 points, no hourglass
     const int ihq =
         part.hourglass != model::kNone && std::size_t(part.hourglass) < model.hourglass.size()
             ? model.hourglass[std::size_t(part.hourglass)].ihq
             : model.controls.hourglass_ihq;
-    const bool rigid =
-        mat != model::kNone && std::size_t(mat) < model.materials.size() &&
-        std::holds_alternative<model::RigidLaw>(model.materials[std::size_t(mat)].law);
-    const bool plastic = part_weight[p] == kWeightSolidPlastic;
-    if (rigid) {
-      part_weight[p] = kWeightRigid;
-      continue;
-    }
-    switch (part.section_kind) {
-      case model::SectionKind::Shell:
-        part_weight[p] = plastic ? kWeightShellPlastic : kWeightShellElastic;
-        continue;
-      case model::SectionKind::Beam:
-        part_weight[p] = kWeightBeam;
-        continue;
-      case model::SectionKind::Discrete:
-        part_weight[p] = kWeightDiscrete;
-        continue;
-      case model::SectionKind::Solid:
-        break;
-    }
-    const bool full = part.section != model::kNone &&
-                      std::size_t(part.section) < model.solid_sections.size() &&
-                      model.solid_sections[std::size_t(part.section)].elform == 2;
-    if (full)  // no hourglass control; eight material points instead of one
-      part_weight[p] = part_weight[p] * kWeightFullyIntegratedFactor / 10;
-    else if (ihq >= 4)
-      part_weight[p] += kWeightStiffnessHourglass;
-  }
+    return ihq >= 4 ? base + kWeightStiffnessHourglass : base;
+  };
+  std::vector<int32_t> part_weight(model.parts.size());
+  for (std::size_t p = 0; p < model.parts.size(); ++p) part_weight[p] = partWeight(model.parts[p]);
   std::vector<int32_t> w(ne, kWeightSolidElastic);
   for (std::size_t e = 0; e < ne; ++e) {
     const int32_t p = model.elementPart(e);
