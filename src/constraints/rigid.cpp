@@ -663,7 +663,7 @@ double RigidBodies::apply(double t, double dt_n, double dt_half, domain::Subdoma
       if (!b.active) continue;
       const Vec3 f = add(at(sd.f, 3 * n), at(sd.f_ext, 3 * n));
       Vec3 mo = cross(sub(at(sd.x, 3 * n), b.x_cm), f);
-      if (sd.rotations) mo = add(mo, add(at(sd.moment, 3 * n), at(sd.moment_ext, 3 * n)));
+      if (sd.rotations) mo = add(mo, at(sd.moment, 3 * n));
       const bool zero = f == Vec3{} && mo == Vec3{};
       // A zero record adds nothing to the sums (0 + x == x bit for bit): only welds, whose
       // nodes' data is used node by node, always send theirs.

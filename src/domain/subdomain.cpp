@@ -219,7 +219,6 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
   if (sd.rotations) {
     sd.w.assign(3 * nn, 0.0);
     sd.moment.assign(3 * nn, 0.0);
-    sd.moment_ext.assign(3 * nn, 0.0);
     sd.inertia.assign(nn, 0.0);
   }
 

@@ -110,9 +110,9 @@ struct Subdomain {
   std::vector<double> mass;  // lumped nodal mass (incl. mass added by scaling)
   std::vector<double> mass_added;
   // Rotational freedoms, only when the model has shells or beams (else empty): angular
-  // velocity, moment (internal plus external) and lumped rotational inertia per node.
+  // velocity, moment (from the elements) and lumped rotational inertia per node.
   bool rotations = false;
-  NodeVector w, moment, moment_ext;
+  NodeVector w, moment;
   std::vector<double> inertia;
 
   std::vector<SolidBlock> solid_blocks;

@@ -407,6 +407,11 @@ void Solver::updateKinematics() {
 
   // One pass over the nodes: keep v(n-1/2), form a = F/m and v(n+1/2), and look for
   // non-finite values (fused: at a few bytes per flop, node passes are memory-bound).
+  // Rotations in the same pass: omega(n+1/2) = omega(n-1/2) + dt M / I with the lumped (scaled)
+  // rotary inertia of the shells and beams (Belytschko, Lin & Tsay 1984; the element kernels
+  // keep their own frames, so no nodal rotation needs to be integrated).
+  const bool rotations = sd_.rotations;
+  if (rotations) w_old_.resize(sd_.w.size());
   int non_finite = 0;
 #pragma omp parallel for schedule(static) reduction(| : non_finite)
   for (std::size_t n = 0; n < nn; ++n) {
@@ -419,21 +424,13 @@ void Solver::updateKinematics() {
       sd_.v[i] = v_prev + dt_n * sd_.a[i];
       non_finite |= std::isfinite(sd_.v[i]) ? 0 : 1;
     }
-  }
-  // Rotations: omega(n+1/2) = omega(n-1/2) + dt M / I with the lumped (scaled) rotary
-  // inertia of the shells and beams (Belytschko, Lin & Tsay 1984; the element kernels keep
-  // their own frames, so no nodal rotation needs to be integrated).
-  if (sd_.rotations) {
-    w_old_.resize(sd_.w.size());
-#pragma omp parallel for schedule(static) reduction(| : non_finite)
-    for (std::size_t n = 0; n < nn; ++n) {
-      const double inertia = sd_.inertia[n];
-      for (int c = 0; c < 3; ++c) {
-        const std::size_t i = 3 * n + c;
-        w_old_[i] = sd_.w[i];
-        if (inertia > 0.0) sd_.w[i] += dt_n * (sd_.moment[i] + sd_.moment_ext[i]) / inertia;
-        non_finite |= std::isfinite(sd_.w[i]) ? 0 : 1;
-      }
+    if (!rotations) continue;
+    const double inertia = sd_.inertia[n];
+    for (int c = 0; c < 3; ++c) {
+      const std::size_t i = 3 * n + c;
+      w_old_[i] = sd_.w[i];
+      if (inertia > 0.0) sd_.w[i] += dt_n * sd_.moment[i] / inertia;
+      non_finite |= std::isfinite(sd_.w[i]) ? 0 : 1;
     }
   }
   non_finite_ = non_finite != 0;
