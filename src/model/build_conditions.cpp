@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 #include "model/build_context.hpp"
 
@@ -72,6 +73,25 @@ void readSpc(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) 
   }
 }
 
+std::optional<MotionCurve> readMotionCurve(Context& ctx, const Card& c) {
+  // VAD 0 velocity, 1 acceleration, 2 displacement.
+  const int64_t vad = c.integer("VAD");
+  if (vad < 0 || vad > 2) {
+    ctx.reject(c, "VAD", "VAD " + std::to_string(vad) + " is not supported (0, 1, 2 are)");
+    return std::nullopt;
+  }
+  MotionCurve m;
+  m.vad = static_cast<int>(vad);
+  m.curve = ctx.curve(c, "LCID", c.integer("LCID"));
+  m.sf = c.real("SF");
+  c.integer("VID");  // the direction vector of DOF 4 and 8; not used by the DOFs supported
+  const double death = c.real("DEATH");
+  m.death = death >= 1e28 ? std::numeric_limits<double>::infinity() : death;
+  m.birth = c.real("BIRTH");
+  if (m.birth >= m.death) c.fail("DEATH", "the motion ends before it begins (BIRTH)");
+  return m;
+}
+
 void readPrescribedMotion(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const bool set = opts.has("SET");
   const auto& spec =
@@ -91,21 +111,16 @@ void readPrescribedMotion(Context& ctx, const deck::Keyword& kw, const KeywordOp
       continue;
     }
     pm.dof = static_cast<int>(dof - 1);
-    // VAD 0 velocity, 1 acceleration, 2 displacement.
-    const int64_t vad = c.integer("VAD");
-    if (vad < 0 || vad > 2) {
-      ctx.reject(c, "VAD", "VAD " + std::to_string(vad) + " is not supported (0, 1, 2 are)");
+    const auto motion = readMotionCurve(ctx, c);
+    if (!motion) {
       ctx.collect(cur);
       continue;
     }
-    pm.kind = static_cast<MotionKind>(vad);
-    pm.curve = ctx.curve(c, "LCID", c.integer("LCID"));
-    pm.sf = c.real("SF");
-    c.integer("VID");  // the direction vector of DOF 4 and 8; not used by DOF 1-3
-    const double death = c.real("DEATH");
-    pm.death = death >= 1e28 ? std::numeric_limits<double>::infinity() : death;
-    pm.birth = c.real("BIRTH");
-    if (pm.birth >= pm.death) c.fail("DEATH", "the motion ends before it begins (BIRTH)");
+    pm.kind = static_cast<MotionKind>(motion->vad);
+    pm.curve = motion->curve;
+    pm.sf = motion->sf;
+    pm.death = motion->death;
+    pm.birth = motion->birth;
     for (int32_t n : nodesOf(ctx, c, first, set)) {
       pm.node = n;
       ctx.model.prescribed.push_back(pm);

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <string_view>
@@ -214,6 +215,15 @@ void finishCurves(Context&);
 // build_conditions.cpp
 void readSpc(Context&, const deck::Keyword&, const KeywordOptions&);
 void readPrescribedMotion(Context&, const deck::Keyword&, const KeywordOptions&);
+// VAD (0 velocity, 1 acceleration, 2 displacement), LCID, SF, DEATH (1e28 and above: never)
+// and BIRTH of a prescribed-motion card, nodal or rigid; nothing (the card rejected) for
+// another VAD.
+struct MotionCurve {
+  int vad = 0;
+  int32_t curve = kNone;
+  double sf = 1.0, birth = 0.0, death = 0.0;
+};
+std::optional<MotionCurve> readMotionCurve(Context& ctx, const deck::Card& c);
 void readInitialVelocity(Context&, const deck::Keyword&, const KeywordOptions&);
 void readInitialVelocityNode(Context&, const deck::Keyword&, const KeywordOptions&);
 void readInitialVelocityGeneration(Context&, const deck::Keyword&, const KeywordOptions&);

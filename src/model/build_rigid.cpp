@@ -248,20 +248,16 @@ void readPrescribedMotionRigid(Context& ctx, const deck::Keyword& kw, const Keyw
       continue;
     }
     m.dof = static_cast<int>(dof <= 3 ? dof - 1 : dof - 2);
-    const int64_t vad = c.integer("VAD");
-    if (vad < 0 || vad > 2) {
-      ctx.reject(c, "VAD", "VAD " + std::to_string(vad) + " is not supported (0, 1, 2 are)");
+    const auto motion = readMotionCurve(ctx, c);
+    if (!motion) {
       ctx.collect(cur);
       continue;
     }
-    m.kind = static_cast<uint8_t>(vad);
-    m.curve = ctx.curve(c, "LCID", c.integer("LCID"));
-    m.sf = c.real("SF");
-    c.integer("VID");  // the direction of DOF 4 and 8 only
-    const double death = c.real("DEATH");
-    m.death = death >= 1e28 ? std::numeric_limits<double>::infinity() : death;
-    m.birth = c.real("BIRTH");
-    if (m.birth >= m.death) c.fail("DEATH", "the motion ends before it begins (BIRTH)");
+    m.kind = static_cast<uint8_t>(motion->vad);
+    m.curve = motion->curve;
+    m.sf = motion->sf;
+    m.death = motion->death;
+    m.birth = motion->birth;
     input(ctx).motions.push_back({c.integer("PID"), m, c.context("PID")});
     ctx.collect(cur);
   }
