@@ -212,12 +212,36 @@ std::vector<KeywordSpec> makeTables() {
                   I("PENOPT", 1, Z), I("THKCHG"), I("ORIEN", 1, Z), I("ENMASS")}},
                 {"card 2",
                  {I("USRSTR"), I("USRFAC"), I("NSBCS"), I("INTERM"), R("XPENE", 4, Z), I("SSTHK"),
-                  I("ECDT"), I("TIEDPRJ")}}}});
+                  I("ECDT"), I("TIEDPRJ")}},
+                {"card 3",
+                 {R("SFRIC"), R("DFRIC"), R("EDC"), R("VFC"), R("TH"), R("TH_SF"), R("PEN_SF"),
+                  R("PTSCL")}},
+                {"card 4",
+                 {I("IGNORE"), I("FRCENG"), I("SKIPRWG"), I("OUTSEG"), I("SPOTSTP"), I("SPOTDEL"),
+                  R("SPOTHIN"), I("DIR_TIE")}},
+                {"card 5",
+                 {I("ISYM"), I("NSEROD"), I("RWGAPS"), R("RWGDTH"), R("RWKSF", 1, Z), I("ICOV"),
+                  R("SWRADF"), I("ITHOFF")}}}});
+  // *CONTACT_<type>[_ID|_TITLE]: one layout for every type Crumple runs (card A optional).
+  t.push_back(
+      {"*CONTACT",
+       {{"id card", {I("CID"), A("HEADING", 70)}},
+        {"card 1",
+         {I("SSID"), I("MSID"), I("SSTYP"), I("MSTYP"), I("SBOXID"), I("MBOXID"), I("SPR"),
+          I("MPR")}},
+        {"card 2",
+         {R("FS"), R("FD"), R("DC"), R("VC"), R("VDC"), I("PENCHK"), R("BT"), R("DT", 1e20, Z)}},
+        {"card 3",
+         {R("SFS", 1, Z), R("SFM", 1, Z), R("SST"), R("MST"), R("SFST", 1, Z), R("SFMT", 1, Z),
+          R("FSF", 1, Z), R("VSF", 1, Z)}},
+        {"card A",
+         {I("SOFT"), R("SOFSCL", 0.1, Z), I("LCIDAB"), R("MAXPAR", 1.025, Z), R("SBOPT"),
+          I("DEPTH"), I("BSORT"), I("FRCFRQ", 1, Z)}}}});
   t.push_back(
       {"*CONTROL_SOLUTION", {{"card 1", {I("SOLN"), I("NLQ"), I("ISNAN"), I("LCINT", 100, Z)}}}});
   // ---- database -----------------------------------------------------------------------------
-  for (std::string_view name :
-       {"*DATABASE_GLSTAT", "*DATABASE_MATSUM", "*DATABASE_NODOUT", "*DATABASE_RWFORC"})
+  for (std::string_view name : {"*DATABASE_GLSTAT", "*DATABASE_MATSUM", "*DATABASE_NODOUT",
+                                "*DATABASE_RWFORC", "*DATABASE_RCFORC"})
     t.push_back({name, asciiDatabase()});
   t.push_back({"*DATABASE_BINARY_D3PLOT",
                {{"card 1", {R("DT"), I("LCDT"), I("BEAM", 0, Q), I("NPLTC"), I("PSETID")}},

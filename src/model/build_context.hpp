@@ -191,6 +191,10 @@ void readMatDamperViscous(Context&, const deck::Keyword&, const KeywordOptions&)
 void readMatSpringNonlinear(Context&, const deck::Keyword&, const KeywordOptions&);
 
 void readControlShell(Context&, const deck::Keyword&, const KeywordOptions&);
+
+// build_contact.cpp
+void readContact(Context&, const deck::Keyword&, const KeywordOptions&);
+void readControlContact(Context&, const deck::Keyword&, const KeywordOptions&);
 // An element of `kind` in a part whose section is of another kind: InputError at PID.
 void checkSectionKind(Context& ctx, const deck::Card& c, int32_t part, SectionKind kind);
 

@@ -106,6 +106,7 @@ void readDatabaseAscii(Context& ctx, const deck::Keyword& kw, const KeywordOptio
   if (kw.name == "*DATABASE_MATSUM") k.matsum_dt = dt;
   if (kw.name == "*DATABASE_NODOUT") k.nodout_dt = dt;
   if (kw.name == "*DATABASE_RWFORC") k.rwforc_dt = dt;
+  if (kw.name == "*DATABASE_RCFORC") k.rcforc_dt = dt;
   ctx.collect(cur);
 }
 

@@ -15,6 +15,7 @@
 #include <variant>
 #include <vector>
 
+#include "model/contact.hpp"
 #include "model/rigid.hpp"
 #include "util/source_loc.hpp"
 
@@ -293,6 +294,7 @@ struct Controls {
   double matsum_dt = 0.0;
   double nodout_dt = 0.0;
   double rwforc_dt = 0.0;
+  double rcforc_dt = 0.0;
 };
 
 // A keyword the reader saw but Crumple does not act on, reported once (ARCHITECTURE "Errors").
@@ -342,6 +344,8 @@ struct Model {
   std::vector<PointMass> point_masses;  // *ELEMENT_MASS, in deck order
   std::vector<int32_t> history_nodes;   // *DATABASE_HISTORY_NODE, in deck order
   RigidDefinitions rigid;               // rigid bodies, spot welds, tied node sets
+  std::vector<ContactInterface> contacts;
+  ContactControls contact_controls;
 
   Controls controls;
   std::vector<UnsupportedKeyword> unsupported;

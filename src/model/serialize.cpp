@@ -205,6 +205,40 @@ void fields(A& a, M& m) {
         loc(a, j.where);
       },
       m.rigid.joints);
+  auto surface = [&](auto& sf) {
+    a(sf.nodes);
+    a(sf.segments);
+    a(sf.segment_element);
+    a(sf.segment_thickness);
+    a(sf.segment_stiffness);
+    a(sf.node_half_thickness);
+  };
+  a.count(
+      m.contacts.size(),
+      [&](auto& c) {
+        a(c.id);
+        a(c.title);
+        a(c.keyword);
+        a(c.kind);
+        a(c.automatic);
+        surface(c.a);
+        surface(c.b);
+        a(c.fs);
+        a(c.fd);
+        a(c.dc);
+        a(c.vdc);
+        a(c.birth);
+        a(c.death);
+        a(c.sfs);
+        a(c.sfm);
+        a(c.sst);
+        a(c.mst);
+        a(c.soft);
+        a(c.sofscl);
+        loc(a, c.where);
+      },
+      m.contacts);
+  a(m.contact_controls);
   a(m.controls);
   a.count(
       m.unsupported.size(),

@@ -67,6 +67,13 @@ ResultsWriter::ResultsWriter(std::filesystem::path dir, const model::Model& mode
     if (root)
       rwforc_csv_ = CsvWriter(dir_ / "rwforc.csv", {"time", "wall", "fn", "fx", "fy", "fz"});
   }
+  if (!model.contacts.empty()) {
+    rcforc_.interval = intervalOr(ctl.rcforc_dt, end, kDefaultSamples);
+    // side 1 = SURFA (slave), 2 = SURFB (master); energy is the interface's contact energy.
+    if (root)
+      rcforc_csv_ = CsvWriter(dir_ / "rcforc.csv",
+                              {"time", "contact", "side", "fx", "fy", "fz", "energy", "pairs"});
+  }
   if (root) std::filesystem::create_directories(dir_ / kStatesFolder);
   comm.barrier();
 }
@@ -136,6 +143,19 @@ void ResultsWriter::write(const solver::Solver& s, bool last) {
       rwforc_csv_.flush();
     }
     rwforc_.advance(t);
+  }
+  if (s.contact() && rcforc_.due(t, last)) {
+    const auto forces = s.contact()->interfaceForces();  // collective
+    if (root) {
+      for (const auto& f : forces) {
+        rcforc_csv_.row({t, double(f.id), 1.0, f.side_a[0], f.side_a[1], f.side_a[2], f.energy,
+                         double(f.pairs)});
+        rcforc_csv_.row({t, double(f.id), 2.0, f.side_b[0], f.side_b[1], f.side_b[2], f.energy,
+                         double(f.pairs)});
+      }
+      rcforc_csv_.flush();
+    }
+    rcforc_.advance(t);
   }
   if ((s.cycle() == 0 || plot_.due(t, last)) && t != last_plot_time_) {
     writePlotState(s);
@@ -324,6 +344,8 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
   const std::string digest = stateDigestGlobal(s);
   const long peak = static_cast<long>(comm_.maxAll(int64_t(peakMemoryBytes())));
   const long long eroded = comm_.sumAll(s.erodedElements());  // each rank erodes its own
+  // Every rank sees every contact record: the largest penetration is the same everywhere.
+  const double max_pen = s.contact() ? s.contact()->statistics().max_penetration_ratio : 0.0;
   if (!comm_.isRoot()) return;
   const auto& t = s.timing();
   nlohmann::json j;
@@ -365,6 +387,15 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
   j["initial_dt"] = s.initialDt();
   j["peak_memory_bytes"] = peak;  // the largest rank
   j["communication_s"] = s.timing().communication;
+  if (const auto* c = s.contact()) {
+    const auto& st = c->statistics();
+    j["contact"] = {{"interfaces", model_.contacts.size()},
+                    {"checks", st.checks},
+                    {"bucket_sorts", st.sorts},
+                    {"rebalances", st.rebalances},
+                    {"initial_penetrations", c->initialPenetrations().size()},
+                    {"max_penetration_ratio", max_pen}};
+  }
   j["state_digest"] = digest;
   std::ofstream out(dir_ / "summary.json");
   out << j.dump(2) << '\n';

@@ -54,8 +54,8 @@ class ResultsWriter {
   std::filesystem::path dir_;
   const model::Model& model_;
   const comm::Communicator& comm_;
-  Schedule glstat_, matsum_, nodout_, rwforc_, plot_;
-  CsvWriter glstat_csv_, matsum_csv_, nodout_csv_, rwforc_csv_;
+  Schedule glstat_, matsum_, nodout_, rwforc_, rcforc_, plot_;
+  CsvWriter glstat_csv_, matsum_csv_, nodout_csv_, rwforc_csv_, rcforc_csv_;
   std::vector<std::pair<int32_t, int32_t>> history_local_;  // (deck order, local node), owned
   std::size_t history_count_ = 0;
   PvdWriter pvd_;

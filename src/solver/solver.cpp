@@ -32,6 +32,7 @@ Solver::Solver(const model::Model& model, domain::Subdomain& sd, comm::Communica
   bv_.q1 = model.controls.q_quadratic;
   bv_.q2 = model.controls.q_linear;
   end_time_ = model.controls.end_time;
+  if (!model.contacts.empty()) contact_ = std::make_unique<contact::Contact>(model, sd, comm);
 }
 
 void Solver::gather(const domain::GatherPlan& plan, std::vector<double>& out,
@@ -276,6 +277,8 @@ void Solver::initialize() {
   for (std::size_t n = 0; n < sd_.numNodes(); ++n)
     for (int c = 0; c < 3; ++c)
       sd_.v[3 * n + c] = model_.initial_velocity[static_cast<std::size_t>(sd_.node_model[n])][c];
+  // Contact before the rigid bodies: moving initially penetrating nodes changes their shape.
+  if (contact_) contact_->initialize(ctl.tssfac * comm_.minAll(std::min(dt_min, rigid_dt)));
   if (!model_.rigid.empty()) {
     rigid_ = std::make_unique<constraints::RigidBodies>(model_, sd_, comm_);
     rigid_->setInitialVelocities(sd_);
@@ -493,7 +496,14 @@ void Solver::step() {
   timing_.communication += seconds(t1, t2) + seconds(t3, t4) + seconds(t5, t6);
   boundary_.externalForces(time_, sd_, sd_.f_ext);
   if (rigid_) rigid_->addJointForces(dt_next_, sd_, comm_);
-  timing_.constraints += seconds(t6, Clock::now());
+  auto t7 = Clock::now();
+  timing_.constraints += seconds(t6, t7);
+  // Contact forces join the internal force (a = (f + f_ext) / m), so rigid bodies and
+  // constraints see them like any other nodal force.
+  if (contact_) {
+    contact_->computeForces(time_, dt_);
+    timing_.contact += seconds(t7, Clock::now());
+  }
   updateKinematics();
   // A non-finite velocity ends every rank (collective); the lowest node id is named.
   const int64_t kNoNode = std::numeric_limits<int64_t>::max();
@@ -565,6 +575,7 @@ Energies Solver::energies() const {
     e.kinetic += rigid_->kineticEnergy();
     e.internal += rigid_->jointEnergy();
   }
+  if (contact_) e.contact = contact_->energy();
   e.total = e.kinetic + e.internal + e.hourglass + e.contact + e.rigidwall;
   e.initial = initial_energy_;
   const double reference = initial_energy_ + e.external_work;

@@ -20,6 +20,7 @@
 #include "comm/communicator.hpp"
 #include "constraints/boundary.hpp"
 #include "constraints/rigid.hpp"
+#include "contact/contact.hpp"
 #include "domain/subdomain.hpp"
 #include "elements/hex8.hpp"
 #include "model/model.hpp"
@@ -72,6 +73,8 @@ class Solver {
   const constraints::Boundary& boundary() const { return boundary_; }
   // Rigid bodies, spot welds and tied node sets; null when the model has none.
   const constraints::RigidBodies* rigidBodies() const { return rigid_.get(); }
+  // Contact interfaces; null when the model has none.
+  const contact::Contact* contact() const { return contact_.get(); }
 
  private:
   // One element pass: the minimum stable step found and any inverted element.
@@ -104,6 +107,7 @@ class Solver {
   constraints::Boundary boundary_;
   elements::BulkViscosity bv_;
   std::unique_ptr<constraints::RigidBodies> rigid_;  // built in initialize(), after the masses
+  std::unique_ptr<contact::Contact> contact_;
 
   double time_ = 0.0, end_time_ = 0.0;
   int64_t cycle_ = 0;

@@ -1,0 +1,675 @@
+#include "contact/contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "contact/geometry.hpp"
+
+namespace crumple::contact {
+
+namespace {
+
+// A record of one node in contact: check, segment, the four weights, the force on the node
+// (normal + friction), the friction part alone, the penetration, the energy of the penalty
+// spring (k pen^2 / 2) and the energy friction and damping dissipated over the last step.
+constexpr std::size_t kRecord = 15;
+// Parametric tolerance of "the node is over the segment" (geometry.hpp).
+constexpr double kInsideTolerance = 0.02;
+constexpr double kStableFraction = 0.1;
+
+Vec3 at(const std::vector<double>& a, std::size_t i) {
+  return {a[3 * i], a[3 * i + 1], a[3 * i + 2]};
+}
+
+}  // namespace
+
+// The segments one side's nodes are checked against, with the bucket grid over them
+// (Benson & Hallquist 1990, "A single surface contact algorithm for the post-buckling
+// analysis of shell structures", CMAME 78: a grid of buckets, each node tested against the
+// segments of its bucket and the 26 around it, so the cost is linear in the surface size).
+struct Contact::Pass {
+  int32_t iface = 0;                        // index into Model::contacts
+  bool self = false;                        // single surface: skip segments next to the node
+  int32_t first_check = 0;                  // global index of the first check
+  std::vector<int32_t> node;                // contact node of each check
+  std::vector<double> node_half;            // half shell thickness at the node
+  std::vector<std::array<int32_t, 4>> seg;  // contact nodes
+  std::vector<double> seg_half;             // half thickness (0: one-sided solid face)
+  std::vector<double> seg_k;                // penalty stiffness with the scale factors
+  // Single surface: the nodes sharing a segment with each node (CSR over contact nodes).
+  std::vector<int32_t> near_ptr, near_node;
+  double reach_extra = 0.0;  // largest node + segment half thickness
+  double sofscl = 0.0, vdc = 0.0, fs = 0.0, fd = 0.0, dc = 0.0, birth = 0.0, death = 0.0;
+  int soft = 0;
+  // Bucket grid (rebuilt at each sort).
+  std::array<double, 3> lo{};
+  double cell = 1.0;
+  std::array<int32_t, 3> dims{1, 1, 1};
+  std::vector<int32_t> cell_ptr, cell_seg;
+};
+
+struct Contact::Candidate {
+  int32_t seg = -1;
+  int rank = 3;  // 0 the segment of the last cycle, 1 crossed in the last step, 2 other
+  Projection proj;
+  Vec3 push{};       // unit direction the node is pushed
+  double gap = 0.0;  // negative: penetration
+};
+
+Contact::Contact(const model::Model& model, domain::Subdomain& sd, comm::Communicator& comm)
+    : model_(model), sd_(sd), comm_(comm) {
+  if (model.contacts.empty()) return;
+  // Contact nodes: the union of every side's nodes and segment nodes.
+  for (const auto& ci : model.contacts)
+    for (const auto* s : {&ci.a, &ci.b}) {
+      cn_model_.insert(cn_model_.end(), s->nodes.begin(), s->nodes.end());
+      for (const auto& seg : s->segments) cn_model_.insert(cn_model_.end(), seg.begin(), seg.end());
+    }
+  std::sort(cn_model_.begin(), cn_model_.end());
+  cn_model_.erase(std::unique(cn_model_.begin(), cn_model_.end()), cn_model_.end());
+  auto cn = [&](int32_t model_node) {
+    return int32_t(std::lower_bound(cn_model_.begin(), cn_model_.end(), model_node) -
+                   cn_model_.begin());
+  };
+  const std::size_t ncn = cn_model_.size();
+  cn_local_.resize(ncn);
+  cn_owned_.resize(ncn);
+  for (std::size_t i = 0; i < ncn; ++i) {
+    cn_local_[i] = sd.localNode(cn_model_[i]);
+    cn_owned_[i] = cn_local_[i] >= 0 && sd.node_owned[std::size_t(cn_local_[i])];
+  }
+  x_.assign(3 * ncn, 0.0);
+  v_.assign(3 * ncn, 0.0);
+  mass_.assign(ncn, 0.0);
+  const double slsfac = model.contact_controls.slsfac;
+
+  auto addPass = [&](int32_t iface, const model::ContactSurface& nodes,
+                     const model::ContactSurface& segs, double sf, bool self) {
+    const auto& ci = model.contacts[std::size_t(iface)];
+    Pass p;
+    p.iface = iface;
+    p.self = self;
+    p.first_check = num_checks_;
+    double max_node_half = 0.0, max_seg_half = 0.0;
+    for (std::size_t k = 0; k < nodes.nodes.size(); ++k) {
+      p.node.push_back(cn(nodes.nodes[k]));
+      p.node_half.push_back(nodes.node_half_thickness[k]);
+      max_node_half = std::max(max_node_half, nodes.node_half_thickness[k]);
+    }
+    for (std::size_t k = 0; k < segs.segments.size(); ++k) {
+      const auto& s = segs.segments[k];
+      p.seg.push_back({cn(s[0]), cn(s[1]), cn(s[2]), cn(s[3])});
+      p.seg_half.push_back(0.5 * segs.segment_thickness[k]);
+      p.seg_k.push_back(slsfac * sf * segs.segment_stiffness[k]);
+      max_seg_half = std::max(max_seg_half, 0.5 * segs.segment_thickness[k]);
+    }
+    p.reach_extra = max_node_half + max_seg_half;
+    if (self) {
+      std::vector<std::vector<int32_t>> near(ncn);
+      for (const auto& s : p.seg)
+        for (int32_t a : s)
+          for (int32_t b : s) near[std::size_t(a)].push_back(b);
+      p.near_ptr.assign(ncn + 1, 0);
+      for (std::size_t i = 0; i < ncn; ++i) {
+        auto& v = near[i];
+        std::sort(v.begin(), v.end());
+        v.erase(std::unique(v.begin(), v.end()), v.end());
+        p.near_ptr[i + 1] = p.near_ptr[i] + int32_t(v.size());
+        p.near_node.insert(p.near_node.end(), v.begin(), v.end());
+      }
+    }
+    p.sofscl = ci.sofscl;
+    p.soft = ci.soft;
+    p.vdc = ci.vdc;
+    p.fs = ci.fs;
+    p.fd = ci.fd;
+    p.dc = ci.dc;
+    p.birth = ci.birth;
+    p.death = ci.death;
+    num_checks_ += int32_t(p.node.size());
+    for (std::size_t k = 0; k < p.node.size(); ++k) check_pass_.push_back(int32_t(passes_.size()));
+    passes_.push_back(std::move(p));
+  };
+  for (std::size_t i = 0; i < model.contacts.size(); ++i) {
+    const auto& ci = model.contacts[i];
+    const auto iface = int32_t(i);
+    switch (ci.kind) {
+      case model::ContactKind::NodesToSurface:
+        addPass(iface, ci.a, ci.b, ci.sfm, false);
+        break;
+      case model::ContactKind::SurfaceToSurface:
+        addPass(iface, ci.a, ci.b, ci.sfm, false);
+        addPass(iface, ci.b, ci.a, ci.sfs, false);
+        break;
+      case model::ContactKind::SingleSurface:
+        addPass(iface, ci.a, ci.a, ci.sfs, true);
+        break;
+    }
+  }
+  stats_.checks = num_checks_;
+  friction_.assign(3 * std::size_t(num_checks_), 0.0);
+  initial_gap_.assign(std::size_t(num_checks_), 0.0);
+  last_seg_.assign(std::size_t(num_checks_), -1);
+  check_cost_.assign(std::size_t(num_checks_), 0.0);
+  stored_.assign(model.contacts.size(), 0.0);
+  dissipated_.assign(model.contacts.size(), 0.0);
+}
+
+Contact::~Contact() = default;
+
+void Contact::gatherNodes() {
+  // Every rank contributes the nodes it owns; each node is owned by exactly one rank.
+  const std::size_t ncn = cn_model_.size();
+  if (!comm_.distributed()) {
+    for (std::size_t i = 0; i < ncn; ++i) {
+      const auto l = std::size_t(cn_local_[i]);
+      for (int c = 0; c < 3; ++c) {
+        x_[3 * i + std::size_t(c)] = sd_.x[3 * l + std::size_t(c)];
+        v_[3 * i + std::size_t(c)] = sd_.v[3 * l + std::size_t(c)];
+      }
+    }
+    return;
+  }
+  std::vector<double> mine;
+  for (std::size_t i = 0; i < ncn; ++i) {
+    if (!cn_owned_[i]) continue;
+    const auto l = std::size_t(cn_local_[i]);
+    mine.push_back(double(i));
+    for (int c = 0; c < 3; ++c) mine.push_back(sd_.x[3 * l + std::size_t(c)]);
+    for (int c = 0; c < 3; ++c) mine.push_back(sd_.v[3 * l + std::size_t(c)]);
+  }
+  const auto all = comm_.allGather(mine);
+  for (std::size_t k = 0; k + 7 <= all.size(); k += 7) {
+    const auto i = std::size_t(all[k]);
+    for (int c = 0; c < 3; ++c) {
+      x_[3 * i + std::size_t(c)] = all[k + 1 + std::size_t(c)];
+      v_[3 * i + std::size_t(c)] = all[k + 4 + std::size_t(c)];
+    }
+  }
+}
+
+void Contact::sortBuckets(Pass& p) {
+  // Cell size: the reach of a node to a segment whose centroid lies in a neighbouring cell,
+  // with a margin the nodes may travel before the next sort (Contact::computeForces).
+  const std::size_t ns = p.seg.size();
+  std::vector<Vec3> centre(ns);
+  double radius = 0.0;
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (std::size_t s = 0; s < ns; ++s) {
+    Vec3 c{};
+    for (int32_t a : p.seg[s]) c = add(c, at(x_, std::size_t(a)));
+    c = scale(c, 0.25);
+    centre[s] = c;
+    for (int32_t a : p.seg[s]) radius = std::max(radius, norm(sub(at(x_, std::size_t(a)), c)));
+    for (int i = 0; i < 3; ++i) {
+      lo[std::size_t(i)] = std::min(lo[std::size_t(i)], c[std::size_t(i)]);
+      hi[std::size_t(i)] = std::max(hi[std::size_t(i)], c[std::size_t(i)]);
+    }
+  }
+  const double reach = radius + p.reach_extra;
+  sort_margin_ = std::max(sort_margin_, 0.5 * reach);
+  double cell = reach + 0.5 * reach;
+  // Keep the grid at most a few cells per segment (a long thin surface would otherwise make
+  // most cells empty).
+  for (;;) {
+    std::size_t cells = 1;
+    for (int i = 0; i < 3; ++i)
+      cells *= std::size_t((hi[std::size_t(i)] - lo[std::size_t(i)]) / cell) + 1;
+    if (cells <= 4 * ns + 64) break;
+    cell *= 1.5;
+  }
+  p.cell = cell;
+  p.lo = lo;
+  for (int i = 0; i < 3; ++i)
+    p.dims[std::size_t(i)] = int32_t((hi[std::size_t(i)] - lo[std::size_t(i)]) / cell) + 1;
+  const std::size_t ncell =
+      std::size_t(p.dims[0]) * std::size_t(p.dims[1]) * std::size_t(p.dims[2]);
+  p.cell_ptr.assign(ncell + 1, 0);
+  std::vector<int32_t> cell_of(ns);
+  for (std::size_t s = 0; s < ns; ++s) {
+    std::size_t id = 0;
+    for (int i = 2; i >= 0; --i) {
+      const auto k = std::clamp(int32_t((centre[s][std::size_t(i)] - lo[std::size_t(i)]) / cell), 0,
+                                p.dims[std::size_t(i)] - 1);
+      id = id * std::size_t(p.dims[std::size_t(i)]) + std::size_t(k);
+    }
+    cell_of[s] = int32_t(id);
+    ++p.cell_ptr[id + 1];
+  }
+  for (std::size_t c = 0; c < ncell; ++c) p.cell_ptr[c + 1] += p.cell_ptr[c];
+  p.cell_seg.assign(ns, 0);
+  std::vector<int32_t> fill(p.cell_ptr.begin(), p.cell_ptr.end() - 1);
+  for (std::size_t s = 0; s < ns; ++s)
+    p.cell_seg[std::size_t(fill[std::size_t(cell_of[s])]++)] = int32_t(s);
+}
+
+Vec3 Contact::segmentNormal(const std::array<int32_t, 4>& s) const {
+  const Vec3 c = cross(sub(at(x_, std::size_t(s[2])), at(x_, std::size_t(s[0]))),
+                       sub(at(x_, std::size_t(s[3])), at(x_, std::size_t(s[1]))));
+  const double len = norm(c);
+  return len > 0.0 ? scale(c, 1.0 / len) : Vec3{};
+}
+
+bool Contact::search(const Pass& p, int32_t check, Candidate& best, int64_t& tests,
+                     bool initial) const {
+  const int32_t local = check - p.first_check;
+  const int32_t node = p.node[std::size_t(local)];
+  const Vec3 x = at(x_, std::size_t(node));
+  std::array<int32_t, 3> k{};
+  for (int i = 0; i < 3; ++i) {
+    const double r = (x[std::size_t(i)] - p.lo[std::size_t(i)]) / p.cell;
+    if (r < -1.0 || r >= double(p.dims[std::size_t(i)]) + 1.0) return false;
+    k[std::size_t(i)] = int32_t(std::floor(r));
+  }
+  const double h_node = p.node_half[std::size_t(local)];
+  const int32_t last_seg = last_seg_[std::size_t(check)];
+  const int32_t* near_begin =
+      p.self ? &p.near_node[std::size_t(p.near_ptr[std::size_t(node)])] : nullptr;
+  const int32_t* near_end =
+      p.self ? &p.near_node[std::size_t(p.near_ptr[std::size_t(node) + 1])] : nullptr;
+  bool found = false;
+  for (int32_t cz = std::max(k[2] - 1, 0); cz <= std::min(k[2] + 1, p.dims[2] - 1); ++cz)
+    for (int32_t cy = std::max(k[1] - 1, 0); cy <= std::min(k[1] + 1, p.dims[1] - 1); ++cy)
+      for (int32_t cx = std::max(k[0] - 1, 0); cx <= std::min(k[0] + 1, p.dims[0] - 1); ++cx) {
+        const std::size_t c =
+            (std::size_t(cz) * std::size_t(p.dims[1]) + std::size_t(cy)) * std::size_t(p.dims[0]) +
+            std::size_t(cx);
+        for (int32_t q = p.cell_ptr[c]; q < p.cell_ptr[c + 1]; ++q) {
+          const auto s = std::size_t(p.cell_seg[std::size_t(q)]);
+          const auto& sn = p.seg[s];
+          bool skip = false;
+          for (int32_t a : sn) {
+            if (a == node) skip = true;
+            if (near_begin && std::binary_search(near_begin, near_end, a)) skip = true;
+          }
+          if (skip) continue;
+          const double h = h_node + p.seg_half[s];
+          // Bounding box of the segment widened by the contact thickness and by the depth a
+          // node may reach into a solid (half the segment's size, below).
+          Vec3 mn{1e300, 1e300, 1e300}, mx{-1e300, -1e300, -1e300};
+          for (int32_t a : sn)
+            for (int i = 0; i < 3; ++i) {
+              mn[std::size_t(i)] =
+                  std::min(mn[std::size_t(i)], x_[3 * std::size_t(a) + std::size_t(i)]);
+              mx[std::size_t(i)] =
+                  std::max(mx[std::size_t(i)], x_[3 * std::size_t(a) + std::size_t(i)]);
+            }
+          const double slack = h + 0.5 * std::max({mx[0] - mn[0], mx[1] - mn[1], mx[2] - mn[2]});
+          bool away = false;
+          for (int i = 0; i < 3; ++i)
+            away = away || x[std::size_t(i)] < mn[std::size_t(i)] - slack ||
+                   x[std::size_t(i)] > mx[std::size_t(i)] + slack;
+          if (away) continue;
+          ++tests;
+          const Projection pr = project(x, at(x_, std::size_t(sn[0])), at(x_, std::size_t(sn[1])),
+                                        at(x_, std::size_t(sn[2])), at(x_, std::size_t(sn[3])),
+                                        sn[2] == sn[3], kInsideTolerance);
+          if (!pr.inside) continue;
+          Candidate cand;
+          cand.seg = int32_t(s);
+          cand.proj = pr;
+          if (p.seg_half[s] > 0.0) {
+            // A shell: both sides are surfaces, offset by half the thicknesses.
+            cand.gap = std::abs(pr.d) - h;
+            cand.push = pr.d >= 0.0 ? pr.normal : scale(pr.normal, -1.0);
+          } else {
+            // A solid face: one side, the outward normal; a node deeper than half the
+            // segment's size is on the far side of something else, not in contact here.
+            cand.gap = pr.d - h_node;
+            cand.push = pr.normal;
+            const double size =
+                std::sqrt(norm(cross(sub(at(x_, std::size_t(sn[2])), at(x_, std::size_t(sn[0]))),
+                                     sub(at(x_, std::size_t(sn[3])), at(x_, std::size_t(sn[1]))))) *
+                          0.5);
+            if (cand.gap < -0.5 * size) continue;
+          }
+          if (!(cand.gap < 0.0)) continue;
+          // Which segment a node is in contact with must not jump (a jump to a deeper
+          // penetration makes energy): the segment of the last cycle first, then a solid face
+          // the node crossed in the last step (it was on its outer side at x(n-1)), then the
+          // nearest way out, the least penetration; ties to the lower segment.
+          // Tracked: the segment of the last cycle, or a neighbour of it (sharing a node) that
+          // continues the same surface (normals within 45 degrees), onto which the node slid.
+          bool tracked = int32_t(s) == last_seg;
+          if (!tracked && last_seg >= 0) {
+            bool shares = false;
+            for (int32_t a : p.seg[std::size_t(last_seg)])
+              for (int32_t b : sn) shares = shares || a == b;
+            if (shares) {
+              const Vec3 n_last = segmentNormal(p.seg[std::size_t(last_seg)]);
+              tracked = dot(n_last, pr.normal) > 0.7071;
+            }
+          }
+          if (tracked) {
+            cand.rank = 0;
+          } else if (p.seg_half[s] > 0.0) {
+            cand.rank = 1;
+          } else {
+            const Projection prev =
+                project(at(x_prev_, std::size_t(node)), at(x_prev_, std::size_t(sn[0])),
+                        at(x_prev_, std::size_t(sn[1])), at(x_prev_, std::size_t(sn[2])),
+                        at(x_prev_, std::size_t(sn[3])), sn[2] == sn[3], kInsideTolerance);
+            cand.rank = prev.d - h_node >= 0.0 ? 1 : 2;
+            // A node already inside a solid that did not come in through this face (nor
+            // slide onto it from the face it was on) is not in contact with it: it is a node
+            // near an edge, below the plane of the side face. Only the initial check takes
+            // such nodes (x(n-1) is x(n) there).
+            if (cand.rank == 2 && !initial) continue;
+          }
+          if (!found || cand.rank < best.rank ||
+              (cand.rank == best.rank &&
+               (cand.gap > best.gap || (cand.gap == best.gap && cand.seg < best.seg)))) {
+            best = cand;
+            found = true;
+          }
+        }
+      }
+  return found;
+}
+
+void Contact::partitionChecks(const std::vector<double>& weight) {
+  // Recursive coordinate bisection of the check nodes (Berger & Bokhari 1987), cutting the
+  // longest extent at the weighted median; every rank computes the same cut.
+  const int P = comm_.size();
+  std::vector<int32_t> ids(static_cast<std::size_t>(num_checks_));
+  std::iota(ids.begin(), ids.end(), 0);
+  std::vector<int32_t> owner(static_cast<std::size_t>(num_checks_), 0);
+  auto nodeOf = [&](int32_t c) {
+    const Pass& p = passes_[std::size_t(check_pass_[std::size_t(c)])];
+    return std::size_t(p.node[std::size_t(c - p.first_check)]);
+  };
+  struct Range {
+    std::size_t begin, end;
+    int first, parts;
+  };
+  std::vector<Range> stack{{0, ids.size(), 0, P}};
+  while (!stack.empty()) {
+    const Range r = stack.back();
+    stack.pop_back();
+    if (r.parts == 1 || r.end - r.begin <= 1) {
+      for (std::size_t i = r.begin; i < r.end; ++i) owner[std::size_t(ids[i])] = r.first;
+      continue;
+    }
+    Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+    for (std::size_t i = r.begin; i < r.end; ++i) {
+      const Vec3 x = at(x_, nodeOf(ids[i]));
+      for (int d = 0; d < 3; ++d) {
+        lo[std::size_t(d)] = std::min(lo[std::size_t(d)], x[std::size_t(d)]);
+        hi[std::size_t(d)] = std::max(hi[std::size_t(d)], x[std::size_t(d)]);
+      }
+    }
+    int axis = 0;
+    for (int d = 1; d < 3; ++d)
+      if (hi[std::size_t(d)] - lo[std::size_t(d)] > hi[std::size_t(axis)] - lo[std::size_t(axis)])
+        axis = d;
+    std::sort(ids.begin() + std::ptrdiff_t(r.begin), ids.begin() + std::ptrdiff_t(r.end),
+              [&](int32_t a, int32_t b) {
+                const double xa = x_[3 * nodeOf(a) + std::size_t(axis)];
+                const double xb = x_[3 * nodeOf(b) + std::size_t(axis)];
+                return xa < xb || (xa == xb && a < b);
+              });
+    const int left = r.parts / 2;
+    double total = 0.0;
+    for (std::size_t i = r.begin; i < r.end; ++i) total += weight[std::size_t(ids[i])];
+    const double target = total * double(left) / double(r.parts);
+    std::size_t cut = r.begin;
+    double acc = 0.0;
+    while (cut < r.end && acc + 0.5 * weight[std::size_t(ids[cut])] < target)
+      acc += weight[std::size_t(ids[cut++])];
+    stack.push_back({r.begin, cut, r.first, left});
+    stack.push_back({cut, r.end, r.first + left, r.parts - left});
+  }
+  my_checks_.clear();
+  for (int32_t c = 0; c < num_checks_; ++c)
+    if (owner[std::size_t(c)] == comm_.rank()) my_checks_.push_back(c);
+}
+
+void Contact::maybeRebalance() {
+  if (!comm_.distributed()) return;
+  // The tests each rank did since the last look: re-cut with the measured costs when the
+  // busiest rank is over the threshold.
+  const auto loads = comm_.allGather(std::vector<double>{double(tests_since_balance_)});
+  tests_since_balance_ = 0;
+  double mx = 0.0, sum = 0.0;
+  for (double l : loads) {
+    mx = std::max(mx, l);
+    sum += l;
+  }
+  const double mean = sum / double(loads.size());
+  if (!(mean > 0.0) || mx <= model_.contact_controls.rebalance_threshold * mean) {
+    std::fill(check_cost_.begin(), check_cost_.end(), 0.0);
+    return;
+  }
+  std::vector<double> mine;
+  for (int32_t c : my_checks_) {
+    mine.push_back(double(c));
+    mine.push_back(check_cost_[std::size_t(c)]);
+  }
+  const auto all = comm_.allGather(mine);
+  std::vector<double> weight(std::size_t(num_checks_), 1.0);
+  for (std::size_t k = 0; k + 2 <= all.size(); k += 2) weight[std::size_t(all[k])] += all[k + 1];
+  partitionChecks(weight);
+  std::fill(check_cost_.begin(), check_cost_.end(), 0.0);
+  ++stats_.rebalances;
+}
+
+void Contact::initialize(double dt0) {
+  if (empty()) return;
+  dt0_ = dt0;
+  // Nodal masses (with mass scaling) for the soft stiffness and the damping.
+  {
+    std::vector<double> mine;
+    for (std::size_t i = 0; i < cn_model_.size(); ++i)
+      if (cn_owned_[i]) {
+        mine.push_back(double(i));
+        mine.push_back(sd_.mass[std::size_t(cn_local_[i])]);
+      }
+    const auto all = comm_.allGather(mine);
+    for (std::size_t k = 0; k + 2 <= all.size(); k += 2) mass_[std::size_t(all[k])] = all[k + 1];
+  }
+  gatherNodes();
+  x_prev_ = x_;
+  for (auto& p : passes_) sortBuckets(p);
+  x_sorted_ = x_;
+  need_sort_ = false;
+  partitionChecks(std::vector<double>(std::size_t(num_checks_), 1.0));
+
+  // Initial penetrations, found by every rank over every check (once), in check order.
+  const int ignore = model_.contact_controls.ignore;
+  int64_t tests = 0;
+  for (const auto& p : passes_) {
+    const auto& ci = model_.contacts[std::size_t(p.iface)];
+    for (std::size_t k = 0; k < p.node.size(); ++k) {
+      Candidate best;
+      const auto check = p.first_check + int32_t(k);
+      if (!search(p, check, best, tests, true)) continue;
+      const auto node = std::size_t(p.node[k]);
+      initial_.push_back({ci.id,
+                          model_.nodes.size() ? model_.nodes.id[std::size_t(cn_model_[node])] : 0,
+                          -best.gap});
+      if (ignore != 0) {
+        initial_gap_[std::size_t(check)] = -best.gap;
+        continue;
+      }
+      // DYNA3D moves the node back onto the surface (and says so).
+      const Vec3 dx = scale(best.push, -best.gap);
+      const int32_t l = cn_local_[node];
+      for (int c = 0; c < 3; ++c) {
+        x_[3 * node + std::size_t(c)] += dx[std::size_t(c)];
+        if (l >= 0) {
+          sd_.x[3 * std::size_t(l) + std::size_t(c)] += dx[std::size_t(c)];
+          sd_.x0[3 * std::size_t(l) + std::size_t(c)] += dx[std::size_t(c)];
+        }
+      }
+      moved_initial_ = true;
+    }
+  }
+  x_sorted_ = x_;
+  x_prev_ = x_;
+}
+
+void Contact::computeForces(double time, double dt_prev) {
+  if (empty()) return;
+  x_prev_ = x_;
+  gatherNodes();
+  // Re-sort when some node may have travelled half the margin since the last sort: a node
+  // and a segment closing at that speed stay within the 27 buckets searched.
+  double travel = 0.0;
+  for (std::size_t i = 0; i < x_.size(); i += 3) {
+    const double d2 = (x_[i] - x_sorted_[i]) * (x_[i] - x_sorted_[i]) +
+                      (x_[i + 1] - x_sorted_[i + 1]) * (x_[i + 1] - x_sorted_[i + 1]) +
+                      (x_[i + 2] - x_sorted_[i + 2]) * (x_[i + 2] - x_sorted_[i + 2]);
+    travel = std::max(travel, d2);
+  }
+  if (2.0 * std::sqrt(travel) > sort_margin_ || need_sort_) {
+    maybeRebalance();
+    sort_margin_ = 0.0;
+    for (auto& p : passes_) sortBuckets(p);
+    x_sorted_ = x_;
+    ++stats_.sorts;
+  }
+
+  std::vector<double> mine;
+  int64_t tests = 0;
+  for (int32_t check : my_checks_) {
+    const Pass& p = passes_[std::size_t(check_pass_[std::size_t(check)])];
+    if (time < p.birth || time > p.death) continue;
+    Candidate best;
+    const int64_t before = tests;
+    const bool hit = search(p, check, best, tests, false);
+    check_cost_[std::size_t(check)] += double(tests - before);
+    if (!hit) continue;
+    const double pen = -best.gap - initial_gap_[std::size_t(check)];
+    if (!(pen > 0.0)) continue;
+    const auto node = std::size_t(p.node[std::size_t(check - p.first_check)]);
+    const auto& sn = p.seg[std::size_t(best.seg)];
+    const auto& N = best.proj.N;
+    // Relative velocity of the node to the contact point of the segment.
+    Vec3 vrel = at(v_, node);
+    double m_seg = 0.0;
+    for (int a = 0; a < 4; ++a) {
+      if (N[std::size_t(a)] == 0.0) continue;
+      vrel = sub(vrel, scale(at(v_, std::size_t(sn[std::size_t(a)])), N[std::size_t(a)]));
+      m_seg += N[std::size_t(a)] * mass_[std::size_t(sn[std::size_t(a)])];
+    }
+    const double m_node = mass_[node];
+    const double m_eff = m_node + m_seg > 0.0 ? m_node * m_seg / (m_node + m_seg) : 0.0;
+    double k = p.seg_k[std::size_t(best.seg)];
+    // SOFT = 1: a stiffness from the masses and the step, so soft foam against steel still
+    // stops (LS-DYNA Theory Manual, "soft constraint penalty": 0.5 SOFSCL m / dt^2).
+    if (p.soft == 1 && dt0_ > 0.0) k = std::max(k, 0.5 * p.sofscl * m_eff / (dt0_ * dt0_));
+    // Stability: the contact spring adds k / m_eff to the square of the highest frequency of
+    // the nodes it joins, which the element step (TSSFAC 0.9) leaves little room for; a node
+    // of a symmetric interface may carry several springs. Capping k at kStableFraction
+    // m_eff / dt^2 keeps omega dt of one spring at or below 2 sqrt(kStableFraction).
+    if (dt_prev > 0.0 && m_eff > 0.0)
+      k = std::min(k, kStableFraction * m_eff / (dt_prev * dt_prev));
+    const Vec3& n = best.push;
+    const double vn = dot(vrel, n);
+    double fn = k * pen;
+    // Viscous damping, VDC percent of critical for the node-segment pair.
+    if (p.vdc > 0.0) fn -= 0.01 * p.vdc * 2.0 * std::sqrt(k * m_eff) * vn;
+    fn = std::max(fn, 0.0);
+    // Energy dissipated by the damping part of fn over the last step (v(n-1/2) dt(n-1/2)).
+    double dissipated = -(fn - k * pen) * vn * dt_prev;
+    Vec3 ft{};
+    if (p.fs > 0.0 || p.fd > 0.0) {
+      // Coulomb friction with an elastic stick (LS-DYNA Theory Manual, "Friction"): the
+      // tangential force grows by k times the slip increment and is capped at mu fn.
+      const Vec3 vt = sub(vrel, scale(n, vn));
+      const double mu = p.fd + (p.fs - p.fd) * std::exp(-p.dc * norm(vt));
+      Vec3 old = at(friction_, std::size_t(check));
+      old = sub(old, scale(n, dot(old, n)));
+      ft = sub(old, scale(vt, k * dt_prev));
+      const double cap = mu * fn;
+      const double mag = norm(ft);
+      if (mag > cap) ft = mag > 0.0 ? scale(ft, cap / mag) : Vec3{};
+    }
+    const Vec3 f = add(scale(n, fn), ft);
+    dissipated -= dot(ft, sub(vrel, scale(n, vn))) * dt_prev;
+    mine.insert(mine.end(), {double(check), double(best.seg), N[0], N[1], N[2], N[3], f[0], f[1],
+                             f[2], ft[0], ft[1], ft[2], pen, 0.5 * k * pen * pen, dissipated});
+  }
+  stats_.tests += tests;
+  tests_since_balance_ += tests;
+
+  records_ = comm_.distributed() ? comm_.allGather(mine) : std::move(mine);
+  // Canonical order: by check index (each check is computed by one rank).
+  const std::size_t nrec = records_.size() / kRecord;
+  std::vector<std::size_t> order(nrec);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return records_[kRecord * a] < records_[kRecord * b];
+  });
+  std::vector<double> sorted(records_.size());
+  for (std::size_t r = 0; r < nrec; ++r)
+    std::copy_n(&records_[kRecord * order[r]], kRecord, &sorted[kRecord * r]);
+  records_ = std::move(sorted);
+
+  std::fill(friction_.begin(), friction_.end(), 0.0);
+  std::fill(stored_.begin(), stored_.end(), 0.0);
+  std::fill(last_seg_.begin(), last_seg_.end(), -1);
+  for (std::size_t r = 0; r < nrec; ++r) {
+    const double* rec = &records_[kRecord * r];
+    const auto check = std::size_t(rec[0]);
+    const Pass& p = passes_[std::size_t(check_pass_[check])];
+    const auto node = std::size_t(p.node[check - std::size_t(p.first_check)]);
+    const auto& sn = p.seg[std::size_t(rec[1])];
+    for (int c = 0; c < 3; ++c) friction_[3 * check + std::size_t(c)] = rec[9 + c];
+    last_seg_[check] = int32_t(rec[1]);
+    stored_[std::size_t(p.iface)] += rec[13];
+    dissipated_[std::size_t(p.iface)] += rec[14];
+    // The node takes f, the segment's nodes -N_a f, each added on every rank holding it.
+    if (cn_local_[node] >= 0)
+      for (int c = 0; c < 3; ++c)
+        sd_.f[3 * std::size_t(cn_local_[node]) + std::size_t(c)] += rec[6 + c];
+    for (int a = 0; a < 4; ++a) {
+      if (a == 3 && sn[3] == sn[2]) break;
+      const int32_t l = cn_local_[std::size_t(sn[std::size_t(a)])];
+      if (l < 0) continue;
+      for (int c = 0; c < 3; ++c)
+        sd_.f[3 * std::size_t(l) + std::size_t(c)] -= rec[2 + a] * rec[6 + c];
+    }
+    // Penetration relative to the segment's size (shells: to the contact thickness).
+    const double h =
+        p.seg_half[std::size_t(rec[1])] + p.node_half[check - std::size_t(p.first_check)];
+    if (h > 0.0)
+      stats_.max_penetration_ratio = std::max(stats_.max_penetration_ratio, rec[12] / (2.0 * h));
+  }
+}
+
+double Contact::energy() const {
+  double e = 0.0;
+  for (std::size_t i = 0; i < stored_.size(); ++i) e += stored_[i] + dissipated_[i];
+  return e;
+}
+
+std::vector<InterfaceForces> Contact::interfaceForces() const {
+  std::vector<InterfaceForces> out(model_.contacts.size());
+  if (empty()) return out;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    out[i].id = model_.contacts[i].id;
+    out[i].energy = stored_[i] + dissipated_[i];
+  }
+  const std::size_t nrec = records_.size() / kRecord;
+  for (std::size_t r = 0; r < nrec; ++r) {
+    const double* rec = &records_[kRecord * r];
+    const auto pass_index = std::size_t(check_pass_[std::size_t(rec[0])]);
+    const Pass& p = passes_[pass_index];
+    auto& o = out[std::size_t(p.iface)];
+    // The second pass of a symmetric interface has the B side's nodes against A's segments.
+    const bool reversed = pass_index > 0 && passes_[pass_index - 1].iface == p.iface;
+    auto& on_node = reversed ? o.side_b : o.side_a;
+    auto& on_seg = reversed ? o.side_a : o.side_b;
+    for (int c = 0; c < 3; ++c) {
+      on_node[std::size_t(c)] += rec[6 + c];
+      on_seg[std::size_t(c)] -= rec[6 + c];
+    }
+    ++o.pairs;
+  }
+  return out;
+}
+
+}  // namespace crumple::contact

@@ -1,0 +1,119 @@
+// Penalty contact (Hallquist, Goudreau & Benson 1985, "Sliding interfaces with contact-impact
+// in large-scale Lagrangian computations", CMAME 51; LS-DYNA Theory Manual, "Contact-Impact
+// Algorithm"): nodes of one side that penetrate a segment of the other are pushed back by a
+// spring of stiffness k along the segment normal, with Coulomb friction and viscous damping,
+// and the reaction goes to the segment's nodes by its shape functions.
+//
+// Parallel design (docs/parallel.md, "Contact"). Every contact node's position and velocity
+// is gathered to every rank each cycle (7 doubles per node). The checks (a node against the
+// other side) are split among ranks by recursive coordinate bisection of the nodes' current
+// positions: the contact partition, separate from the element partition and re-cut, with the
+// measured cost of every check as its weight, when the busiest rank does more than
+// ContactControls::rebalance_threshold times the mean. The forces found travel back to every
+// rank as records, sorted by check index and added in that order: the same bits whatever the
+// number of ranks and threads.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "comm/communicator.hpp"
+#include "domain/subdomain.hpp"
+#include "model/model.hpp"
+
+namespace crumple::contact {
+
+// Per interface, for rcforc.csv: the force on the nodes of each side, and the energy.
+struct InterfaceForces {
+  int64_t id = 0;
+  std::array<double, 3> side_a{}, side_b{};
+  double energy = 0.0;  // penalty energy stored now + energy dissipated by friction/damping
+  int64_t pairs = 0;    // nodes in contact
+};
+
+struct InitialPenetration {
+  int64_t interface_id = 0;
+  int64_t node_id = 0;
+  double depth = 0.0;
+};
+
+struct Statistics {
+  int64_t checks = 0;                  // node-against-surface checks of the whole model
+  int64_t sorts = 0;                   // bucket re-sorts
+  int64_t rebalances = 0;              // contact partition re-cuts after the initial one
+  int64_t tests = 0;                   // node-segment tests on this rank since the start
+  double max_penetration_ratio = 0.0;  // largest penetration / (segment size or thickness)
+};
+
+class Contact {
+ public:
+  Contact(const model::Model& model, domain::Subdomain& sd, comm::Communicator& comm);
+  ~Contact();
+  Contact(const Contact&) = delete;
+  Contact& operator=(const Contact&) = delete;
+
+  bool empty() const { return passes_.empty(); }
+
+  // After the masses are known and before rigid bodies are built: the first bucket sort, the
+  // contact partition, and the initial penetrations (moved out, or remembered, by IGNORE).
+  void initialize(double dt0);
+  // Contact forces at t(n) from x(n) and v(n-1/2), added to Subdomain::f (collective).
+  void computeForces(double time, double dt_prev);
+  // Contact energy: the energy of the penalty springs now plus what friction and damping
+  // have dissipated. Every rank holds every record, so these are the same on every rank.
+  double energy() const;
+  std::vector<InterfaceForces> interfaceForces() const;
+  const std::vector<InitialPenetration>& initialPenetrations() const { return initial_; }
+  bool movedInitialPenetrations() const { return moved_initial_; }
+  const Statistics& statistics() const { return stats_; }
+  // Checks this rank computes now (the contact partition).
+  std::size_t localChecks() const { return my_checks_.size(); }
+
+ private:
+  struct Pass;  // one side's nodes against the other side's segments
+  struct Candidate;
+  void gatherNodes();
+  void sortBuckets(Pass& pass);
+  // Looks for the segment a check penetrates; false if none.
+  std::array<double, 3> segmentNormal(const std::array<int32_t, 4>& seg) const;
+  // `initial`: the check before the first cycle, which also takes nodes already inside.
+  bool search(const Pass& pass, int32_t check, Candidate& best, int64_t& tests, bool initial) const;
+  void partitionChecks(const std::vector<double>& weight);
+  void maybeRebalance();
+
+  const model::Model& model_;
+  domain::Subdomain& sd_;
+  comm::Communicator& comm_;
+
+  // Contact nodes: every node of any interface, in ascending model index ("cn" numbering).
+  std::vector<int32_t> cn_model_;
+  std::vector<int32_t> cn_local_;  // local index on this rank, or -1
+  std::vector<uint8_t> cn_owned_;
+  std::vector<double> x_, v_, mass_;  // replicated: 3 per node (mass 1)
+  std::vector<double> x_sorted_;      // positions at the last bucket sort
+  std::vector<double> x_prev_;        // positions of the last cycle
+  std::vector<int32_t> last_seg_;     // per check: the segment in contact last cycle, or -1
+  std::vector<Pass> passes_;
+  int32_t num_checks_ = 0;
+  std::vector<int32_t> check_pass_;  // pass of each global check
+  std::vector<int32_t> my_checks_;   // ascending
+  std::vector<double> friction_;     // tangential force history, 3 per check
+  std::vector<double> initial_gap_;  // IGNORE 1/2: initial penetration per check
+  std::vector<double> check_cost_;   // tests per check since the last balance (this rank's)
+  int64_t tests_since_balance_ = 0;
+  double dt0_ = 0.0;
+  double sort_margin_ = 0.0;
+  bool need_sort_ = true;
+
+  // Records of the last cycle, sorted by check: see kRecord in contact.cpp.
+  std::vector<double> records_;
+  std::vector<double> stored_;      // per interface: sum of k pen^2 / 2 of the last cycle
+  std::vector<double> dissipated_;  // per interface: friction and damping, accumulated
+  std::vector<InitialPenetration> initial_;
+  bool moved_initial_ = false;
+  Statistics stats_;
+};
+
+}  // namespace crumple::contact

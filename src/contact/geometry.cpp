@@ -1,0 +1,95 @@
+#include "contact/geometry.hpp"
+
+#include <algorithm>
+
+namespace crumple::contact {
+
+namespace {
+
+Projection triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, double tol) {
+  Projection r;
+  const Vec3 e1 = sub(b, a), e2 = sub(c, a);
+  Vec3 n = cross(e1, e2);
+  const double len = norm(n);
+  if (!(len > 0.0)) return r;
+  n = scale(n, 1.0 / len);
+  // Barycentric coordinates of the foot of the perpendicular.
+  const Vec3 w = sub(p, a);
+  const double d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
+  const double w1 = dot(w, e1), w2 = dot(w, e2);
+  const double det = d11 * d22 - d12 * d12;
+  double l1 = (d22 * w1 - d12 * w2) / det;  // weight of b
+  double l2 = (d11 * w2 - d12 * w1) / det;  // weight of c
+  double l0 = 1.0 - l1 - l2;
+  r.inside = l0 >= -tol && l1 >= -tol && l2 >= -tol;
+  // Clamp onto the triangle so that the weights stay a partition of unity in [0, 1].
+  l0 = std::max(l0, 0.0);
+  l1 = std::max(l1, 0.0);
+  l2 = std::max(l2, 0.0);
+  const double s = l0 + l1 + l2;
+  r.N = {l0 / s, l1 / s, l2 / s, 0.0};
+  for (int i = 0; i < 3; ++i)
+    r.point[std::size_t(i)] =
+        r.N[0] * a[std::size_t(i)] + r.N[1] * b[std::size_t(i)] + r.N[2] * c[std::size_t(i)];
+  r.normal = n;
+  r.d = dot(sub(p, r.point), n);
+  return r;
+}
+
+}  // namespace
+
+Projection project(const Vec3& p, const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3,
+                   bool is_triangle, double tolerance) {
+  if (is_triangle) return triangle(p, x0, x1, x2, tolerance);
+  // Closest point on the bilinear surface x(xi, eta) = sum N_a x_a by Gauss-Newton from the
+  // centre; a flat or mildly warped segment converges in two or three iterations.
+  constexpr double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+  const Vec3* x[4] = {&x0, &x1, &x2, &x3};
+  double xi = 0.0, eta = 0.0;
+  Vec3 t1{}, t2{}, pt{};
+  auto evaluate = [&](double u, double v) {
+    t1 = t2 = pt = Vec3{};
+    for (int a = 0; a < 4; ++a) {
+      const double n = 0.25 * (1 + sx[a] * u) * (1 + sy[a] * v);
+      const double nu = 0.25 * sx[a] * (1 + sy[a] * v);
+      const double nv = 0.25 * sy[a] * (1 + sx[a] * u);
+      for (int i = 0; i < 3; ++i) {
+        pt[std::size_t(i)] += n * (*x[a])[std::size_t(i)];
+        t1[std::size_t(i)] += nu * (*x[a])[std::size_t(i)];
+        t2[std::size_t(i)] += nv * (*x[a])[std::size_t(i)];
+      }
+    }
+  };
+  for (int it = 0; it < 6; ++it) {
+    evaluate(xi, eta);
+    const Vec3 r = sub(p, pt);
+    const double a11 = dot(t1, t1), a12 = dot(t1, t2), a22 = dot(t2, t2);
+    const double b1 = dot(t1, r), b2 = dot(t2, r);
+    const double det = a11 * a22 - a12 * a12;
+    if (!(det > 0.0)) break;
+    const double dxi = (a22 * b1 - a12 * b2) / det;
+    const double deta = (a11 * b2 - a12 * b1) / det;
+    // Keep the iterate within reach of the segment: far outside it the answer is "outside".
+    xi = std::clamp(xi + dxi, -2.0, 2.0);
+    eta = std::clamp(eta + deta, -2.0, 2.0);
+    if (std::abs(dxi) + std::abs(deta) < 1e-10) break;
+  }
+  Projection r;
+  r.inside = std::abs(xi) <= 1.0 + tolerance && std::abs(eta) <= 1.0 + tolerance;
+  xi = std::clamp(xi, -1.0, 1.0);
+  eta = std::clamp(eta, -1.0, 1.0);
+  evaluate(xi, eta);
+  for (int a = 0; a < 4; ++a) r.N[std::size_t(a)] = 0.25 * (1 + sx[a] * xi) * (1 + sy[a] * eta);
+  r.point = pt;
+  Vec3 n = cross(t1, t2);
+  const double len = norm(n);
+  if (!(len > 0.0)) {
+    r.inside = false;
+    return r;
+  }
+  r.normal = scale(n, 1.0 / len);
+  r.d = dot(sub(p, pt), r.normal);
+  return r;
+}
+
+}  // namespace crumple::contact

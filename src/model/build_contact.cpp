@@ -1,0 +1,368 @@
+// Meaning of *CONTACT_... and *CONTROL_CONTACT (LS-DYNA Keyword Manual Vol. I, "*CONTACT"):
+// each interface's two sides resolved to nodes and segments, with the penalty stiffness of
+// every segment taken from the element it bounds (Hallquist, LS-DYNA Theory Manual,
+// "Contact-Impact Algorithm": k = f K A^2 / V for solids, f K A / (max diagonal) for shells).
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "model/build_context.hpp"
+
+namespace crumple::model::build {
+
+namespace {
+using deck::Card;
+using deck::CardCursor;
+using deck::keywordSpec;
+
+Vec3 sub(const Vec3& a, const Vec3& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double dot(const Vec3& a, const Vec3& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// Bulk modulus of the part's material (rigid parts give theirs for contact only).
+double bulkModulus(const Model& m, int32_t part) {
+  const auto& law = m.materials[static_cast<std::size_t>(m.parts[std::size_t(part)].material)].law;
+  return std::visit(
+      [](const auto& l) -> double {
+        if constexpr (requires { l.E, l.nu; })
+          return l.E / (3.0 * (1.0 - 2.0 * l.nu));
+        else
+          return 0.0;
+      },
+      law);
+}
+
+// Area vector of a quadrilateral (or triangle with n3 == n4): half the cross product of its
+// diagonals, exact for a bilinear face.
+Vec3 areaVector(const Model& m, const std::array<int32_t, 4>& s) {
+  const auto& x = m.nodes.x;
+  const auto c = cross(sub(x[std::size_t(s[2])], x[std::size_t(s[0])]),
+                       sub(x[std::size_t(s[3])], x[std::size_t(s[1])]));
+  return {0.5 * c[0], 0.5 * c[1], 0.5 * c[2]};
+}
+Vec3 centroid(const Model& m, const int32_t* n, int count) {
+  Vec3 c{};
+  for (int k = 0; k < count; ++k)
+    for (int i = 0; i < 3; ++i) c[std::size_t(i)] += m.nodes.x[std::size_t(n[k])][std::size_t(i)];
+  for (auto& v : c) v /= count;
+  return c;
+}
+
+// Faces of the 8-node hexahedron in LS-DYNA node order, each listed so that the right-hand
+// rule on (x3 - x1) x (x4 - x2) points out of an element numbered the usual way.
+constexpr int kHexFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                 {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+
+// A face with repeated nodes (wedges and tetrahedra written as hexahedra) as a triangle with
+// n3 == n4, or nothing when fewer than three nodes are distinct.
+bool normaliseFace(std::array<int32_t, 4>& f) {
+  std::array<int32_t, 4> out{};
+  int n = 0;
+  for (int k = 0; k < 4; ++k) {
+    const int32_t v = f[std::size_t(k)];
+    if (n > 0 && out[std::size_t(n - 1)] == v) continue;
+    out[std::size_t(n++)] = v;
+  }
+  if (n > 1 && out[std::size_t(n - 1)] == out[0]) --n;
+  if (n < 3) return false;
+  if (n == 3) out[3] = out[2];
+  f = out;
+  return true;
+}
+
+using FaceKey = std::array<int32_t, 4>;
+FaceKey keyOf(std::array<int32_t, 4> f) {
+  std::sort(f.begin(), f.end());
+  return f;
+}
+
+struct Segment {
+  std::array<int32_t, 4> nodes;
+  int64_t element;
+  double thickness, stiffness;
+};
+
+// The exterior faces of the solids and the shells of the given parts (flags per part index),
+// in global element order. A solid face shared by two solids of the parts is interior.
+std::vector<Segment> partSegments(const Model& m, const std::vector<uint8_t>& in_part) {
+  std::map<FaceKey, int> count;
+  std::vector<std::pair<std::array<int32_t, 4>, int64_t>> faces;
+  for (std::size_t e = 0; e < m.solids.size(); ++e) {
+    if (!in_part[std::size_t(m.solids.part[e])]) continue;
+    const auto& n = m.solids.nodes[e];
+    const Vec3 ce = centroid(m, n.data(), 8);
+    for (const auto& hf : kHexFaces) {
+      std::array<int32_t, 4> f{n[std::size_t(hf[0])], n[std::size_t(hf[1])], n[std::size_t(hf[2])],
+                               n[std::size_t(hf[3])]};
+      if (!normaliseFace(f)) continue;
+      // Orientation from the geometry, so that a mirrored element still faces outwards.
+      const Vec3 cf = centroid(m, f.data(), f[2] == f[3] ? 3 : 4);
+      if (dot(areaVector(m, f), sub(cf, ce)) < 0.0)
+        f = f[2] == f[3] ? std::array<int32_t, 4>{f[0], f[2], f[1], f[1]}
+                         : std::array<int32_t, 4>{f[0], f[3], f[2], f[1]};
+      ++count[keyOf(f)];
+      faces.push_back({f, int64_t(e)});
+    }
+  }
+  std::vector<Segment> out;
+  for (const auto& [f, e] : faces) {
+    if (count[keyOf(f)] != 1) continue;
+    // V from the divergence theorem over the six faces (exact for planar faces).
+    const auto& n = m.solids.nodes[std::size_t(e)];
+    double vol = 0.0;
+    for (const auto& hf : kHexFaces) {
+      std::array<int32_t, 4> g{n[std::size_t(hf[0])], n[std::size_t(hf[1])], n[std::size_t(hf[2])],
+                               n[std::size_t(hf[3])]};
+      vol += dot(centroid(m, g.data(), 4), areaVector(m, g)) / 3.0;
+    }
+    const Vec3 av = areaVector(m, f);
+    const double area2 = dot(av, av);
+    const double k = vol > 0.0 ? bulkModulus(m, m.solids.part[std::size_t(e)]) * area2 / vol : 0.0;
+    out.push_back({f, e, 0.0, k});
+  }
+  const auto shell0 = int64_t(m.familyOffset(Family::Shell));
+  for (std::size_t e = 0; e < m.shells.size(); ++e) {
+    const int32_t p = m.shells.part[e];
+    if (!in_part[std::size_t(p)]) continue;
+    auto f = m.shells.nodes[e];
+    const auto& t = m.shells.thickness[e];
+    const double thick = 0.25 * (t[0] + t[1] + t[2] + t[3]);
+    const auto& x = m.nodes.x;
+    const Vec3 d1 = sub(x[std::size_t(f[2])], x[std::size_t(f[0])]);
+    const Vec3 d2 = sub(x[std::size_t(f[3])], x[std::size_t(f[1])]);
+    const double diag = std::sqrt(std::max(dot(d1, d1), dot(d2, d2)));
+    const Vec3 av = areaVector(m, f);
+    const double area = std::sqrt(dot(av, av));
+    const double k = diag > 0.0 ? bulkModulus(m, p) * area / diag : 0.0;
+    out.push_back({f, shell0 + int64_t(e), thick, k});
+  }
+  return out;
+}
+
+// Surface type codes of card 1 (SSTYP / MSTYP, "SURFATYP"): 0 segment set, 2 part set,
+// 3 part, 4 node set, 5 every part, 6 every part but a part set.
+struct Side {
+  std::vector<Segment> segments;
+  std::vector<int32_t> nodes;
+  bool nodes_only = false;
+};
+
+Side readSide(Context& ctx, const Card& c, std::string_view id_field, std::string_view type_field) {
+  const Model& m = ctx.model;
+  const int64_t id = c.integer(id_field);
+  const int64_t type = c.integer(type_field);
+  Side side;
+  std::vector<uint8_t> in_part(m.parts.size(), 0);
+  switch (type) {
+    case 0: {
+      if (id == 0) c.fail(id_field, "a segment set id is required for type 0");
+      // Segments of a set keep the user's orientation; stiffness from the element they bound.
+      std::map<FaceKey, std::pair<int64_t, std::size_t>> owner;
+      std::fill(in_part.begin(), in_part.end(), 1);
+      const auto all = partSegments(m, in_part);
+      for (std::size_t k = 0; k < all.size(); ++k) owner[keyOf(all[k].nodes)] = {all[k].element, k};
+      for (auto s : ctx.segmentSet(c, id_field, id)) {
+        auto it = owner.find(keyOf(s));
+        if (it == owner.end())
+          c.fail(id_field, "segment set " + std::to_string(id) +
+                               " has a segment that is not a free face of a solid or a shell");
+        const Segment& base = all[it->second.second];
+        side.segments.push_back({s, base.element, base.thickness, base.stiffness});
+      }
+      break;
+    }
+    case 2:
+      for (int32_t p : ctx.partSet(c, id_field, id)) in_part[std::size_t(p)] = 1;
+      break;
+    case 3:
+      in_part[std::size_t(ctx.part(c, id_field, id))] = 1;
+      break;
+    case 4:
+      side.nodes = ctx.nodeSet(c, id_field, id);
+      side.nodes_only = true;
+      break;
+    case 5:
+      std::fill(in_part.begin(), in_part.end(), 1);
+      break;
+    case 6:
+      std::fill(in_part.begin(), in_part.end(), 1);
+      if (id != 0)
+        for (int32_t p : ctx.partSet(c, id_field, id)) in_part[std::size_t(p)] = 0;
+      break;
+    default:
+      c.fail(type_field, "surface type " + std::to_string(type) +
+                             " is not supported (0 segment set, 2 part set, 3 part, 4 node set, "
+                             "5 all parts, 6 all but a part set)");
+  }
+  if (type != 0 && type != 4) side.segments = partSegments(m, in_part);
+  if (!side.nodes_only) {
+    for (const auto& s : side.segments)
+      side.nodes.insert(side.nodes.end(), s.nodes.begin(), s.nodes.end());
+    // Beam and spring nodes of the parts take part as nodes (they carry no segment).
+    for (std::size_t g = m.familyOffset(Family::Beam); g < m.numElements(); ++g)
+      if (in_part[std::size_t(m.elementPart(g))] && type != 0) {
+        int32_t n[8];
+        side.nodes.insert(side.nodes.end(), n, n + m.elementNodes(g, n));
+      }
+  }
+  std::sort(side.nodes.begin(), side.nodes.end());
+  side.nodes.erase(std::unique(side.nodes.begin(), side.nodes.end()), side.nodes.end());
+  return side;
+}
+
+// Keeps the nodes inside the box and the segments whose centroid is inside it (SBOXID and
+// MBOXID act on the initial geometry, as in LS-DYNA).
+void applyBox(const Context& ctx, const Card& c, std::string_view field, Side& side) {
+  const int64_t id = c.integer(field);
+  if (id == 0) return;
+  const Box& box = ctx.box(c, field, id);
+  const Model& m = ctx.model;
+  std::erase_if(side.nodes, [&](int32_t n) { return !box.contains(m.nodes.x[std::size_t(n)]); });
+  std::erase_if(side.segments, [&](const Segment& s) {
+    return !box.contains(centroid(m, s.nodes.data(), s.nodes[2] == s.nodes[3] ? 3 : 4));
+  });
+}
+
+ContactSurface makeSurface(const Model& m, const Side& side, double thickness_override) {
+  ContactSurface s;
+  s.nodes = side.nodes;
+  for (const auto& seg : side.segments) {
+    s.segments.push_back(seg.nodes);
+    s.segment_element.push_back(seg.element);
+    const double t =
+        seg.thickness > 0.0 && thickness_override > 0.0 ? thickness_override : seg.thickness;
+    s.segment_thickness.push_back(t);
+    s.segment_stiffness.push_back(seg.stiffness);
+  }
+  // Half the thickest shell at each node: every shell at a node offsets it, whether or not
+  // the shell is on this side (a node set side has no segments of its own).
+  std::vector<double> half(m.nodes.size(), 0.0);
+  for (std::size_t e = 0; e < m.shells.size(); ++e) {
+    const auto& t = m.shells.thickness[e];
+    const double h =
+        0.5 * (thickness_override > 0.0 ? thickness_override : 0.25 * (t[0] + t[1] + t[2] + t[3]));
+    for (int32_t n : m.shells.nodes[e]) half[std::size_t(n)] = std::max(half[std::size_t(n)], h);
+  }
+  for (int32_t n : s.nodes) s.node_half_thickness.push_back(half[std::size_t(n)]);
+  return s;
+}
+
+}  // namespace
+
+void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  // The words between *CONTACT_ and _ID/_TITLE name the algorithm.
+  std::string name = kw.name;
+  for (std::string_view tail : {"_TITLE", "_ID"})
+    if (name.size() > tail.size() && name.substr(name.size() - tail.size()) == tail)
+      name.resize(name.size() - tail.size());
+  ContactInterface ci;
+  if (name == "*CONTACT_NODES_TO_SURFACE") {
+    ci.kind = ContactKind::NodesToSurface;
+  } else if (name == "*CONTACT_AUTOMATIC_NODES_TO_SURFACE") {
+    ci.kind = ContactKind::NodesToSurface;
+    ci.automatic = true;
+  } else if (name == "*CONTACT_SURFACE_TO_SURFACE") {
+    ci.kind = ContactKind::SurfaceToSurface;
+  } else if (name == "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE") {
+    ci.kind = ContactKind::SurfaceToSurface;
+    ci.automatic = true;
+  } else if (name == "*CONTACT_SINGLE_SURFACE") {
+    ci.kind = ContactKind::SingleSurface;
+  } else if (name == "*CONTACT_AUTOMATIC_SINGLE_SURFACE" || name == "*CONTACT_AUTOMATIC_GENERAL") {
+    ci.kind = ContactKind::SingleSurface;
+    ci.automatic = true;
+  } else {
+    ctx.reportUnsupported(kw, "contact type not supported");
+    return;
+  }
+  const auto& spec = keywordSpec("*CONTACT");
+  CardCursor cur(kw, ctx.deck);
+  ci.id = int64_t(ctx.model.contacts.size()) + 1;
+  ci.keyword = kw.name;
+  if (opts.has("ID") || opts.has("TITLE")) {
+    const Card& idc = cur.read(spec.card("id card"));
+    if (!idc.blank("CID")) ci.id = idc.integer("CID");
+    ci.title = idc.text("HEADING");
+  }
+  for (const auto& other : ctx.model.contacts)
+    if (other.id == ci.id)
+      ctx.rejectKeyword(
+          kw, "contact id " + std::to_string(ci.id) + " is already used at " + other.where.str());
+  const Card& c1 = cur.read(spec.card("card 1"));
+  const Card& c2 = cur.readOptional(spec.card("card 2"));
+  const Card& c3 = cur.readOptional(spec.card("card 3"));
+  const Card& ca = cur.readOptional(spec.card("card A"));
+  ci.where = c1.where();
+  ci.fs = c2.real("FS");
+  ci.fd = c2.blank("FD") || c2.real("FD") == 0.0 ? ci.fs : c2.real("FD");
+  ci.dc = c2.real("DC");
+  ci.vdc = c2.real("VDC");
+  if (ci.fs < 0) c2.fail("FS", "must not be negative");
+  if (ci.fd < 0) c2.fail("FD", "must not be negative");
+  if (ci.dc < 0) c2.fail("DC", "must not be negative");
+  if (ci.vdc < 0 || ci.vdc > 100) c2.fail("VDC", "must lie in [0, 100] (% of critical)");
+  ci.birth = c2.real("BT");
+  ci.death = c2.real("DT");
+  if (ci.death <= ci.birth) c2.fail("DT", "the death time must come after the birth time");
+  ci.sfs = c3.real("SFS");
+  ci.sfm = c3.real("SFM");
+  ci.sst = c3.real("SST");
+  ci.mst = c3.real("MST");
+  if (ci.sfs <= 0) c3.fail("SFS", "must be positive");
+  if (ci.sfm <= 0) c3.fail("SFM", "must be positive");
+  if (ci.sst < 0) c3.fail("SST", "must not be negative");
+  if (ci.mst < 0) c3.fail("MST", "must not be negative");
+  ci.soft = int(ca.integer("SOFT"));
+  if (ci.soft != 0 && ci.soft != 1) ctx.reject(ca, "SOFT", "only SOFT 0 and 1 are supported");
+  ci.sofscl = ca.real("SOFSCL");
+  if (ci.sofscl <= 0) ca.fail("SOFSCL", "must be positive");
+
+  Side a = readSide(ctx, c1, "SSID", "SSTYP");
+  applyBox(ctx, c1, "SBOXID", a);
+  Side b;
+  if (ci.kind == ContactKind::SingleSurface) {
+    if (a.nodes_only) c1.fail("SSTYP", "a single surface needs segments, not a node set");
+    if (c1.integer("MSID") != 0 || c1.integer("MSTYP") != 0)
+      ctx.ignore(kw.name, "MSID", "a single surface has one side", c1.where());
+  } else {
+    b = readSide(ctx, c1, "MSID", "MSTYP");
+    applyBox(ctx, c1, "MBOXID", b);
+    if (b.nodes_only) c1.fail("MSTYP", "the master side needs segments, not a node set");
+    if (ci.kind == ContactKind::SurfaceToSurface && a.nodes_only)
+      c1.fail("SSTYP", "a surface-to-surface contact needs segments on both sides");
+    if (b.segments.empty()) c1.fail("MSID", "the master side has no segments");
+  }
+  if (a.nodes.empty()) c1.fail("SSID", "the slave side has no nodes");
+  if (ci.kind == ContactKind::SingleSurface && a.segments.empty())
+    c1.fail("SSID", "the surface has no segments");
+  ci.a = makeSurface(ctx.model, a, ci.sst);
+  if (ci.kind != ContactKind::SingleSurface) ci.b = makeSurface(ctx.model, b, ci.mst);
+  ctx.model.contacts.push_back(std::move(ci));
+  ctx.collect(cur);
+}
+
+void readControlContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*CONTROL_CONTACT");
+  CardCursor cur(kw, ctx.deck);
+  const Card& c1 = cur.readOptional(spec.card("card 1"));
+  ContactControls& k = ctx.model.contact_controls;
+  k.slsfac = c1.real("SLSFAC");
+  if (k.slsfac <= 0) c1.fail("SLSFAC", "must be positive");
+  for (const char* label : {"card 2", "card 3"})
+    if (!cur.atEnd()) cur.read(spec.card(label));
+  if (!cur.atEnd()) {
+    const Card& c4 = cur.read(spec.card("card 4"));
+    k.ignore = int(c4.integer("IGNORE"));
+    if (k.ignore < 0 || k.ignore > 2) c4.fail("IGNORE", "must be 0, 1 or 2");
+  }
+  while (!cur.atEnd()) cur.read(spec.card("card 5"));
+  ctx.collect(cur);
+}
+
+}  // namespace crumple::model::build

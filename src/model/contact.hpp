@@ -1,0 +1,67 @@
+// Contact interfaces as the deck defines them (*CONTACT_..., LS-DYNA Keyword Manual Vol. I,
+// "*CONTACT"), resolved to segments and nodes with model indices. The penalty method and the
+// search live in src/contact; this is only the data they start from.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "util/source_loc.hpp"
+
+namespace crumple::model {
+
+// One side of an interface: the nodes that are checked against the other side's segments,
+// and the segments the other side's nodes are checked against. A segment is four model node
+// indices (n3 == n4 for a triangle), oriented so that its normal (x3-x1) x (x4-x2) points
+// out of the solid it bounds; shell segments follow the shell's node order.
+struct ContactSurface {
+  std::vector<int32_t> nodes;  // ascending model node indices
+  std::vector<std::array<int32_t, 4>> segments;
+  // Per segment: the global element it bounds, its shell thickness (0 for a solid face: the
+  // surface has one side) and its penalty stiffness before the scale factors,
+  // K A^2 / V for a solid face and K A / (longest diagonal) for a shell (Hallquist, LS-DYNA
+  // Theory Manual, "Contact-Impact Algorithm", penalty method; DYNA3D User Manual sec. 6).
+  std::vector<int64_t> segment_element;
+  std::vector<double> segment_thickness;
+  std::vector<double> segment_stiffness;
+  // Per node: half the largest shell thickness at it (0 where only solids meet it), the
+  // offset of a node of this side from the mid-surface of the other.
+  std::vector<double> node_half_thickness;
+};
+
+enum class ContactKind : uint8_t {
+  NodesToSurface,    // one way: nodes of side A against segments of side B
+  SurfaceToSurface,  // two way (symmetric): both of the above
+  SingleSurface,     // the nodes of one surface against its own segments
+};
+
+struct ContactInterface {
+  int64_t id = 0;  // CID of _ID/_TITLE, else the 1-based order of definition
+  std::string title;
+  std::string keyword;  // as written, for messages
+  ContactKind kind = ContactKind::NodesToSurface;
+  bool automatic = false;         // _AUTOMATIC_: segment orientation found from the approach side
+  ContactSurface a, b;            // SURFA (slave) and SURFB (master); b empty for single surface
+  double fs = 0, fd = 0, dc = 0;  // Coulomb friction: mu = FD + (FS - FD) exp(-DC |v_rel|)
+  double vdc = 0;                 // viscous damping, % of critical
+  double birth = 0, death = 1e20;
+  double sfs = 1, sfm = 1;  // penalty scale factors of the A and B segments (SFSA, SFSB)
+  double sst = 0, mst = 0;  // contact thickness overrides of A and B (0 = shell thickness)
+  int soft = 0;             // 1: stiffness also from the nodal masses and the time step
+  double sofscl = 0.1;
+  util::SourceLoc where;
+};
+
+// *CONTROL_CONTACT
+struct ContactControls {
+  double slsfac = 0.1;  // global penalty scale factor
+  // IGNORE (card 4): 0 moves initially penetrating nodes back to the surface (DYNA3D), 1 and
+  // 2 keep the initial penetration and push back only what goes beyond it.
+  int ignore = 0;
+  // Re-partition the contact work when the busiest rank carries this many times the mean.
+  double rebalance_threshold = 1.25;
+};
+
+}  // namespace crumple::model
