@@ -38,6 +38,7 @@ struct Contact::Pass {
   std::vector<std::array<int32_t, 4>> seg;  // contact nodes
   std::vector<double> seg_half;             // half thickness (0: one-sided solid face)
   std::vector<double> seg_k;                // penalty stiffness with the scale factors
+  std::vector<double> seg_depth;            // ContactSurface::segment_depth
   // Single surface: the nodes sharing a segment with each node (CSR over contact nodes).
   std::vector<int32_t> near_ptr, near_node;
   double reach_extra = 0.0;  // largest node + segment half thickness
@@ -92,7 +93,7 @@ Contact::Contact(const model::Model& model, domain::Subdomain& sd, comm::Communi
     p.iface = iface;
     p.self = self;
     p.first_check = num_checks_;
-    double max_node_half = 0.0, max_seg_half = 0.0;
+    double max_node_half = 0.0, max_seg_half = 0.0, max_depth = 0.0;
     for (std::size_t k = 0; k < nodes.nodes.size(); ++k) {
       p.node.push_back(cn(nodes.nodes[k]));
       p.node_half.push_back(nodes.node_half_thickness[k]);
@@ -103,9 +104,11 @@ Contact::Contact(const model::Model& model, domain::Subdomain& sd, comm::Communi
       p.seg.push_back({cn(s[0]), cn(s[1]), cn(s[2]), cn(s[3])});
       p.seg_half.push_back(0.5 * segs.segment_thickness[k]);
       p.seg_k.push_back(slsfac * sf * segs.segment_stiffness[k]);
+      p.seg_depth.push_back(segs.segment_depth[k]);
       max_seg_half = std::max(max_seg_half, 0.5 * segs.segment_thickness[k]);
+      max_depth = std::max(max_depth, segs.segment_depth[k]);
     }
-    p.reach_extra = max_node_half + max_seg_half;
+    p.reach_extra = max_node_half + max_seg_half + 0.5 * max_depth;
     if (self) {
       std::vector<std::vector<int32_t>> near(ncn);
       for (const auto& s : p.seg)
@@ -296,7 +299,8 @@ bool Contact::search(const Pass& p, int32_t check, Candidate& best, int64_t& tes
               mx[std::size_t(i)] =
                   std::max(mx[std::size_t(i)], x_[3 * std::size_t(a) + std::size_t(i)]);
             }
-          const double slack = h + 0.5 * std::max({mx[0] - mn[0], mx[1] - mn[1], mx[2] - mn[2]});
+          const double slack =
+              h + 0.5 * std::max({mx[0] - mn[0], mx[1] - mn[1], mx[2] - mn[2], p.seg_depth[s]});
           bool away = false;
           for (int i = 0; i < 3; ++i)
             away = away || x[std::size_t(i)] < mn[std::size_t(i)] - slack ||
@@ -316,14 +320,10 @@ bool Contact::search(const Pass& p, int32_t check, Candidate& best, int64_t& tes
             cand.push = pr.d >= 0.0 ? pr.normal : scale(pr.normal, -1.0);
           } else {
             // A solid face: one side, the outward normal; a node deeper than half the
-            // segment's size is on the far side of something else, not in contact here.
+            // element under the face is on the far side of something else.
             cand.gap = pr.d - h_node;
             cand.push = pr.normal;
-            const double size =
-                std::sqrt(norm(cross(sub(at(x_, std::size_t(sn[2])), at(x_, std::size_t(sn[0]))),
-                                     sub(at(x_, std::size_t(sn[3])), at(x_, std::size_t(sn[1]))))) *
-                          0.5);
-            if (cand.gap < -0.5 * size) continue;
+            if (!(cand.gap > -0.5 * p.seg_depth[s])) continue;
           }
           if (!(cand.gap < 0.0)) continue;
           // Which segment a node is in contact with must not jump (a jump to a deeper
@@ -486,6 +486,10 @@ void Contact::initialize(double dt0) {
       const auto check = p.first_check + int32_t(k);
       if (!search(p, check, best, tests, true)) continue;
       const auto node = std::size_t(p.node[k]);
+      // Nodes that touch to round-off are not penetrations (a block resting on a plate).
+      const double ref = p.seg_half[std::size_t(best.seg)] > 0.0 ? p.seg_half[std::size_t(best.seg)]
+                                                                  : p.seg_depth[std::size_t(best.seg)];
+      if (-best.gap <= 1e-9 * ref) continue;
       initial_.push_back({ci.id,
                           model_.nodes.size() ? model_.nodes.id[std::size_t(cn_model_[node])] : 0,
                           -best.gap});
@@ -632,11 +636,12 @@ void Contact::computeForces(double time, double dt_prev) {
       for (int c = 0; c < 3; ++c)
         sd_.f[3 * std::size_t(l) + std::size_t(c)] -= rec[2 + a] * rec[6 + c];
     }
-    // Penetration relative to the segment's size (shells: to the contact thickness).
-    const double h =
-        p.seg_half[std::size_t(rec[1])] + p.node_half[check - std::size_t(p.first_check)];
-    if (h > 0.0)
-      stats_.max_penetration_ratio = std::max(stats_.max_penetration_ratio, rec[12] / (2.0 * h));
+    // Penetration relative to the contact thickness (shells) or the element depth (solids).
+    const auto seg = std::size_t(rec[1]);
+    const double h = p.seg_half[seg] + p.node_half[check - std::size_t(p.first_check)];
+    const double ref = h > 0.0 ? 2.0 * h : p.seg_depth[seg];
+    if (ref > 0.0)
+      stats_.max_penetration_ratio = std::max(stats_.max_penetration_ratio, rec[12] / ref);
   }
 }
 

@@ -85,7 +85,7 @@ FaceKey keyOf(std::array<int32_t, 4> f) {
 struct Segment {
   std::array<int32_t, 4> nodes;
   int64_t element;
-  double thickness, stiffness;
+  double thickness, stiffness, depth;
 };
 
 // The exterior faces of the solids and the shells of the given parts (flags per part index),
@@ -124,7 +124,7 @@ std::vector<Segment> partSegments(const Model& m, const std::vector<uint8_t>& in
     const Vec3 av = areaVector(m, f);
     const double area2 = dot(av, av);
     const double k = vol > 0.0 ? bulkModulus(m, m.solids.part[std::size_t(e)]) * area2 / vol : 0.0;
-    out.push_back({f, e, 0.0, k});
+    out.push_back({f, e, 0.0, k, area2 > 0.0 ? vol / std::sqrt(area2) : 0.0});
   }
   const auto shell0 = int64_t(m.familyOffset(Family::Shell));
   for (std::size_t e = 0; e < m.shells.size(); ++e) {
@@ -140,7 +140,7 @@ std::vector<Segment> partSegments(const Model& m, const std::vector<uint8_t>& in
     const Vec3 av = areaVector(m, f);
     const double area = std::sqrt(dot(av, av));
     const double k = diag > 0.0 ? bulkModulus(m, p) * area / diag : 0.0;
-    out.push_back({f, shell0 + int64_t(e), thick, k});
+    out.push_back({f, shell0 + int64_t(e), thick, k, thick});
   }
   return out;
 }
@@ -173,7 +173,7 @@ Side readSide(Context& ctx, const Card& c, std::string_view id_field, std::strin
           c.fail(id_field, "segment set " + std::to_string(id) +
                                " has a segment that is not a free face of a solid or a shell");
         const Segment& base = all[it->second.second];
-        side.segments.push_back({s, base.element, base.thickness, base.stiffness});
+        side.segments.push_back({s, base.element, base.thickness, base.stiffness, base.depth});
       }
       break;
     }
@@ -239,6 +239,7 @@ ContactSurface makeSurface(const Model& m, const Side& side, double thickness_ov
         seg.thickness > 0.0 && thickness_override > 0.0 ? thickness_override : seg.thickness;
     s.segment_thickness.push_back(t);
     s.segment_stiffness.push_back(seg.stiffness);
+    s.segment_depth.push_back(seg.depth);
   }
   // Half the thickest shell at each node: every shell at a node offsets it, whether or not
   // the shell is on this side (a node set side has no segments of its own).

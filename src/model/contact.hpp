@@ -26,6 +26,10 @@ struct ContactSurface {
   std::vector<int64_t> segment_element;
   std::vector<double> segment_thickness;
   std::vector<double> segment_stiffness;
+  // Per segment: the depth of its element under it (V / A of a solid, the thickness of a
+  // shell). A node deeper than half of it inside a solid is on the far side of the element,
+  // not in contact with this face.
+  std::vector<double> segment_depth;
   // Per node: half the largest shell thickness at it (0 where only solids meet it), the
   // offset of a node of this side from the mid-surface of the other.
   std::vector<double> node_half_thickness;

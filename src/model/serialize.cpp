@@ -211,6 +211,7 @@ void fields(A& a, M& m) {
     a(sf.segment_element);
     a(sf.segment_thickness);
     a(sf.segment_stiffness);
+    a(sf.segment_depth);
     a(sf.node_half_thickness);
   };
   a.count(

@@ -1,0 +1,279 @@
+#!/usr/bin/env python3
+"""Decks for the contact verification problems (../shared/reference/verification.md) and the
+contact benchmark. Each function returns deck text; `main` writes one to a file:
+
+  python3 tools/contact_decks.py blocks OUT.k [--kind SURFACE_TO_SURFACE]
+  python3 tools/contact_decks.py sliding OUT.k [--mu 0.3]
+  python3 tools/contact_decks.py hertz OUT.k [--n 16]
+  python3 tools/contact_decks.py tube OUT.k [--size 2.5] [--length 120]
+
+Units: SI (m, kg, s, Pa) for blocks, sliding and hertz; mm, ms, kg, GPa for the tube.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import pathlib
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from deckgen import Mesh, block  # noqa: E402
+
+
+def _velocities(ids, v) -> str:
+    return "".join(f"{i:10d}{v[0]:10.4g}{v[1]:10.4g}{v[2]:10.4g}\n" for i in ids)
+
+
+def colliding_blocks(kind: str = "SURFACE_TO_SURFACE", n1: int = 4, n2: int = 5,
+                     offset: float = 0.001, v: float = 10.0, end: float = 8e-5) -> str:
+    """Two elastic steel cubes (10 mm, meshes n1^3 and n2^3, the second shifted sideways by
+    `offset`) flying at each other at +-v along z across a 0.5 mm gap."""
+    m = Mesh()
+    block(m, 1, (0, 0, 0), (0.01, 0.01, 0.01), (n1, n1, n1))
+    block(m, 2, (offset, offset, 0.0105), (0.01, 0.01, 0.01), (n2, n2, n2))
+    a = m.node_ids(lambda x, y, z: z <= 0.0100001)
+    b = m.node_ids(lambda x, y, z: z >= 0.0104)
+    return f"""*KEYWORD
+*TITLE
+two elastic blocks colliding ({kind})
+*CONTROL_TERMINATION
+{end:10.4g}
+*DATABASE_GLSTAT
+   1.0e-06
+*DATABASE_MATSUM
+   1.0e-06
+*DATABASE_RCFORC
+   1.0e-06
+*PART
+block a
+         1         1         1
+block b
+         2         1         1
+*SECTION_SOLID
+         1         1
+*MAT_ELASTIC
+         1    7850.0   2.0e+11       0.3
+*CONTACT_{kind}_ID
+         7
+         1         2         3         3
+*INITIAL_VELOCITY_NODE
+{_velocities(a, (0, 0, v))}{_velocities(b, (0, 0, -v))}{m.keyword_text()}*END
+"""
+
+
+def sliding_block(mu: float = 0.3, v0: float = 1.0, g: float = 9.81, end: float = 0.5) -> str:
+    """A soft elastic block (0.1 m, 4 x 4 x 2 hexes) sliding at v0 over a fixed rigid plate
+    under gravity g with Coulomb friction mu: it stops after v0^2 / (2 mu g)."""
+    m = Mesh()
+    block(m, 1, (0.0, 0.0, 0.0), (0.1, 0.1, 0.05), (4, 4, 2))
+    block(m, 2, (-0.2, -0.2, -0.05), (1.0, 0.5, 0.05), (10, 5, 1))
+    blk = list(range(1, 5 * 5 * 3 + 1))  # the block's nodes come first
+    return f"""*KEYWORD
+*TITLE
+block sliding on a rigid plate with Coulomb friction
+*CONTROL_TERMINATION
+{end:10.4g}
+*DATABASE_GLSTAT
+     0.005
+*DATABASE_HISTORY_NODE
+         1
+*DATABASE_NODOUT
+     0.001
+*PART
+block
+         1         1         1
+plate
+         2         1         2
+*SECTION_SOLID
+         1         1
+*MAT_ELASTIC
+         1    1000.0     1.0e7       0.3
+*MAT_RIGID
+         2    1000.0     1.0e8       0.3
+       1.0         7         7
+*DEFINE_CURVE
+         1
+                 0.0                 1.0
+               100.0                 1.0
+*LOAD_BODY_Z
+         1{g:10.4g}
+*CONTACT_NODES_TO_SURFACE
+         1         2         3         3
+{mu:10.4g}{mu:10.4g}
+*INITIAL_VELOCITY_NODE
+{_velocities(blk, (v0, 0, 0))}{m.keyword_text()}*END
+"""
+
+
+def hertz_sphere(n: int = 16, radius: float = 0.01, E: float = 1.0e7, nu: float = 0.3,
+                 rho: float = 1000.0, v: float = 1.0, end: float = 3e-3) -> str:
+    """An elastic ball (a cube grid of n^3 hexes mapped radially onto the sphere) dropped at v onto a
+    rigid plate (node set on the ball against the plate's top face, automatic contact)."""
+    m = Mesh()
+    grid = {}
+    for k in range(n + 1):
+        for j in range(n + 1):
+            for i in range(n + 1):
+                x, y, z = (2.0 * i / n - 1.0, 2.0 * j / n - 1.0, 2.0 * k / n - 1.0)
+                # Cube-to-ball map: each point moves radially, by a weight growing from the
+                # centre (unchanged) to the cube surface (projected onto the sphere), so the
+                # corner elements stay solid rather than flat.
+                r_inf = max(abs(x), abs(y), abs(z))
+                r_2 = math.sqrt(x * x + y * y + z * z)
+                f = (1.0 - r_inf) + r_inf * r_inf / r_2 if r_2 > 0 else 1.0
+                sx, sy, sz = f * x, f * y, f * z
+                grid[i, j, k] = m.add_node(radius * sx, radius * sy, radius * (sz + 1.0) + 1e-5)
+    for k in range(n):
+        for j in range(n):
+            for i in range(n):
+                m.add_solid(1, [grid[i, j, k], grid[i + 1, j, k], grid[i + 1, j + 1, k],
+                                grid[i, j + 1, k], grid[i, j, k + 1], grid[i + 1, j, k + 1],
+                                grid[i + 1, j + 1, k + 1], grid[i, j + 1, k + 1]])
+    ball = list(range(1, len(m.nodes) + 1))
+    half = 1.5 * radius
+    block(m, 2, (-half, -half, -0.2 * radius), (2 * half, 2 * half, 0.2 * radius), (6, 6, 1))
+    return f"""*KEYWORD
+*TITLE
+elastic ball on a rigid plate (Hertz)
+*CONTROL_TERMINATION
+{end:10.4g}
+*DATABASE_GLSTAT
+   1.0e-05
+*DATABASE_RCFORC
+   2.0e-06
+*PART
+ball
+         1         1         1
+plate
+         2         1         2
+*SECTION_SOLID
+         1         1
+*MAT_ELASTIC
+         1{rho:10.4g}{E:10.4g}{nu:10.4g}
+*MAT_RIGID
+         2{rho:10.4g}{100 * E:10.4g}{nu:10.4g}
+       1.0         7         7
+*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE
+         1         2         3         3
+*INITIAL_VELOCITY_NODE
+{_velocities(ball, (0, 0, -v))}{m.keyword_text()}*END
+"""
+
+
+def tube_crush(side: float = 50.0, thickness: float = 1.5, length: float = 120.0,
+               size: float = 2.5, speed: float = 10.0, end: float = 6.0,
+               nip: int = 3, single: str = "AUTOMATIC_SINGLE_SURFACE") -> str:
+    """A square steel tube (side C, wall t; mm, ms, kg, GPa) standing on a fixed rigid plate and
+    crushed by a rigid plate moving down at `speed` (m/s = mm/ms), with single-surface contact
+    on the tube and node-to-surface contact with both plates. Nearly perfectly plastic steel
+    (yield 0.3 GPa, tangent 0.5 GPa) so that the folding theories apply with sigma0 = yield."""
+    m = Mesh()
+    per_side = max(2, round(side / size))
+    n_axial = max(2, round(length / size))
+    around = []
+    for s in range(4):
+        for k in range(per_side):
+            f = k / per_side
+            x0, y0 = [(0, 0), (side, 0), (side, side), (0, side)][s]
+            x1, y1 = [(side, 0), (side, side), (0, side), (0, 0)][s]
+            around.append((x0 + f * (x1 - x0) - side / 2, y0 + f * (y1 - y0) - side / 2))
+    ring = len(around)
+    ids = {}
+    for k in range(n_axial + 1):
+        for i in range(ring):
+            z = length * k / n_axial
+            # A small imperfection (a cosine dent of 1% of t near the top) starts the first fold
+            # at the loaded end, as in tests and other codes' examples.
+            x, y = around[i]
+            dent = 0.01 * thickness * math.cos(math.pi * z / (2 * size)) if z < 2 * size else 0.0
+            r = math.hypot(x, y)
+            ids[i, k] = m.add_node(x + dent * x / r, y + dent * y / r, z + 1.0)
+    for k in range(n_axial):
+        for i in range(ring):
+            j = (i + 1) % ring
+            m.add_shell(1, [ids[i, k], ids[j, k], ids[j, k + 1], ids[i, k + 1]])
+    tube_nodes = len(m.nodes)
+    half = 0.8 * side
+    base = len(m.nodes)
+    block(m, 2, (-half, -half, -4.0), (2 * half, 2 * half, 4.0), (8, 8, 1))
+    block(m, 3, (-half, -half, length + 2.0), (2 * half, 2 * half, 4.0), (8, 8, 1))
+    top_first = base + 9 * 9 * 2 + 1
+    return f"""*KEYWORD
+*TITLE
+square steel tube axial crush (single-surface contact)
+*CONTROL_TERMINATION
+{end:10.4g}
+*CONTROL_SHELL
+$    wrpang     esort     irnxx    istupd    theory       bwc     miter      proj
+                                         1
+*DATABASE_GLSTAT
+      0.05
+*DATABASE_RCFORC
+      0.02
+*DATABASE_BINARY_D3PLOT
+       0.5
+*PART
+tube
+         1         1         1
+base plate
+         2         2         2
+crushing plate
+         3         2         3
+*SECTION_SHELL
+         1         2       1.0{nip:10d}
+{thickness:10.4g}{thickness:10.4g}{thickness:10.4g}{thickness:10.4g}
+*SECTION_SOLID
+         2         1
+*MAT_PLASTIC_KINEMATIC
+         1   7.85e-6     210.0       0.3       0.3       0.5       1.0
+*MAT_RIGID
+         2   7.85e-6     210.0       0.3
+       1.0         7         7
+*MAT_RIGID
+         3   7.85e-6     210.0       0.3
+       1.0         4         7
+*BOUNDARY_PRESCRIBED_MOTION_RIGID
+         3         3         0         1      -1.0
+*DEFINE_CURVE
+         1
+                 0.0{speed:20.6g}
+              1000.0{speed:20.6g}
+*CONTACT_{single}_ID
+         1
+         1         0         3         0
+*CONTACT_AUTOMATIC_NODES_TO_SURFACE_ID
+         2
+         1         2         3         3
+*CONTACT_AUTOMATIC_NODES_TO_SURFACE_ID
+         3
+         1         3         3         3
+{m.keyword_text()}*END
+"""
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    ap.add_argument("problem", choices=["blocks", "sliding", "hertz", "tube"])
+    ap.add_argument("out", type=pathlib.Path)
+    ap.add_argument("--kind", default="SURFACE_TO_SURFACE")
+    ap.add_argument("--mu", type=float, default=0.3)
+    ap.add_argument("--n", type=int, default=16)
+    ap.add_argument("--size", type=float, default=2.5)
+    ap.add_argument("--length", type=float, default=120.0)
+    ap.add_argument("--end", type=float, default=None)
+    a = ap.parse_args()
+    extra = {} if a.end is None else {"end": a.end}
+    if a.problem == "blocks":
+        text = colliding_blocks(a.kind, **extra)
+    elif a.problem == "sliding":
+        text = sliding_block(a.mu, **extra)
+    elif a.problem == "hertz":
+        text = hertz_sphere(a.n, **extra)
+    else:
+        text = tube_crush(size=a.size, length=a.length, **extra)
+    a.out.write_text(text)
+
+
+if __name__ == "__main__":
+    main()
