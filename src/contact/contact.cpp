@@ -152,6 +152,10 @@ Contact::Contact(const model::Model& model, domain::Subdomain& sd, comm::Communi
     }
   }
   stats_.checks = num_checks_;
+  for (const auto& ci : model.contacts)
+    if (ci.bsort > 0)
+      max_sort_interval_ =
+          max_sort_interval_ > 0 ? std::min(max_sort_interval_, ci.bsort) : ci.bsort;
   friction_.assign(3 * std::size_t(num_checks_), 0.0);
   initial_gap_.assign(std::size_t(num_checks_), 0.0);
   last_seg_.assign(std::size_t(num_checks_), -1);
@@ -487,8 +491,9 @@ void Contact::initialize(double dt0) {
       if (!search(p, check, best, tests, true)) continue;
       const auto node = std::size_t(p.node[k]);
       // Nodes that touch to round-off are not penetrations (a block resting on a plate).
-      const double ref = p.seg_half[std::size_t(best.seg)] > 0.0 ? p.seg_half[std::size_t(best.seg)]
-                                                                  : p.seg_depth[std::size_t(best.seg)];
+      const double ref = p.seg_half[std::size_t(best.seg)] > 0.0
+                             ? p.seg_half[std::size_t(best.seg)]
+                             : p.seg_depth[std::size_t(best.seg)];
       if (-best.gap <= 1e-9 * ref) continue;
       initial_.push_back({ci.id,
                           model_.nodes.size() ? model_.nodes.id[std::size_t(cn_model_[node])] : 0,
@@ -527,7 +532,10 @@ void Contact::computeForces(double time, double dt_prev) {
                       (x_[i + 2] - x_sorted_[i + 2]) * (x_[i + 2] - x_sorted_[i + 2]);
     travel = std::max(travel, d2);
   }
-  if (2.0 * std::sqrt(travel) > sort_margin_ || need_sort_) {
+  ++cycles_since_sort_;
+  if (2.0 * std::sqrt(travel) > sort_margin_ || need_sort_ ||
+      (max_sort_interval_ > 0 && cycles_since_sort_ >= max_sort_interval_)) {
+    cycles_since_sort_ = 0;
     maybeRebalance();
     sort_margin_ = 0.0;
     for (auto& p : passes_) sortBuckets(p);

@@ -106,6 +106,8 @@ class Contact {
   double dt0_ = 0.0;
   double sort_margin_ = 0.0;
   bool need_sort_ = true;
+  int cycles_since_sort_ = 0;
+  int max_sort_interval_ = 0;  // smallest BSORT of the interfaces (0: none)
 
   // Records of the last cycle, sorted by check: see kRecord in contact.cpp.
   std::vector<double> records_;

@@ -322,6 +322,8 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
   ci.soft = int(ca.integer("SOFT"));
   if (ci.soft != 0 && ci.soft != 1) ctx.reject(ca, "SOFT", "only SOFT 0 and 1 are supported");
   ci.sofscl = ca.real("SOFSCL");
+  ci.bsort = int(ca.integer("BSORT"));
+  if (ci.bsort < 0) ca.fail("BSORT", "must not be negative");
   if (ci.sofscl <= 0) ca.fail("SOFSCL", "must be positive");
 
   Side a = readSide(ctx, c1, "SSID", "SSTYP");

@@ -55,6 +55,7 @@ struct ContactInterface {
   double sst = 0, mst = 0;  // contact thickness overrides of A and B (0 = shell thickness)
   int soft = 0;             // 1: stiffness also from the nodal masses and the time step
   double sofscl = 0.1;
+  int bsort = 0;  // at most this many cycles between bucket sorts (0: by travel alone)
   util::SourceLoc where;
 };
 

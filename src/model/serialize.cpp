@@ -236,6 +236,7 @@ void fields(A& a, M& m) {
         a(c.mst);
         a(c.soft);
         a(c.sofscl);
+        a(c.bsort);
         loc(a, c.where);
       },
       m.contacts);

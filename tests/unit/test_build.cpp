@@ -330,9 +330,9 @@ TEST(BuildErrors, TableHardeningAndRigidPart) {
 TEST(BuildUnsupported, CountsFirstLocationsReasonsAndIgnoredFields) {
   TempDir t;
   const auto p = t.write("u.k", kMesh +
-                                    "*CONTACT_AUTOMATIC_SINGLE_SURFACE\n1\n"
+                                    "*CONTACT_FORCE_TRANSDUCER_PENALTY\n1\n"
                                     "*DATABASE_ELOUT\n0.1\n"
-                                    "*contact_automatic_single_surface\n2\n"
+                                    "*contact_force_transducer_penalty\n2\n"
                                     "*CONTROL_IMPLICIT_GENERAL\n1\n"
                                     "*CONTROL_MPP_IO_NODUMP\n"
                                     "*CONTROL_THERMAL_SOLVER\n1\n"
@@ -340,7 +340,7 @@ TEST(BuildUnsupported, CountsFirstLocationsReasonsAndIgnoredFields) {
                                     "*SECTION_SOLID\n3,1,1\n");
   const Model m = readModel(p);
   ASSERT_EQ(m.unsupported.size(), 5u);
-  EXPECT_EQ(m.unsupported[0].keyword, "*CONTACT_AUTOMATIC_SINGLE_SURFACE");
+  EXPECT_EQ(m.unsupported[0].keyword, "*CONTACT_FORCE_TRANSDUCER_PENALTY");
   EXPECT_EQ(m.unsupported[0].count, 2);
   EXPECT_EQ(m.unsupported[0].first.line, 25);
   EXPECT_EQ(m.unsupported[0].reason, "not supported");
@@ -357,7 +357,7 @@ TEST(BuildUnsupported, CountsFirstLocationsReasonsAndIgnoredFields) {
   const std::string table = crumple::model::formatUnsupported(m);
   const std::string loc = p.string() + ":25";
   EXPECT_EQ(table.rfind("keyword ", 0), 0u) << table;
-  EXPECT_NE(table.find("*CONTACT_AUTOMATIC_SINGLE_SURFACE      2  " + loc + "  not supported\n"),
+  EXPECT_NE(table.find("*CONTACT_FORCE_TRANSDUCER_PENALTY      2  " + loc + "  not supported\n"),
             std::string::npos)
       << table;
 }
@@ -379,10 +379,13 @@ TEST(BuildRealDecks, ReadToTheEnd) {
   EXPECT_GT(b.shells.size(), 0u);
   EXPECT_EQ(b.nodes.size(), 1940u);
   EXPECT_EQ(b.node_sets.at(1).size(), 64u);
-  bool contact_reported = false;
-  for (const auto& u : b.unsupported)
-    contact_reported |= u.keyword == "*CONTACT_AUTOMATIC_SINGLE_SURFACE";
-  EXPECT_TRUE(contact_reported);
+  // Its automatic single surface over part set 1 (the ball and the plate) is read: one
+  // surface holding the shells of both parts and all their nodes.
+  ASSERT_EQ(b.contacts.size(), 1u);
+  EXPECT_EQ(b.contacts[0].kind, crumple::model::ContactKind::SingleSurface);
+  EXPECT_TRUE(b.contacts[0].automatic);
+  EXPECT_EQ(b.contacts[0].a.segments.size(), b.shells.size());
+  for (const auto& u : b.unsupported) EXPECT_NE(u.keyword, "*CONTACT_AUTOMATIC_SINGLE_SURFACE");
 
   const Model p = readModel(projectile);
   EXPECT_EQ(p.solids.size(), 5664u);

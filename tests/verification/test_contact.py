@@ -1,0 +1,108 @@
+"""Contact against physics (../shared/reference/verification.md), through the command line on
+decks from tools/contact_decks.py:
+
+  - two elastic blocks colliding: momentum exact, energy balance within 1% at every output,
+    the contact energy back to ~0 after they part; node-to-surface, symmetric two-surface and
+    automatic surface-to-surface, with offset meshes of different sizes;
+  - a block sliding on a rigid plate with Coulomb friction: stopping distance v0^2 / (2 mu g)
+    within 3%;
+  - an elastic ball on a rigid plate: Hertz peak force and contact duration within 10%;
+  - a square tube crushed axially with single-surface contact: mean crush force between
+    0.8 x Wierzbicki-Abramowicz and 1.2 x Abramowicz-Jones, no fold through another.
+
+Run as: python3 tests/verification/test_contact.py <crumple> <source dir>
+"""
+
+import csv
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cli"))
+import clitest  # noqa: E402
+from clitest import TempDirTest, crumple, describe, main, read_summary  # noqa: E402
+
+
+def decks():
+    sys.path.insert(0, os.path.join(clitest.SOURCE_DIR, "tools"))
+    import contact_decks  # noqa: E402
+    return contact_decks
+
+
+def rows(folder, name):
+    with open(os.path.join(folder, name), encoding="utf-8") as f:
+        return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+
+
+class ContactVerification(TempDirTest):
+    def run_deck(self, name, text, *args, timeout=600):
+        path = os.path.join(self.tmp, name + ".k")
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(text)
+        out = os.path.join(self.tmp, name + ".out")
+        p = crumple("run", path, "-o", out, "-q", *args, cwd=self.tmp, timeout=timeout)
+        self.assertEqual(p.returncode, 0, describe(p))
+        return out
+
+    def test_colliding_blocks(self):
+        for kind, n2, offset in (("NODES_TO_SURFACE", 4, 0.0), ("SURFACE_TO_SURFACE", 5, 0.001),
+                                 ("AUTOMATIC_SURFACE_TO_SURFACE", 5, 0.0013),
+                                 ("SURFACE_TO_SURFACE", 4, 0.0)):
+            with self.subTest(kind=kind, n2=n2, offset=offset):
+                out = self.run_deck(f"blocks_{kind}_{n2}",
+                                    decks().colliding_blocks(kind, 4, n2, offset))
+                glstat = rows(out, "glstat.csv")
+                ke0 = glstat[0]["kinetic"]
+                ratios = [r["energy_ratio"] for r in glstat]
+                self.assertLess(max(abs(r - 1.0) for r in ratios), 0.01, ratios)
+                peak = max(r["contact"] for r in glstat)
+                self.assertGreater(peak, 0.05 * ke0, "the blocks never met")
+                self.assertLess(abs(glstat[-1]["contact"]), 0.01 * ke0)
+                # Momentum: the sum over the two parts of the z momentum, exact to round-off.
+                matsum = rows(out, "matsum.csv")
+                p0 = sum(r["z_momentum"] for r in matsum if r["time"] == 0.0)
+                last = matsum[-1]["time"]
+                p1 = sum(r["z_momentum"] for r in matsum if r["time"] == last)
+                self.assertAlmostEqual(p1, p0, delta=1e-10 * abs(p0) + 1e-12)
+                # They part: block a (moving up at first) now moves down, block b up.
+                a = [r["z_momentum"] for r in matsum if r["time"] == last and r["part"] == 1][0]
+                b = [r["z_momentum"] for r in matsum if r["time"] == last and r["part"] == 2][0]
+                self.assertLess(a, 0.0)
+                self.assertGreater(b, 0.0)
+                s = read_summary(out)
+                self.assertEqual(s["contact"]["initial_penetrations"], 0)
+                self.assertLess(s["contact"]["max_penetration_ratio"], 0.2)
+
+    def test_sliding_block_stops_at_v0_squared_over_2_mu_g(self):
+        mu, v0, g = 0.3, 1.0, 9.81
+        out = self.run_deck("sliding", decks().sliding_block(mu, v0, g, end=0.5))
+        expected = v0 * v0 / (2 * mu * g)
+        nodout = rows(out, "nodout.csv")
+        last = nodout[-1]
+        self.assertAlmostEqual(last["dx"], expected, delta=0.03 * expected)
+        self.assertLess(abs(last["vx"]), 0.01 * v0)
+        # Stopping time v0 / (mu g) within 5%: the first sample at which vx < 1% of v0.
+        stop = next(r["time"] for r in nodout if r["vx"] < 0.01 * v0)
+        self.assertAlmostEqual(stop, v0 / (mu * g), delta=0.05 * v0 / (mu * g))
+        ratios = [r["energy_ratio"] for r in rows(out, "glstat.csv")]
+        self.assertLess(max(abs(r - 1.0) for r in ratios), 0.01, ratios)
+
+    def test_elastic_ball_matches_hertz(self):
+        R, E, nu, rho, v = 0.01, 1.0e7, 0.3, 1000.0, 1.0
+        out = self.run_deck("hertz", decks().hertz_sphere(16, R, E, nu, rho, v, end=1.5e-3))
+        m = rho * 4.0 / 3.0 * math.pi * R ** 3
+        e_star = E / (1 - nu * nu)  # a rigid flat
+        d_max = (15 * m * v * v / (16 * e_star * math.sqrt(R))) ** 0.4
+        f_max = 4.0 / 3.0 * e_star * math.sqrt(R) * d_max ** 1.5
+        duration = 2.94 * d_max / v
+        plate = [r for r in rows(out, "rcforc.csv") if r["side"] == 2]
+        peak = max(abs(r["fz"]) for r in plate)
+        self.assertAlmostEqual(peak, f_max, delta=0.10 * f_max)
+        touching = [r["time"] for r in plate if abs(r["fz"]) > 0.0]
+        self.assertAlmostEqual(touching[-1] - touching[0], duration, delta=0.10 * duration)
+        ratios = [r["energy_ratio"] for r in rows(out, "glstat.csv")]
+        self.assertLess(max(abs(r - 1.0) for r in ratios), 0.01, ratios)
+
+
+if __name__ == "__main__":
+    main()
