@@ -54,6 +54,23 @@ Vec3 centroid(const Model& m, const int32_t* n, int count) {
   return c;
 }
 
+// Mean thickness of shell e: its own corner thicknesses, or its section's when it gives none.
+double shellThickness(const Model& m, std::size_t e) {
+  auto t = m.shells.thickness[e];
+  if (t[0] == 0.0 && t[1] == 0.0 && t[2] == 0.0 && t[3] == 0.0) {
+    const auto& part = m.parts[std::size_t(m.shells.part[e])];
+    t = m.shell_sections[std::size_t(part.section)].t;
+  }
+  double sum = 0.0;
+  int n = 0;
+  for (double v : t)
+    if (v > 0.0) {
+      sum += v;
+      ++n;
+    }
+  return n > 0 ? sum / n : 0.0;
+}
+
 // Faces of the 8-node hexahedron in LS-DYNA node order, each listed so that the right-hand
 // rule on (x3 - x1) x (x4 - x2) points out of an element numbered the usual way.
 constexpr int kHexFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
@@ -131,8 +148,7 @@ std::vector<Segment> partSegments(const Model& m, const std::vector<uint8_t>& in
     const int32_t p = m.shells.part[e];
     if (!in_part[std::size_t(p)]) continue;
     auto f = m.shells.nodes[e];
-    const auto& t = m.shells.thickness[e];
-    const double thick = 0.25 * (t[0] + t[1] + t[2] + t[3]);
+    const double thick = shellThickness(m, e);
     const auto& x = m.nodes.x;
     const Vec3 d1 = sub(x[std::size_t(f[2])], x[std::size_t(f[0])]);
     const Vec3 d2 = sub(x[std::size_t(f[3])], x[std::size_t(f[1])]);
@@ -245,9 +261,7 @@ ContactSurface makeSurface(const Model& m, const Side& side, double thickness_ov
   // the shell is on this side (a node set side has no segments of its own).
   std::vector<double> half(m.nodes.size(), 0.0);
   for (std::size_t e = 0; e < m.shells.size(); ++e) {
-    const auto& t = m.shells.thickness[e];
-    const double h =
-        0.5 * (thickness_override > 0.0 ? thickness_override : 0.25 * (t[0] + t[1] + t[2] + t[3]));
+    const double h = 0.5 * (thickness_override > 0.0 ? thickness_override : shellThickness(m, e));
     for (int32_t n : m.shells.nodes[e]) half[std::size_t(n)] = std::max(half[std::size_t(n)], h);
   }
   for (int32_t n : s.nodes) s.node_half_thickness.push_back(half[std::size_t(n)]);

@@ -1,3 +1,4 @@
+#include <algorithm>
 // Deck -> Model (src/model/build*.cpp): ordering, defaulting, curves, sets, conditions,
 // unsupported and ignored reports, exact error messages, and the real decks in ../shared.
 #include <gtest/gtest.h>
@@ -384,7 +385,11 @@ TEST(BuildRealDecks, ReadToTheEnd) {
   ASSERT_EQ(b.contacts.size(), 1u);
   EXPECT_EQ(b.contacts[0].kind, crumple::model::ContactKind::SingleSurface);
   EXPECT_TRUE(b.contacts[0].automatic);
-  EXPECT_EQ(b.contacts[0].a.segments.size(), b.shells.size());
+  // The plate's shells (with their thickness) and the free faces of the ball's solids.
+  const auto& t = b.contacts[0].a.segment_thickness;
+  EXPECT_EQ(std::size_t(std::count_if(t.begin(), t.end(), [](double v) { return v > 0.0; })),
+            b.shells.size());
+  EXPECT_EQ(b.contacts[0].a.segments.size(), b.shells.size() + 216u);
   for (const auto& u : b.unsupported) EXPECT_NE(u.keyword, "*CONTACT_AUTOMATIC_SINGLE_SURFACE");
 
   const Model p = readModel(projectile);
