@@ -42,6 +42,8 @@ struct Contact::Pass {
   // Single surface: the nodes sharing a segment with each node (CSR over contact nodes).
   std::vector<int32_t> near_ptr, near_node;
   double reach_extra = 0.0;  // largest node + segment half thickness
+  double max_node_half = 0.0;
+  std::vector<double> box;  // per segment: widened bounding box (lo xyz, hi xyz), each cycle
   double sofscl = 0.0, vdc = 0.0, fs = 0.0, fd = 0.0, dc = 0.0, birth = 0.0, death = 0.0;
   int soft = 0;
   // Bucket grid (rebuilt at each sort).
@@ -109,6 +111,7 @@ Contact::Contact(const model::Model& model, domain::Subdomain& sd, comm::Communi
       max_depth = std::max(max_depth, segs.segment_depth[k]);
     }
     p.reach_extra = max_node_half + max_seg_half + 0.5 * max_depth;
+    p.max_node_half = max_node_half;
     if (self) {
       std::vector<std::vector<int32_t>> near(ncn);
       for (const auto& s : p.seg)
@@ -197,6 +200,29 @@ void Contact::gatherNodes() {
   }
 }
 
+void Contact::updateBoxes(Pass& p) {
+  // Slack: the contact thickness of any node of the pass with the segment, the depth a node may
+  // reach into a solid, and the parametric tolerance of "over the segment".
+  const std::size_t ns = p.seg.size();
+  p.box.resize(6 * ns);
+  for (std::size_t s = 0; s < ns; ++s) {
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    for (int32_t a : p.seg[s])
+      for (int i = 0; i < 3; ++i) {
+        lo[i] = std::min(lo[i], x_[3 * std::size_t(a) + std::size_t(i)]);
+        hi[i] = std::max(hi[i], x_[3 * std::size_t(a) + std::size_t(i)]);
+      }
+    const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+    const double slack = p.max_node_half + p.seg_half[s] +
+                         (p.seg_half[s] > 0.0 ? 0.0 : 0.5 * p.seg_depth[s]) +
+                         2.0 * kInsideTolerance * extent;
+    for (int i = 0; i < 3; ++i) {
+      p.box[6 * s + std::size_t(i)] = lo[i] - slack;
+      p.box[6 * s + 3 + std::size_t(i)] = hi[i] + slack;
+    }
+  }
+}
+
 void Contact::sortBuckets(Pass& p) {
   // Cell size: the reach of a node to a segment whose centroid lies in a neighbouring cell,
   // with a margin the nodes may travel before the next sort (Contact::computeForces).
@@ -259,24 +285,22 @@ Vec3 Contact::segmentNormal(const std::array<int32_t, 4>& s) const {
   return len > 0.0 ? scale(c, 1.0 / len) : Vec3{};
 }
 
-bool Contact::search(const Pass& p, int32_t check, Candidate& best, int64_t& tests,
-                     bool initial) const {
-  const int32_t local = check - p.first_check;
-  const int32_t node = p.node[std::size_t(local)];
+void Contact::collectCandidates(const Pass& p, int32_t check, double margin,
+                                std::vector<int32_t>& out) const {
+  // The segments in the node's bucket and the 26 around it whose widened box, grown by what
+  // node and segment may still travel before the next sort, holds the node.
+  const int32_t node = p.node[std::size_t(check - p.first_check)];
   const Vec3 x = at(x_, std::size_t(node));
   std::array<int32_t, 3> k{};
   for (int i = 0; i < 3; ++i) {
     const double r = (x[std::size_t(i)] - p.lo[std::size_t(i)]) / p.cell;
-    if (r < -1.0 || r >= double(p.dims[std::size_t(i)]) + 1.0) return false;
+    if (r < -1.0 || r >= double(p.dims[std::size_t(i)]) + 1.0) return;
     k[std::size_t(i)] = int32_t(std::floor(r));
   }
-  const double h_node = p.node_half[std::size_t(local)];
-  const int32_t last_seg = last_seg_[std::size_t(check)];
   const int32_t* near_begin =
       p.self ? &p.near_node[std::size_t(p.near_ptr[std::size_t(node)])] : nullptr;
   const int32_t* near_end =
       p.self ? &p.near_node[std::size_t(p.near_ptr[std::size_t(node) + 1])] : nullptr;
-  bool found = false;
   for (int32_t cz = std::max(k[2] - 1, 0); cz <= std::min(k[2] + 1, p.dims[2] - 1); ++cz)
     for (int32_t cy = std::max(k[1] - 1, 0); cy <= std::min(k[1] + 1, p.dims[1] - 1); ++cy)
       for (int32_t cx = std::max(k[0] - 1, 0); cx <= std::min(k[0] + 1, p.dims[0] - 1); ++cx) {
@@ -285,91 +309,108 @@ bool Contact::search(const Pass& p, int32_t check, Candidate& best, int64_t& tes
             std::size_t(cx);
         for (int32_t q = p.cell_ptr[c]; q < p.cell_ptr[c + 1]; ++q) {
           const auto s = std::size_t(p.cell_seg[std::size_t(q)]);
-          const auto& sn = p.seg[s];
+          const double* box = &p.box[6 * s];
+          if (x[0] < box[0] - margin || x[0] > box[3] + margin || x[1] < box[1] - margin ||
+              x[1] > box[4] + margin || x[2] < box[2] - margin || x[2] > box[5] + margin)
+            continue;
+          // A node is never in contact with its own segments, nor (single surface) with the
+          // segments next to them.
           bool skip = false;
-          for (int32_t a : sn) {
+          for (int32_t a : p.seg[s]) {
             if (a == node) skip = true;
             if (near_begin && std::binary_search(near_begin, near_end, a)) skip = true;
           }
-          if (skip) continue;
-          const double h = h_node + p.seg_half[s];
-          // Bounding box of the segment widened by the contact thickness and by the depth a
-          // node may reach into a solid (half the segment's size, below).
-          Vec3 mn{1e300, 1e300, 1e300}, mx{-1e300, -1e300, -1e300};
-          for (int32_t a : sn)
-            for (int i = 0; i < 3; ++i) {
-              mn[std::size_t(i)] =
-                  std::min(mn[std::size_t(i)], x_[3 * std::size_t(a) + std::size_t(i)]);
-              mx[std::size_t(i)] =
-                  std::max(mx[std::size_t(i)], x_[3 * std::size_t(a) + std::size_t(i)]);
-            }
-          const double slack =
-              h + 0.5 * std::max({mx[0] - mn[0], mx[1] - mn[1], mx[2] - mn[2], p.seg_depth[s]});
-          bool away = false;
-          for (int i = 0; i < 3; ++i)
-            away = away || x[std::size_t(i)] < mn[std::size_t(i)] - slack ||
-                   x[std::size_t(i)] > mx[std::size_t(i)] + slack;
-          if (away) continue;
-          ++tests;
-          const Projection pr = project(x, at(x_, std::size_t(sn[0])), at(x_, std::size_t(sn[1])),
-                                        at(x_, std::size_t(sn[2])), at(x_, std::size_t(sn[3])),
-                                        sn[2] == sn[3], kInsideTolerance);
-          if (!pr.inside) continue;
-          Candidate cand;
-          cand.seg = int32_t(s);
-          cand.proj = pr;
-          if (p.seg_half[s] > 0.0) {
-            // A shell: both sides are surfaces, offset by half the thicknesses.
-            cand.gap = std::abs(pr.d) - h;
-            cand.push = pr.d >= 0.0 ? pr.normal : scale(pr.normal, -1.0);
-          } else {
-            // A solid face: one side, the outward normal; a node deeper than half the
-            // element under the face is on the far side of something else.
-            cand.gap = pr.d - h_node;
-            cand.push = pr.normal;
-            if (!(cand.gap > -0.5 * p.seg_depth[s])) continue;
-          }
-          if (!(cand.gap < 0.0)) continue;
-          // Which segment a node is in contact with must not jump (a jump to a deeper
-          // penetration makes energy): the segment of the last cycle first, then a solid face
-          // the node crossed in the last step (it was on its outer side at x(n-1)), then the
-          // nearest way out, the least penetration; ties to the lower segment.
-          // Tracked: the segment of the last cycle, or a neighbour of it (sharing a node) that
-          // continues the same surface (normals within 45 degrees), onto which the node slid.
-          bool tracked = int32_t(s) == last_seg;
-          if (!tracked && last_seg >= 0) {
-            bool shares = false;
-            for (int32_t a : p.seg[std::size_t(last_seg)])
-              for (int32_t b : sn) shares = shares || a == b;
-            if (shares) {
-              const Vec3 n_last = segmentNormal(p.seg[std::size_t(last_seg)]);
-              tracked = dot(n_last, pr.normal) > 0.7071;
-            }
-          }
-          if (tracked) {
-            cand.rank = 0;
-          } else if (p.seg_half[s] > 0.0) {
-            cand.rank = 1;
-          } else {
-            const Projection prev =
-                project(at(x_prev_, std::size_t(node)), at(x_prev_, std::size_t(sn[0])),
-                        at(x_prev_, std::size_t(sn[1])), at(x_prev_, std::size_t(sn[2])),
-                        at(x_prev_, std::size_t(sn[3])), sn[2] == sn[3], kInsideTolerance);
-            cand.rank = prev.d - h_node >= 0.0 ? 1 : 2;
-            // A node already inside a solid that did not come in through this face (nor
-            // slide onto it from the face it was on) is not in contact with it: it is a node
-            // near an edge, below the plane of the side face. Only the initial check takes
-            // such nodes (x(n-1) is x(n) there).
-            if (cand.rank == 2 && !initial) continue;
-          }
-          if (!found || cand.rank < best.rank ||
-              (cand.rank == best.rank &&
-               (cand.gap > best.gap || (cand.gap == best.gap && cand.seg < best.seg)))) {
-            best = cand;
-            found = true;
-          }
+          if (!skip) out.push_back(int32_t(s));
         }
       }
+}
+
+void Contact::buildCandidateLists() {
+  // Valid until the next sort: node and segment then have closed by at most sort_margin_.
+  cand_ptr_.assign(1, 0);
+  cand_seg_.clear();
+  for (int32_t check : my_checks_) {
+    collectCandidates(passes_[std::size_t(check_pass_[std::size_t(check)])], check,
+                      1.1 * sort_margin_, cand_seg_);
+    cand_ptr_.push_back(int32_t(cand_seg_.size()));
+  }
+}
+
+bool Contact::search(const Pass& p, int32_t check, const int32_t* candidates, std::size_t count,
+                     Candidate& best, int64_t& tests, bool initial) const {
+  const int32_t local = check - p.first_check;
+  const int32_t node = p.node[std::size_t(local)];
+  const Vec3 x = at(x_, std::size_t(node));
+  const double h_node = p.node_half[std::size_t(local)];
+  const int32_t last_seg = last_seg_[std::size_t(check)];
+  bool found = false;
+  for (std::size_t q = 0; q < count; ++q) {
+    const auto s = std::size_t(candidates[q]);
+    const double* box = &p.box[6 * s];
+    if (x[0] < box[0] || x[0] > box[3] || x[1] < box[1] || x[1] > box[4] || x[2] < box[2] ||
+        x[2] > box[5])
+      continue;
+    const auto& sn = p.seg[s];
+    const double h = h_node + p.seg_half[s];
+    ++tests;
+    const Projection pr = project(x, at(x_, std::size_t(sn[0])), at(x_, std::size_t(sn[1])),
+                                  at(x_, std::size_t(sn[2])), at(x_, std::size_t(sn[3])),
+                                  sn[2] == sn[3], kInsideTolerance);
+    if (!pr.inside) continue;
+    Candidate cand;
+    cand.seg = int32_t(s);
+    cand.proj = pr;
+    if (p.seg_half[s] > 0.0) {
+      // A shell: both sides are surfaces, offset by half the thicknesses.
+      cand.gap = std::abs(pr.d) - h;
+      cand.push = pr.d >= 0.0 ? pr.normal : scale(pr.normal, -1.0);
+    } else {
+      // A solid face: one side, the outward normal; a node deeper than half the
+      // element under the face is on the far side of something else.
+      cand.gap = pr.d - h_node;
+      cand.push = pr.normal;
+      if (!(cand.gap > -0.5 * p.seg_depth[s])) continue;
+    }
+    if (!(cand.gap < 0.0)) continue;
+    // Which segment a node is in contact with must not jump (a jump to a deeper
+    // penetration makes energy): the segment of the last cycle first, then a solid face
+    // the node crossed in the last step (it was on its outer side at x(n-1)), then the
+    // nearest way out, the least penetration; ties to the lower segment.
+    // Tracked: the segment of the last cycle, or a neighbour of it (sharing a node) that
+    // continues the same surface (normals within 45 degrees), onto which the node slid.
+    bool tracked = int32_t(s) == last_seg;
+    if (!tracked && last_seg >= 0) {
+      bool shares = false;
+      for (int32_t a : p.seg[std::size_t(last_seg)])
+        for (int32_t b : sn) shares = shares || a == b;
+      if (shares) {
+        const Vec3 n_last = segmentNormal(p.seg[std::size_t(last_seg)]);
+        tracked = dot(n_last, pr.normal) > 0.7071;
+      }
+    }
+    if (tracked) {
+      cand.rank = 0;
+    } else if (p.seg_half[s] > 0.0) {
+      cand.rank = 1;
+    } else {
+      const Projection prev =
+          project(at(x_prev_, std::size_t(node)), at(x_prev_, std::size_t(sn[0])),
+                  at(x_prev_, std::size_t(sn[1])), at(x_prev_, std::size_t(sn[2])),
+                  at(x_prev_, std::size_t(sn[3])), sn[2] == sn[3], kInsideTolerance);
+      cand.rank = prev.d - h_node >= 0.0 ? 1 : 2;
+      // A node already inside a solid that did not come in through this face (nor
+      // slide onto it from the face it was on) is not in contact with it: it is a node
+      // near an edge, below the plane of the side face. Only the initial check takes
+      // such nodes (x(n-1) is x(n) there).
+      if (cand.rank == 2 && !initial) continue;
+    }
+    if (!found || cand.rank < best.rank ||
+        (cand.rank == best.rank &&
+         (cand.gap > best.gap || (cand.gap == best.gap && cand.seg < best.seg)))) {
+      best = cand;
+      found = true;
+    }
+  }
   return found;
 }
 
@@ -483,12 +524,16 @@ void Contact::initialize(double dt0) {
   // Initial penetrations, found by every rank over every check (once), in check order.
   const int ignore = model_.contact_controls.ignore;
   int64_t tests = 0;
+  for (auto& p : passes_) updateBoxes(p);
+  std::vector<int32_t> candidates;
   for (const auto& p : passes_) {
     const auto& ci = model_.contacts[std::size_t(p.iface)];
     for (std::size_t k = 0; k < p.node.size(); ++k) {
       Candidate best;
       const auto check = p.first_check + int32_t(k);
-      if (!search(p, check, best, tests, true)) continue;
+      candidates.clear();
+      collectCandidates(p, check, 0.0, candidates);
+      if (!search(p, check, candidates.data(), candidates.size(), best, tests, true)) continue;
       const auto node = std::size_t(p.node[k]);
       // Nodes that touch to round-off are not penetrations (a block resting on a plate).
       const double ref = p.seg_half[std::size_t(best.seg)] > 0.0
@@ -517,6 +562,8 @@ void Contact::initialize(double dt0) {
   }
   x_sorted_ = x_;
   x_prev_ = x_;
+  for (auto& p : passes_) updateBoxes(p);
+  buildCandidateLists();
 }
 
 void Contact::computeForces(double time, double dt_prev) {
@@ -533,24 +580,31 @@ void Contact::computeForces(double time, double dt_prev) {
     travel = std::max(travel, d2);
   }
   ++cycles_since_sort_;
+  bool resorted = false;
   if (2.0 * std::sqrt(travel) > sort_margin_ || need_sort_ ||
       (max_sort_interval_ > 0 && cycles_since_sort_ >= max_sort_interval_)) {
     cycles_since_sort_ = 0;
+    resorted = true;
     maybeRebalance();
     sort_margin_ = 0.0;
     for (auto& p : passes_) sortBuckets(p);
     x_sorted_ = x_;
     ++stats_.sorts;
   }
+  for (auto& p : passes_) updateBoxes(p);
+  if (resorted) buildCandidateLists();
 
   std::vector<double> mine;
   int64_t tests = 0;
-  for (int32_t check : my_checks_) {
+  for (std::size_t i = 0; i < my_checks_.size(); ++i) {
+    const int32_t check = my_checks_[i];
     const Pass& p = passes_[std::size_t(check_pass_[std::size_t(check)])];
     if (time < p.birth || time > p.death) continue;
     Candidate best;
     const int64_t before = tests;
-    const bool hit = search(p, check, best, tests, false);
+    const auto first = std::size_t(cand_ptr_[i]);
+    const bool hit = search(p, check, cand_seg_.data() + first,
+                            std::size_t(cand_ptr_[i + 1]) - first, best, tests, false);
     check_cost_[std::size_t(check)] += double(tests - before);
     if (!hit) continue;
     const double pen = -best.gap - initial_gap_[std::size_t(check)];

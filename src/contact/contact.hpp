@@ -76,10 +76,17 @@ class Contact {
   struct Candidate;
   void gatherNodes();
   void sortBuckets(Pass& pass);
+  void updateBoxes(Pass& pass);
   // Looks for the segment a check penetrates; false if none.
   std::array<double, 3> segmentNormal(const std::array<int32_t, 4>& seg) const;
-  // `initial`: the check before the first cycle, which also takes nodes already inside.
-  bool search(const Pass& pass, int32_t check, Candidate& best, int64_t& tests, bool initial) const;
+  // Segments a check may meet before the next sort (appended to `out`).
+  void collectCandidates(const Pass& pass, int32_t check, double margin,
+                         std::vector<int32_t>& out) const;
+  void buildCandidateLists();
+  // The segment the check's node penetrates among `candidates`; false if none. `initial`: the
+  // check before the first cycle, which also takes nodes already inside.
+  bool search(const Pass& pass, int32_t check, const int32_t* candidates, std::size_t count,
+              Candidate& best, int64_t& tests, bool initial) const;
   void partitionChecks(const std::vector<double>& weight);
   void maybeRebalance();
 
@@ -97,11 +104,12 @@ class Contact {
   std::vector<int32_t> last_seg_;     // per check: the segment in contact last cycle, or -1
   std::vector<Pass> passes_;
   int32_t num_checks_ = 0;
-  std::vector<int32_t> check_pass_;  // pass of each global check
-  std::vector<int32_t> my_checks_;   // ascending
-  std::vector<double> friction_;     // tangential force history, 3 per check
-  std::vector<double> initial_gap_;  // IGNORE 1/2: initial penetration per check
-  std::vector<double> check_cost_;   // tests per check since the last balance (this rank's)
+  std::vector<int32_t> check_pass_;           // pass of each global check
+  std::vector<int32_t> my_checks_;            // ascending
+  std::vector<int32_t> cand_ptr_, cand_seg_;  // candidate segments of each of my checks (CSR)
+  std::vector<double> friction_;              // tangential force history, 3 per check
+  std::vector<double> initial_gap_;           // IGNORE 1/2: initial penetration per check
+  std::vector<double> check_cost_;  // tests per check since the last balance (this rank's)
   int64_t tests_since_balance_ = 0;
   double dt0_ = 0.0;
   double sort_margin_ = 0.0;
