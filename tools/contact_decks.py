@@ -226,7 +226,7 @@ crushing plate
 *SECTION_SOLID
          2         1
 *MAT_PLASTIC_KINEMATIC
-         1   7.85e-6     210.0       0.3       0.3       0.5       1.0
+         1   7.85e-6     210.0       0.3       0.3      0.05       1.0
 *MAT_RIGID
          2   7.85e-6     210.0       0.3
        1.0         7         7

@@ -13,8 +13,9 @@ namespace {
 
 // A record of one node in contact: check, segment, the four weights, the force on the node
 // (normal + friction), the friction part alone, the penetration, the energy of the penalty
-// spring (k pen^2 / 2) and the energy friction and damping dissipated over the last step.
-constexpr std::size_t kRecord = 15;
+// spring (k pen^2 / 2), the energy friction and damping dissipated over the last step, and
+// the side of the segment the node is on, and its entry offset.
+constexpr std::size_t kRecord = 17;
 // Parametric tolerance of "the node is over the segment" (geometry.hpp).
 constexpr double kInsideTolerance = 0.02;
 constexpr double kStableFraction = 0.1;
@@ -55,7 +56,9 @@ struct Contact::Pass {
 
 struct Contact::Candidate {
   int32_t seg = -1;
-  int rank = 3;  // 0 the segment of the last cycle, 1 crossed in the last step, 2 other
+  int rank = 3;        // 0 the segment of the last cycle, 1 crossed in the last step, 2 other
+  int side = 1;        // shells: the side of the mid-surface the node is on (along the normal)
+  double entry = 0.0;  // penetration the node already had when the contact began
   Projection proj;
   Vec3 push{};       // unit direction the node is pushed
   double gap = 0.0;  // negative: penetration
@@ -162,6 +165,8 @@ Contact::Contact(const model::Model& model, domain::Subdomain& sd, comm::Communi
   friction_.assign(3 * std::size_t(num_checks_), 0.0);
   initial_gap_.assign(std::size_t(num_checks_), 0.0);
   last_seg_.assign(std::size_t(num_checks_), -1);
+  last_side_.assign(std::size_t(num_checks_), 0);
+  entry_.assign(std::size_t(num_checks_), 0.0);
   check_cost_.assign(std::size_t(num_checks_), 0.0);
   stored_.assign(model.contacts.size(), 0.0);
   dissipated_.assign(model.contacts.size(), 0.0);
@@ -360,24 +365,12 @@ bool Contact::search(const Pass& p, int32_t check, const int32_t* candidates, st
     Candidate cand;
     cand.seg = int32_t(s);
     cand.proj = pr;
-    if (p.seg_half[s] > 0.0) {
-      // A shell: both sides are surfaces, offset by half the thicknesses.
-      cand.gap = std::abs(pr.d) - h;
-      cand.push = pr.d >= 0.0 ? pr.normal : scale(pr.normal, -1.0);
-    } else {
-      // A solid face: one side, the outward normal; a node deeper than half the
-      // element under the face is on the far side of something else.
-      cand.gap = pr.d - h_node;
-      cand.push = pr.normal;
-      if (!(cand.gap > -0.5 * p.seg_depth[s])) continue;
-    }
-    if (!(cand.gap < 0.0)) continue;
-    // Which segment a node is in contact with must not jump (a jump to a deeper
-    // penetration makes energy): the segment of the last cycle first, then a solid face
-    // the node crossed in the last step (it was on its outer side at x(n-1)), then the
-    // nearest way out, the least penetration; ties to the lower segment.
     // Tracked: the segment of the last cycle, or a neighbour of it (sharing a node) that
     // continues the same surface (normals within 45 degrees), onto which the node slid.
+    // Which segment a node is in contact with must not jump (a jump to a deeper penetration
+    // makes energy): tracked segments first (rank 0), then a segment the node came to in the
+    // last step (rank 1), then the nearest way out, the least penetration; ties to the lower
+    // segment.
     bool tracked = int32_t(s) == last_seg;
     if (!tracked && last_seg >= 0) {
       bool shares = false;
@@ -388,22 +381,51 @@ bool Contact::search(const Pass& p, int32_t check, const int32_t* candidates, st
         tracked = dot(n_last, pr.normal) > 0.7071;
       }
     }
-    if (tracked) {
-      cand.rank = 0;
-    } else if (p.seg_half[s] > 0.0) {
-      cand.rank = 1;
+    auto previous = [&] {
+      return project(at(x_prev_, std::size_t(node)), at(x_prev_, std::size_t(sn[0])),
+                     at(x_prev_, std::size_t(sn[1])), at(x_prev_, std::size_t(sn[2])),
+                     at(x_prev_, std::size_t(sn[3])), sn[2] == sn[3], kInsideTolerance);
+    };
+    if (p.seg_half[s] > 0.0) {
+      // A shell: both sides are surfaces, offset by half the thicknesses. The side is the one
+      // the node is in contact on (tracked) or came from: a node pressed past the mid-surface
+      // is still pushed back where it came from, never through.
+      int side =
+          tracked && last_side_[std::size_t(check)] != 0 ? last_side_[std::size_t(check)] : 0;
+      double d_prev = pr.d;
+      if (side == 0) {
+        d_prev = initial ? pr.d : previous().d;
+        side = (d_prev != 0.0 ? d_prev : pr.d) >= 0.0 ? 1 : -1;
+      }
+      const double ds = side * pr.d;
+      if (ds < -h) continue;  // through the whole contact thickness: not this sheet's node
+      cand.gap = ds - h;
+      cand.side = side;
+      cand.push = scale(pr.normal, double(side));
+      cand.rank = tracked ? 0 : 1;
+      // A node that comes over the segment sideways (past a free edge, round a fold) is
+      // already inside the contact thickness when first found: that depth is its entry
+      // offset, so the force starts from zero rather than with a jump (which makes energy).
+      if (!tracked && !initial) cand.entry = std::max(0.0, h - side * d_prev);
     } else {
-      const Projection prev =
-          project(at(x_prev_, std::size_t(node)), at(x_prev_, std::size_t(sn[0])),
-                  at(x_prev_, std::size_t(sn[1])), at(x_prev_, std::size_t(sn[2])),
-                  at(x_prev_, std::size_t(sn[3])), sn[2] == sn[3], kInsideTolerance);
-      cand.rank = prev.d - h_node >= 0.0 ? 1 : 2;
-      // A node already inside a solid that did not come in through this face (nor
-      // slide onto it from the face it was on) is not in contact with it: it is a node
-      // near an edge, below the plane of the side face. Only the initial check takes
-      // such nodes (x(n-1) is x(n) there).
-      if (cand.rank == 2 && !initial) continue;
+      // A solid face: one side, the outward normal; a node deeper than half the
+      // element under the face is on the far side of something else.
+      cand.gap = pr.d - h_node;
+      cand.push = pr.normal;
+      cand.side = 1;
+      if (!(cand.gap > -0.5 * p.seg_depth[s])) continue;
+      if (tracked) {
+        cand.rank = 0;
+      } else {
+        // A node already inside a solid that did not come in through this face (nor slide
+        // onto it from the face it was on) is not in contact with it: it is a node near an
+        // edge, below the plane of the side face. Only the initial check takes such nodes
+        // (x(n-1) is x(n) there).
+        cand.rank = initial || previous().d - h_node >= 0.0 ? 1 : 2;
+        if (cand.rank == 2 && !initial) continue;
+      }
     }
+    if (!(cand.gap < 0.0)) continue;
     if (!found || cand.rank < best.rank ||
         (cand.rank == best.rank &&
          (cand.gap > best.gap || (cand.gap == best.gap && cand.seg < best.seg)))) {
@@ -607,7 +629,9 @@ void Contact::computeForces(double time, double dt_prev) {
                             std::size_t(cand_ptr_[i + 1]) - first, best, tests, false);
     check_cost_[std::size_t(check)] += double(tests - before);
     if (!hit) continue;
-    const double pen = -best.gap - initial_gap_[std::size_t(check)];
+    // Tracked contacts keep the entry offset they began with.
+    if (best.rank == 0) best.entry = entry_[std::size_t(check)];
+    const double pen = -best.gap - initial_gap_[std::size_t(check)] - best.entry;
     if (!(pen > 0.0)) continue;
     const auto node = std::size_t(p.node[std::size_t(check - p.first_check)]);
     const auto& sn = p.seg[std::size_t(best.seg)];
@@ -656,7 +680,8 @@ void Contact::computeForces(double time, double dt_prev) {
     const Vec3 f = add(scale(n, fn), ft);
     dissipated -= dot(ft, sub(vrel, scale(n, vn))) * dt_prev;
     mine.insert(mine.end(), {double(check), double(best.seg), N[0], N[1], N[2], N[3], f[0], f[1],
-                             f[2], ft[0], ft[1], ft[2], pen, 0.5 * k * pen * pen, dissipated});
+                             f[2], ft[0], ft[1], ft[2], pen, 0.5 * k * pen * pen, dissipated,
+                             double(best.side), best.entry});
   }
   stats_.tests += tests;
   tests_since_balance_ += tests;
@@ -677,6 +702,8 @@ void Contact::computeForces(double time, double dt_prev) {
   std::fill(friction_.begin(), friction_.end(), 0.0);
   std::fill(stored_.begin(), stored_.end(), 0.0);
   std::fill(last_seg_.begin(), last_seg_.end(), -1);
+  std::fill(last_side_.begin(), last_side_.end(), int8_t(0));
+  std::fill(entry_.begin(), entry_.end(), 0.0);
   for (std::size_t r = 0; r < nrec; ++r) {
     const double* rec = &records_[kRecord * r];
     const auto check = std::size_t(rec[0]);
@@ -685,6 +712,8 @@ void Contact::computeForces(double time, double dt_prev) {
     const auto& sn = p.seg[std::size_t(rec[1])];
     for (int c = 0; c < 3; ++c) friction_[3 * check + std::size_t(c)] = rec[9 + c];
     last_seg_[check] = int32_t(rec[1]);
+    last_side_[check] = int8_t(rec[15]);
+    entry_[check] = rec[16];
     stored_[std::size_t(p.iface)] += rec[13];
     dissipated_[std::size_t(p.iface)] += rec[14];
     // The node takes f, the segment's nodes -N_a f, each added on every rank holding it.
@@ -698,12 +727,14 @@ void Contact::computeForces(double time, double dt_prev) {
       for (int c = 0; c < 3; ++c)
         sd_.f[3 * std::size_t(l) + std::size_t(c)] -= rec[2 + a] * rec[6 + c];
     }
-    // Penetration relative to the contact thickness (shells) or the element depth (solids).
+    // Geometric penetration (with the entry and initial offsets) relative to the contact thickness
+    // (shells) or the element depth (solids).
     const auto seg = std::size_t(rec[1]);
     const double h = p.seg_half[seg] + p.node_half[check - std::size_t(p.first_check)];
     const double ref = h > 0.0 ? 2.0 * h : p.seg_depth[seg];
     if (ref > 0.0)
-      stats_.max_penetration_ratio = std::max(stats_.max_penetration_ratio, rec[12] / ref);
+      stats_.max_penetration_ratio =
+          std::max(stats_.max_penetration_ratio, (rec[12] + rec[16] + initial_gap_[check]) / ref);
   }
 }
 

@@ -102,6 +102,8 @@ class Contact {
   std::vector<double> x_sorted_;      // positions at the last bucket sort
   std::vector<double> x_prev_;        // positions of the last cycle
   std::vector<int32_t> last_seg_;     // per check: the segment in contact last cycle, or -1
+  std::vector<int8_t> last_side_;     // per check: the side of that (shell) segment, or 0
+  std::vector<double> entry_;         // per check: penetration at the start of the contact
   std::vector<Pass> passes_;
   int32_t num_checks_ = 0;
   std::vector<int32_t> check_pass_;           // pass of each global check
