@@ -361,7 +361,8 @@ bool Contact::search(const Pass& p, int32_t check, const int32_t* candidates, st
     const Projection pr = project(x, at(x_, std::size_t(sn[0])), at(x_, std::size_t(sn[1])),
                                   at(x_, std::size_t(sn[2])), at(x_, std::size_t(sn[3])),
                                   sn[2] == sn[3], kInsideTolerance);
-    if (!pr.inside) continue;
+    const bool shell = p.seg_half[s] > 0.0;
+    if (!pr.inside && !shell) continue;
     Candidate cand;
     cand.seg = int32_t(s);
     cand.proj = pr;
@@ -386,7 +387,22 @@ bool Contact::search(const Pass& p, int32_t check, const int32_t* candidates, st
                      at(x_prev_, std::size_t(sn[1])), at(x_prev_, std::size_t(sn[2])),
                      at(x_prev_, std::size_t(sn[3])), sn[2] == sn[3], kInsideTolerance);
     };
-    if (p.seg_half[s] > 0.0) {
+    if (shell && !pr.inside) {
+      // Beyond the segment's edge (a free edge, or the outside of a fold) the contact surface
+      // is rounded: the node keeps its distance h from the nearest point of the segment, so
+      // nodes cannot slip past edges and ridges into the contact thickness of the next one.
+      const Vec3 r = sub(x, pr.point);
+      const double dist = norm(r);
+      if (!(dist < h) || !(dist > 0.0)) continue;
+      cand.gap = dist - h;
+      cand.push = scale(r, 1.0 / dist);
+      cand.side = dot(r, pr.normal) >= 0.0 ? 1 : -1;
+      cand.rank = tracked ? 0 : 1;
+      if (!tracked && !initial) {
+        const Projection prev = previous();
+        cand.entry = std::max(0.0, h - norm(sub(at(x_prev_, std::size_t(node)), prev.point)));
+      }
+    } else if (shell) {
       // A shell: both sides are surfaces, offset by half the thicknesses. The side is the one
       // the node is in contact on (tracked) or came from: a node pressed past the mid-surface
       // is still pushed back where it came from, never through.
