@@ -6,6 +6,7 @@ contact benchmark. Each function returns deck text; `main` writes one to a file:
   python3 tools/contact_decks.py sliding OUT.k [--mu 0.3]
   python3 tools/contact_decks.py hertz OUT.k [--n 16]
   python3 tools/contact_decks.py tube OUT.k [--size 2.5] [--length 120]
+  python3 tools/contact_decks.py tied OUT.k
 
 Units: SI (m, kg, s, Pa) for blocks, sliding and hertz; mm, ms, kg, GPa for the tube.
 """
@@ -252,9 +253,50 @@ crushing plate
 """
 
 
+def tied_bar(v: float = 5.0, end: float = 1.5e-4) -> str:
+    """An elastic steel bar (10 x 10 x 200 mm) in two halves meshed differently (4 x 4 and
+    3 x 3 across) and joined by a tied surface-to-surface interface, striking a stonewall at
+    v: a continuous bar would leave the wall at v after 2 L / c."""
+    m = Mesh()
+    block(m, 1, (0, 0, 0), (0.01, 0.01, 0.1), (4, 4, 20))
+    first_b = len(m.nodes) + 1
+    block(m, 2, (0, 0, 0.1), (0.01, 0.01, 0.1), (3, 3, 15))
+    nodes = list(range(1, len(m.nodes) + 1))
+    return f"""*KEYWORD
+*TITLE
+two-part bar joined by a tied interface striking a stonewall
+*CONTROL_TERMINATION
+{end:10.4g}
+*DATABASE_GLSTAT
+   2.0e-06
+*DATABASE_RWFORC
+   1.0e-06
+*DATABASE_RCFORC
+   2.0e-06
+*DATABASE_MATSUM
+   2.0e-06
+*PART
+lower half
+         1         1         1
+upper half
+         2         1         1
+*SECTION_SOLID
+         1         1
+*MAT_ELASTIC
+         1    7850.0   2.0e+11       0.0
+*RIGIDWALL_PLANAR
+         0
+       0.0       0.0       0.0       0.0       0.0       1.0
+*CONTACT_TIED_SURFACE_TO_SURFACE
+         2         1         3         3
+*INITIAL_VELOCITY_NODE
+{_velocities(nodes, (0, 0, -v))}{m.keyword_text()}*END
+"""
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    ap.add_argument("problem", choices=["blocks", "sliding", "hertz", "tube"])
+    ap.add_argument("problem", choices=["blocks", "sliding", "hertz", "tube", "tied"])
     ap.add_argument("out", type=pathlib.Path)
     ap.add_argument("--kind", default="SURFACE_TO_SURFACE")
     ap.add_argument("--mu", type=float, default=0.3)
@@ -270,6 +312,8 @@ def main() -> None:
         text = sliding_block(a.mu, **extra)
     elif a.problem == "hertz":
         text = hertz_sphere(a.n, **extra)
+    elif a.problem == "tied":
+        text = tied_bar(**extra)
     else:
         text = tube_crush(size=a.size, length=a.length, **extra)
     a.out.write_text(text)

@@ -47,6 +47,7 @@ struct Contact::Pass {
   std::vector<double> box;  // per segment: widened bounding box (lo xyz, hi xyz), each cycle
   double sofscl = 0.0, vdc = 0.0, fs = 0.0, fd = 0.0, dc = 0.0, birth = 0.0, death = 0.0;
   int soft = 0;
+  bool tied = false;  // nodes held to the point of the segment they started on
   // Bucket grid (rebuilt at each sort).
   std::array<double, 3> lo{};
   double cell = 1.0;
@@ -155,6 +156,10 @@ Contact::Contact(const model::Model& model, domain::Subdomain& sd, comm::Communi
       case model::ContactKind::SingleSurface:
         addPass(iface, ci.a, ci.a, ci.sfs, true);
         break;
+      case model::ContactKind::Tied:
+        addPass(iface, ci.a, ci.b, ci.sfm, false);
+        passes_.back().tied = true;
+        break;
     }
   }
   stats_.checks = num_checks_;
@@ -167,6 +172,9 @@ Contact::Contact(const model::Model& model, domain::Subdomain& sd, comm::Communi
   last_seg_.assign(std::size_t(num_checks_), -1);
   last_side_.assign(std::size_t(num_checks_), 0);
   entry_.assign(std::size_t(num_checks_), 0.0);
+  tie_seg_.assign(std::size_t(num_checks_), -1);
+  tie_weight_.assign(4 * std::size_t(num_checks_), 0.0);
+  tie_offset_.assign(std::size_t(num_checks_), 0.0);
   check_cost_.assign(std::size_t(num_checks_), 0.0);
   stored_.assign(model.contacts.size(), 0.0);
   dissipated_.assign(model.contacts.size(), 0.0);
@@ -538,6 +546,57 @@ void Contact::maybeRebalance() {
   ++stats_.rebalances;
 }
 
+void Contact::tieNodes(const Pass& p, bool keep_offset) {
+  // Each node is tied to the nearest point of the segment it lies on (within a tolerance of
+  // the segment's size, as DYNA3D's tied slide surfaces), for the whole run; without _OFFSET
+  // it is first moved onto that point. Every rank does the same, in check order.
+  for (std::size_t k = 0; k < p.node.size(); ++k) {
+    const auto check = std::size_t(p.first_check) + k;
+    const auto node = std::size_t(p.node[k]);
+    const Vec3 x = at(x_, node);
+    int32_t best = -1;
+    Projection best_pr;
+    double best_dist = 1e300;
+    std::vector<int32_t> candidates;
+    collectCandidates(p, int32_t(check), 0.0, candidates);
+    std::sort(candidates.begin(), candidates.end());
+    for (int32_t s : candidates) {
+      const auto& sn = p.seg[std::size_t(s)];
+      const Projection pr =
+          project(x, at(x_, std::size_t(sn[0])), at(x_, std::size_t(sn[1])),
+                  at(x_, std::size_t(sn[2])), at(x_, std::size_t(sn[3])), sn[2] == sn[3], 0.05);
+      if (!pr.inside) continue;
+      const double dist = norm(sub(x, pr.point));
+      const double size =
+          std::sqrt(0.5 * norm(cross(sub(at(x_, std::size_t(sn[2])), at(x_, std::size_t(sn[0]))),
+                                     sub(at(x_, std::size_t(sn[3])), at(x_, std::size_t(sn[1]))))));
+      const double tolerance = std::max(0.05 * size, 2.0 * p.seg_half[std::size_t(s)]);
+      if (dist <= tolerance && dist < best_dist) {
+        best = s;
+        best_pr = pr;
+        best_dist = dist;
+      }
+    }
+    if (best < 0) continue;
+    ++stats_.tied_nodes;
+    tie_seg_[check] = best;
+    for (int a = 0; a < 4; ++a) tie_weight_[4 * check + std::size_t(a)] = best_pr.N[std::size_t(a)];
+    if (keep_offset) {
+      tie_offset_[check] = best_pr.d;
+      continue;
+    }
+    const Vec3 dx = sub(best_pr.point, x);
+    const int32_t l = cn_local_[node];
+    for (int c = 0; c < 3; ++c) {
+      x_[3 * node + std::size_t(c)] += dx[std::size_t(c)];
+      if (l >= 0) {
+        sd_.x[3 * std::size_t(l) + std::size_t(c)] += dx[std::size_t(c)];
+        sd_.x0[3 * std::size_t(l) + std::size_t(c)] += dx[std::size_t(c)];
+      }
+    }
+  }
+}
+
 void Contact::initialize(double dt0) {
   if (empty()) return;
   dt0_ = dt0;
@@ -566,6 +625,10 @@ void Contact::initialize(double dt0) {
   std::vector<int32_t> candidates;
   for (const auto& p : passes_) {
     const auto& ci = model_.contacts[std::size_t(p.iface)];
+    if (p.tied) {
+      tieNodes(p, ci.offset);
+      continue;
+    }
     for (std::size_t k = 0; k < p.node.size(); ++k) {
       Candidate best;
       const auto check = p.first_check + int32_t(k);
@@ -604,6 +667,44 @@ void Contact::initialize(double dt0) {
   buildCandidateLists();
 }
 
+void Contact::tiedForce(const Pass& p, int32_t check, double dt_prev,
+                        std::vector<double>& records) const {
+  // A penalty spring from the node to its tied point x_c + d0 n of the segment (the point
+  // moves and turns with the segment), with VDC damping of the relative velocity.
+  const auto c = std::size_t(check);
+  const auto s = std::size_t(tie_seg_[c]);
+  const auto& sn = p.seg[s];
+  const auto node = std::size_t(p.node[c - std::size_t(p.first_check)]);
+  const double* N = &tie_weight_[4 * c];
+  Vec3 xc{}, vc{};
+  double m_seg = 0.0;
+  for (int a = 0; a < 4; ++a) {
+    if (a == 3 && sn[3] == sn[2]) break;
+    xc = add(xc, scale(at(x_, std::size_t(sn[std::size_t(a)])), N[a]));
+    vc = add(vc, scale(at(v_, std::size_t(sn[std::size_t(a)])), N[a]));
+    m_seg += N[a] * mass_[std::size_t(sn[std::size_t(a)])];
+  }
+  if (tie_offset_[c] != 0.0) xc = add(xc, scale(segmentNormal(sn), tie_offset_[c]));
+  const Vec3 g = sub(xc, at(x_, node));
+  const double m_node = mass_[node];
+  const double m_eff = m_node + m_seg > 0.0 ? m_node * m_seg / (m_node + m_seg) : 0.0;
+  // A tie should be as stiff as the elements it joins: the penalty without SLSFAC, within the
+  // same stability bound as every contact spring.
+  double k = p.seg_k[s] / model_.contact_controls.slsfac;
+  if (dt_prev > 0.0 && m_eff > 0.0) k = std::min(k, kStableFraction * m_eff / (dt_prev * dt_prev));
+  Vec3 f = scale(g, k);
+  double dissipated = 0.0;
+  if (p.vdc > 0.0) {
+    const Vec3 dv = sub(vc, at(v_, node));
+    const double c_damp = 0.01 * p.vdc * 2.0 * std::sqrt(k * m_eff);
+    f = add(f, scale(dv, c_damp));
+    dissipated = c_damp * dot(dv, dv) * dt_prev;
+  }
+  const double gap = norm(g);
+  records.insert(records.end(), {double(check), double(s), N[0], N[1], N[2], N[3], f[0], f[1], f[2],
+                                 0.0, 0.0, 0.0, gap, 0.5 * k * gap * gap, dissipated, 0.0, 0.0});
+}
+
 void Contact::computeForces(double time, double dt_prev) {
   if (empty()) return;
   x_prev_ = x_;
@@ -639,6 +740,11 @@ void Contact::computeForces(double time, double dt_prev) {
     const Pass& p = passes_[std::size_t(check_pass_[std::size_t(check)])];
     if (time < p.birth || time > p.death) continue;
     Candidate best;
+    if (p.tied) {
+      if (tie_seg_[std::size_t(check)] < 0) continue;
+      tiedForce(p, check, dt_prev, mine);
+      continue;
+    }
     const int64_t before = tests;
     const auto first = std::size_t(cand_ptr_[i]);
     const bool hit = search(p, check, cand_seg_.data() + first,

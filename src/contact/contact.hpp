@@ -44,6 +44,7 @@ struct Statistics {
   int64_t sorts = 0;                   // bucket re-sorts
   int64_t rebalances = 0;              // contact partition re-cuts after the initial one
   int64_t tests = 0;                   // node-segment tests on this rank since the start
+  int64_t tied_nodes = 0;              // nodes of tied interfaces that found their segment
   double max_penetration_ratio = 0.0;  // largest penetration / (segment size or thickness)
 };
 
@@ -83,6 +84,9 @@ class Contact {
   void collectCandidates(const Pass& pass, int32_t check, double margin,
                          std::vector<int32_t>& out) const;
   void buildCandidateLists();
+  void tieNodes(const Pass& pass, bool keep_offset);
+  void tiedForce(const Pass& pass, int32_t check, double dt_prev,
+                 std::vector<double>& records) const;
   // The segment the check's node penetrates among `candidates`; false if none. `initial`: the
   // check before the first cycle, which also takes nodes already inside.
   bool search(const Pass& pass, int32_t check, const int32_t* candidates, std::size_t count,
@@ -104,6 +108,9 @@ class Contact {
   std::vector<int32_t> last_seg_;     // per check: the segment in contact last cycle, or -1
   std::vector<int8_t> last_side_;     // per check: the side of that (shell) segment, or 0
   std::vector<double> entry_;         // per check: penetration at the start of the contact
+  // Tied checks: the segment, its four weights and the normal offset of the tied point.
+  std::vector<int32_t> tie_seg_;
+  std::vector<double> tie_weight_, tie_offset_;
   std::vector<Pass> passes_;
   int32_t num_checks_ = 0;
   std::vector<int32_t> check_pass_;           // pass of each global check

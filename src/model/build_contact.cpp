@@ -292,6 +292,12 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
   } else if (name == "*CONTACT_AUTOMATIC_SINGLE_SURFACE" || name == "*CONTACT_AUTOMATIC_GENERAL") {
     ci.kind = ContactKind::SingleSurface;
     ci.automatic = true;
+  } else if (name == "*CONTACT_TIED_NODES_TO_SURFACE" ||
+             name == "*CONTACT_TIED_SURFACE_TO_SURFACE" ||
+             name == "*CONTACT_TIED_NODES_TO_SURFACE_OFFSET" ||
+             name == "*CONTACT_TIED_SURFACE_TO_SURFACE_OFFSET") {
+    ci.kind = ContactKind::Tied;
+    ci.offset = name.find("_OFFSET") != std::string::npos;
   } else {
     ctx.reportUnsupported(kw, "contact type not supported");
     return;

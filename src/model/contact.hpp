@@ -39,6 +39,7 @@ enum class ContactKind : uint8_t {
   NodesToSurface,    // one way: nodes of side A against segments of side B
   SurfaceToSurface,  // two way (symmetric): both of the above
   SingleSurface,     // the nodes of one surface against its own segments
+  Tied,              // nodes of side A held to the points of side B's segments they start on
 };
 
 struct ContactInterface {
@@ -47,6 +48,7 @@ struct ContactInterface {
   std::string keyword;  // as written, for messages
   ContactKind kind = ContactKind::NodesToSurface;
   bool automatic = false;         // _AUTOMATIC_: segment orientation found from the approach side
+  bool offset = false;            // tied _OFFSET: keep the initial gap (else nodes move onto B)
   ContactSurface a, b;            // SURFA (slave) and SURFB (master); b empty for single surface
   double fs = 0, fd = 0, dc = 0;  // Coulomb friction: mu = FD + (FS - FD) exp(-DC |v_rel|)
   double vdc = 0;                 // viscous damping, % of critical

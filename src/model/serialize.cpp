@@ -222,6 +222,7 @@ void fields(A& a, M& m) {
         a(c.keyword);
         a(c.kind);
         a(c.automatic);
+        a(c.offset);
         surface(c.a);
         surface(c.b);
         a(c.fs);

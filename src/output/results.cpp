@@ -393,6 +393,7 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
                     {"checks", st.checks},
                     {"bucket_sorts", st.sorts},
                     {"rebalances", st.rebalances},
+                    {"tied_nodes", st.tied_nodes},
                     {"initial_penetrations", c->initialPenetrations().size()},
                     {"max_penetration_ratio", max_pen}};
   }

@@ -87,6 +87,31 @@ class ContactVerification(TempDirTest):
         ratios = [r["energy_ratio"] for r in rows(out, "glstat.csv")]
         self.assertLess(max(abs(r - 1.0) for r in ratios), 0.01, ratios)
 
+    def test_tied_halves_carry_the_wave_of_a_continuous_bar(self):
+        # Two halves of a bar meshed 4 x 4 and 3 x 3 across, tied at mid-length, strike a
+        # stonewall at v: a continuous bar stays on the wall 2 L / c and leaves at v. The tie is
+        # a penalty spring (stiff as the elements, within the stability bound), which adds a
+        # little compliance: 10% on the duration, 7% on the rebound.
+        v, L = 5.0, 0.2
+        out = self.run_deck("tied", decks().tied_bar(v, end=1.5e-4))
+        s = read_summary(out)
+        self.assertEqual(s["contact"]["tied_nodes"], 16)  # the 3 x 3 half's face nodes
+        c = math.sqrt(2e11 / 7850)
+        on = [r["time"] for r in rows(out, "rwforc.csv") if r["fn"] > 0.0]
+        self.assertAlmostEqual(on[-1] - on[0], 2 * L / c, delta=0.10 * 2 * L / c)
+        matsum = rows(out, "matsum.csv")
+        last = matsum[-1]["time"]
+        p = {r["part"]: r["z_momentum"] for r in matsum if r["time"] == last}
+        mass = 7850 * 0.01 * 0.01 * L
+        self.assertGreater(sum(p.values()) / mass, 0.93 * v)
+        self.assertLess(sum(p.values()) / mass, 1.0 * v)
+        # The halves stay joined: both move off the wall, and the tie never opens by more than
+        # a tenth of the depth of the elements at it.
+        self.assertGreater(p[2.0], 0.3 * mass * v)
+        self.assertLess(s["contact"]["max_penetration_ratio"], 0.1)
+        ratios = [r["energy_ratio"] for r in rows(out, "glstat.csv")]
+        self.assertLess(max(abs(r - 1.0) for r in ratios), 0.01, ratios)
+
     def test_elastic_ball_matches_hertz(self):
         R, E, nu, rho, v = 0.01, 1.0e7, 0.3, 1000.0, 1.0
         out = self.run_deck("hertz", decks().hertz_sphere(16, R, E, nu, rho, v, end=1.5e-3))
