@@ -4,6 +4,9 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <string>
+
+#include "util/error.hpp"
 
 namespace crumple::constraints {
 
@@ -300,6 +303,33 @@ double Boundary::wallKineticEnergy() const {
       e += 0.5 * w.def->mass * v * v;
     }
   return e;
+}
+
+void Boundary::saveState(util::ArchiveWriter& out) const {
+  out.put<uint64_t>(walls_.size());
+  for (const auto& w : walls_) {
+    out.put(w.displacement);
+    out.put(w.velocity);
+    out.put(w.velocity_prev);
+    out.put(w.force);
+    out.put(w.normal_force);
+  }
+}
+
+void Boundary::loadState(util::ArchiveReader& in) {
+  uint64_t n = 0;
+  in.get(n);
+  if (n != walls_.size())
+    throw util::InputError("the restart dump does not belong to this deck: it holds " +
+                           std::to_string(n) + " rigid walls, the deck " +
+                           std::to_string(walls_.size()));
+  for (auto& w : walls_) {
+    in.get(w.displacement);
+    in.get(w.velocity);
+    in.get(w.velocity_prev);
+    in.get(w.force);
+    in.get(w.normal_force);
+  }
 }
 
 }  // namespace crumple::constraints

@@ -811,4 +811,64 @@ std::vector<WeldState> RigidBodies::welds() const {
   return out;
 }
 
+void RigidBodies::saveState(util::ArchiveWriter& out) const {
+  out.put<uint64_t>(bodies_.size());
+  for (const Body& b : bodies_) {
+    for (const auto* q : {&b.q, &b.q_prev}) out.put(*q);
+    for (const auto* v : {&b.x_cm, &b.x_cm_prev, &b.V, &b.V_prev, &b.L, &b.L_prev, &b.omega,
+                          &b.angle, &b.reaction_f, &b.reaction_m})
+      out.put(*v);
+    out.put<uint8_t>(b.active ? 1 : 0);
+    out.put(b.failure_time);
+    out.put(b.fn);
+    out.put(b.fs);
+  }
+  out.put<uint64_t>(joints_.size());
+  for (const JointPair& j : joints_) {
+    out.put(j.k);
+    out.put(j.c);
+  }
+  out.put(joint_dissipated_);
+  out.put(joint_energy_);
+  out.put<uint8_t>(stepped_ ? 1 : 0);
+}
+
+void RigidBodies::loadState(util::ArchiveReader& in) {
+  uint64_t n = 0;
+  in.get(n);
+  if (n != bodies_.size())
+    throw util::InputError("the restart dump does not belong to this deck: it holds " +
+                           std::to_string(n) + " rigid bodies and welds, the deck " +
+                           std::to_string(bodies_.size()));
+  for (Body& b : bodies_) {
+    for (auto* q : {&b.q, &b.q_prev}) in.get(*q);
+    for (auto* v : {&b.x_cm, &b.x_cm_prev, &b.V, &b.V_prev, &b.L, &b.L_prev, &b.omega, &b.angle,
+                    &b.reaction_f, &b.reaction_m})
+      in.get(*v);
+    uint8_t active = 1;
+    in.get(active);
+    b.active = active != 0;
+    in.get(b.failure_time);
+    in.get(b.fn);
+    in.get(b.fs);
+    // A failed weld's nodes are free again: their energy is the solver's (as in apply()).
+    if (!b.active)
+      for (int32_t node : b.local) in_body_[static_cast<std::size_t>(node)] = 0;
+  }
+  in.get(n);
+  if (n != joints_.size())
+    throw util::InputError("the restart dump does not belong to this deck: it holds " +
+                           std::to_string(n) + " joint node pairs, the deck " +
+                           std::to_string(joints_.size()));
+  for (JointPair& j : joints_) {
+    in.get(j.k);
+    in.get(j.c);
+  }
+  in.get(joint_dissipated_);
+  in.get(joint_energy_);
+  uint8_t stepped = 0;
+  in.get(stepped);
+  stepped_ = stepped != 0;
+}
+
 }  // namespace crumple::constraints

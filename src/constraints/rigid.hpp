@@ -41,6 +41,7 @@
 #include "comm/communicator.hpp"
 #include "domain/subdomain.hpp"
 #include "model/model.hpp"
+#include "util/archive.hpp"
 
 namespace crumple::constraints {
 
@@ -107,6 +108,11 @@ class RigidBodies {
   bool countsNode(std::size_t local_node) const {
     return !in_body_.empty() && in_body_[local_node] != 0;
   }
+
+  // Restart: the bodies' motion, weld failures and joint state (the same on every rank, so
+  // rank 0's copy is written); loadState after construction, on every rank.
+  void saveState(util::ArchiveWriter& out) const;
+  void loadState(util::ArchiveReader& in);
 
   std::vector<RigidBodyState> states() const;  // bodies, then welds, in model order
   std::vector<WeldState> welds() const;

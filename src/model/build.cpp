@@ -329,6 +329,7 @@ const std::vector<Meaning>& meanings() {
       {"*DATABASE_NODOUT", 6, readDatabaseAscii, {}},
       {"*DATABASE_RWFORC", 6, readDatabaseAscii, {}},
       {"*DATABASE_BINARY_D3PLOT", 6, readDatabaseD3plot, {}},
+      {"*DATABASE_BINARY_D3DUMP", 6, readDatabaseD3dump, {}},
       {"*DATABASE_HISTORY_NODE", 6, readHistoryNode, {"ID"}},
       {"*DATABASE_HISTORY_NODE_SET", 6, readHistoryNodeSet, {}},
   };

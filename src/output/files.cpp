@@ -18,6 +18,14 @@ namespace crumple::output {
 
 namespace fs = std::filesystem;
 
+uint64_t fnv1a(const char* data, std::size_t size, uint64_t hash) {
+  for (std::size_t i = 0; i < size; ++i) {
+    hash ^= static_cast<unsigned char>(data[i]);
+    hash *= 0x100000001b3ull;
+  }
+  return hash;
+}
+
 CsvWriter::CsvWriter(const fs::path& path, const std::vector<std::string>& columns)
     : out_(path, std::ios::trunc), columns_(columns.size()) {
   if (!out_) throw std::runtime_error(fmt::format("cannot open '{}' for writing", path.string()));
@@ -27,7 +35,49 @@ CsvWriter::CsvWriter(const fs::path& path, const std::vector<std::string>& colum
     line.append(columns[i]);
   }
   line.push_back('\n');
-  out_.write(line.data(), static_cast<std::streamsize>(line.size()));
+  put(line.data(), line.size());
+}
+
+void CsvWriter::checkResume(const fs::path& path, const Position& resume) {
+  std::error_code ec;
+  const auto size = fs::file_size(path, ec);
+  if (ec || size < resume.bytes)
+    throw util::InputError(fmt::format(
+        "'{}' is {} the restart dump expects ({} bytes): the results folder does not hold "
+        "the run the dump was written by",
+        path.string(), ec ? "missing, or not the file" : "shorter than", resume.bytes));
+  {
+    std::ifstream in(path, std::ios::binary);
+    std::vector<char> prefix(resume.bytes);
+    if (!prefix.empty()) in.read(prefix.data(), static_cast<std::streamsize>(prefix.size()));
+    if (!in || fnv1a(prefix.data(), prefix.size()) != resume.hash)
+      throw util::InputError(fmt::format(
+          "'{}' differs from the file the restart dump was written with: the results folder "
+          "holds another run (restart into the folder of the dumped run)",
+          path.string()));
+  }
+}
+
+CsvWriter::CsvWriter(const fs::path& path, const std::vector<std::string>& columns,
+                     const Position& resume)
+    : columns_(columns.size()) {
+  checkResume(path, resume);
+  std::error_code ec;
+  // The rows after the dump belong to the interrupted continuation: the restarted run
+  // writes them again.
+  fs::resize_file(path, resume.bytes, ec);
+  if (ec)
+    throw util::InputError(
+        fmt::format("cannot cut '{}' back to the dump: {}", path.string(), ec.message()));
+  out_.open(path, std::ios::app | std::ios::binary);
+  if (!out_) throw std::runtime_error(fmt::format("cannot open '{}' for writing", path.string()));
+  pos_ = resume;
+}
+
+void CsvWriter::put(const char* data, std::size_t size) {
+  out_.write(data, static_cast<std::streamsize>(size));
+  pos_.bytes += size;
+  pos_.hash = fnv1a(data, size, pos_.hash);
 }
 
 void CsvWriter::row(const std::vector<double>& values) {
@@ -44,7 +94,7 @@ void CsvWriter::row(const std::vector<double>& values) {
     fmt::format_to(std::back_inserter(line), "{}", values[i]);
   }
   line.push_back('\n');
-  out_.write(line.data(), static_cast<std::streamsize>(line.size()));
+  put(line.data(), line.size());
 }
 
 namespace {
@@ -135,6 +185,19 @@ std::vector<fs::path> earlierResults(const fs::path& dir) {
   }
   for (const fs::path& p : pieceFiles(dir)) found.push_back(p);
   for (const fs::path& p : pieceFiles(dir / kStatesFolder)) found.push_back(p);
+  // Restart dumps (restart.hpp: d3dump_<cycle>, and the temporary file of one being written):
+  // a new run must not leave an older run's dumps to be restarted from by mistake.
+  std::error_code ec;
+  std::vector<fs::path> dumps;
+  if (fs::is_directory(fs::symlink_status(dir, ec)))
+    for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+      const std::string name = e.path().filename().string();
+      if ((name.rfind(kDumpPrefix, 0) == 0 || name == kDumpTemporary) &&
+          isRegularFileOrLink(e.path()))
+        dumps.push_back(e.path());
+    }
+  std::sort(dumps.begin(), dumps.end());
+  found.insert(found.end(), dumps.begin(), dumps.end());
   return found;
 }
 

@@ -12,19 +12,40 @@
 
 namespace crumple::output {
 
+// FNV-1a, 64 bits: the checksum of restart dumps and of the CSV prefixes they record (fast,
+// and enough to catch truncation and corruption; not a defence against forgery).
+inline constexpr uint64_t kFnvOffset = 0xcbf29ce484222325ull;
+uint64_t fnv1a(const char* data, std::size_t size, uint64_t hash = kFnvOffset);
+
 // A CSV file with a header row; numbers written with 17 significant digits (round-trip).
 class CsvWriter {
  public:
+  // How much of the file is written, and the FNV-1a 64 of those bytes (a restart dump records
+  // it, so that the continued run finds the file of the same run and cuts it back there).
+  struct Position {
+    uint64_t bytes = 0;
+    uint64_t hash = kFnvOffset;
+  };
   CsvWriter() = default;
   CsvWriter(const std::filesystem::path& path, const std::vector<std::string>& columns);
+  // Continues the file at `resume` (restart): its first resume.bytes bytes must hash to
+  // resume.hash, else util::InputError (the folder holds another run's file); the rows after
+  // them (written after the dump) are cut off and new rows are appended.
+  CsvWriter(const std::filesystem::path& path, const std::vector<std::string>& columns,
+            const Position& resume);
+  // The check of that constructor alone, so that every file can be checked before any is cut.
+  static void checkResume(const std::filesystem::path& path, const Position& resume);
   bool isOpen() const { return out_.is_open(); }
   // One row; `values` must have as many entries as the header. Integers print exactly.
   void row(const std::vector<double>& values);
   void flush() { out_.flush(); }
+  const Position& position() const { return pos_; }
 
  private:
+  void put(const char* data, std::size_t size);
   std::ofstream out_;
   std::size_t columns_ = 0;
+  Position pos_;
 };
 
 // SHA-256 over x then v, each as little-endian IEEE float64, nodes in the given order
@@ -34,6 +55,11 @@ std::string stateDigest(const std::vector<double>& x, const std::vector<double>&
 // The subfolder of the results folder that holds the VTU/PVTU pieces of the plot states (the
 // .pvd stays at the top so ParaView users find one file to open).
 inline constexpr const char* kStatesFolder = "states";
+
+// Restart dumps in the results folder are d3dump_<cycle, 10 digits> (restart.hpp); the
+// temporary file while one is written is .d3dump.tmp.
+inline constexpr const char* kDumpPrefix = "d3dump_";
+inline constexpr const char* kDumpTemporary = ".d3dump.tmp";
 
 // Makes `dir` ready for a run's results. If it already holds results of an earlier run
 // (summary.json, results.pvd, glstat.csv or run.log) and `overwrite` is false, throws

@@ -49,6 +49,9 @@ class PvdWriter {
  public:
   explicit PvdWriter(std::filesystem::path path);
   void addState(double time, const std::string& file_relative_to_pvd);
+  // The states listed so far; restore() replaces them (restart: the states up to the dump).
+  const std::vector<std::pair<double, std::string>>& states() const { return states_; }
+  void restore(std::vector<std::pair<double, std::string>> states) { states_ = std::move(states); }
 
  private:
   void flush() const;
