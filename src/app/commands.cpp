@@ -306,13 +306,27 @@ int runCommand(const RunOptions& opt) {
       }))
     return 1;
 
+  // run.log: a restart appends to the dumped run's log, but only once the dump and the folder
+  // are accepted (a folder of another run is left untouched); until then lines wait here.
   std::ofstream log;
-  if (root) log.open(dir / "run.log", restart ? std::ios::app : std::ios::trunc);
+  std::string pending_log;
+  auto openLog = [&] {
+    if (!root) return;
+    log.open(dir / "run.log", restart ? std::ios::app : std::ios::trunc);
+    log << pending_log;
+    log.flush();
+    pending_log.clear();
+  };
   auto say = [&](const std::string& text) {
     if (!root) return;
+    if (!log.is_open()) {
+      pending_log += text;
+      return;
+    }
     log << text;
     log.flush();
   };
+  if (!restart) openLog();
   say(fmt::format("crumple {} — {} rank(s), {} thread(s) per rank, partition {}\n", CRUMPLE_VERSION,
                   comm.size(), threads, opt.partition));
   const std::string warn = warningsText(m);
@@ -389,6 +403,7 @@ int runCommand(const RunOptions& opt) {
     if (restart) {
       dumps.restore(dump, comm);
       dump = {};
+      openLog();
       say(fmt::format("restart from {} at cycle {}, time {:.6g}\n", dump_path.string(), s.cycle(),
                       s.time()));
       // Dumps of later cycles belong to the continuation this restart replaces.

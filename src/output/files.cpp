@@ -53,7 +53,7 @@ void CsvWriter::checkResume(const fs::path& path, const Position& resume) {
     if (!in || fnv1a(prefix.data(), prefix.size()) != resume.hash)
       throw util::InputError(fmt::format(
           "'{}' differs from the file the restart dump was written with: the results folder "
-          "holds another run (restart into the folder of the dumped run)",
+          "does not hold the run the dump was written by",
           path.string()));
   }
 }
