@@ -379,13 +379,17 @@ int runCommand(const RunOptions& opt) {
   auto writeDump = [&](const char* why) {
     const auto t0 = std::chrono::steady_clock::now();
     const auto bytes = dumps.save(comm);
+    const auto t1 = std::chrono::steady_clock::now();
     if (!root) return;
     try {
       const auto path = output::writeDumpFile(dir, s.cycle(), bytes);
+      const auto t2 = std::chrono::steady_clock::now();
       say(fmt::format(
-          "restart dump {} ({}) at cycle {}, time {:.6g}: {:.1f} MB in {:.3f} s\n",
+          "restart dump {} ({}) at cycle {}, time {:.6g}: {:.1f} MB, {:.3f} s to gather, {:.3f} s "
+          "to write\n",
           path.filename().string(), why, s.cycle(), s.time(), double(bytes.size()) / 1e6,
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()));
+          std::chrono::duration<double>(t1 - t0).count(),
+          std::chrono::duration<double>(t2 - t1).count()));
     } catch (const std::exception& e) {
       std::fprintf(stderr, "crumple: warning: %s; the run goes on\n", e.what());
       say(fmt::format("warning: {}; the run goes on\n", e.what()));
@@ -404,6 +408,7 @@ int runCommand(const RunOptions& opt) {
       dumps.restore(dump, comm);
       dump = {};
       openLog();
+      info.first_cycle = s.cycle();
       say(fmt::format("restart from {} at cycle {}, time {:.6g}\n", dump_path.string(), s.cycle(),
                       s.time()));
       // Dumps of later cycles belong to the continuation this restart replaces.
@@ -539,10 +544,11 @@ int runCommand(const RunOptions& opt) {
       info.termination, s.time(), s.cycle(), e.kinetic, e.internal, e.hourglass, e.rigidwall,
       e.external_work, e.ratio));
   say(timingTable(s.timing(), output_s, info.wall_s));
-  if (s.cycle() > 0 && info.wall_s > info.setup_s)
+  if (s.cycle() > info.first_cycle && info.wall_s > info.setup_s)
     say(fmt::format("set-up {:.3f} s; {:.3g} element-cycles per second in the cycle loop\n",
                     info.setup_s,
-                    double(sd.global_elements) * double(s.cycle()) / (info.wall_s - info.setup_s)));
+                    double(sd.global_elements) * double(s.cycle() - info.first_cycle) /
+                        (info.wall_s - info.setup_s)));
   if (show) std::printf("%s termination; results in %s\n", info.termination.c_str(), dir.c_str());
   return status;
 }

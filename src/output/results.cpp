@@ -431,7 +431,7 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
   j["cycles"] = s.cycle();
   j["wall_s"] = info.wall_s;
   const auto& sd = s.subdomain();
-  const double element_cycles = double(sd.global_elements) * double(s.cycle());
+  const double element_cycles = double(sd.global_elements) * double(s.cycle() - info.first_cycle);
   // The rate of the time-stepping loop: set-up (reading the deck, partitioning) is reported
   // apart, as setup_s, and would otherwise hide the solver's speed on short runs.
   const double loop_s = info.wall_s - info.setup_s;

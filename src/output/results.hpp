@@ -21,7 +21,8 @@ struct RunInfo {
   std::string termination = "normal";  // "normal", "error", "signal"
   std::string message;                 // the error, if any
   double wall_s = 0.0;
-  double setup_s = 0.0;  // reading, partitioning, distributing and initialising
+  double setup_s = 0.0;     // reading, partitioning, distributing and initialising
+  int64_t first_cycle = 0;  // a restarted run's first cycle: the rate counts this run's cycles
 };
 
 class ResultsWriter {
