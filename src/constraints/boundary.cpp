@@ -4,9 +4,6 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <string>
-
-#include "util/error.hpp"
 
 namespace crumple::constraints {
 
@@ -305,31 +302,26 @@ double Boundary::wallKineticEnergy() const {
   return e;
 }
 
+namespace {
+// The state of a wall that changes during the run, for save and load alike.
+template <class W, class F>
+void visitWall(W& w, F&& f) {
+  f(w.displacement);
+  f(w.velocity);
+  f(w.velocity_prev);
+  f(w.force);
+  f(w.normal_force);
+}
+}  // namespace
+
 void Boundary::saveState(util::ArchiveWriter& out) const {
   out.put<uint64_t>(walls_.size());
-  for (const auto& w : walls_) {
-    out.put(w.displacement);
-    out.put(w.velocity);
-    out.put(w.velocity_prev);
-    out.put(w.force);
-    out.put(w.normal_force);
-  }
+  for (const auto& w : walls_) visitWall(w, [&](const auto& v) { out.put(v); });
 }
 
 void Boundary::loadState(util::ArchiveReader& in) {
-  uint64_t n = 0;
-  in.get(n);
-  if (n != walls_.size())
-    throw util::InputError("the restart dump does not belong to this deck: it holds " +
-                           std::to_string(n) + " rigid walls, the deck " +
-                           std::to_string(walls_.size()));
-  for (auto& w : walls_) {
-    in.get(w.displacement);
-    in.get(w.velocity);
-    in.get(w.velocity_prev);
-    in.get(w.force);
-    in.get(w.normal_force);
-  }
+  util::expectCount(in, walls_.size(), "rigid walls");
+  for (auto& w : walls_) visitWall(w, [&](auto& v) { in.get(v); });
 }
 
 }  // namespace crumple::constraints

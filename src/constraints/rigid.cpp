@@ -811,18 +811,24 @@ std::vector<WeldState> RigidBodies::welds() const {
   return out;
 }
 
+// The state of a body that changes during the run, for save and load alike (mass, inertia,
+// body coordinates and weld data come from the deck and are rebuilt by the constructor).
+template <class B, class F>
+void RigidBodies::visitState(B& b, F&& f) {
+  f(b.q);
+  f(b.q_prev);
+  for (auto* v : {&b.x_cm, &b.x_cm_prev, &b.V, &b.V_prev, &b.L, &b.L_prev, &b.omega, &b.angle,
+                  &b.reaction_f, &b.reaction_m})
+    f(*v);
+  f(b.active);
+  f(b.failure_time);
+  f(b.fn);
+  f(b.fs);
+}
+
 void RigidBodies::saveState(util::ArchiveWriter& out) const {
   out.put<uint64_t>(bodies_.size());
-  for (const Body& b : bodies_) {
-    for (const auto* q : {&b.q, &b.q_prev}) out.put(*q);
-    for (const auto* v : {&b.x_cm, &b.x_cm_prev, &b.V, &b.V_prev, &b.L, &b.L_prev, &b.omega,
-                          &b.angle, &b.reaction_f, &b.reaction_m})
-      out.put(*v);
-    out.put<uint8_t>(b.active ? 1 : 0);
-    out.put(b.failure_time);
-    out.put(b.fn);
-    out.put(b.fs);
-  }
+  for (const Body& b : bodies_) visitState(b, [&](const auto& v) { out.put(v); });
   out.put<uint64_t>(joints_.size());
   for (const JointPair& j : joints_) {
     out.put(j.k);
@@ -830,45 +836,25 @@ void RigidBodies::saveState(util::ArchiveWriter& out) const {
   }
   out.put(joint_dissipated_);
   out.put(joint_energy_);
-  out.put<uint8_t>(stepped_ ? 1 : 0);
+  out.put(stepped_);
 }
 
 void RigidBodies::loadState(util::ArchiveReader& in) {
-  uint64_t n = 0;
-  in.get(n);
-  if (n != bodies_.size())
-    throw util::InputError("the restart dump does not belong to this deck: it holds " +
-                           std::to_string(n) + " rigid bodies and welds, the deck " +
-                           std::to_string(bodies_.size()));
+  util::expectCount(in, bodies_.size(), "rigid bodies and welds");
   for (Body& b : bodies_) {
-    for (auto* q : {&b.q, &b.q_prev}) in.get(*q);
-    for (auto* v : {&b.x_cm, &b.x_cm_prev, &b.V, &b.V_prev, &b.L, &b.L_prev, &b.omega, &b.angle,
-                    &b.reaction_f, &b.reaction_m})
-      in.get(*v);
-    uint8_t active = 1;
-    in.get(active);
-    b.active = active != 0;
-    in.get(b.failure_time);
-    in.get(b.fn);
-    in.get(b.fs);
+    visitState(b, [&](auto& v) { in.get(v); });
     // A failed weld's nodes are free again: their energy is the solver's (as in apply()).
     if (!b.active)
       for (int32_t node : b.local) in_body_[static_cast<std::size_t>(node)] = 0;
   }
-  in.get(n);
-  if (n != joints_.size())
-    throw util::InputError("the restart dump does not belong to this deck: it holds " +
-                           std::to_string(n) + " joint node pairs, the deck " +
-                           std::to_string(joints_.size()));
+  util::expectCount(in, joints_.size(), "joint node pairs");
   for (JointPair& j : joints_) {
     in.get(j.k);
     in.get(j.c);
   }
   in.get(joint_dissipated_);
   in.get(joint_energy_);
-  uint8_t stepped = 0;
-  in.get(stepped);
-  stepped_ = stepped != 0;
+  in.get(stepped_);
 }
 
 }  // namespace crumple::constraints

@@ -158,6 +158,9 @@ class RigidBodies {
   static void inverseInertia(const Body& b, const Quat& q, double a[3][3]);
   // L = J w = R diag(I) R^T w.
   static Vec3 angularMomentum(const Body& b, const Quat& q, const Vec3& w);
+  // Calls f on each field of a body's run-time state (restart save and load).
+  template <class B, class F>
+  static void visitState(B& b, F&& f);
   // Step 2-3 for one body given F and M; returns the constraint work.
   double advance(Body& b, const Vec3& F, const Vec3& M, double t, double dt_n, double dt_half);
 

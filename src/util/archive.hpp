@@ -10,6 +10,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "util/error.hpp"
+
 namespace crumple::util {
 
 // Appends n bytes at p to out. resize + memcpy rather than insert: GCC 12 reports a false
@@ -112,5 +114,15 @@ class ArchiveReader {
   const std::vector<char>& bytes_;
   std::size_t pos_ = 0;
 };
+
+// Restart sections: reads a count written by the dumped run and checks it against this run's;
+// a difference means the dump was written for another deck (util::InputError saying what).
+inline void expectCount(ArchiveReader& in, std::size_t expected, const char* what) {
+  uint64_t n = 0;
+  in.get(n);
+  if (n != expected)
+    throw InputError("the restart dump does not belong to this deck: it holds " +
+                     std::to_string(n) + " " + what + ", the deck " + std::to_string(expected));
+}
 
 }  // namespace crumple::util
