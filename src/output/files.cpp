@@ -121,22 +121,41 @@ void hashDoubles(EVP_MD_CTX* ctx, const std::vector<double>& values) {
 
 }  // namespace
 
-std::string stateDigest(const std::vector<double>& x, const std::vector<double>& v) {
+namespace {
+
+// SHA-256 of whatever `feed` passes to EVP_DigestUpdate.
+template <class Feed>
+Sha256 sha256Of(Feed&& feed) {
   std::unique_ptr<EVP_MD_CTX, decltype(&EVP_MD_CTX_free)> ctx(EVP_MD_CTX_new(), &EVP_MD_CTX_free);
   if (!ctx || EVP_DigestInit_ex(ctx.get(), EVP_sha256(), nullptr) != 1) {
     throw std::runtime_error("SHA-256 initialisation failed");
   }
-  hashDoubles(ctx.get(), x);
-  hashDoubles(ctx.get(), v);
-  std::array<unsigned char, EVP_MAX_MD_SIZE> digest{};
+  feed(ctx.get());
+  Sha256 digest{};
   unsigned int length = 0;
-  if (EVP_DigestFinal_ex(ctx.get(), digest.data(), &length) != 1) {
+  if (EVP_DigestFinal_ex(ctx.get(), digest.data(), &length) != 1 || length != digest.size()) {
     throw std::runtime_error("SHA-256 finalisation failed");
   }
+  return digest;
+}
+
+}  // namespace
+
+Sha256 sha256(const char* data, std::size_t size) {
+  return sha256Of([&](EVP_MD_CTX* ctx) {
+    if (size > 0 && EVP_DigestUpdate(ctx, data, size) != 1)
+      throw std::runtime_error("SHA-256 update failed");
+  });
+}
+
+std::string stateDigest(const std::vector<double>& x, const std::vector<double>& v) {
+  const Sha256 digest = sha256Of([&](EVP_MD_CTX* ctx) {
+    hashDoubles(ctx, x);
+    hashDoubles(ctx, v);
+  });
   std::string hex;
-  hex.reserve(2 * length);
-  for (unsigned int i = 0; i < length; ++i)
-    fmt::format_to(std::back_inserter(hex), "{:02x}", digest[i]);
+  hex.reserve(2 * digest.size());
+  for (unsigned char byte : digest) fmt::format_to(std::back_inserter(hex), "{:02x}", byte);
   return hex;
 }
 

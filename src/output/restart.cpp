@@ -23,7 +23,7 @@ namespace {
 
 constexpr char kMagic[8] = {'C', 'R', 'U', 'M', 'P', 'D', 'M', 'P'};
 constexpr uint32_t kByteOrder = 0x01020304u;
-constexpr std::size_t kHeader = sizeof(kMagic) + 4 + 4 + 8 + 8;
+constexpr std::size_t kHeader = sizeof(kMagic) + 4 + 4 + 8 + sizeof(Sha256);
 
 using util::appendBytes;
 template <class T>
@@ -51,12 +51,39 @@ void DumpRegistry::add(DumpSection section) {
 }
 
 std::vector<char> DumpRegistry::save(const comm::Communicator& comm) const {
-  std::vector<std::pair<std::string, std::vector<char>>> parts;
+  DumpEncoder out;
   for (const auto& s : sections_) {
     auto bytes = s.save();  // collective: every rank runs every section
-    if (comm.isRoot()) parts.emplace_back(s.name, std::move(bytes));
+    if (comm.isRoot()) out.add(s.name, bytes);
   }
-  return comm.isRoot() ? encodeDump(parts) : std::vector<char>{};
+  return comm.isRoot() ? out.finish() : std::vector<char>{};
+}
+
+DumpEncoder::DumpEncoder() {
+  // The header is filled in by finish(); the payload starts with the section count.
+  out_.resize(kHeader);
+  append(out_, uint32_t(0));
+}
+
+void DumpEncoder::add(const std::string& name, const std::vector<char>& bytes) {
+  append(out_, static_cast<uint32_t>(name.size()));
+  appendBytes(out_, name.data(), name.size());
+  append(out_, static_cast<uint64_t>(bytes.size()));
+  appendBytes(out_, bytes.data(), bytes.size());
+  ++count_;
+}
+
+std::vector<char> DumpEncoder::finish() {
+  std::memcpy(out_.data() + kHeader, &count_, sizeof(count_));
+  const uint64_t size = out_.size() - kHeader;
+  const Sha256 sum = sha256(out_.data() + kHeader, size);
+  char* h = out_.data();
+  std::memcpy(h, kMagic, sizeof(kMagic));
+  std::memcpy(h + 8, &kDumpVersion, 4);
+  std::memcpy(h + 12, &kByteOrder, 4);
+  std::memcpy(h + 16, &size, 8);
+  std::memcpy(h + 24, sum.data(), sum.size());
+  return std::move(out_);
 }
 
 void DumpRegistry::restore(const DumpContents& dump, const comm::Communicator& comm) const {
@@ -82,23 +109,9 @@ void DumpRegistry::restore(const DumpContents& dump, const comm::Communicator& c
 
 std::vector<char> encodeDump(
     const std::vector<std::pair<std::string, std::vector<char>>>& sections) {
-  std::vector<char> payload;
-  append(payload, static_cast<uint32_t>(sections.size()));
-  for (const auto& [name, bytes] : sections) {
-    append(payload, static_cast<uint32_t>(name.size()));
-    appendBytes(payload, name.data(), name.size());
-    append(payload, static_cast<uint64_t>(bytes.size()));
-    appendBytes(payload, bytes.data(), bytes.size());
-  }
-  std::vector<char> out;
-  out.reserve(kHeader + payload.size());
-  appendBytes(out, kMagic, sizeof(kMagic));
-  append(out, kDumpVersion);
-  append(out, kByteOrder);
-  append(out, static_cast<uint64_t>(payload.size()));
-  append(out, fnv1a(payload.data(), payload.size()));
-  appendBytes(out, payload.data(), payload.size());
-  return out;
+  DumpEncoder out;
+  for (const auto& [name, bytes] : sections) out.add(name, bytes);
+  return out.finish();
 }
 
 DumpContents decodeDump(const std::vector<char>& bytes, const std::string& path) {
@@ -111,7 +124,9 @@ DumpContents decodeDump(const std::vector<char>& bytes, const std::string& path)
   const auto version = take<uint32_t>(bytes, pos, path);
   const auto order = take<uint32_t>(bytes, pos, path);
   const auto size = take<uint64_t>(bytes, pos, path);
-  const auto sum = take<uint64_t>(bytes, pos, path);
+  Sha256 sum{};
+  std::memcpy(sum.data(), bytes.data() + pos, sum.size());
+  pos += sum.size();
   if (order != kByteOrder)
     throw util::InputError(path + ": restart dump written on a machine of other byte order");
   if (version != kDumpVersion)
@@ -123,7 +138,7 @@ DumpContents decodeDump(const std::vector<char>& bytes, const std::string& path)
         "{}: truncated or padded restart dump: the header announces {} bytes of state, the "
         "file holds {}",
         path, size, bytes.size() - kHeader));
-  if (fnv1a(bytes.data() + kHeader, size) != sum)
+  if (sha256(bytes.data() + kHeader, size) != sum)
     throw util::InputError(path +
                            ": corrupted restart dump (checksum mismatch); use the other dump");
   DumpContents d;

@@ -6,7 +6,7 @@
 //   u32      format version (kDumpVersion)
 //   u32      0x01020304 (byte order of the writer)
 //   u64      payload size in bytes
-//   u64      FNV-1a 64 of the payload
+//   32 bytes SHA-256 of the payload
 //   payload: u32 section count, then per section: u32 name length, name, u64 size, bytes
 // A dump is written by rank 0 to a temporary name and renamed (a crash while writing leaves
 // the previous dumps intact); the two newest are kept.
@@ -59,6 +59,18 @@ class DumpRegistry {
 
  private:
   std::vector<DumpSection> sections_;
+};
+
+// Builds a dump file section by section (each section's bytes are copied once).
+class DumpEncoder {
+ public:
+  DumpEncoder();
+  void add(const std::string& name, const std::vector<char>& bytes);
+  std::vector<char> finish();  // the header with size and checksum, then the payload
+
+ private:
+  std::vector<char> out_;
+  uint32_t count_ = 0;
 };
 
 // Sections -> file bytes (header, checksum, payload).

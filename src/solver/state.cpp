@@ -157,6 +157,7 @@ std::vector<char> Solver::saveState(StateSection which) const {
     case StateSection::Nodes: {
       const std::size_t k = nodeFields(sd_.rotations);
       std::vector<char> mine;
+      mine.reserve(sd_.numNodes() * (sizeof(int64_t) + k * sizeof(double)));
       for (std::size_t n = 0; n < sd_.numNodes(); ++n) {
         if (!sd_.node_owned[n]) continue;
         put<int64_t>(mine, sd_.node_model[n]);
@@ -197,6 +198,9 @@ std::vector<char> Solver::saveState(StateSection which) const {
     }
     case StateSection::Elements: {
       std::vector<char> mine;
+      // Room for a hex with plastic strain and hourglass resistances, so that the common case
+      // fills one buffer without growing it (each growth copies everything so far).
+      mine.reserve(sd_.num_elements * 256);
       forEachElement(sd_, [&](int64_t g, auto&& visit) {
         put(mine, g);
         const std::size_t at = mine.size();

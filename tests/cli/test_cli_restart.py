@@ -10,7 +10,8 @@
 - a restart deck extends the end time and changes an interval; other keywords are refused;
 - corrupted, truncated and foreign dumps, and a folder of another run, end with status 1 and
   a message, touching nothing;
-- DIR/stop with sw1, sw2, sw3; SIGTERM (143), SIGINT (130), SIGUSR1 (dump and go on).
+- DIR/stop with sw1, sw2, sw3; SIGTERM (143), SIGINT (130), SIGUSR1 (dump and go on);
+  --checkpoint-every keeps the two newest dumps and changes no result.
 """
 
 import csv
@@ -237,6 +238,17 @@ class SenseSwitchesAndSignals(RestartCase):
         self.assertEqual(len(dumps(stopped)), 1)
         self.run_ok("run", deck, "-q", "--restart", stopped)
         self.assert_same_results(full, stopped)
+
+    def test_checkpoint_every_keeps_two_dumps_and_changes_nothing(self):
+        deck = example("bar_impact", "bar_impact.k")
+        plain, timed = os.path.join(self.tmp, "plain"), os.path.join(self.tmp, "timed")
+        self.run_ok("run", deck, "-q", "-o", plain)
+        # A dump whenever 0.1 ms of wall time has passed: nearly every cycle.
+        self.run_ok("run", deck, "-q", "-o", timed, "--checkpoint-every", "0.0001")
+        self.assertEqual(len(dumps(timed)), 2)
+        with open(os.path.join(timed, "run.log"), encoding="utf-8") as f:
+            self.assertGreater(f.read().count("(--checkpoint-every)"), 2)
+        self.assert_same_results(plain, timed)
 
     def test_sw2_prints_status_and_sw3_dumps_and_goes_on(self):
         deck = example("bar_impact", "bar_impact.k")
