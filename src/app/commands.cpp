@@ -187,26 +187,35 @@ enum Request : uint64_t {
 constexpr int64_t kStopFileCycles = 100;
 constexpr double kStopFilePeriod = 0.5;
 
-// The sense switch in DIR/stop (LS-DYNA's sw1..sw3; docs/reliability.md), read by rank 0; the
-// file is removed once read, so one request is acted on once. Anything else is reported.
+// The sense switch in DIR/stop, or DIR/d3kil as LS-DYNA names it (sw1..sw3;
+// docs/reliability.md), read by rank 0; the file is removed once read, so one request is acted
+// on once. Anything else is reported.
 uint64_t readStopFile(const std::filesystem::path& dir, std::string& note) {
-  const auto path = dir / "stop";
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) return 0;
-  std::ifstream in(path);
-  std::string word;
-  in >> word;
-  in.close();
-  std::filesystem::remove(path, ec);
-  for (auto& c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (word == "sw1") return kStop;
-  if (word == "sw2") return kStatus;
-  if (word == "sw3") return kDump;
-  note = fmt::format(
-      "{}: '{}' is not a sense switch (sw1 dump and stop, sw2 status, sw3 dump "
-      "and continue); removed without action\n",
-      path.string(), word);
-  return 0;
+  uint64_t request = 0;
+  for (const char* name : {"stop", "d3kil"}) {
+    const auto path = dir / name;
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) continue;
+    std::ifstream in(path);
+    std::string word;
+    in >> word;
+    in.close();
+    std::filesystem::remove(path, ec);
+    for (auto& c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (word == "sw1") {
+      request |= kStop;
+    } else if (word == "sw2") {
+      request |= kStatus;
+    } else if (word == "sw3") {
+      request |= kDump;
+    } else {
+      note += fmt::format(
+          "{}: '{}' is not a sense switch (sw1 dump and stop, sw2 status, sw3 dump and "
+          "continue); removed without action\n",
+          path.string(), word);
+    }
+  }
+  return request;
 }
 
 }  // namespace

@@ -135,9 +135,6 @@ void ResultsWriter::loadState(const std::vector<char>& bytes, double time) {
   if (!r.atEnd() || times.size() != names.size())
     throw util::InputError("restart dump: the output section is inconsistent");
   if (!comm_.isRoot()) return;
-  std::vector<std::pair<double, std::string>> states;
-  for (std::size_t k = 0; k < times.size(); ++k) states.emplace_back(times[k], names[k]);
-  pvd_.restore(std::move(states));
   const std::filesystem::path paths[] = {dir_ / "glstat.csv", dir_ / "matsum.csv",
                                          dir_ / "nodout.csv", dir_ / "rwforc.csv"};
   const std::vector<std::string>* columns[] = {&kGlstatColumns, &kMatsumColumns, &kNodoutColumns,
@@ -154,6 +151,9 @@ void ResultsWriter::loadState(const std::vector<char>& bytes, double time) {
   }
   for (std::size_t k = 0; k < 4; ++k)
     if (wanted[k]) *writers[k] = CsvWriter(paths[k], *columns[k], csv[k].second);
+  std::vector<std::pair<double, std::string>> states;
+  for (std::size_t k = 0; k < times.size(); ++k) states.emplace_back(times[k], names[k]);
+  pvd_.restore(std::move(states));
   // Plot states numbered from plot_count_ on were written after the dump (the continuation
   // that was interrupted, or its final state): the restarted run writes its own.
   std::error_code ec;

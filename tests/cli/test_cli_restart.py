@@ -252,15 +252,18 @@ class SenseSwitchesAndSignals(RestartCase):
 
     def test_sw2_prints_status_and_sw3_dumps_and_goes_on(self):
         deck = example("bar_impact", "bar_impact.k")
-        for word, dumped in (("sw2", 0), ("sw3", 1)):
+        # d3kil is LS-DYNA's name for the file; an unknown word is reported and removed.
+        for word, name, dumped in (("sw2", "stop", 0), ("sw3", "d3kil", 1), ("sw9", "stop", 0)):
             with self.subTest(word=word):
                 out = os.path.join(self.tmp, word)
                 os.makedirs(out)
-                self.write(f"{word}/stop", word)
+                self.write(f"{word}/{name}", word)
                 p = self.run_ok("run", deck, "-q", "-o", out)
                 self.assertEqual(read_summary(out)["termination"], "normal")
                 self.assertEqual(len(dumps(out)), dumped)
-                self.assertFalse(os.path.exists(os.path.join(out, "stop")))
+                self.assertFalse(os.path.exists(os.path.join(out, name)))
+                if word == "sw9":
+                    self.assertIn("'sw9' is not a sense switch", p.stderr)
                 if word == "sw2":
                     self.assertIn("sw2: cycle ", p.stdout)
 
