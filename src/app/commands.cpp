@@ -5,10 +5,12 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cctype>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 
 #include "comm/communicator.hpp"
@@ -16,6 +18,7 @@
 #include "model/build.hpp"
 #include "model/serialize.hpp"
 #include "output/files.hpp"
+#include "output/restart.hpp"
 #include "output/results.hpp"
 #include "partition/partition.hpp"
 #include "solver/solver.hpp"
@@ -26,9 +29,22 @@ namespace crumple::app {
 
 namespace {
 
-std::atomic<bool> g_interrupted{false};
-extern "C" void onSignal(int) {
-  g_interrupted = true;
+// The first SIGINT or SIGTERM received (0: none), and a pending SIGUSR1. Handlers only set
+// flags; the cycle loop acts on them (see Request in runCommand).
+std::atomic<int> g_signal{0};
+std::atomic<bool> g_usr1{false};
+extern "C" void onSignal(int sig) {
+  if (sig == SIGUSR1) {
+    g_usr1 = true;
+    return;
+  }
+  int none = 0;
+  // A second SIGINT or SIGTERM ends the process at once (a run stuck writing its dump can
+  // still be stopped); signal() and raise() are async-signal-safe.
+  if (!g_signal.compare_exchange_strong(none, sig)) {
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);
+  }
 }
 
 // The model summary shared by `crumple check` and run.log.
@@ -152,18 +168,75 @@ bool rootStep(const comm::Communicator& comm, F&& step) {
 
 }  // namespace
 
+namespace {
+
+// Requests agreed by all ranks once per cycle (Communicator::orAll): whatever rank saw a
+// signal, and whatever rank 0 found in the stop file or on its clock, every rank acts on at
+// the same cycle. Acting never changes the state, so results stay bitwise the same.
+enum Request : uint64_t {
+  kSigInt = 1,      // SIGINT: dump, final state, exit 130
+  kSigTerm = 2,     // SIGTERM: dump, final state, exit 143
+  kSigUsr1 = 4,     // SIGUSR1: dump and continue (like sw3)
+  kStop = 8,        // sense switch sw1: dump, final state, exit 0
+  kStatus = 16,     // sense switch sw2: status line
+  kDump = 32,       // sense switch sw3: dump and continue
+  kCheckpoint = 64  // --checkpoint-every: due by rank 0's wall clock
+};
+// Rank 0 looks for DIR/stop every kStopFileCycles cycles, and at least every kStopFilePeriod
+// seconds of wall time (large models take long over 100 cycles); a stat() is cheap either way.
+constexpr int64_t kStopFileCycles = 100;
+constexpr double kStopFilePeriod = 0.5;
+
+// The sense switch in DIR/stop, or DIR/d3kil as LS-DYNA names it (sw1..sw3;
+// docs/reliability.md), read by rank 0; the file is removed once read, so one request is acted
+// on once. Anything else is reported.
+uint64_t readStopFile(const std::filesystem::path& dir, std::string& note) {
+  uint64_t request = 0;
+  for (const char* name : {"stop", "d3kil"}) {
+    const auto path = dir / name;
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) continue;
+    std::ifstream in(path);
+    std::string word;
+    in >> word;
+    in.close();
+    std::filesystem::remove(path, ec);
+    for (auto& c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (word == "sw1") {
+      request |= kStop;
+    } else if (word == "sw2") {
+      request |= kStatus;
+    } else if (word == "sw3") {
+      request |= kDump;
+    } else {
+      note += fmt::format(
+          "{}: '{}' is not a sense switch (sw1 dump and stop, sw2 status, sw3 dump and "
+          "continue); removed without action\n",
+          path.string(), word);
+    }
+  }
+  return request;
+}
+
+}  // namespace
+
 int runCommand(const RunOptions& opt) {
   const auto wall0 = std::chrono::steady_clock::now();
   auto& comm = comm::world();
   const bool root = comm.isRoot();
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
   const int threads = omp_get_max_threads();
+  const bool restart = !opt.restart.empty();
 
-  // Rank 0 reads and validates the deck and partitions it; the others receive the result.
+  // Rank 0 reads and validates the deck (and the dump) and partitions it; the others receive
+  // the result.
   model::Model m;
   std::vector<int32_t> elem_rank;
+  std::vector<char> dump_bytes;
+  std::filesystem::path dump_path;
   const bool read_ok = rootStep(comm, [&] {
     m = model::readModel(opt.deck);
+    if (!opt.restart_deck.empty()) model::readRestartDeck(opt.restart_deck, m.controls);
     if (opt.end_time) m.controls.end_time = *opt.end_time;
     if (opt.strict && !m.unsupported.empty()) {
       throw util::InputError("--strict: the deck uses unsupported keywords:\n" +
@@ -173,9 +246,29 @@ int runCommand(const RunOptions& opt) {
       throw util::InputError(opt.deck +
                              ": *CONTROL_TERMINATION gives no end time (ENDTIM) or "
                              "cycle count (ENDCYC); pass --endtime to run anyway");
-    partition::Options popt;
-    popt.method = partition::parseMethod(opt.partition);
-    elem_rank = partition::partitionElements(m, comm.size(), popt);
+    if (restart) {
+      dump_path = output::resolveDump(opt.restart);
+      std::ifstream in(dump_path, std::ios::binary);
+      if (!in) throw util::InputError("cannot open restart dump '" + dump_path.string() + "'");
+      dump_bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+      // Checked here, before anything is partitioned or any rank waits on it.
+      const auto dump = output::decodeDump(dump_bytes, dump_path.string());
+      // The dump's partition is reused at the same number of ranks: each rank then continues
+      // its own partial energy sums, and glstat.csv stays bitwise that of the uninterrupted run.
+      if (const auto it = dump.sections.find("partition"); it != dump.sections.end()) {
+        util::ArchiveReader r(it->second);
+        int32_t ranks = 0;
+        std::vector<int32_t> owners;
+        r.get(ranks);
+        r.get(owners);
+        if (ranks == comm.size() && owners.size() == m.numElements()) elem_rank = owners;
+      }
+    }
+    if (elem_rank.empty()) {
+      partition::Options popt;
+      popt.method = partition::parseMethod(opt.partition);
+      elem_rank = partition::partitionElements(m, comm.size(), popt);
+    }
   });
   if (!read_ok) return 1;
   if (comm.distributed()) {
@@ -185,31 +278,64 @@ int runCommand(const RunOptions& opt) {
       util::ArchiveWriter w;
       w.put(model::serialize(m));
       w.put(elem_rank);
+      w.put(dump_path.string());
       bytes = std::move(w.bytes());
     }
     comm.broadcast(bytes);
     if (!root) {
       util::ArchiveReader r(bytes);
       std::vector<char> model_bytes;
+      std::string path;
       r.get(model_bytes);
       r.get(elem_rank);
+      r.get(path);
+      dump_path = path;
       m = model::deserialize(model_bytes);
     }
+    // Every rank takes its part from the same bytes (no shared file system needed).
+    if (restart) comm.broadcast(dump_bytes);
   }
+  output::DumpContents dump;
+  if (restart) dump = output::decodeDump(dump_bytes, dump_path.string());
+  dump_bytes.clear();
+  dump_bytes.shrink_to_fit();
 
+  // A restart continues the dumped run in its own folder: the history files are cut back to
+  // the dump and continued (ResultsWriter::loadState checks that they are that run's).
   const std::filesystem::path dir =
-      opt.output_dir.empty()
-          ? std::filesystem::path(std::filesystem::path(opt.deck).stem().string() + ".out")
-          : std::filesystem::path(opt.output_dir);
-  if (!rootStep(comm, [&] { output::prepareResultsDir(dir, opt.overwrite); })) return 1;
+      !opt.output_dir.empty() ? std::filesystem::path(opt.output_dir)
+      : restart
+          ? dump_path.parent_path().empty() ? std::filesystem::path(".") : dump_path.parent_path()
+          : std::filesystem::path(std::filesystem::path(opt.deck).stem().string() + ".out");
+  if (!restart && !rootStep(comm, [&] { output::prepareResultsDir(dir, opt.overwrite); })) return 1;
+  if (restart && !rootStep(comm, [&] {
+        if (!std::filesystem::is_directory(dir))
+          throw util::InputError("results folder '" + dir.string() +
+                                 "' of the restarted run does not exist");
+      }))
+    return 1;
 
+  // run.log: a restart appends to the dumped run's log, but only once the dump and the folder
+  // are accepted (a folder of another run is left untouched); until then lines wait here.
   std::ofstream log;
-  if (root) log.open(dir / "run.log");
+  std::string pending_log;
+  auto openLog = [&] {
+    if (!root) return;
+    log.open(dir / "run.log", restart ? std::ios::app : std::ios::trunc);
+    log << pending_log;
+    log.flush();
+    pending_log.clear();
+  };
   auto say = [&](const std::string& text) {
     if (!root) return;
+    if (!log.is_open()) {
+      pending_log += text;
+      return;
+    }
     log << text;
     log.flush();
   };
+  if (!restart) openLog();
   say(fmt::format("crumple {} — {} rank(s), {} thread(s) per rank, partition {}\n", CRUMPLE_VERSION,
                   comm.size(), threads, opt.partition));
   const std::string warn = warningsText(m);
@@ -233,19 +359,89 @@ int runCommand(const RunOptions& opt) {
   info.threads = threads;
   std::signal(SIGINT, onSignal);
   std::signal(SIGTERM, onSignal);
+  std::signal(SIGUSR1, onSignal);
 
   std::unique_ptr<output::ResultsWriter> writer;
+  // The sections of a restart dump (docs/reliability.md, "Restart"). Other state joins with one
+  // add() each, e.g. contact: dumps.add({"contact", save, load, true}).
+  output::DumpRegistry dumps;
+  using Section = solver::Solver::StateSection;
+  dumps.add({"partition",
+             [&] {
+               util::ArchiveWriter w;
+               w.put<int32_t>(comm.size());
+               w.put(elem_rank);
+               return std::move(w.bytes());
+             },
+             // Read before the subdomain is built (above); nothing left to restore.
+             [](const std::vector<char>&) {}});
+  for (const auto& [name, section] :
+       {std::pair{"solver", Section::Scalars}, std::pair{"nodes", Section::Nodes},
+        std::pair{"elements", Section::Elements}, std::pair{"constraints", Section::Constraints}})
+    dumps.add({name, [&s, section] { return s.saveState(section); },
+               [&s, section](const std::vector<char>& b) { s.loadState(section, b); }});
+  // Contact state is the same on every rank: rank 0's copy is dumped, every rank loads it.
+  if (s.contact())
+    dumps.add({"contact",
+               [&] { return comm.isRoot() ? s.contact()->saveState() : std::vector<char>{}; },
+               [&](const std::vector<char>& b) { s.contact()->loadState(b); }});
+  // Last: its load cuts the history files back, after every other section was accepted.
+  dumps.add({"output", [&] { return writer->saveState(); },
+             [&](const std::vector<char>& b) { writer->loadState(b, s.time()); }});
+  // Writes a dump; a failure to write it is reported and the run goes on (the earlier dumps
+  // are intact: dumps are renamed into place only when complete).
+  auto writeDump = [&](const char* why) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto bytes = dumps.save(comm);
+    const auto t1 = std::chrono::steady_clock::now();
+    if (!root) return;
+    try {
+      const auto path = output::writeDumpFile(dir, s.cycle(), bytes);
+      const auto t2 = std::chrono::steady_clock::now();
+      say(fmt::format(
+          "restart dump {} ({}) at cycle {}, time {:.6g}: {:.1f} MB, {:.3f} s to gather, {:.3f} s "
+          "to write\n",
+          path.filename().string(), why, s.cycle(), s.time(), double(bytes.size()) / 1e6,
+          std::chrono::duration<double>(t1 - t0).count(),
+          std::chrono::duration<double>(t2 - t1).count()));
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "crumple: warning: %s; the run goes on\n", e.what());
+      say(fmt::format("warning: {}; the run goes on\n", e.what()));
+    }
+  };
+
   int status = 0;
   const bool show = !opt.quiet && root;
   try {
     s.initialize();
     say(modelSummary(m, s));
-    writer = std::make_unique<output::ResultsWriter>(dir, m, s, comm);
+    writer = std::make_unique<output::ResultsWriter>(dir, m, s, comm, restart);
     // Set-up is over: each rank keeps its subdomain, nobody the whole mesh.
     m.releaseMesh();
+    if (restart) {
+      dumps.restore(dump, comm);
+      dump = {};
+      openLog();
+      info.first_cycle = s.cycle();
+      say(fmt::format("restart from {} at cycle {}, time {:.6g}\n", dump_path.string(), s.cycle(),
+                      s.time()));
+      // Dumps of later cycles belong to the continuation this restart replaces.
+      if (root)
+        for (const auto& p : output::dumpFiles(dir))
+          if (output::dumpCycle(p) > s.cycle()) {
+            std::error_code ec;
+            std::filesystem::remove(p, ec);
+            say(fmt::format("removed {}: written after the restart point\n", p.string()));
+          }
+    }
     output::Progress progress(stdout, show && isatty(STDOUT_FILENO), s.endTime());
-    writer->write(s);
+    // The state at the dump was written by the dumped run.
+    if (!restart) writer->write(s);
     info.setup_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    const int64_t dump_cycles = m.controls.d3dump_cycles;
+    const bool dumping = dump_cycles > 0 || opt.checkpoint_every > 0.0;
+    auto last_checkpoint = std::chrono::steady_clock::now();
+    auto last_stop_check = last_checkpoint;
     while (!s.finished()) {
       s.step();
       writer->write(s);
@@ -254,17 +450,81 @@ int runCommand(const RunOptions& opt) {
         const double ratio = s.energies().ratio;
         if (show) progress.update(s.cycle(), s.time(), s.dt(), ratio);
       }
-      // A signal may reach only some ranks: stop together.
-      if (comm.anyAll(g_interrupted)) {
+      uint64_t request = 0;
+      if (const int sig = g_signal.load(); sig != 0) request |= sig == SIGTERM ? kSigTerm : kSigInt;
+      if (g_usr1.exchange(false)) request |= kSigUsr1;
+      if (root) {
+        const auto now = std::chrono::steady_clock::now();
+        if (opt.checkpoint_every > 0.0 &&
+            std::chrono::duration<double>(now - last_checkpoint).count() >= opt.checkpoint_every) {
+          request |= kCheckpoint;
+          last_checkpoint = now;
+        }
+        if (s.cycle() % kStopFileCycles == 0 ||
+            std::chrono::duration<double>(now - last_stop_check).count() >= kStopFilePeriod) {
+          std::string note;
+          request |= readStopFile(dir, note);
+          if (!note.empty()) {
+            std::fputs(("crumple: warning: " + note).c_str(), stderr);
+            say("warning: " + note);
+          }
+          last_stop_check = now;
+        }
+      }
+      // A signal may reach only some ranks, the stop file is read by rank 0: agree.
+      request = comm.orAll(request);
+      if (request & kStatus) {
+        const auto e = s.energies();
+        const std::string line = fmt::format(
+            "sw2: cycle {} time {:.6g} dt {:.4g} of end time {:.6g}; energy kinetic {:.6g} "
+            "internal {:.6g} ratio {:.6f}; wall {:.1f} s\n",
+            s.cycle(), s.time(), s.dt(), s.endTime(), e.kinetic, e.internal, e.ratio,
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count());
+        if (root) {
+          std::fputs(line.c_str(), stdout);
+          std::fflush(stdout);
+        }
+        say(line);
+      }
+      const bool stop = (request & (kSigInt | kSigTerm | kStop)) != 0;
+      const bool cycle_due = dump_cycles > 0 && s.cycle() % dump_cycles == 0 && !s.finished();
+      if (stop || cycle_due || (request & (kSigUsr1 | kDump | kCheckpoint)))
+        writeDump(request & kSigTerm      ? "SIGTERM"
+                  : request & kSigInt     ? "SIGINT"
+                  : request & kStop       ? "sense switch sw1"
+                  : request & kDump       ? "sense switch sw3"
+                  : request & kSigUsr1    ? "SIGUSR1"
+                  : request & kCheckpoint ? "--checkpoint-every"
+                                          : "*DATABASE_BINARY_D3DUMP");
+      if (stop) {
         info.termination = "signal";
-        info.message = "interrupted by a signal; the last state was written";
-        status = 1;
+        if (request & (kSigInt | kSigTerm)) {
+          status = request & kSigTerm ? 128 + SIGTERM : 128 + SIGINT;
+          info.message = fmt::format(
+              "interrupted by {}; a restart dump and the last state were "
+              "written",
+              request & kSigTerm ? "SIGTERM" : "SIGINT");
+        } else {
+          info.message =
+              "stopped by sense switch sw1; a restart dump and the last state were "
+              "written";
+        }
+        say(info.message + "\n");
         break;
       }
     }
+    // A run that ends normally leaves a dump of its end state when dumps were asked for: a
+    // restart deck with a later ENDTIM extends the run from it.
+    if (dumping && info.termination == "normal") writeDump("end of run");
     writer->write(s, true);
     const double ratio = s.energies().ratio;
     if (show) progress.finish(s.cycle(), s.time(), s.dt(), ratio);
+  } catch (const util::InputError& e) {
+    // Restart problems (a dump of another deck, a results folder of another run) are found
+    // by every rank together (DumpRegistry::restore), before the first cycle.
+    if (root) std::fprintf(stderr, "crumple: error: %s\n", e.what());
+    say(fmt::format("error: {}\n", e.what()));
+    return 1;
   } catch (const util::NumericalError& e) {
     // Numerical failures are detected collectively: every rank is here together.
     info.termination = "error";
@@ -298,10 +558,11 @@ int runCommand(const RunOptions& opt) {
       info.termination, s.time(), s.cycle(), e.kinetic, e.internal, e.hourglass, e.rigidwall,
       e.external_work, e.ratio));
   say(timingTable(s.timing(), output_s, info.wall_s));
-  if (s.cycle() > 0 && info.wall_s > info.setup_s)
+  if (s.cycle() > info.first_cycle && info.wall_s > info.setup_s)
     say(fmt::format("set-up {:.3f} s; {:.3g} element-cycles per second in the cycle loop\n",
                     info.setup_s,
-                    double(sd.global_elements) * double(s.cycle()) / (info.wall_s - info.setup_s)));
+                    double(sd.global_elements) * double(s.cycle() - info.first_cycle) /
+                        (info.wall_s - info.setup_s)));
   if (show) std::printf("%s termination; results in %s\n", info.termination.c_str(), dir.c_str());
   return status;
 }

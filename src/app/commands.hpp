@@ -16,6 +16,11 @@ struct RunOptions {
   bool overwrite = false;           // replace results of an earlier run in the folder
   bool quiet = false;               // no progress line
   std::string partition = "metis";  // element partitioner for distributed runs: metis or rcb
+  // Restart (docs/reliability.md): a dump file, or a results folder whose newest dump is
+  // taken; the run continues in the dump's folder (or -o) from the dumped state.
+  std::string restart;
+  std::string restart_deck;       // *CONTROL_TERMINATION / *DATABASE_ changes at restart
+  double checkpoint_every = 0.0;  // wall seconds between dumps; 0: none
 };
 
 // Exit status: 0 normal termination, 1 error termination (ARCHITECTURE.md, Commands).

@@ -38,6 +38,19 @@ int dispatch(int argc, char** argv) {
   run_cmd->add_flag("-q,--quiet", run.quiet, "No progress line");
   run_cmd->add_option("--partition", run.partition, "Element partitioner under mpirun")
       ->check(CLI::IsMember({"metis", "rcb"}));
+  run_cmd->add_option("--restart", run.restart,
+                      "Continue from a restart dump (a d3dump_ file, or a results folder: its "
+                      "newest dump), in that dump's folder unless -o is given");
+  auto* restart_deck =
+      run_cmd
+          ->add_option("--restart-deck", run.restart_deck,
+                       "With --restart: a deck of *CONTROL_TERMINATION and *DATABASE_ changes")
+          ->check(CLI::ExistingFile);
+  restart_deck->needs(run_cmd->get_option("--restart"));
+  run_cmd
+      ->add_option("--checkpoint-every", run.checkpoint_every,
+                   "Write a restart dump every SECONDS of wall time (the two newest are kept)")
+      ->check(CLI::PositiveNumber);
 
   crumple::app::CheckOptions check;
   auto* check_cmd = app.add_subcommand(

@@ -93,6 +93,10 @@ bool Communicator::anyAll(bool local) const {
   return mpi_ ? allReduce(local ? 1 : 0, MPI_INT, MPI_MAX, seconds_) != 0 : local;
 }
 
+uint64_t Communicator::orAll(uint64_t local) const {
+  return mpi_ ? allReduce(local, MPI_UINT64_T, MPI_BOR, seconds_) : local;
+}
+
 std::vector<double> Communicator::allGather(const std::vector<double>& local) const {
   if (!mpi_) return local;
   return gatherAll(local, MPI_DOUBLE, size_, seconds_);

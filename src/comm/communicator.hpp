@@ -34,6 +34,9 @@ class Communicator {
   std::vector<double> sumOrdered(const std::vector<double>& local) const;
   // True on every rank if any rank passes true (used to end all ranks on one rank's error).
   bool anyAll(bool local) const;
+  // Bitwise OR over all ranks: several yes/no requests (signals, sense switches, a dump due by
+  // the root's wall clock) agreed in one collective, so every rank acts at the same cycle.
+  uint64_t orAll(uint64_t local) const;
   // Every rank's vector, concatenated in rank order, on every rank.
   std::vector<double> allGather(const std::vector<double>& local) const;
   std::vector<int64_t> allGather(const std::vector<int64_t>& local) const;

@@ -302,4 +302,26 @@ double Boundary::wallKineticEnergy() const {
   return e;
 }
 
+namespace {
+// The state of a wall that changes during the run, for save and load alike.
+template <class W, class F>
+void visitWall(W& w, F&& f) {
+  f(w.displacement);
+  f(w.velocity);
+  f(w.velocity_prev);
+  f(w.force);
+  f(w.normal_force);
+}
+}  // namespace
+
+void Boundary::saveState(util::ArchiveWriter& out) const {
+  out.put<uint64_t>(walls_.size());
+  for (const auto& w : walls_) visitWall(w, [&](const auto& v) { out.put(v); });
+}
+
+void Boundary::loadState(util::ArchiveReader& in) {
+  util::expectCount(in, walls_.size(), "rigid walls");
+  for (auto& w : walls_) visitWall(w, [&](auto& v) { in.get(v); });
+}
+
 }  // namespace crumple::constraints

@@ -8,6 +8,7 @@
 #include "comm/communicator.hpp"
 #include "domain/subdomain.hpp"
 #include "model/model.hpp"
+#include "util/archive.hpp"
 
 namespace crumple::constraints {
 
@@ -47,6 +48,9 @@ class Boundary {
                          const domain::NodeVector& v_old, const comm::Communicator& comm);
 
   const std::vector<WallState>& walls() const { return walls_; }
+  // Restart: the walls' motion and last forces (the same on every rank).
+  void saveState(util::ArchiveWriter& out) const;
+  void loadState(util::ArchiveReader& in);
   // Kinetic energy of moving walls (part of the system's kinetic energy).
   double wallKineticEnergy() const;
   // Whether any external force (nodal, pressure, gravity) exists anywhere in the model; the

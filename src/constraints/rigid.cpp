@@ -811,4 +811,50 @@ std::vector<WeldState> RigidBodies::welds() const {
   return out;
 }
 
+// The state of a body that changes during the run, for save and load alike (mass, inertia,
+// body coordinates and weld data come from the deck and are rebuilt by the constructor).
+template <class B, class F>
+void RigidBodies::visitState(B& b, F&& f) {
+  f(b.q);
+  f(b.q_prev);
+  for (auto* v : {&b.x_cm, &b.x_cm_prev, &b.V, &b.V_prev, &b.L, &b.L_prev, &b.omega, &b.angle,
+                  &b.reaction_f, &b.reaction_m})
+    f(*v);
+  f(b.active);
+  f(b.failure_time);
+  f(b.fn);
+  f(b.fs);
+}
+
+void RigidBodies::saveState(util::ArchiveWriter& out) const {
+  out.put<uint64_t>(bodies_.size());
+  for (const Body& b : bodies_) visitState(b, [&](const auto& v) { out.put(v); });
+  out.put<uint64_t>(joints_.size());
+  for (const JointPair& j : joints_) {
+    out.put(j.k);
+    out.put(j.c);
+  }
+  out.put(joint_dissipated_);
+  out.put(joint_energy_);
+  out.put(stepped_);
+}
+
+void RigidBodies::loadState(util::ArchiveReader& in) {
+  util::expectCount(in, bodies_.size(), "rigid bodies and welds");
+  for (Body& b : bodies_) {
+    visitState(b, [&](auto& v) { in.get(v); });
+    // A failed weld's nodes are free again: their energy is the solver's (as in apply()).
+    if (!b.active)
+      for (int32_t node : b.local) in_body_[static_cast<std::size_t>(node)] = 0;
+  }
+  util::expectCount(in, joints_.size(), "joint node pairs");
+  for (JointPair& j : joints_) {
+    in.get(j.k);
+    in.get(j.c);
+  }
+  in.get(joint_dissipated_);
+  in.get(joint_energy_);
+  in.get(stepped_);
+}
+
 }  // namespace crumple::constraints

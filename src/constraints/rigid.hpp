@@ -41,6 +41,7 @@
 #include "comm/communicator.hpp"
 #include "domain/subdomain.hpp"
 #include "model/model.hpp"
+#include "util/archive.hpp"
 
 namespace crumple::constraints {
 
@@ -108,6 +109,11 @@ class RigidBodies {
     return !in_body_.empty() && in_body_[local_node] != 0;
   }
 
+  // Restart: the bodies' motion, weld failures and joint state (the same on every rank, so
+  // rank 0's copy is written); loadState after construction, on every rank.
+  void saveState(util::ArchiveWriter& out) const;
+  void loadState(util::ArchiveReader& in);
+
   std::vector<RigidBodyState> states() const;  // bodies, then welds, in model order
   std::vector<WeldState> welds() const;
 
@@ -152,6 +158,9 @@ class RigidBodies {
   static void inverseInertia(const Body& b, const Quat& q, double a[3][3]);
   // L = J w = R diag(I) R^T w.
   static Vec3 angularMomentum(const Body& b, const Quat& q, const Vec3& w);
+  // Calls f on each field of a body's run-time state (restart save and load).
+  template <class B, class F>
+  static void visitState(B& b, F&& f);
   // Step 2-3 for one body given F and M; returns the constraint work.
   double advance(Body& b, const Vec3& F, const Vec3& M, double t, double dt_n, double dt_half);
 

@@ -6,6 +6,8 @@
 #include <numeric>
 
 #include "contact/geometry.hpp"
+#include "util/archive.hpp"
+#include "util/error.hpp"
 
 namespace crumple::contact {
 
@@ -890,6 +892,57 @@ std::vector<InterfaceForces> Contact::interfaceForces() const {
     ++o.pairs;
   }
   return out;
+}
+
+std::vector<char> Contact::saveState() const {
+  util::ArchiveWriter w;
+  w.put<int64_t>(num_checks_);
+  w.put(x_);
+  w.put(x_sorted_);
+  w.put(friction_);
+  w.put(last_seg_);
+  w.put(last_side_);
+  w.put(entry_);
+  w.put(stored_);
+  w.put(dissipated_);
+  w.put(cycles_since_sort_);
+  w.put(stats_.sorts);
+  w.put(stats_.rebalances);
+  w.put(stats_.max_penetration_ratio);
+  return std::move(w.bytes());
+}
+
+void Contact::loadState(const std::vector<char>& bytes) {
+  util::ArchiveReader r(bytes);
+  int64_t checks = 0;
+  r.get(checks);
+  if (checks != num_checks_)
+    throw util::InputError("restart dump: its contact section has " + std::to_string(checks) +
+                           " checks, this deck " + std::to_string(num_checks_));
+  std::vector<double> x;
+  r.get(x);
+  r.get(x_sorted_);
+  r.get(friction_);
+  r.get(last_seg_);
+  r.get(last_side_);
+  r.get(entry_);
+  r.get(stored_);
+  r.get(dissipated_);
+  r.get(cycles_since_sort_);
+  r.get(stats_.sorts);
+  r.get(stats_.rebalances);
+  r.get(stats_.max_penetration_ratio);
+  if (!r.atEnd() || x.size() != x_.size() || x_sorted_.size() != x_.size())
+    throw util::InputError("restart dump: the contact section is inconsistent");
+  // The buckets, boxes and candidate lists of the last sort, rebuilt from its positions.
+  x_ = x_sorted_;
+  sort_margin_ = 0.0;
+  for (auto& p : passes_) sortBuckets(p);
+  partitionChecks(std::vector<double>(std::size_t(num_checks_), 1.0));
+  for (auto& p : passes_) updateBoxes(p);
+  buildCandidateLists();
+  x_ = std::move(x);
+  need_sort_ = false;
 }
 
 }  // namespace crumple::contact

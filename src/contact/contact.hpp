@@ -69,6 +69,13 @@ class Contact {
   const std::vector<InitialPenetration>& initialPenetrations() const { return initial_; }
   bool movedInitialPenetrations() const { return moved_initial_; }
   const Statistics& statistics() const { return stats_; }
+  // Restart (docs/reliability.md): the state is the same on every rank (replicated), so one
+  // copy is dumped and every rank loads it. Positions at the last bucket sort come along so
+  // that the buckets and candidate lists are rebuilt as they were: the continued run gives
+  // the same bits.
+  std::vector<char> saveState() const;
+  void loadState(const std::vector<char>& bytes);
+
   // Checks this rank computes now (the contact partition).
   std::size_t localChecks() const { return my_checks_.size(); }
 

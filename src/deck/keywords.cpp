@@ -246,6 +246,9 @@ std::vector<KeywordSpec> makeTables() {
   t.push_back({"*DATABASE_BINARY_D3PLOT",
                {{"card 1", {R("DT"), I("LCDT"), I("BEAM", 0, Q), I("NPLTC"), I("PSETID")}},
                 {"card 2", {I("IOOPT", 0, Q)}}}});
+  // Restart dumps: CYCL is the interval in cycles (a real in the manual's layout, "1000." and
+  // "1000" both read); NR, the number of dumps kept, is fixed at two by Crumple.
+  t.push_back({"*DATABASE_BINARY_D3DUMP", {{"card 1", {R("CYCL"), I("NR", 0, Q)}}}});
   t.push_back({"*DATABASE_EXTENT_BINARY",
                {{"card 1",
                  {I("NEIPH"), I("NEIPS"), I("MAXINT", 3, Z), I("STRFLG"), I("SIGFLG", 1, Z),

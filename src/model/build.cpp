@@ -335,6 +335,7 @@ const std::vector<Meaning>& meanings() {
       {"*DATABASE_RWFORC", 6, readDatabaseAscii, {}},
       {"*DATABASE_RCFORC", 6, readDatabaseAscii, {}},
       {"*DATABASE_BINARY_D3PLOT", 6, readDatabaseD3plot, {}},
+      {"*DATABASE_BINARY_D3DUMP", 6, readDatabaseD3dump, {}},
       {"*DATABASE_HISTORY_NODE", 6, readHistoryNode, {"ID"}},
       {"*DATABASE_HISTORY_NODE_SET", 6, readHistoryNodeSet, {}},
   };

@@ -24,6 +24,11 @@ struct ReadOptions {
 Model readModel(const std::filesystem::path& path);
 Model readModel(const std::filesystem::path& path, const ReadOptions& options);
 
+// Reads a restart deck (crumple run --restart-deck): *CONTROL_TERMINATION and the
+// *DATABASE_ output intervals change `controls`; any other keyword is a util::InputError naming
+// file:line, as a continued run cannot take it into account.
+void readRestartDeck(const std::filesystem::path& path, Controls& controls);
+
 // Model::unsupported as a table, one line per keyword: keyword, count, first file:line,
 // reason. Empty string when there is nothing to report.
 std::string formatUnsupported(const Model& model);

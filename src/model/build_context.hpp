@@ -264,6 +264,7 @@ void readControlEnergy(Context&, const deck::Keyword&, const KeywordOptions&);
 void readIgnoredControl(Context&, const deck::Keyword&, const KeywordOptions&);
 void readDatabaseAscii(Context&, const deck::Keyword&, const KeywordOptions&);
 void readDatabaseD3plot(Context&, const deck::Keyword&, const KeywordOptions&);
+void readDatabaseD3dump(Context&, const deck::Keyword&, const KeywordOptions&);
 void readHistoryNode(Context&, const deck::Keyword&, const KeywordOptions&);
 void readHistoryNodeSet(Context&, const deck::Keyword&, const KeywordOptions&);
 void finishControls(Context&);

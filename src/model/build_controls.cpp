@@ -2,6 +2,7 @@
 // honours (LS-DYNA Keyword Manual Vol. I). Keywords read only so that their non-default
 // fields can be reported go through readIgnoredControl.
 #include <algorithm>
+#include <cmath>
 
 #include "model/build_context.hpp"
 
@@ -119,6 +120,17 @@ void readDatabaseD3plot(Context& ctx, const deck::Keyword& kw, const KeywordOpti
   if (ctx.model.controls.d3plot_dt < 0) c.fail("DT", "must not be negative");
   // NPLTC: the number of plot states, DT = ENDTIM / NPLTC when DT is not given.
   ctx.d3plot_npltc = c.integer("NPLTC");
+  ctx.collect(cur);
+}
+
+void readDatabaseD3dump(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  CardCursor cur(kw, ctx.deck);
+  const Card& c = cur.readOptional(keywordSpec("*DATABASE_BINARY_D3DUMP").card("card 1"));
+  const double cycles = c.real("CYCL");
+  // A dump interval is a whole, positive number of cycles (0 or blank: no cycle-driven dumps).
+  if (cycles < 0 || cycles != std::floor(cycles) || cycles > 1e15)
+    c.fail("CYCL", "must be a whole number of cycles, 0 or more");
+  ctx.model.controls.d3dump_cycles = static_cast<int64_t>(cycles);
   ctx.collect(cur);
 }
 

@@ -295,6 +295,7 @@ struct Controls {
   double nodout_dt = 0.0;
   double rwforc_dt = 0.0;
   double rcforc_dt = 0.0;
+  int64_t d3dump_cycles = 0;  // *DATABASE_BINARY_D3DUMP CYCL; 0 = no cycle-driven dumps
 };
 
 // A keyword the reader saw but Crumple does not act on, reported once (ARCHITECTURE "Errors").

@@ -18,6 +18,14 @@ namespace crumple::output {
 
 namespace fs = std::filesystem;
 
+uint64_t fnv1a(const char* data, std::size_t size, uint64_t hash) {
+  for (std::size_t i = 0; i < size; ++i) {
+    hash ^= static_cast<unsigned char>(data[i]);
+    hash *= 0x100000001b3ull;
+  }
+  return hash;
+}
+
 CsvWriter::CsvWriter(const fs::path& path, const std::vector<std::string>& columns)
     : out_(path, std::ios::trunc), columns_(columns.size()) {
   if (!out_) throw std::runtime_error(fmt::format("cannot open '{}' for writing", path.string()));
@@ -27,7 +35,49 @@ CsvWriter::CsvWriter(const fs::path& path, const std::vector<std::string>& colum
     line.append(columns[i]);
   }
   line.push_back('\n');
-  out_.write(line.data(), static_cast<std::streamsize>(line.size()));
+  put(line.data(), line.size());
+}
+
+void CsvWriter::checkResume(const fs::path& path, const Position& resume) {
+  std::error_code ec;
+  const auto size = fs::file_size(path, ec);
+  if (ec || size < resume.bytes)
+    throw util::InputError(fmt::format(
+        "'{}' is {} the restart dump expects ({} bytes): the results folder does not hold "
+        "the run the dump was written by",
+        path.string(), ec ? "missing, or not the file" : "shorter than", resume.bytes));
+  {
+    std::ifstream in(path, std::ios::binary);
+    std::vector<char> prefix(resume.bytes);
+    if (!prefix.empty()) in.read(prefix.data(), static_cast<std::streamsize>(prefix.size()));
+    if (!in || fnv1a(prefix.data(), prefix.size()) != resume.hash)
+      throw util::InputError(fmt::format(
+          "'{}' differs from the file the restart dump was written with: the results folder "
+          "does not hold the run the dump was written by",
+          path.string()));
+  }
+}
+
+CsvWriter::CsvWriter(const fs::path& path, const std::vector<std::string>& columns,
+                     const Position& resume)
+    : columns_(columns.size()) {
+  checkResume(path, resume);
+  std::error_code ec;
+  // The rows after the dump belong to the interrupted continuation: the restarted run
+  // writes them again.
+  fs::resize_file(path, resume.bytes, ec);
+  if (ec)
+    throw util::InputError(
+        fmt::format("cannot cut '{}' back to the dump: {}", path.string(), ec.message()));
+  out_.open(path, std::ios::app | std::ios::binary);
+  if (!out_) throw std::runtime_error(fmt::format("cannot open '{}' for writing", path.string()));
+  pos_ = resume;
+}
+
+void CsvWriter::put(const char* data, std::size_t size) {
+  out_.write(data, static_cast<std::streamsize>(size));
+  pos_.bytes += size;
+  pos_.hash = fnv1a(data, size, pos_.hash);
 }
 
 void CsvWriter::row(const std::vector<double>& values) {
@@ -44,7 +94,7 @@ void CsvWriter::row(const std::vector<double>& values) {
     fmt::format_to(std::back_inserter(line), "{}", values[i]);
   }
   line.push_back('\n');
-  out_.write(line.data(), static_cast<std::streamsize>(line.size()));
+  put(line.data(), line.size());
 }
 
 namespace {
@@ -71,22 +121,41 @@ void hashDoubles(EVP_MD_CTX* ctx, const std::vector<double>& values) {
 
 }  // namespace
 
-std::string stateDigest(const std::vector<double>& x, const std::vector<double>& v) {
+namespace {
+
+// SHA-256 of whatever `feed` passes to EVP_DigestUpdate.
+template <class Feed>
+Sha256 sha256Of(Feed&& feed) {
   std::unique_ptr<EVP_MD_CTX, decltype(&EVP_MD_CTX_free)> ctx(EVP_MD_CTX_new(), &EVP_MD_CTX_free);
   if (!ctx || EVP_DigestInit_ex(ctx.get(), EVP_sha256(), nullptr) != 1) {
     throw std::runtime_error("SHA-256 initialisation failed");
   }
-  hashDoubles(ctx.get(), x);
-  hashDoubles(ctx.get(), v);
-  std::array<unsigned char, EVP_MAX_MD_SIZE> digest{};
+  feed(ctx.get());
+  Sha256 digest{};
   unsigned int length = 0;
-  if (EVP_DigestFinal_ex(ctx.get(), digest.data(), &length) != 1) {
+  if (EVP_DigestFinal_ex(ctx.get(), digest.data(), &length) != 1 || length != digest.size()) {
     throw std::runtime_error("SHA-256 finalisation failed");
   }
+  return digest;
+}
+
+}  // namespace
+
+Sha256 sha256(const char* data, std::size_t size) {
+  return sha256Of([&](EVP_MD_CTX* ctx) {
+    if (size > 0 && EVP_DigestUpdate(ctx, data, size) != 1)
+      throw std::runtime_error("SHA-256 update failed");
+  });
+}
+
+std::string stateDigest(const std::vector<double>& x, const std::vector<double>& v) {
+  const Sha256 digest = sha256Of([&](EVP_MD_CTX* ctx) {
+    hashDoubles(ctx, x);
+    hashDoubles(ctx, v);
+  });
   std::string hex;
-  hex.reserve(2 * length);
-  for (unsigned int i = 0; i < length; ++i)
-    fmt::format_to(std::back_inserter(hex), "{:02x}", digest[i]);
+  hex.reserve(2 * digest.size());
+  for (unsigned char byte : digest) fmt::format_to(std::back_inserter(hex), "{:02x}", byte);
   return hex;
 }
 
@@ -135,6 +204,19 @@ std::vector<fs::path> earlierResults(const fs::path& dir) {
   }
   for (const fs::path& p : pieceFiles(dir)) found.push_back(p);
   for (const fs::path& p : pieceFiles(dir / kStatesFolder)) found.push_back(p);
+  // Restart dumps (restart.hpp: d3dump_<cycle>, and the temporary file of one being written):
+  // a new run must not leave an older run's dumps to be restarted from by mistake.
+  std::error_code ec;
+  std::vector<fs::path> dumps;
+  if (fs::is_directory(fs::symlink_status(dir, ec)))
+    for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+      const std::string name = e.path().filename().string();
+      if ((name.rfind(kDumpPrefix, 0) == 0 || name == kDumpTemporary) &&
+          isRegularFileOrLink(e.path()))
+        dumps.push_back(e.path());
+    }
+  std::sort(dumps.begin(), dumps.end());
+  found.insert(found.end(), dumps.begin(), dumps.end());
   return found;
 }
 

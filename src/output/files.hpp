@@ -2,6 +2,7 @@
 // folder guard and the progress line.
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -12,20 +13,46 @@
 
 namespace crumple::output {
 
+// FNV-1a, 64 bits: the hash of the CSV prefixes a restart dump records (rows are hashed as they
+// are written, a few bytes at a time; it tells another run's file from this run's).
+inline constexpr uint64_t kFnvOffset = 0xcbf29ce484222325ull;
+uint64_t fnv1a(const char* data, std::size_t size, uint64_t hash = kFnvOffset);
+
 // A CSV file with a header row; numbers written with 17 significant digits (round-trip).
 class CsvWriter {
  public:
+  // How much of the file is written, and the FNV-1a 64 of those bytes (a restart dump records
+  // it, so that the continued run finds the file of the same run and cuts it back there).
+  struct Position {
+    uint64_t bytes = 0;
+    uint64_t hash = kFnvOffset;
+  };
   CsvWriter() = default;
   CsvWriter(const std::filesystem::path& path, const std::vector<std::string>& columns);
+  // Continues the file at `resume` (restart): its first resume.bytes bytes must hash to
+  // resume.hash, else util::InputError (the folder holds another run's file); the rows after
+  // them (written after the dump) are cut off and new rows are appended.
+  CsvWriter(const std::filesystem::path& path, const std::vector<std::string>& columns,
+            const Position& resume);
+  // The check of that constructor alone, so that every file can be checked before any is cut.
+  static void checkResume(const std::filesystem::path& path, const Position& resume);
   bool isOpen() const { return out_.is_open(); }
   // One row; `values` must have as many entries as the header. Integers print exactly.
   void row(const std::vector<double>& values);
   void flush() { out_.flush(); }
+  const Position& position() const { return pos_; }
 
  private:
+  void put(const char* data, std::size_t size);
   std::ofstream out_;
   std::size_t columns_ = 0;
+  Position pos_;
 };
+
+// SHA-256 of raw bytes (the checksum of restart dumps: with the CPU's SHA extensions it is
+// faster than a byte-wise FNV, and it catches any corruption).
+using Sha256 = std::array<unsigned char, 32>;
+Sha256 sha256(const char* data, std::size_t size);
 
 // SHA-256 over x then v, each as little-endian IEEE float64, nodes in the given order
 // (ascending global node id), as 64 lowercase hex characters. x and v are packed xyz.
@@ -34,6 +61,11 @@ std::string stateDigest(const std::vector<double>& x, const std::vector<double>&
 // The subfolder of the results folder that holds the VTU/PVTU pieces of the plot states (the
 // .pvd stays at the top so ParaView users find one file to open).
 inline constexpr const char* kStatesFolder = "states";
+
+// Restart dumps in the results folder are d3dump_<cycle, 10 digits> (restart.hpp); the
+// temporary file while one is written is .d3dump.tmp.
+inline constexpr const char* kDumpPrefix = "d3dump_";
+inline constexpr const char* kDumpTemporary = ".d3dump.tmp";
 
 // Makes `dir` ready for a run's results. If it already holds results of an earlier run
 // (summary.json, results.pvd, glstat.csv or run.log) and `overwrite` is false, throws

@@ -5,11 +5,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "elements/shell.hpp"
+#include "util/archive.hpp"
+#include "util/error.hpp"
 
 namespace crumple::output {
 
@@ -32,23 +35,34 @@ long peakMemoryBytes() {
 
 }  // namespace
 
+namespace {
+const std::vector<std::string> kGlstatColumns = {
+    "time",    "cycle",         "dt",    "kinetic",      "internal",  "hourglass",
+    "contact", "external_work", "total", "energy_ratio", "rigidwall", "added_mass"};
+const std::vector<std::string> kMatsumColumns = {
+    "time", "part", "kinetic", "internal", "hourglass", "x_momentum", "y_momentum", "z_momentum"};
+const std::vector<std::string> kNodoutColumns = {"time", "node", "x",  "y",  "z",  "dx", "dy",
+                                                 "dz",   "vx",   "vy", "vz", "ax", "ay", "az"};
+const std::vector<std::string> kRwforcColumns = {"time", "wall", "fn", "fx", "fy", "fz"};
+// side 1 = SURFA (slave), 2 = SURFB (master); energy is the interface's contact energy.
+const std::vector<std::string> kRcforcColumns = {"time", "contact", "side",   "fx",
+                                                 "fy",   "fz",      "energy", "pairs"};
+}  // namespace
+
 ResultsWriter::ResultsWriter(std::filesystem::path dir, const model::Model& model,
-                             const solver::Solver& s, const comm::Communicator& comm)
+                             const solver::Solver& s, const comm::Communicator& comm, bool restart)
     : dir_(std::move(dir)), model_(model), comm_(comm), pvd_(dir_ / "results.pvd") {
-  const bool root = comm.isRoot();
+  // On restart the files are opened by loadState, which knows where the dump left them.
+  const bool root = comm.isRoot() && !restart;
   const auto& ctl = model.controls;
   const double end = s.endTime();
+  requested_ = {ctl.glstat_dt, ctl.matsum_dt, ctl.nodout_dt,
+                ctl.rwforc_dt, ctl.rcforc_dt, ctl.d3plot_dt};
   glstat_.interval = intervalOr(ctl.glstat_dt, end, kDefaultSamples);
   matsum_.interval = intervalOr(ctl.matsum_dt, end, kDefaultSamples);
   plot_.interval = intervalOr(ctl.d3plot_dt, end, kDefaultPlotStates);
-  if (root)
-    glstat_csv_ = CsvWriter(dir_ / "glstat.csv",
-                            {"time", "cycle", "dt", "kinetic", "internal", "hourglass", "contact",
-                             "external_work", "total", "energy_ratio", "rigidwall", "added_mass"});
-  if (root)
-    matsum_csv_ =
-        CsvWriter(dir_ / "matsum.csv", {"time", "part", "kinetic", "internal", "hourglass",
-                                        "x_momentum", "y_momentum", "z_momentum"});
+  if (root) glstat_csv_ = CsvWriter(dir_ / "glstat.csv", kGlstatColumns);
+  if (root) matsum_csv_ = CsvWriter(dir_ / "matsum.csv", kMatsumColumns);
   const auto& sd = s.subdomain();
   history_count_ = model.history_nodes.size();
   for (std::size_t k = 0; k < model.history_nodes.size(); ++k) {
@@ -58,24 +72,108 @@ ResultsWriter::ResultsWriter(std::filesystem::path dir, const model::Model& mode
   }
   if (history_count_ > 0) {
     nodout_.interval = intervalOr(ctl.nodout_dt, end, kDefaultSamples);
-    if (root)
-      nodout_csv_ = CsvWriter(dir_ / "nodout.csv", {"time", "node", "x", "y", "z", "dx", "dy", "dz",
-                                                    "vx", "vy", "vz", "ax", "ay", "az"});
+    if (root) nodout_csv_ = CsvWriter(dir_ / "nodout.csv", kNodoutColumns);
   }
   if (!model.rigid_walls.empty()) {
     rwforc_.interval = intervalOr(ctl.rwforc_dt, end, kDefaultSamples);
-    if (root)
-      rwforc_csv_ = CsvWriter(dir_ / "rwforc.csv", {"time", "wall", "fn", "fx", "fy", "fz"});
+    if (root) rwforc_csv_ = CsvWriter(dir_ / "rwforc.csv", kRwforcColumns);
   }
   if (!model.contacts.empty()) {
     rcforc_.interval = intervalOr(ctl.rcforc_dt, end, kDefaultSamples);
-    // side 1 = SURFA (slave), 2 = SURFB (master); energy is the interface's contact energy.
-    if (root)
-      rcforc_csv_ = CsvWriter(dir_ / "rcforc.csv",
-                              {"time", "contact", "side", "fx", "fy", "fz", "energy", "pairs"});
+    if (root) rcforc_csv_ = CsvWriter(dir_ / "rcforc.csv", kRcforcColumns);
   }
-  if (root) std::filesystem::create_directories(dir_ / kStatesFolder);
+  if (comm.isRoot()) std::filesystem::create_directories(dir_ / kStatesFolder);
   comm.barrier();
+}
+
+std::vector<char> ResultsWriter::saveState() const {
+  util::ArchiveWriter w;
+  const Schedule* schedules[] = {&glstat_, &matsum_, &nodout_, &rwforc_, &rcforc_, &plot_};
+  for (std::size_t k = 0; k < 6; ++k) {
+    w.put(requested_[k]);
+    w.put(schedules[k]->interval);
+    w.put(schedules[k]->next);
+  }
+  w.put(plot_count_);
+  w.put(last_plot_time_);
+  std::vector<double> times;
+  std::vector<std::string> names;
+  for (const auto& [t, name] : pvd_.states()) {
+    times.push_back(t);
+    names.push_back(name);
+  }
+  w.put(times);
+  w.put(names);
+  for (const CsvWriter* csv :
+       {&glstat_csv_, &matsum_csv_, &nodout_csv_, &rwforc_csv_, &rcforc_csv_}) {
+    w.put<uint8_t>(csv->isOpen() ? 1 : 0);
+    w.put(csv->position());
+  }
+  return std::move(w.bytes());
+}
+
+void ResultsWriter::loadState(const std::vector<char>& bytes, double time) {
+  util::ArchiveReader r(bytes);
+  Schedule* schedules[] = {&glstat_, &matsum_, &nodout_, &rwforc_, &rcforc_, &plot_};
+  for (std::size_t k = 0; k < 6; ++k) {
+    double requested = 0.0;
+    Schedule dumped;
+    r.get(requested);
+    r.get(dumped.interval);
+    r.get(dumped.next);
+    // A history without output (no history nodes, no walls) keeps its zero interval.
+    if (schedules[k]->interval == 0.0) continue;
+    if (requested == requested_[k]) {
+      *schedules[k] = dumped;
+    } else {
+      // The restart deck changed the interval: the next sample is one new interval on.
+      schedules[k]->next = time + schedules[k]->interval;
+    }
+  }
+  r.get(plot_count_);
+  r.get(last_plot_time_);
+  std::vector<double> times;
+  std::vector<std::string> names;
+  r.get(times);
+  r.get(names);
+  std::array<std::pair<uint8_t, CsvWriter::Position>, 5> csv{};
+  for (auto& [open, pos] : csv) {
+    r.get(open);
+    r.get(pos);
+  }
+  if (!r.atEnd() || times.size() != names.size())
+    throw util::InputError("restart dump: the output section is inconsistent");
+  if (!comm_.isRoot()) return;
+  const std::filesystem::path paths[] = {dir_ / "glstat.csv", dir_ / "matsum.csv",
+                                         dir_ / "nodout.csv", dir_ / "rwforc.csv",
+                                         dir_ / "rcforc.csv"};
+  const std::vector<std::string>* columns[] = {&kGlstatColumns, &kMatsumColumns, &kNodoutColumns,
+                                               &kRwforcColumns, &kRcforcColumns};
+  CsvWriter* writers[] = {&glstat_csv_, &matsum_csv_, &nodout_csv_, &rwforc_csv_, &rcforc_csv_};
+  const bool wanted[] = {true, true, history_count_ > 0, !model_.rigid_walls.empty(),
+                         !model_.contacts.empty()};
+  // Every file is checked before any is cut back: a folder of another run stays untouched.
+  for (std::size_t k = 0; k < csv.size(); ++k) {
+    if ((csv[k].first != 0) != wanted[k])
+      throw util::InputError("the restart dump does not belong to this deck: it wrote " +
+                             paths[k].filename().string() + (wanted[k] ? " not" : "") +
+                             ", this deck would" + (wanted[k] ? "" : " not"));
+    if (wanted[k]) CsvWriter::checkResume(paths[k], csv[k].second);
+  }
+  for (std::size_t k = 0; k < csv.size(); ++k)
+    if (wanted[k]) *writers[k] = CsvWriter(paths[k], *columns[k], csv[k].second);
+  std::vector<std::pair<double, std::string>> states;
+  for (std::size_t k = 0; k < times.size(); ++k) states.emplace_back(times[k], names[k]);
+  pvd_.restore(std::move(states));
+  // Plot states numbered from plot_count_ on were written after the dump (the continuation
+  // that was interrupted, or its final state): the restarted run writes its own.
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(dir_ / kStatesFolder, ec)) {
+    const std::string name = e.path().filename().string();
+    int state = -1;
+    if (std::sscanf(name.c_str(), "state_%d", &state) == 1 && state >= plot_count_)
+      std::filesystem::remove(e.path(), ec);
+  }
 }
 
 void ResultsWriter::write(const solver::Solver& s, bool last) {
@@ -359,7 +457,7 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
   j["cycles"] = s.cycle();
   j["wall_s"] = info.wall_s;
   const auto& sd = s.subdomain();
-  const double element_cycles = double(sd.global_elements) * double(s.cycle());
+  const double element_cycles = double(sd.global_elements) * double(s.cycle() - info.first_cycle);
   // The rate of the time-stepping loop: set-up (reading the deck, partitioning) is reported
   // apart, as setup_s, and would otherwise hide the solver's speed on short runs.
   const double loop_s = info.wall_s - info.setup_s;

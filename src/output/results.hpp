@@ -2,6 +2,7 @@
 // fall due, plot states for ParaView, and summary.json at the end.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <string>
 
@@ -20,15 +21,25 @@ struct RunInfo {
   std::string termination = "normal";  // "normal", "error", "signal"
   std::string message;                 // the error, if any
   double wall_s = 0.0;
-  double setup_s = 0.0;  // reading, partitioning, distributing and initialising
+  double setup_s = 0.0;     // reading, partitioning, distributing and initialising
+  int64_t first_cycle = 0;  // a restarted run's first cycle: the rate counts this run's cycles
 };
 
 class ResultsWriter {
  public:
   // Every rank constructs one and calls write() at the same cycles (the sums are collective);
   // rank 0 writes the histories, the .pvtu/.pvd and the summary, every rank its VTU piece.
+  // With `restart`, the history files are left as they are until loadState() continues them.
   ResultsWriter(std::filesystem::path dir, const model::Model& model, const solver::Solver& s,
-                const comm::Communicator& comm);
+                const comm::Communicator& comm, bool restart = false);
+
+  // Restart (docs/reliability.md "Restart"): the output schedules, the plot states written and
+  // how far each history file is written. saveState's bytes are valid on rank 0. loadState
+  // (every rank, after the solver's state) restores the schedules (one whose interval the
+  // restart deck changed starts anew at the dump's time), cuts every history file back to the
+  // dump and appends to it, and removes plot states written after the dump.
+  std::vector<char> saveState() const;
+  void loadState(const std::vector<char>& bytes, double time);
 
   // Writes the histories and plot states that are due at the solver's current time; `last`
   // forces a final sample of everything (end of run or error).
@@ -55,6 +66,8 @@ class ResultsWriter {
   const model::Model& model_;
   const comm::Communicator& comm_;
   Schedule glstat_, matsum_, nodout_, rwforc_, rcforc_, plot_;
+  // The intervals the deck asked for (0: the default), to tell a restart deck's change.
+  std::array<double, 6> requested_{};
   CsvWriter glstat_csv_, matsum_csv_, nodout_csv_, rwforc_csv_, rcforc_csv_;
   std::vector<std::pair<int32_t, int32_t>> history_local_;  // (deck order, local node), owned
   std::size_t history_count_ = 0;

@@ -49,6 +49,13 @@ class PvdWriter {
  public:
   explicit PvdWriter(std::filesystem::path path);
   void addState(double time, const std::string& file_relative_to_pvd);
+  // The states listed so far; restore() replaces them and rewrites the file (restart: the
+  // states up to the dump, whatever the interrupted continuation had added).
+  const std::vector<std::pair<double, std::string>>& states() const { return states_; }
+  void restore(std::vector<std::pair<double, std::string>> states) {
+    states_ = std::move(states);
+    flush();
+  }
 
  private:
   void flush() const;

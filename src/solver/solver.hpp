@@ -75,6 +75,16 @@ class Solver {
   const constraints::RigidBodies* rigidBodies() const { return rigid_.get(); }
   // Contact interfaces; null when the model has none.
   const contact::Contact* contact() const { return contact_.get(); }
+  contact::Contact* contact() { return contact_.get(); }
+
+  // Restart (src/solver/state.cpp, docs/reliability.md "Restart"): the solver's state in
+  // sections keyed by global ids, so that a dump written at N ranks continues at M. saveState
+  // is collective and returns the bytes on rank 0 (empty elsewhere). loadState runs on every
+  // rank after initialize(), which recomputes masses and initial steps from the deck; the
+  // dump's are checked against them (util::InputError if the dump is from another deck).
+  enum class StateSection { Scalars, Nodes, Elements, Constraints };
+  std::vector<char> saveState(StateSection which) const;
+  void loadState(StateSection which, const std::vector<char>& bytes);
 
  private:
   // One element pass: the minimum stable step found and any inverted element.

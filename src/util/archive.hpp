@@ -10,27 +10,38 @@
 #include <type_traits>
 #include <vector>
 
+#include "util/error.hpp"
+
 namespace crumple::util {
+
+// Appends n bytes at p to out. resize + memcpy rather than insert: GCC 12 reports a false
+// stringop-overflow for inserting a few bytes into an empty vector<char> once inlined.
+inline void appendBytes(std::vector<char>& out, const void* p, std::size_t n) {
+  if (n == 0) return;  // p may be null
+  const std::size_t at = out.size();
+  out.resize(at + n);
+  std::memcpy(out.data() + at, p, n);
+}
+template <class T>
+requires std::is_trivially_copyable_v<T>
+void appendValue(std::vector<char>& out, const T& v) {
+  appendBytes(out, &v, sizeof(T));
+}
 
 class ArchiveWriter {
  public:
   template <class T>
   requires std::is_trivially_copyable_v<T>
-  void put(const T& v) {
-    const auto* p = reinterpret_cast<const char*>(&v);
-    bytes_.insert(bytes_.end(), p, p + sizeof(T));
-  }
+  void put(const T& v) { appendValue(bytes_, v); }
   void put(const std::string& s) {
     put<uint64_t>(s.size());
-    bytes_.insert(bytes_.end(), s.begin(), s.end());
+    appendBytes(bytes_, s.data(), s.size());
   }
   template <class T>
   void put(const std::vector<T>& v) {
     put<uint64_t>(v.size());
     if constexpr (std::is_trivially_copyable_v<T>) {
-      if (v.empty()) return;  // data() may be null
-      const auto* p = reinterpret_cast<const char*>(v.data());
-      bytes_.insert(bytes_.end(), p, p + v.size() * sizeof(T));
+      appendBytes(bytes_, v.data(), v.size() * sizeof(T));
     } else {
       for (const auto& x : v) put(x);
     }
@@ -103,5 +114,15 @@ class ArchiveReader {
   const std::vector<char>& bytes_;
   std::size_t pos_ = 0;
 };
+
+// Restart sections: reads a count written by the dumped run and checks it against this run's;
+// a difference means the dump was written for another deck (util::InputError saying what).
+inline void expectCount(ArchiveReader& in, std::size_t expected, const char* what) {
+  uint64_t n = 0;
+  in.get(n);
+  if (n != expected)
+    throw InputError("the restart dump does not belong to this deck: it holds " +
+                     std::to_string(n) + " " + what + ", the deck " + std::to_string(expected));
+}
 
 }  // namespace crumple::util
