@@ -16,6 +16,9 @@
                       pulled off so that welds fail during the run; a generalized weld, a
                       nodal rigid body, a tied node set, a fully constrained (CMO) anvil and
                       a spherical joint between the plate's body and block B.
+  contact_blocks.k, contact_tube.k, contact_tied.k
+                      contact decks of tools/contact_decks.py (two-surface, single-surface
+                      with rigid plates, tied).
 """
 
 from __future__ import annotations
@@ -25,6 +28,7 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from deckgen import Mesh, block, node_set  # noqa: E402
+import contact_decks  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 
@@ -383,7 +387,14 @@ def main() -> None:
     (out / "mixed_conditions.k").write_text(mixed_conditions())
     (out / "structures.k").write_text(structures())
     (out / "rigid_welds.k").write_text(rigid_welds())
-    print("wrote tests/data/decks/mixed_conditions.k, structures.k and rigid_welds.k")
+    # Contact: symmetric two-surface contact of offset blocks with unlike meshes, and the
+    # square tube crushed with single-surface contact (5 mm shells, 1 ms: the first fold).
+    (out / "contact_blocks.k").write_text(
+        contact_decks.colliding_blocks("SURFACE_TO_SURFACE", 4, 5, 0.001))
+    (out / "contact_tube.k").write_text(contact_decks.tube_crush(size=5.0, end=1.0))
+    (out / "contact_tied.k").write_text(contact_decks.tied_bar(end=1.0e-4))
+    print("wrote tests/data/decks/mixed_conditions.k, structures.k, rigid_welds.k, "
+          "contact_blocks.k, contact_tube.k and contact_tied.k")
 
 
 if __name__ == "__main__":

@@ -27,7 +27,7 @@ from clitest import TempDirTest, crumple, describe, example, main, read_summary
 MPI_ENV = dict(os.environ, OMP_WAIT_POLICY="PASSIVE", OMPI_ALLOW_RUN_AS_ROOT="1",
                OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_rmaps_base_oversubscribe="1")
 MPI_ENV["ASAN_OPTIONS"] = (MPI_ENV.get("ASAN_OPTIONS", "") + ":detect_leaks=0").lstrip(":")
-HISTORIES = ("glstat.csv", "matsum.csv", "nodout.csv", "rwforc.csv", "results.pvd")
+HISTORIES = ("glstat.csv", "matsum.csv", "nodout.csv", "rwforc.csv", "rcforc.csv", "results.pvd")
 
 
 def data_deck(name):
@@ -80,6 +80,8 @@ class RestartEquality(RestartCase):
             (data_deck("structures.k"), ["--endtime", "0.3"], 500),
             (data_deck("rigid_welds.k"), [], 50),
             (data_deck("mixed_conditions.k"), [], 40),
+            (data_deck("contact_tube.k"), ["--endtime", "0.5"], 700),
+            (data_deck("contact_blocks.k"), [], 150),
         ]
 
     def test_restart_from_mid_run_dump_is_bitwise(self):
