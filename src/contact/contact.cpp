@@ -21,6 +21,7 @@ constexpr std::size_t kRecord = 17;
 // Parametric tolerance of "the node is over the segment" (geometry.hpp).
 constexpr double kInsideTolerance = 0.02;
 constexpr double kStableFraction = 0.1;
+constexpr double kMarginFraction = 0.25;
 
 Vec3 at(const std::vector<double>& a, std::size_t i) {
   return {a[3 * i], a[3 * i + 1], a[3 * i + 2]};
@@ -45,6 +46,7 @@ struct Contact::Pass {
   // Single surface: the nodes sharing a segment with each node (CSR over contact nodes).
   std::vector<int32_t> near_ptr, near_node;
   double reach_extra = 0.0;  // largest node + segment half thickness
+  double reach = 0.0;        // segment radius + reach_extra at the last sort
   double max_node_half = 0.0;
   std::vector<double> box;  // per segment: widened bounding box (lo xyz, hi xyz), each cycle
   double sofscl = 0.0, vdc = 0.0, fs = 0.0, fd = 0.0, dc = 0.0, birth = 0.0, death = 0.0;
@@ -238,27 +240,49 @@ void Contact::updateBoxes(Pass& p) {
   }
 }
 
+void Contact::sortAll() {
+  // The margin node and segment may close by before the next sort (computeForces re-sorts
+  // when twice the largest travel exceeds it): a quarter of the smallest reach, so that the
+  // candidate lists stay short; each pass's cells hold its reach plus the margin, so the 27
+  // cells around a node hold every segment it can meet before the next sort.
+  double smallest = 1e300;
+  for (auto& p : passes_) {
+    p.reach = reachOf(p);
+    if (!p.seg.empty()) smallest = std::min(smallest, p.reach);
+  }
+  sort_margin_ = smallest < 1e300 ? kMarginFraction * smallest : 0.0;
+  for (auto& p : passes_) sortBuckets(p);
+  x_sorted_ = x_;
+}
+
+double Contact::reachOf(const Pass& p) const {
+  double radius = 0.0;
+  for (const auto& seg : p.seg) {
+    Vec3 c{};
+    for (int32_t a : seg) c = add(c, at(x_, std::size_t(a)));
+    c = scale(c, 0.25);
+    for (int32_t a : seg) radius = std::max(radius, norm(sub(at(x_, std::size_t(a)), c)));
+  }
+  return radius + p.reach_extra;
+}
+
 void Contact::sortBuckets(Pass& p) {
-  // Cell size: the reach of a node to a segment whose centroid lies in a neighbouring cell,
-  // with a margin the nodes may travel before the next sort (Contact::computeForces).
   const std::size_t ns = p.seg.size();
   std::vector<Vec3> centre(ns);
-  double radius = 0.0;
   Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
   for (std::size_t s = 0; s < ns; ++s) {
     Vec3 c{};
     for (int32_t a : p.seg[s]) c = add(c, at(x_, std::size_t(a)));
     c = scale(c, 0.25);
     centre[s] = c;
-    for (int32_t a : p.seg[s]) radius = std::max(radius, norm(sub(at(x_, std::size_t(a)), c)));
     for (int i = 0; i < 3; ++i) {
       lo[std::size_t(i)] = std::min(lo[std::size_t(i)], c[std::size_t(i)]);
       hi[std::size_t(i)] = std::max(hi[std::size_t(i)], c[std::size_t(i)]);
     }
   }
-  const double reach = radius + p.reach_extra;
-  sort_margin_ = std::max(sort_margin_, 0.5 * reach);
-  double cell = reach + 0.5 * reach;
+  // Cell size: a node meets segments whose centroid is within the reach, and may close by the
+  // margin before the next sort.
+  double cell = p.reach + sort_margin_;
   // Keep the grid at most a few cells per segment (a long thin surface would otherwise make
   // most cells empty).
   for (;;) {
@@ -344,10 +368,15 @@ void Contact::buildCandidateLists() {
   // Valid until the next sort: node and segment then have closed by at most sort_margin_.
   cand_ptr_.assign(1, 0);
   cand_seg_.clear();
-  for (int32_t check : my_checks_) {
-    collectCandidates(passes_[std::size_t(check_pass_[std::size_t(check)])], check,
-                      1.1 * sort_margin_, cand_seg_);
+  active_.clear();
+  for (std::size_t i = 0; i < my_checks_.size(); ++i) {
+    const int32_t check = my_checks_[i];
+    const Pass& p = passes_[std::size_t(check_pass_[std::size_t(check)])];
+    if (!p.tied) collectCandidates(p, check, 1.1 * sort_margin_, cand_seg_);
     cand_ptr_.push_back(int32_t(cand_seg_.size()));
+    // Only checks that can meet something before the next sort are visited each cycle.
+    if (cand_ptr_[i + 1] > cand_ptr_[i] || (p.tied && tie_seg_[std::size_t(check)] >= 0))
+      active_.push_back(int32_t(i));
   }
 }
 
@@ -615,8 +644,7 @@ void Contact::initialize(double dt0) {
   }
   gatherNodes();
   x_prev_ = x_;
-  for (auto& p : passes_) sortBuckets(p);
-  x_sorted_ = x_;
+  sortAll();
   need_sort_ = false;
   partitionChecks(std::vector<double>(std::size_t(num_checks_), 1.0));
 
@@ -709,7 +737,8 @@ void Contact::tiedForce(const Pass& p, int32_t check, double dt_prev,
 
 void Contact::computeForces(double time, double dt_prev) {
   if (empty()) return;
-  x_prev_ = x_;
+  // gatherNodes() writes every contact node's position (each is owned by one rank).
+  std::swap(x_prev_, x_);
   gatherNodes();
   // Re-sort when some node may have travelled half the margin since the last sort: a node
   // and a segment closing at that speed stay within the 27 buckets searched.
@@ -727,9 +756,7 @@ void Contact::computeForces(double time, double dt_prev) {
     cycles_since_sort_ = 0;
     resorted = true;
     maybeRebalance();
-    sort_margin_ = 0.0;
-    for (auto& p : passes_) sortBuckets(p);
-    x_sorted_ = x_;
+    sortAll();
     ++stats_.sorts;
   }
   for (auto& p : passes_) updateBoxes(p);
@@ -737,7 +764,8 @@ void Contact::computeForces(double time, double dt_prev) {
 
   std::vector<double> mine;
   int64_t tests = 0;
-  for (std::size_t i = 0; i < my_checks_.size(); ++i) {
+  for (const int32_t active : active_) {
+    const auto i = std::size_t(active);
     const int32_t check = my_checks_[i];
     const Pass& p = passes_[std::size_t(check_pass_[std::size_t(check)])];
     if (time < p.birth || time > p.death) continue;
@@ -936,8 +964,7 @@ void Contact::loadState(const std::vector<char>& bytes) {
     throw util::InputError("restart dump: the contact section is inconsistent");
   // The buckets, boxes and candidate lists of the last sort, rebuilt from its positions.
   x_ = x_sorted_;
-  sort_margin_ = 0.0;
-  for (auto& p : passes_) sortBuckets(p);
+  sortAll();
   partitionChecks(std::vector<double>(std::size_t(num_checks_), 1.0));
   for (auto& p : passes_) updateBoxes(p);
   buildCandidateLists();

@@ -83,6 +83,8 @@ class Contact {
   struct Pass;  // one side's nodes against the other side's segments
   struct Candidate;
   void gatherNodes();
+  void sortAll();  // every pass's buckets, the margin and x_sorted_
+  double reachOf(const Pass& pass) const;
   void sortBuckets(Pass& pass);
   void updateBoxes(Pass& pass);
   // Looks for the segment a check penetrates; false if none.
@@ -123,6 +125,7 @@ class Contact {
   std::vector<int32_t> check_pass_;           // pass of each global check
   std::vector<int32_t> my_checks_;            // ascending
   std::vector<int32_t> cand_ptr_, cand_seg_;  // candidate segments of each of my checks (CSR)
+  std::vector<int32_t> active_;               // indices into my_checks_ with candidates (or a tie)
   std::vector<double> friction_;              // tangential force history, 3 per check
   std::vector<double> initial_gap_;           // IGNORE 1/2: initial penetration per check
   std::vector<double> check_cost_;  // tests per check since the last balance (this rank's)
