@@ -1,6 +1,7 @@
 #include "contact/contact.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -48,7 +49,8 @@ struct Contact::Pass {
   double reach_extra = 0.0;  // largest node + segment half thickness
   double reach = 0.0;        // segment radius + reach_extra at the last sort
   double max_node_half = 0.0;
-  std::vector<double> box;  // per segment: widened bounding box (lo xyz, hi xyz), each cycle
+  std::vector<double> box;      // per segment: widened bounding box (lo xyz, hi xyz), each cycle
+  std::vector<int32_t> needed;  // segments in this rank's candidate lists (ascending)
   double sofscl = 0.0, vdc = 0.0, fs = 0.0, fd = 0.0, dc = 0.0, birth = 0.0, death = 0.0;
   int soft = 0;
   bool tied = false;  // nodes held to the point of the segment they started on
@@ -217,12 +219,15 @@ void Contact::gatherNodes() {
   }
 }
 
-void Contact::updateBoxes(Pass& p) {
+void Contact::updateBoxes(Pass& p, bool needed_only) {
   // Slack: the contact thickness of any node of the pass with the segment, the depth a node may
-  // reach into a solid, and the parametric tolerance of "over the segment".
+  // reach into a solid, and the parametric tolerance of "over the segment". Between sorts only
+  // the segments in this rank's candidate lists are needed.
   const std::size_t ns = p.seg.size();
   p.box.resize(6 * ns);
-  for (std::size_t s = 0; s < ns; ++s) {
+  const std::size_t count = needed_only ? p.needed.size() : ns;
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t s = needed_only ? std::size_t(p.needed[k]) : k;
     double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
     for (int32_t a : p.seg[s])
       for (int i = 0; i < 3; ++i) {
@@ -377,6 +382,17 @@ void Contact::buildCandidateLists() {
     // Only checks that can meet something before the next sort are visited each cycle.
     if (cand_ptr_[i + 1] > cand_ptr_[i] || (p.tied && tie_seg_[std::size_t(check)] >= 0))
       active_.push_back(int32_t(i));
+  }
+  // The segments whose boxes this rank needs until the next sort.
+  for (auto& p : passes_) p.needed.clear();
+  for (std::size_t i = 0; i < my_checks_.size(); ++i) {
+    Pass& p = passes_[std::size_t(check_pass_[std::size_t(my_checks_[i])])];
+    p.needed.insert(p.needed.end(), cand_seg_.begin() + cand_ptr_[i],
+                    cand_seg_.begin() + cand_ptr_[i + 1]);
+  }
+  for (auto& p : passes_) {
+    std::sort(p.needed.begin(), p.needed.end());
+    p.needed.erase(std::unique(p.needed.begin(), p.needed.end()), p.needed.end());
   }
 }
 
@@ -651,7 +667,7 @@ void Contact::initialize(double dt0) {
   // Initial penetrations, found by every rank over every check (once), in check order.
   const int ignore = model_.contact_controls.ignore;
   int64_t tests = 0;
-  for (auto& p : passes_) updateBoxes(p);
+  for (auto& p : passes_) updateBoxes(p, false);
   std::vector<int32_t> candidates;
   for (const auto& p : passes_) {
     const auto& ci = model_.contacts[std::size_t(p.iface)];
@@ -693,7 +709,7 @@ void Contact::initialize(double dt0) {
   }
   x_sorted_ = x_;
   x_prev_ = x_;
-  for (auto& p : passes_) updateBoxes(p);
+  for (auto& p : passes_) updateBoxes(p, false);
   buildCandidateLists();
 }
 
@@ -737,9 +753,12 @@ void Contact::tiedForce(const Pass& p, int32_t check, double dt_prev,
 
 void Contact::computeForces(double time, double dt_prev) {
   if (empty()) return;
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now();
   // gatherNodes() writes every contact node's position (each is owned by one rank).
   std::swap(x_prev_, x_);
   gatherNodes();
+  const auto t1 = Clock::now();
   // Re-sort when some node may have travelled half the margin since the last sort: a node
   // and a segment closing at that speed stay within the 27 buckets searched.
   double travel = 0.0;
@@ -759,11 +778,12 @@ void Contact::computeForces(double time, double dt_prev) {
     sortAll();
     ++stats_.sorts;
   }
-  for (auto& p : passes_) updateBoxes(p);
+  for (auto& p : passes_) updateBoxes(p, !resorted);
   if (resorted) buildCandidateLists();
 
   std::vector<double> mine;
   int64_t tests = 0;
+  const auto t2 = Clock::now();
   for (const int32_t active : active_) {
     const auto i = std::size_t(active);
     const int32_t check = my_checks_[i];
@@ -838,7 +858,9 @@ void Contact::computeForces(double time, double dt_prev) {
   stats_.tests += tests;
   tests_since_balance_ += tests;
 
+  const auto t3 = Clock::now();
   records_ = comm_.distributed() ? comm_.allGather(mine) : std::move(mine);
+  const auto t4 = Clock::now();
   // Canonical order: by check index (each check is computed by one rank).
   const std::size_t nrec = records_.size() / kRecord;
   std::vector<std::size_t> order(nrec);
@@ -888,6 +910,17 @@ void Contact::computeForces(double time, double dt_prev) {
       stats_.max_penetration_ratio =
           std::max(stats_.max_penetration_ratio, (rec[12] + rec[16] + initial_gap_[check]) / ref);
   }
+  const auto t5 = Clock::now();
+  auto sec = [](Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+  };
+  // The split the 32-rank model of docs/parallel.md needs: the checks divide among ranks, the
+  // rest is done by every rank, the two gathers grow with the surface.
+  stats_.search_s += sec(t2, t3);
+  stats_.exchange_s += sec(t0, t1) + sec(t3, t4);
+  stats_.replicated_s += sec(t1, t2) + sec(t4, t5);
+  stats_.records += int64_t(records_.size() / kRecord);
+  ++stats_.cycles;
 }
 
 double Contact::energy() const {
@@ -966,7 +999,7 @@ void Contact::loadState(const std::vector<char>& bytes) {
   x_ = x_sorted_;
   sortAll();
   partitionChecks(std::vector<double>(std::size_t(num_checks_), 1.0));
-  for (auto& p : passes_) updateBoxes(p);
+  for (auto& p : passes_) updateBoxes(p, false);
   buildCandidateLists();
   x_ = std::move(x);
   need_sort_ = false;

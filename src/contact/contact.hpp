@@ -40,6 +40,11 @@ struct InitialPenetration {
 };
 
 struct Statistics {
+  // Seconds of this rank in computeForces: the checks (divided among ranks), the work every
+  // rank repeats (sort, boxes, records), and the two gathers (positions, records).
+  double search_s = 0.0, replicated_s = 0.0, exchange_s = 0.0;
+  int64_t records = 0;  // contact records summed over cycles
+  int64_t cycles = 0;
   int64_t checks = 0;                  // node-against-surface checks of the whole model
   int64_t sorts = 0;                   // bucket re-sorts
   int64_t rebalances = 0;              // contact partition re-cuts after the initial one
@@ -86,7 +91,7 @@ class Contact {
   void sortAll();  // every pass's buckets, the margin and x_sorted_
   double reachOf(const Pass& pass) const;
   void sortBuckets(Pass& pass);
-  void updateBoxes(Pass& pass);
+  void updateBoxes(Pass& pass, bool needed_only);
   // Looks for the segment a check penetrates; false if none.
   std::array<double, 3> segmentNormal(const std::array<int32_t, 4>& seg) const;
   // Segments a check may meet before the next sort (appended to `out`).

@@ -492,6 +492,11 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
                     {"bucket_sorts", st.sorts},
                     {"rebalances", st.rebalances},
                     {"tied_nodes", st.tied_nodes},
+                    // Rank 0's split of its contact time (docs/parallel.md, "Contact").
+                    {"search_s", st.search_s},
+                    {"replicated_s", st.replicated_s},
+                    {"exchange_s", st.exchange_s},
+                    {"records_per_cycle", st.cycles ? double(st.records) / double(st.cycles) : 0.0},
                     {"initial_penetrations", c->initialPenetrations().size()},
                     {"max_penetration_ratio", max_pen}};
   }
