@@ -76,6 +76,32 @@ std::string modelSummary(const model::Model& m, const solver::Solver& s) {
   out += fmt::format("initial time step: {:.6g} ({}, TSSFAC {:g})\n", s.initialDt(),
                      s.initialDtElement(), m.controls.tssfac);
   out += fmt::format("end time: {:g}\n", m.controls.end_time);
+  if (!m.contacts.empty()) {
+    static constexpr const char* kKind[] = {"nodes to surface", "surface to surface",
+                                            "single surface", "tied"};
+    for (const auto& c : m.contacts)
+      out += fmt::format(
+          "contact {}{}: {}{}, {} nodes / {} segments against {} segments\n", c.id,
+          c.title.empty() ? "" : " \"" + c.title + "\"", c.automatic ? "automatic " : "",
+          kKind[int(c.kind)], c.a.nodes.size(), c.a.segments.size(),
+          c.kind == model::ContactKind::SingleSurface ? c.a.segments.size() : c.b.segments.size());
+    // Initial penetrations: DYNA3D moves the nodes back onto the surface (IGNORE 0), and
+    // says so; with IGNORE 1 or 2 they are kept as an offset.
+    if (const auto* c = s.contact()) {
+      const auto& pen = c->initialPenetrations();
+      if (!pen.empty()) {
+        out += fmt::format("initial penetrations: {} ({})\n", pen.size(),
+                           c->movedInitialPenetrations()
+                               ? "moved back onto the surface before the first cycle"
+                               : "kept as an offset (IGNORE)");
+        const std::size_t shown = std::min<std::size_t>(pen.size(), 20);
+        for (std::size_t k = 0; k < shown; ++k)
+          out += fmt::format("  contact {} node {}: depth {:.4g}\n", pen[k].interface_id,
+                             pen[k].node_id, pen[k].depth);
+        if (shown < pen.size()) out += fmt::format("  ... and {} more\n", pen.size() - shown);
+      }
+    }
+  }
   return out;
 }
 
@@ -267,6 +293,14 @@ int runCommand(const RunOptions& opt) {
     if (elem_rank.empty()) {
       partition::Options popt;
       popt.method = partition::parseMethod(opt.partition);
+      // Elements under contact segments carry the contact work too (docs/parallel.md).
+      if (opt.contact_bias != 1.0 && !m.contacts.empty()) {
+        popt.contact_bias = opt.contact_bias;
+        popt.contact_elements.assign(m.numElements(), 0);
+        for (const auto& c : m.contacts)
+          for (const auto* side : {&c.a, &c.b})
+            for (int64_t e : side->segment_element) popt.contact_elements[std::size_t(e)] = 1;
+      }
       elem_rank = partition::partitionElements(m, comm.size(), popt);
     }
   });
@@ -415,6 +449,12 @@ int runCommand(const RunOptions& opt) {
   try {
     s.initialize();
     say(modelSummary(m, s));
+    if (root && s.contact() && !s.contact()->initialPenetrations().empty())
+      std::fprintf(stderr,
+                   "crumple: note: %zu initial contact penetration(s) %s (listed in run.log)\n",
+                   s.contact()->initialPenetrations().size(),
+                   s.contact()->movedInitialPenetrations() ? "moved back onto the surface"
+                                                           : "kept as an offset (IGNORE)");
     writer = std::make_unique<output::ResultsWriter>(dir, m, s, comm, restart);
     // Set-up is over: each rank keeps its subdomain, nobody the whole mesh.
     m.releaseMesh();

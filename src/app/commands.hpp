@@ -16,6 +16,7 @@ struct RunOptions {
   bool overwrite = false;           // replace results of an earlier run in the folder
   bool quiet = false;               // no progress line
   std::string partition = "metis";  // element partitioner for distributed runs: metis or rcb
+  double contact_bias = 1.0;        // weight factor of elements on contact surfaces
   // Restart (docs/reliability.md): a dump file, or a results folder whose newest dump is
   // taken; the run continues in the dump's folder (or -o) from the dumped state.
   std::string restart;

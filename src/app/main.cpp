@@ -38,6 +38,10 @@ int dispatch(int argc, char** argv) {
   run_cmd->add_flag("-q,--quiet", run.quiet, "No progress line");
   run_cmd->add_option("--partition", run.partition, "Element partitioner under mpirun")
       ->check(CLI::IsMember({"metis", "rcb"}));
+  run_cmd
+      ->add_option("--contact-bias", run.contact_bias,
+                   "Partition weight factor of elements on contact surfaces (default 1)")
+      ->check(CLI::PositiveNumber);
   run_cmd->add_option("--restart", run.restart,
                       "Continue from a restart dump (a d3dump_ file, or a results folder: its "
                       "newest dump), in that dump's folder unless -o is given");
