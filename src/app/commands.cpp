@@ -416,8 +416,7 @@ int runCommand(const RunOptions& opt) {
                [&s, section](const std::vector<char>& b) { s.loadState(section, b); }});
   // Contact state is the same on every rank: rank 0's copy is dumped, every rank loads it.
   if (s.contact())
-    dumps.add({"contact",
-               [&] { return comm.isRoot() ? s.contact()->saveState() : std::vector<char>{}; },
+    dumps.add({"contact", [&] { return s.contact()->saveState(); },  // collective; rank 0's bytes
                [&](const std::vector<char>& b) { s.contact()->loadState(b); }});
   // Last: its load cuts the history files back, after every other section was accepted.
   dumps.add({"output", [&] { return writer->saveState(); },

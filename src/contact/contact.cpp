@@ -94,6 +94,8 @@ Contact::Contact(const model::Model& model, domain::Subdomain& sd, comm::Communi
     cn_owned_[i] = cn_local_[i] >= 0 && sd.node_owned[std::size_t(cn_local_[i])];
   }
   x_.assign(3 * ncn, 0.0);
+  x_owned_prev_.assign(3 * ncn, 0.0);
+  owner_.assign(ncn, 0);
   v_.assign(3 * ncn, 0.0);
   mass_.assign(ncn, 0.0);
   const double slsfac = model.contact_controls.slsfac;
@@ -189,7 +191,8 @@ Contact::Contact(const model::Model& model, domain::Subdomain& sd, comm::Communi
 Contact::~Contact() = default;
 
 void Contact::gatherNodes() {
-  // Every rank contributes the nodes it owns; each node is owned by exactly one rank.
+  // All contact nodes, from their owners: at set-up and at every bucket sort (positions,
+  // velocities, and the owner's positions of the previous pass for the crossing rule).
   const std::size_t ncn = cn_model_.size();
   if (!comm_.distributed()) {
     for (std::size_t i = 0; i < ncn; ++i) {
@@ -201,21 +204,110 @@ void Contact::gatherNodes() {
     }
     return;
   }
+  constexpr std::size_t kWidth = 11;
   std::vector<double> mine;
   for (std::size_t i = 0; i < ncn; ++i) {
     if (!cn_owned_[i]) continue;
     const auto l = std::size_t(cn_local_[i]);
+    mine.push_back(double(comm_.rank()));
     mine.push_back(double(i));
     for (int c = 0; c < 3; ++c) mine.push_back(sd_.x[3 * l + std::size_t(c)]);
     for (int c = 0; c < 3; ++c) mine.push_back(sd_.v[3 * l + std::size_t(c)]);
+    for (int c = 0; c < 3; ++c) mine.push_back(x_owned_prev_[3 * i + std::size_t(c)]);
   }
   const auto all = comm_.allGather(mine);
-  for (std::size_t k = 0; k + 7 <= all.size(); k += 7) {
-    const auto i = std::size_t(all[k]);
+  for (std::size_t k = 0; k + kWidth <= all.size(); k += kWidth) {
+    const auto i = std::size_t(all[k + 1]);
+    owner_[i] = int32_t(all[k]);
     for (int c = 0; c < 3; ++c) {
-      x_[3 * i + std::size_t(c)] = all[k + 1 + std::size_t(c)];
-      v_[3 * i + std::size_t(c)] = all[k + 4 + std::size_t(c)];
+      x_[3 * i + std::size_t(c)] = all[k + 2 + std::size_t(c)];
+      v_[3 * i + std::size_t(c)] = all[k + 5 + std::size_t(c)];
+      x_prev_[3 * i + std::size_t(c)] = all[k + 8 + std::size_t(c)];
     }
+  }
+}
+
+void Contact::gatherNeeded() {
+  // Between sorts a rank reads only the nodes of its checks and of their candidate segments:
+  // the ones it holds from its own arrays (every rank holding a node has the same bits), the
+  // others from their owners (the routes built at the sort), not every node from everyone.
+  for (int32_t i : needed_local_) {
+    const auto l = std::size_t(cn_local_[std::size_t(i)]);
+    for (int c = 0; c < 3; ++c) {
+      x_[3 * std::size_t(i) + std::size_t(c)] = sd_.x[3 * l + std::size_t(c)];
+      v_[3 * std::size_t(i) + std::size_t(c)] = sd_.v[3 * l + std::size_t(c)];
+    }
+  }
+  if (!comm_.distributed()) return;
+  std::vector<comm::Message> sends, recvs;
+  for (auto& r : send_routes_) {
+    r.buffer.resize(6 * r.nodes.size());
+    for (std::size_t k = 0; k < r.nodes.size(); ++k) {
+      const auto l = std::size_t(cn_local_[std::size_t(r.nodes[k])]);
+      for (int c = 0; c < 3; ++c) {
+        r.buffer[6 * k + std::size_t(c)] = sd_.x[3 * l + std::size_t(c)];
+        r.buffer[6 * k + 3 + std::size_t(c)] = sd_.v[3 * l + std::size_t(c)];
+      }
+    }
+    sends.push_back({r.peer, r.buffer.data(), r.buffer.size()});
+  }
+  for (auto& r : recv_routes_) {
+    r.buffer.resize(6 * r.nodes.size());
+    recvs.push_back({r.peer, r.buffer.data(), r.buffer.size()});
+  }
+  comm_.exchangeBegin(sends, recvs);
+  comm_.exchangeEnd();
+  for (const auto& r : recv_routes_)
+    for (std::size_t k = 0; k < r.nodes.size(); ++k) {
+      const auto i = std::size_t(r.nodes[k]);
+      for (int c = 0; c < 3; ++c) {
+        x_[3 * i + std::size_t(c)] = r.buffer[6 * k + std::size_t(c)];
+        v_[3 * i + std::size_t(c)] = r.buffer[6 * k + 3 + std::size_t(c)];
+      }
+    }
+}
+
+void Contact::buildRoutes() {
+  // The nodes this rank reads until the next sort.
+  std::vector<uint8_t> need(cn_model_.size(), 0);
+  for (const int32_t active : active_) {
+    const auto i = std::size_t(active);
+    const int32_t check = my_checks_[i];
+    const Pass& p = passes_[std::size_t(check_pass_[std::size_t(check)])];
+    need[std::size_t(p.node[std::size_t(check - p.first_check)])] = 1;
+    for (int32_t q = cand_ptr_[i]; q < cand_ptr_[i + 1]; ++q)
+      for (int32_t a : p.seg[std::size_t(cand_seg_[std::size_t(q)])]) need[std::size_t(a)] = 1;
+    if (p.tied && tie_seg_[std::size_t(check)] >= 0)
+      for (int32_t a : p.seg[std::size_t(tie_seg_[std::size_t(check)])]) need[std::size_t(a)] = 1;
+  }
+  needed_local_.clear();
+  std::vector<double> requests;  // (requesting rank, node) of the nodes held elsewhere
+  for (std::size_t i = 0; i < need.size(); ++i) {
+    if (!need[i]) continue;
+    if (cn_local_[i] >= 0) {
+      needed_local_.push_back(int32_t(i));
+    } else {
+      requests.push_back(double(comm_.rank()));
+      requests.push_back(double(i));
+    }
+  }
+  send_routes_.clear();
+  recv_routes_.clear();
+  if (!comm_.distributed()) return;
+  // Every rank learns what every other needs (at sorts only): each owner serves its nodes, in
+  // ascending node order on both sides, so the messages carry values only.
+  const auto all = comm_.allGather(requests);
+  std::vector<std::vector<int32_t>> to(std::size_t(comm_.size())), from(to.size());
+  for (std::size_t k = 0; k + 2 <= all.size(); k += 2) {
+    const auto who = std::size_t(all[k]);
+    const auto i = std::size_t(all[k + 1]);
+    const auto owner = std::size_t(owner_[i]);
+    if (owner == std::size_t(comm_.rank())) to[who].push_back(int32_t(i));
+    if (who == std::size_t(comm_.rank())) from[owner].push_back(int32_t(i));
+  }
+  for (std::size_t r = 0; r < to.size(); ++r) {
+    if (!to[r].empty()) send_routes_.push_back({int(r), std::move(to[r]), {}});
+    if (!from[r].empty()) recv_routes_.push_back({int(r), std::move(from[r]), {}});
   }
 }
 
@@ -658,6 +750,12 @@ void Contact::initialize(double dt0) {
     const auto all = comm_.allGather(mine);
     for (std::size_t k = 0; k + 2 <= all.size(); k += 2) mass_[std::size_t(all[k])] = all[k + 1];
   }
+  for (std::size_t i = 0; i < cn_model_.size(); ++i)
+    if (cn_owned_[i])
+      for (int c = 0; c < 3; ++c)
+        x_owned_prev_[3 * i + std::size_t(c)] =
+            sd_.x[3 * std::size_t(cn_local_[i]) + std::size_t(c)];
+  x_prev_.assign(x_.size(), 0.0);
   gatherNodes();
   x_prev_ = x_;
   sortAll();
@@ -709,8 +807,14 @@ void Contact::initialize(double dt0) {
   }
   x_sorted_ = x_;
   x_prev_ = x_;
+  for (std::size_t i = 0; i < cn_model_.size(); ++i)
+    if (cn_owned_[i])
+      for (int c = 0; c < 3; ++c)
+        x_owned_prev_[3 * i + std::size_t(c)] =
+            sd_.x[3 * std::size_t(cn_local_[i]) + std::size_t(c)];
   for (auto& p : passes_) updateBoxes(p, false);
   buildCandidateLists();
+  buildRoutes();
 }
 
 void Contact::tiedForce(const Pass& p, int32_t check, double dt_prev,
@@ -755,31 +859,52 @@ void Contact::computeForces(double time, double dt_prev) {
   if (empty()) return;
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
-  // gatherNodes() writes every contact node's position (each is owned by one rank).
+  // The needed entries of x_ become x(n-1) (they were read last cycle), then x(n).
   std::swap(x_prev_, x_);
-  gatherNodes();
+  if (comm_.distributed()) {
+    gatherNeeded();
+  } else {
+    gatherNodes();
+  }
   const auto t1 = Clock::now();
   // Re-sort when some node may have travelled half the margin since the last sort: a node
-  // and a segment closing at that speed stay within the 27 buckets searched.
+  // and a segment closing at that speed stay within the 27 buckets searched. Each rank looks
+  // at the nodes it owns; the maximum is exact, so every rank decides alike.
   double travel = 0.0;
-  for (std::size_t i = 0; i < x_.size(); i += 3) {
-    const double d2 = (x_[i] - x_sorted_[i]) * (x_[i] - x_sorted_[i]) +
-                      (x_[i + 1] - x_sorted_[i + 1]) * (x_[i + 1] - x_sorted_[i + 1]) +
-                      (x_[i + 2] - x_sorted_[i + 2]) * (x_[i + 2] - x_sorted_[i + 2]);
+  for (std::size_t i = 0; i < cn_model_.size(); ++i) {
+    if (!cn_owned_[i]) continue;
+    const auto l = std::size_t(cn_local_[i]);
+    double d2 = 0.0;
+    for (int c = 0; c < 3; ++c) {
+      const double d = sd_.x[3 * l + std::size_t(c)] - x_sorted_[3 * i + std::size_t(c)];
+      d2 += d * d;
+    }
     travel = std::max(travel, d2);
   }
+  if (comm_.distributed()) travel = -comm_.minAll(-travel);
   ++cycles_since_sort_;
   bool resorted = false;
   if (2.0 * std::sqrt(travel) > sort_margin_ || need_sort_ ||
       (max_sort_interval_ > 0 && cycles_since_sort_ >= max_sort_interval_)) {
     cycles_since_sort_ = 0;
     resorted = true;
+    // Every node, from its owner (with its position of the last pass, for the crossing rule).
+    if (comm_.distributed()) gatherNodes();
     maybeRebalance();
     sortAll();
     ++stats_.sorts;
   }
+  // The owners' positions of this pass, sent with the next full gather.
+  for (std::size_t i = 0; i < cn_model_.size(); ++i)
+    if (cn_owned_[i])
+      for (int c = 0; c < 3; ++c)
+        x_owned_prev_[3 * i + std::size_t(c)] =
+            sd_.x[3 * std::size_t(cn_local_[i]) + std::size_t(c)];
   for (auto& p : passes_) updateBoxes(p, !resorted);
-  if (resorted) buildCandidateLists();
+  if (resorted) {
+    buildCandidateLists();
+    buildRoutes();
+  }
 
   std::vector<double> mine;
   int64_t tests = 0;
@@ -956,9 +1081,24 @@ std::vector<InterfaceForces> Contact::interfaceForces() const {
 }
 
 std::vector<char> Contact::saveState() const {
+  // Positions of the last contact pass of every node, from the owners (collective).
+  std::vector<double> x = x_;
+  if (comm_.distributed()) {
+    std::vector<double> mine;
+    for (std::size_t i = 0; i < cn_model_.size(); ++i)
+      if (cn_owned_[i]) {
+        mine.push_back(double(i));
+        for (int c = 0; c < 3; ++c) mine.push_back(x_owned_prev_[3 * i + std::size_t(c)]);
+      }
+    const auto all = comm_.allGather(mine);
+    for (std::size_t k = 0; k + 4 <= all.size(); k += 4)
+      for (int c = 0; c < 3; ++c)
+        x[3 * std::size_t(all[k]) + std::size_t(c)] = all[k + 1 + std::size_t(c)];
+  }
+  if (!comm_.isRoot()) return {};
   util::ArchiveWriter w;
   w.put<int64_t>(num_checks_);
-  w.put(x_);
+  w.put(x);
   w.put(x_sorted_);
   w.put(friction_);
   w.put(last_seg_);
@@ -1001,7 +1141,12 @@ void Contact::loadState(const std::vector<char>& bytes) {
   partitionChecks(std::vector<double>(std::size_t(num_checks_), 1.0));
   for (auto& p : passes_) updateBoxes(p, false);
   buildCandidateLists();
+  buildRoutes();
   x_ = std::move(x);
+  for (std::size_t i = 0; i < cn_model_.size(); ++i)
+    if (cn_owned_[i])
+      for (int c = 0; c < 3; ++c)
+        x_owned_prev_[3 * i + std::size_t(c)] = x_[3 * i + std::size_t(c)];
   need_sort_ = false;
 }
 

@@ -75,7 +75,8 @@ class Contact {
   bool movedInitialPenetrations() const { return moved_initial_; }
   const Statistics& statistics() const { return stats_; }
   // Restart (docs/reliability.md): the state is the same on every rank (replicated), so one
-  // copy is dumped and every rank loads it. Positions at the last bucket sort come along so
+  // copy is dumped (saveState is collective and returns the bytes on rank 0) and every rank
+  // loads it. Positions at the last bucket sort come along so
   // that the buckets and candidate lists are rebuilt as they were: the continued run gives
   // the same bits.
   std::vector<char> saveState() const;
@@ -87,7 +88,11 @@ class Contact {
  private:
   struct Pass;  // one side's nodes against the other side's segments
   struct Candidate;
+  // Every contact node from its owner (set-up, sorts); the nodes this rank reads (each cycle).
   void gatherNodes();
+  void gatherNeeded();
+  // After a sort: which nodes this rank reads, and who sends them (collective).
+  void buildRoutes();
   void sortAll();  // every pass's buckets, the margin and x_sorted_
   double reachOf(const Pass& pass) const;
   void sortBuckets(Pass& pass);
@@ -116,12 +121,23 @@ class Contact {
   std::vector<int32_t> cn_model_;
   std::vector<int32_t> cn_local_;  // local index on this rank, or -1
   std::vector<uint8_t> cn_owned_;
-  std::vector<double> x_, v_, mass_;  // replicated: 3 per node (mass 1)
-  std::vector<double> x_sorted_;      // positions at the last bucket sort
-  std::vector<double> x_prev_;        // positions of the last cycle
-  std::vector<int32_t> last_seg_;     // per check: the segment in contact last cycle, or -1
-  std::vector<int8_t> last_side_;     // per check: the side of that (shell) segment, or 0
-  std::vector<double> entry_;         // per check: penetration at the start of the contact
+  // Positions and velocities (3 per node) of the nodes this rank reads, all of them after a
+  // sort; masses (1 per node) of all.
+  std::vector<double> x_, v_, mass_;
+  std::vector<int32_t> owner_;         // rank owning each contact node
+  std::vector<double> x_owned_prev_;   // owned nodes: position at the last contact pass
+  std::vector<int32_t> needed_local_;  // nodes read between sorts that this rank holds
+  struct Route {
+    int peer = 0;
+    std::vector<int32_t> nodes;  // ascending contact node indices
+    std::vector<double> buffer;  // 6 per node: x, v
+  };
+  std::vector<Route> send_routes_, recv_routes_;
+  std::vector<double> x_sorted_;   // positions at the last bucket sort
+  std::vector<double> x_prev_;     // positions of the last cycle
+  std::vector<int32_t> last_seg_;  // per check: the segment in contact last cycle, or -1
+  std::vector<int8_t> last_side_;  // per check: the side of that (shell) segment, or 0
+  std::vector<double> entry_;      // per check: penetration at the start of the contact
   // Tied checks: the segment, its four weights and the normal offset of the tied point.
   std::vector<int32_t> tie_seg_;
   std::vector<double> tie_weight_, tie_offset_;
