@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace crumple::app {
 
@@ -16,6 +17,7 @@ struct RunOptions {
   bool overwrite = false;           // replace results of an earlier run in the folder
   bool quiet = false;               // no progress line
   std::string partition = "metis";  // element partitioner for distributed runs: metis or rcb
+  std::vector<double> energy_band;  // --energy-band LO,HI: error when the energy ratio leaves it
 };
 
 // Exit status: 0 normal termination, 1 error termination (ARCHITECTURE.md, Commands).

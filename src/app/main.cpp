@@ -38,6 +38,12 @@ int dispatch(int argc, char** argv) {
   run_cmd->add_flag("-q,--quiet", run.quiet, "No progress line");
   run_cmd->add_option("--partition", run.partition, "Element partitioner under mpirun")
       ->check(CLI::IsMember({"metis", "rcb"}));
+  run_cmd
+      ->add_option("--energy-band", run.energy_band,
+                   "LO,HI: error termination when the energy ratio leaves [LO, HI] (checked "
+                   "every 64 cycles; default: no check)")
+      ->delimiter(',')
+      ->expected(2);
 
   crumple::app::CheckOptions check;
   auto* check_cmd = app.add_subcommand(
