@@ -153,25 +153,33 @@ class ErrorTermination(clitest.TempDirTest):
         self.assertNotIn("negative volume", p.stderr)
 
     def test_erode_instead_of_stopping_at_dtmin(self):
-        # The same crushed element with *CONTROL_TIMESTEP ERODE = 1: it is removed when its
-        # step falls below DTMIN x the initial step, and the run goes on to its end time.
-        deck = collapsing_block().replace(
+        # The crushed element with *CONTROL_TIMESTEP ERODE = 1 (and DTMIN 0.5), or with a
+        # *MAT_024 TDEL of half its initial step: it is removed when its step falls below the
+        # floor, and the run goes on to its end time.
+        erode = collapsing_block().replace(
             "*CONTROL_TERMINATION\n       1.0\n",
             "*CONTROL_TERMINATION\n      0.02         0       0.5\n*CONTROL_TIMESTEP\n"
             "       0.0       0.9         0       0.0       0.0         0         1\n")
-        self.write("erode.k", deck)
-        out = os.path.join(self.tmp, "out")
-        p = crumple("run", "erode.k", "-o", out, "-q", cwd=self.tmp)
-        self.assertEqual(p.returncode, 0, describe(p))
-        s = read_summary(out)
-        self.assertEqual(s["termination"], "normal")
-        self.assertAlmostEqual(s["end_time"], 0.02, delta=1e-12)
-        self.assertEqual(s["eroded_elements"], 1)
-        self.assertAlmostEqual(s["eroded_mass"], 7.85e-6, delta=1e-18)
-        # Crushed elastically to half its step: it held strain energy when it went.
-        self.assertGreater(s["eroded_internal_energy"], 0.0)
-        with open(os.path.join(out, "run.log"), encoding="utf-8") as f:
-            self.assertIn("eroded: 1 element(s)", f.read())
+        tdel = collapsing_block().replace(
+            "*CONTROL_TERMINATION\n       1.0\n", "*CONTROL_TERMINATION\n      0.02\n").replace(
+            "*MAT_ELASTIC\n         1  7.85e-06     210.0       0.3\n",
+            "*MAT_PIECEWISE_LINEAR_PLASTICITY\n         1  7.85e-06     210.0       0.3    1000.0"
+            "       0.0       0.0   5.18e-5\n")
+        for name, deck in (("erode", erode), ("tdel", tdel)):
+            with self.subTest(name):
+                self.write(name + ".k", deck)
+                out = os.path.join(self.tmp, name)
+                p = crumple("run", name + ".k", "-o", out, "-q", cwd=self.tmp)
+                self.assertEqual(p.returncode, 0, describe(p))
+                s = read_summary(out)
+                self.assertEqual(s["termination"], "normal")
+                self.assertAlmostEqual(s["end_time"], 0.02, delta=1e-12)
+                self.assertEqual(s["eroded_elements"], 1)
+                self.assertAlmostEqual(s["eroded_mass"], 7.85e-6, delta=1e-18)
+                # Crushed elastically to half its step: it held strain energy when it went.
+                self.assertGreater(s["eroded_internal_energy"], 0.0)
+                with open(os.path.join(out, "run.log"), encoding="utf-8") as f:
+                    self.assertIn("eroded: 1 element(s)", f.read())
 
     def test_non_finite_force_names_the_element(self):
         # A node thrown at 1e150 mm/ms, without bulk viscosity to shrink the step: within a few
