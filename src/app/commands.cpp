@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -264,6 +265,13 @@ int runCommand(const RunOptions& opt) {
     m = model::readModel(opt.deck);
     if (!opt.restart_deck.empty()) model::readRestartDeck(opt.restart_deck, m.controls);
     if (opt.end_time) m.controls.end_time = *opt.end_time;
+    if (!opt.energy_band.empty()) {
+      const auto& b = opt.energy_band;
+      if (b.size() != 2 || !(b[0] > 0.0) || !(b[0] < 1.0) || !(b[1] > 1.0) || !std::isfinite(b[1]))
+        throw util::InputError("--energy-band LO,HI: needs 0 < LO < 1 < HI");
+      m.controls.energy_ratio_min = b[0];
+      m.controls.energy_ratio_max = b[1];
+    }
     if (opt.strict && !m.unsupported.empty()) {
       throw util::InputError("--strict: the deck uses unsupported keywords:\n" +
                              model::formatUnsupported(m));
@@ -334,6 +342,29 @@ int runCommand(const RunOptions& opt) {
   dump_bytes.clear();
   dump_bytes.shrink_to_fit();
 
+  domain::Subdomain sd;
+  try {
+    sd = domain::buildSubdomain(m, elem_rank, comm.rank(), comm.size());
+  } catch (const std::exception& e) {
+    // Every rank sees the same model and partition, so every rank fails alike.
+    if (root) std::fprintf(stderr, "crumple: error: %s\n", e.what());
+    return 1;
+  }
+  solver::Solver s(m, sd, comm);
+  // Initialisation checks the initial geometry (inverted or degenerate elements) collectively:
+  // a deck that cannot start fails here, before the results folder is touched.
+  try {
+    s.initialize();
+  } catch (const util::NumericalError& e) {
+    if (root) std::fprintf(stderr, "crumple: error: %s\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    // Not known to be collective: the other ranks may wait in a collective.
+    std::fprintf(stderr, "crumple: error (rank %d): %s\n", comm.rank(), e.what());
+    if (comm.distributed()) comm.abort(1);
+    return 1;
+  }
+
   // A restart continues the dumped run in its own folder: the history files are cut back to
   // the dump and continued (ResultsWriter::loadState checks that they are that run's).
   const std::filesystem::path dir =
@@ -341,6 +372,8 @@ int runCommand(const RunOptions& opt) {
       : restart
           ? dump_path.parent_path().empty() ? std::filesystem::path(".") : dump_path.parent_path()
           : std::filesystem::path(std::filesystem::path(opt.deck).stem().string() + ".out");
+  std::error_code dir_ec;
+  const bool dir_existed = std::filesystem::exists(dir, dir_ec);
   if (!restart && !rootStep(comm, [&] { output::prepareResultsDir(dir, opt.overwrite); })) return 1;
   if (restart && !rootStep(comm, [&] {
         if (!std::filesystem::is_directory(dir))
@@ -377,16 +410,6 @@ int runCommand(const RunOptions& opt) {
     std::fputs(warn.c_str(), stderr);
     say(warn);
   }
-
-  domain::Subdomain sd;
-  try {
-    sd = domain::buildSubdomain(m, elem_rank, comm.rank(), comm.size());
-  } catch (const std::exception& e) {
-    // Every rank sees the same model and partition, so every rank fails alike.
-    if (root) std::fprintf(stderr, "crumple: error: %s\n", e.what());
-    return 1;
-  }
-  solver::Solver s(m, sd, comm);
   output::RunInfo info;
   info.deck = opt.deck;
   info.ranks = comm.size();
@@ -445,8 +468,9 @@ int runCommand(const RunOptions& opt) {
 
   int status = 0;
   const bool show = !opt.quiet && root;
+  bool started = false;  // the first state is written: from here on, results are kept
   try {
-    s.initialize();
+    if (root) output::checkStream(log, dir / "run.log");
     say(modelSummary(m, s));
     if (root && s.contact() && !s.contact()->initialPenetrations().empty())
       std::fprintf(stderr,
@@ -476,6 +500,7 @@ int runCommand(const RunOptions& opt) {
     output::Progress progress(stdout, show && isatty(STDOUT_FILENO), s.endTime());
     // The state at the dump was written by the dumped run.
     if (!restart) writer->write(s);
+    started = true;
     info.setup_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     const int64_t dump_cycles = m.controls.d3dump_cycles;
     const bool dumping = dump_cycles > 0 || opt.checkpoint_every > 0.0;
@@ -580,8 +605,14 @@ int runCommand(const RunOptions& opt) {
     }
   } catch (const std::exception& e) {
     // Anything else (an I/O failure on one rank) may leave the others waiting in a
-    // collective: end them all.
+    // collective: end them all. Before the first state nothing worth keeping was written:
+    // what this run created goes (serially; under MPI the abort leaves no time to agree).
     std::fprintf(stderr, "crumple: error (rank %d): %s\n", comm.rank(), e.what());
+    if (!started && !comm.distributed()) {
+      log.close();
+      output::removeRunOutput(dir, !dir_existed);
+      return 1;
+    }
     if (comm.distributed()) comm.abort(1);
     info.termination = "error";
     info.message = e.what();
@@ -589,13 +620,26 @@ int runCommand(const RunOptions& opt) {
   }
   info.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   const double output_s = writer ? writer->seconds() : 0.0;
-  if (writer) writer->writeSummary(s, info);
+  if (writer) {
+    try {
+      writer->writeSummary(s, info);
+    } catch (const std::exception& e) {
+      // A full disk: the summary is lost; say so and fail rather than end silently.
+      if (root) std::fprintf(stderr, "crumple: error: %s\n", e.what());
+      status = 1;
+    }
+  }
   const auto e = s.energies();
   say(fmt::format(
       "{} termination at time {:.6g}, cycle {}\nenergy: kinetic {:.6g} internal {:.6g} hourglass "
       "{:.6g} rigidwall {:.6g} external work {:.6g} ratio {:.6f}\n",
       info.termination, s.time(), s.cycle(), e.kinetic, e.internal, e.hourglass, e.rigidwall,
       e.external_work, e.ratio));
+  if (const auto er = s.eroded(); er.elements > 0)
+    say(
+        fmt::format("eroded: {} element(s), mass {:.6g}, internal energy {:.6g}, hourglass energy "
+                    "{:.6g}\n",
+                    er.elements, er.mass, er.internal, er.hourglass));
   say(timingTable(s.timing(), output_s, info.wall_s));
   if (s.cycle() > info.first_cycle && info.wall_s > info.setup_s)
     say(fmt::format("set-up {:.3f} s; {:.3g} element-cycles per second in the cycle loop\n",
@@ -603,6 +647,10 @@ int runCommand(const RunOptions& opt) {
                     double(sd.global_elements) * double(s.cycle() - info.first_cycle) /
                         (info.wall_s - info.setup_s)));
   if (show) std::printf("%s termination; results in %s\n", info.termination.c_str(), dir.c_str());
+  if (root && !log) {
+    std::fprintf(stderr, "crumple: error: error while writing '%s'\n", (dir / "run.log").c_str());
+    status = 1;
+  }
   return status;
 }
 

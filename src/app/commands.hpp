@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace crumple::app {
 
@@ -20,8 +21,9 @@ struct RunOptions {
   // Restart (docs/reliability.md): a dump file, or a results folder whose newest dump is
   // taken; the run continues in the dump's folder (or -o) from the dumped state.
   std::string restart;
-  std::string restart_deck;       // *CONTROL_TERMINATION / *DATABASE_ changes at restart
-  double checkpoint_every = 0.0;  // wall seconds between dumps; 0: none
+  std::string restart_deck;         // *CONTROL_TERMINATION / *DATABASE_ changes at restart
+  double checkpoint_every = 0.0;    // wall seconds between dumps; 0: none
+  std::vector<double> energy_band;  // --energy-band LO,HI: error when the energy ratio leaves it
 };
 
 // Exit status: 0 normal termination, 1 error termination (ARCHITECTURE.md, Commands).

@@ -55,6 +55,12 @@ int dispatch(int argc, char** argv) {
       ->add_option("--checkpoint-every", run.checkpoint_every,
                    "Write a restart dump every SECONDS of wall time (the two newest are kept)")
       ->check(CLI::PositiveNumber);
+  run_cmd
+      ->add_option("--energy-band", run.energy_band,
+                   "LO,HI: error termination when the energy ratio leaves [LO, HI] (checked "
+                   "every 64 cycles; default: no check)")
+      ->delimiter(',')
+      ->expected(2);
 
   crumple::app::CheckOptions check;
   auto* check_cmd = app.add_subcommand(

@@ -5,6 +5,9 @@
 #include <cmath>
 #include <fstream>
 #include <optional>
+#include <sstream>
+
+#include <fmt/format.h>
 
 #include "deck/card.hpp"
 #include "deck/expression.hpp"
@@ -72,11 +75,49 @@ bool hasCaseId(std::string_view trailing) {
   return p != std::string::npos && (p == 0 || u[p - 1] == ' ' || u[p - 1] == '\t');
 }
 
+// One line of `in` into `text`, without its end ("\n", or "\r\n" with the "\r" removed);
+// false when the input is exhausted. A line longer than kMaxLineLength ends the read with an
+// error after kMaxLineLength characters: the rest is never held in memory (a 2 GB line costs
+// 64 KiB). A control character (other than tab, form feed, vertical tab and the DOS end-of-file
+// mark) means binary data: keyword decks are text.
+bool readLine(std::istream& in, std::string& text, const std::string& display, int32_t line_no) {
+  text.clear();
+  std::streambuf* sb = in.rdbuf();
+  bool any = false;
+  for (;;) {
+    const int c = sb->sbumpc();
+    if (c == std::char_traits<char>::eof()) break;
+    any = true;
+    if (c == '\n') break;
+    if (text.size() == kMaxLineLength) {
+      throw util::InputError(display + ":" + std::to_string(line_no) + ": line longer than " +
+                             std::to_string(kMaxLineLength) +
+                             " characters: this is not a keyword deck (or a line end is "
+                             "missing)");
+    }
+    text.push_back(static_cast<char>(c));
+  }
+  if (!text.empty() && text.back() == '\r') text.pop_back();
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto u = static_cast<unsigned char>(text[i]);
+    const bool allowed = u == '\t' || u == '\f' || u == '\v' || u == 0x1a;
+    if ((u < 0x20 || u == 0x7f) && !allowed) {
+      throw util::InputError(
+          fmt::format("{}:{}: byte 0x{:02x} in column {}: binary data, not a keyword deck (text)",
+                      display, line_no, u, i + 1));
+    }
+  }
+  return any;
+}
+
 class Reader {
  public:
-  explicit Reader(Deck& deck) : deck_(deck) {}
+  Reader(Deck& deck, const Source& source) : deck_(deck), source_(source) {}
 
-  void readFile(const fs::path& path, const std::string& display, Format format, int depth);
+  // `path` opens the file's includes (relative to its folder), `identity` recognises cycles,
+  // `display` names it in messages.
+  void readFile(std::istream& in, const fs::path& path, const std::string& identity,
+                const std::string& display, Format format, int depth);
 
  private:
   struct FileState {
@@ -95,6 +136,10 @@ class Reader {
               Parameter p);
 
   Deck& deck_;
+  const Source& source_;
+  // The files being read, outermost first (identity, display name): an *INCLUDE of one of
+  // them is a cycle.
+  std::vector<std::pair<std::string, std::string>> open_;
   struct SearchDir {
     fs::path dir, display;
   };
@@ -103,19 +148,18 @@ class Reader {
   std::string case_block_;
 };
 
-void Reader::readFile(const fs::path& path, const std::string& display, Format format, int depth) {
-  std::ifstream in(path);
-  if (!in) throw util::InputError(display + ": cannot open the file");
+void Reader::readFile(std::istream& in, const fs::path& path, const std::string& identity,
+                      const std::string& display, Format format, int depth) {
   const auto file_index = static_cast<int32_t>(deck_.files.size());
   deck_.files.push_back(display);
   FileState file{path.parent_path(), fs::path(display).parent_path(), format};
+  open_.emplace_back(identity, display);
 
   std::optional<Keyword> current;
   std::string text;
   int32_t line_no = 0;
-  while (std::getline(in, text)) {
+  while (readLine(in, text, display, line_no + 1)) {
     ++line_no;
-    if (!text.empty() && text.back() == '\r') text.pop_back();
     if (isComment(text)) continue;
     if (text.empty() || text[0] != '*') {
       // Lines before the first keyword (a header) are not part of any keyword.
@@ -125,7 +169,7 @@ void Reader::readFile(const fs::path& path, const std::string& display, Format f
     if (current) finish(*current, file, depth);
     current.reset();
     KeywordLine k = parseKeywordLine(text);
-    if (k.name == "*END") return;  // the rest of this file is not read (Keyword Manual, *END)
+    if (k.name == "*END") break;  // the rest of this file is not read (Keyword Manual, *END)
     if (k.name == "*KEYWORD") {
       // LONG=Y: 20-character fields; LONG=S: standard; I10=Y: at least 10 characters.
       const std::string t = upper(k.trailing);
@@ -155,6 +199,8 @@ void Reader::readFile(const fs::path& path, const std::string& display, Format f
       current->case_block = current->trailing;
   }
   if (current) finish(*current, file, depth);
+  if (in.bad()) throw util::InputError(display + ":" + std::to_string(line_no) + ": read error");
+  open_.pop_back();
 }
 
 void Reader::finish(Keyword& kw, FileState& file, int depth) {
@@ -198,11 +244,19 @@ void Reader::include(const Keyword& kw, FileState& file, int depth) {
     std::string tried;
     for (const auto& c : candidates) {
       const fs::path full = p.is_absolute() ? p : c.dir / p;
-      std::error_code ec;
-      if (fs::is_regular_file(full, ec)) {
+      if (auto in = source_.open(full)) {
         const std::string display =
             p.is_absolute() ? p.string() : (c.display / p).lexically_normal().string();
-        readFile(full, display, kw.format, depth + 1);
+        const std::string identity = source_.identity(full);
+        const auto again = std::find_if(open_.begin(), open_.end(),
+                                        [&](const auto& o) { return o.first == identity; });
+        if (again != open_.end()) {
+          // Reading on would never end: name the chain so the user sees which line to cut.
+          std::string chain;
+          for (auto o = again; o != open_.end(); ++o) chain += o->second + " -> ";
+          card.fail("FILENAME", "include cycle: " + chain + display);
+        }
+        readFile(*in, full, identity, display, kw.format, depth + 1);
         found = true;
         break;
       }
@@ -353,9 +407,44 @@ void Reader::parameterDuplication(const Keyword& kw) {
 
 }  // namespace
 
+std::unique_ptr<std::istream> DiskSource::open(const fs::path& path) const {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) return nullptr;
+  auto in = std::make_unique<std::ifstream>(path, std::ios::binary);
+  if (!*in) return nullptr;
+  return in;
+}
+
+std::string DiskSource::identity(const fs::path& path) const {
+  std::error_code ec;
+  const fs::path canonical = fs::weakly_canonical(path, ec);
+  return ec ? path.lexically_normal().string() : canonical.string();
+}
+
+MemorySource::MemorySource(std::map<std::string, std::string> files) {
+  for (auto& [name, text] : files) files_[fs::path(name).lexically_normal().string()] = text;
+}
+
+std::unique_ptr<std::istream> MemorySource::open(const fs::path& path) const {
+  const auto it = files_.find(path.lexically_normal().string());
+  if (it == files_.end()) return nullptr;
+  return std::make_unique<std::istringstream>(it->second);
+}
+
+std::string MemorySource::identity(const fs::path& path) const {
+  return path.lexically_normal().string();
+}
+
 Deck readDeck(const std::filesystem::path& path) {
+  return readDeck(path, DiskSource{});
+}
+
+Deck readDeck(const std::filesystem::path& path, const Source& source) {
   Deck deck;
-  Reader(deck).readFile(path, path.string(), Format::Standard, 0);
+  const auto in = source.open(path);
+  if (!in) throw util::InputError(path.string() + ": cannot open the file");
+  Reader reader(deck, source);
+  reader.readFile(*in, path, source.identity(path), path.string(), Format::Standard, 0);
   return deck;
 }
 

@@ -9,7 +9,9 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <istream>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -60,8 +62,45 @@ struct Deck {
   util::SourceLoc loc(const DataLine& l) const { return loc(l.file, l.line); }
 };
 
+// Where the reader gets the text of the deck and of the files it includes: the disk for a
+// run, a set of files in memory for the fuzzer and tests (so that fuzzed *INCLUDE lines can
+// never read files on the machine).
+class Source {
+ public:
+  virtual ~Source() = default;
+  // The file's text, or null when there is no such regular file.
+  virtual std::unique_ptr<std::istream> open(const std::filesystem::path& path) const = 0;
+  // One name per file, whatever the spelling ("a/../b.k" and "b.k"): include cycles are
+  // recognised by it.
+  virtual std::string identity(const std::filesystem::path& path) const = 0;
+};
+
+class DiskSource : public Source {
+ public:
+  std::unique_ptr<std::istream> open(const std::filesystem::path& path) const override;
+  std::string identity(const std::filesystem::path& path) const override;
+};
+
+// Files by name (compared after lexical normalisation); nothing else exists.
+class MemorySource : public Source {
+ public:
+  explicit MemorySource(std::map<std::string, std::string> files);
+  std::unique_ptr<std::istream> open(const std::filesystem::path& path) const override;
+  std::string identity(const std::filesystem::path& path) const override;
+
+ private:
+  std::map<std::string, std::string> files_;
+};
+
+// Longest data or keyword line read (characters, without the line end). Real decks use 80
+// columns (160 in LONG=Y format, a little more free-format); a longer line means the file is
+// not a keyword deck, and reading on would hold an arbitrarily long line in memory.
+inline constexpr std::size_t kMaxLineLength = 64 * 1024;
+
 // Reads `path` and everything it includes. Throws util::InputError naming file:line (for a
-// missing include, the *INCLUDE line) on anything that prevents reading.
+// missing include, the *INCLUDE line) on anything that prevents reading: a missing file, an
+// include cycle, a line longer than kMaxLineLength, binary data (control characters).
 Deck readDeck(const std::filesystem::path& path);
+Deck readDeck(const std::filesystem::path& path, const Source& source);
 
 }  // namespace crumple::deck

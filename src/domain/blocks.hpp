@@ -40,6 +40,10 @@ struct BlockBase {
   // force; their kernels run only at initialisation (the state arrays are allocated by the
   // solver, which calls the kernels' resize functions).
   bool rigid = false;
+  // Solids and shells: an element whose stable step (before TSSFAC) falls below this is eroded
+  // like a failed one (*CONTROL_TIMESTEP ERODE = 1 with DTMIN, *MAT_024 TDEL); 0 = never. Set
+  // by the solver once the initial step is known.
+  double erode_dt = 0.0;
   std::size_t size() const { return elem.size(); }
 };
 

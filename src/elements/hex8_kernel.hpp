@@ -117,15 +117,18 @@ inline double stressWork(const BatchScratch& w, int l) {
 }
 
 // The end of an element's pass, shared by the kernels: an inverted element is noted; a failed
-// one is eroded (LS-DYNA FAIL: the element is removed, its slots zeroed); otherwise its
-// corner forces go to its slots and its stable step enters the batch minimum.
+// one, or one whose stable step fell below blk.erode_dt, is eroded (LS-DYNA FAIL, ERODE,
+// TDEL: the element is removed, its slots zeroed); otherwise its corner forces go to its
+// slots and its stable step enters the batch minimum.
 inline void finishElement(domain::SolidBlock& blk, std::size_t e, int l, const NodalBatch& f,
                           double vol, bool failed, double len, double c_dt, double trace_d,
                           const BulkViscosity& bv, double* slot, BlockStatus& st) {
   if (vol <= 0.0 && (st.bad_elem < 0 || blk.elem[e] < st.bad_elem)) st.bad_elem = blk.elem[e];
-  if (failed) {
+  double dte = solidTimeStep(len, c_dt, trace_d, bv);
+  if (!blk.dt_scale.empty()) dte *= blk.dt_scale[e];
+  if (failed || dte < blk.erode_dt) {
     blk.active[e] = 0;
-    blk.failed[e] = 1;
+    if (failed) blk.failed[e] = 1;
     for (int k = 0; k < 6; ++k) blk.sigAt(k, e) = 0.0;
     std::fill(slot, slot + 24, 0.0);
     ++st.eroded;
@@ -133,8 +136,6 @@ inline void finishElement(domain::SolidBlock& blk, std::size_t e, int l, const N
   }
   for (int a = 0; a < 8; ++a)
     for (int i = 0; i < 3; ++i) slot[3 * a + i] = f[i][a][l];
-  double dte = solidTimeStep(len, c_dt, trace_d, bv);
-  if (!blk.dt_scale.empty()) dte *= blk.dt_scale[e];
   if (dte < st.dt_min) {
     st.dt_min = dte;
     st.dt_elem = blk.elem[e];

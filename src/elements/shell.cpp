@@ -729,9 +729,10 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
         }
         if (!(area[l] > 0.0) && (st.bad_elem < 0 || blk.elem[e] < st.bad_elem))
           st.bad_elem = blk.elem[e];
-        if (can_fail && failed_points[l] == static_cast<double>(nip)) {
+        const bool failed = can_fail && failed_points[l] == static_cast<double>(nip);
+        if (failed || dte[l] < blk.erode_dt) {  // FAIL; ERODE or TDEL (erode_dt)
           blk.active[e] = 0;
-          blk.failed[e] = 1;
+          if (failed) blk.failed[e] = 1;
           for (int k = 0; k < fields; ++k) blk.sig[domain::ShellBlock::blocked(fields, k, e)] = 0.0;
           if (stiffness_hg)
             for (int mode = 0; mode < 5; ++mode) blk.hgqAt(mode, e) = 0.0;

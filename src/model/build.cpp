@@ -427,8 +427,12 @@ Model readModel(const std::filesystem::path& path) {
 }
 
 Model readModel(const std::filesystem::path& path, const ReadOptions& options) {
+  return buildModel(deck::readDeck(path), path, options);
+}
+
+Model buildModel(const deck::Deck& deck, const std::filesystem::path& path,
+                 const ReadOptions& options) {
   using namespace build;
-  const deck::Deck deck = deck::readDeck(path);
   Model model;
   model.deck_path = path.string();
   Context ctx(deck, model, options);
@@ -446,6 +450,13 @@ Model readModel(const std::filesystem::path& path, const ReadOptions& options) {
     if (!m) {
       ctx.reportUnsupported(kw, unsupportedReason(kw.name));
       continue;
+    }
+    // A material, section or hourglass definition without its cards is what a file cut short
+    // leaves (the handlers read a list of records, and would read none without a word).
+    if (m->phase == 1 && std::all_of(kw.lines.begin(), kw.lines.end(),
+                                     [](const auto& l) { return deck::trim(l.text).empty(); })) {
+      throw util::InputError(deck.loc(kw).str() + ": " + kw.name +
+                             " has no data cards (is the file cut short?)");
     }
     std::string unknown;
     for (const auto& w : opts.words)

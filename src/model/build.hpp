@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <string>
 
+#include "deck/deck.hpp"
 #include "model/model.hpp"
 
 namespace crumple::model {
@@ -23,6 +24,10 @@ struct ReadOptions {
 // Throws util::InputError whose message names file:line, keyword, card and field.
 Model readModel(const std::filesystem::path& path);
 Model readModel(const std::filesystem::path& path, const ReadOptions& options);
+// The same from a deck already read (`path` names it in messages): the fuzzer's entry, which
+// reads from memory.
+Model buildModel(const deck::Deck& deck, const std::filesystem::path& path,
+                 const ReadOptions& options);
 
 // Reads a restart deck (crumple run --restart-deck): *CONTROL_TERMINATION and the
 // *DATABASE_ output intervals change `controls`; any other keyword is a util::InputError naming

@@ -177,12 +177,9 @@ void finishControls(Context& ctx) {
   Controls& k = ctx.model.controls;
   if (k.d3plot_dt == 0.0 && ctx.d3plot_npltc > 0 && k.end_time > 0)
     k.d3plot_dt = k.end_time / static_cast<double>(ctx.d3plot_npltc);
-  // Elements are eroded when their step falls below DTMIN with ERODE=1 (*CONTROL_TIMESTEP),
-  // or below a material's TDEL (*MAT_024).
+  // Solids and shells are eroded when their step falls below DTMIN with ERODE=1
+  // (*CONTROL_TIMESTEP); a material's TDEL (*MAT_024) is applied per part by the solver.
   k.erode_on_dtmin = ctx.erode_flag == 1 && k.dt_min_ratio > 0;
-  for (const auto& m : ctx.model.materials)
-    if (const auto* p = std::get_if<PiecewiseLinearLaw>(&m.law); p && p->tdel > 0)
-      k.erode_on_dtmin = true;
 }
 
 }  // namespace crumple::model::build

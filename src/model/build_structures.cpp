@@ -374,7 +374,14 @@ void readControlShell(Context& ctx, const deck::Keyword& kw, const KeywordOption
     ctx.ignore(kw.name, "ROTASCL",
                "the rotary inertia of shells is the element's own (Belytschko-Tsay scaling)",
                c2.where());
+  // Cards 3 to 5 hold, among others, the shell failure and deletion settings (NFAIL1, NFAIL4,
+  // PSNFAIL, DELFR): none is acted on, which a user relying on them must learn.
   ctx.collect(cur);
+  cur.skipBlankLines();
+  if (!cur.atEnd())
+    ctx.ignore(kw.name, "cards 3-5",
+               "not read: failure and deletion settings (NFAIL1, NFAIL4, ...) are not honoured",
+               ctx.deck.loc(cur.peek()));
 }
 
 }  // namespace crumple::model::build

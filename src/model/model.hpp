@@ -285,7 +285,9 @@ struct Controls {
   double hourglass_qh = 0.1;            // QH
   bool hourglass_energy = false;        // *CONTROL_ENERGY HGEN == 2
   bool rigidwall_energy = true;         // RWEN == 2 (default)
-  bool erode_on_dtmin = false;          // derived from TDEL of any material
+  bool erode_on_dtmin = false;          // ERODE = 1 with DTMIN: erode solids and shells
+  double energy_ratio_min = 0.0;        // `crumple run --energy-band LO,HI`; 0 = no check
+  double energy_ratio_max = 0.0;        // HI of --energy-band
   bool shell_bwc = false;               // *CONTROL_SHELL BWC = 1 (warping correction)
   bool shell_thickness_update = false;  // ISTUPD != 0
   bool shell_lobatto = false;           // INTGRD = 1

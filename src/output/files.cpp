@@ -1,11 +1,14 @@
 #include "output/files.hpp"
 
 #include <openssl/evp.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <stdexcept>
 #include <system_error>
@@ -27,7 +30,7 @@ uint64_t fnv1a(const char* data, std::size_t size, uint64_t hash) {
 }
 
 CsvWriter::CsvWriter(const fs::path& path, const std::vector<std::string>& columns)
-    : out_(path, std::ios::trunc), columns_(columns.size()) {
+    : path_(path), out_(path, std::ios::trunc), columns_(columns.size()) {
   if (!out_) throw std::runtime_error(fmt::format("cannot open '{}' for writing", path.string()));
   fmt::memory_buffer line;
   for (std::size_t i = 0; i < columns.size(); ++i) {
@@ -60,7 +63,7 @@ void CsvWriter::checkResume(const fs::path& path, const Position& resume) {
 
 CsvWriter::CsvWriter(const fs::path& path, const std::vector<std::string>& columns,
                      const Position& resume)
-    : columns_(columns.size()) {
+    : path_(path), columns_(columns.size()) {
   checkResume(path, resume);
   std::error_code ec;
   // The rows after the dump belong to the interrupted continuation: the restarted run
@@ -95,6 +98,32 @@ void CsvWriter::row(const std::vector<double>& values) {
   }
   line.push_back('\n');
   put(line.data(), line.size());
+}
+
+void CsvWriter::flush() {
+  out_.flush();
+  checkStream(out_, path_);
+}
+
+void checkStream(const std::ostream& out, const fs::path& path) {
+  // errno still holds the reason of the failed write(2): the streams keep no other record.
+  if (!out) {
+    throw std::runtime_error(
+        fmt::format("error while writing '{}': {}", path.string(), std::strerror(errno)));
+  }
+}
+
+void writeTextFile(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) {
+    throw std::runtime_error(
+        fmt::format("cannot open '{}' for writing: {}", path.string(), std::strerror(errno)));
+  }
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  out.flush();
+  checkStream(out, path);
+  out.close();
+  checkStream(out, path);
 }
 
 namespace {
@@ -252,6 +281,23 @@ void prepareResultsDir(const fs::path& dir, bool overwrite) {
     throw util::InputError(
         fmt::format("cannot create results folder '{}': {}", dir.string(), ec.message()));
   }
+  // An existing folder may be read-only: better to say so now than after the set-up.
+  if (::access(dir.c_str(), W_OK | X_OK) != 0) {
+    throw util::InputError(
+        fmt::format("cannot write to results folder '{}': {}", dir.string(), std::strerror(errno)));
+  }
+}
+
+void removeRunOutput(const fs::path& dir, bool remove_dir) {
+  std::error_code ec;
+  try {
+    for (const fs::path& p : earlierResults(dir)) fs::remove(p, ec);
+  } catch (const std::exception&) {
+    return;  // the folder cannot be listed: leave it as it is
+  }
+  if (fs::is_directory(fs::symlink_status(dir / kStatesFolder, ec)))
+    fs::remove(dir / kStatesFolder, ec);  // only if empty
+  if (remove_dir) fs::remove(dir, ec);    // likewise
 }
 
 Progress::Progress(std::FILE* stream, bool interactive, double end_time)

@@ -39,11 +39,14 @@ class CsvWriter {
   bool isOpen() const { return out_.is_open(); }
   // One row; `values` must have as many entries as the header. Integers print exactly.
   void row(const std::vector<double>& values);
-  void flush() { out_.flush(); }
+  // Hands the rows to the system; throws std::runtime_error naming the file when a write failed
+  // (a full disk: the stream buffers, so the failure shows here).
+  void flush();
   const Position& position() const { return pos_; }
 
  private:
   void put(const char* data, std::size_t size);
+  std::filesystem::path path_;
   std::ofstream out_;
   std::size_t columns_ = 0;
   Position pos_;
@@ -53,6 +56,14 @@ class CsvWriter {
 // faster than a byte-wise FNV, and it catches any corruption).
 using Sha256 = std::array<unsigned char, 32>;
 Sha256 sha256(const char* data, std::size_t size);
+
+// Writes `text` to `path` (replacing it) and checks that every byte reached the system: throws
+// std::runtime_error naming the file and the reason (e.g. "No space left on device") otherwise.
+void writeTextFile(const std::filesystem::path& path, const std::string& text);
+
+// Throws std::runtime_error naming `path` when `out` has failed: for streams written bit by bit
+// (run.log), checked after each flush.
+void checkStream(const std::ostream& out, const std::filesystem::path& path);
 
 // SHA-256 over x then v, each as little-endian IEEE float64, nodes in the given order
 // (ascending global node id), as 64 lowercase hex characters. x and v are packed xyz.
@@ -70,10 +81,17 @@ inline constexpr const char* kDumpTemporary = ".d3dump.tmp";
 // Makes `dir` ready for a run's results. If it already holds results of an earlier run
 // (summary.json, results.pvd, glstat.csv or run.log) and `overwrite` is false, throws
 // util::InputError telling the user to pass --overwrite or choose another -o; with
-// `overwrite`, only those result files and the VTU pieces are removed. Creates `dir`.
+// `overwrite`, only those result files and the VTU pieces are removed. Creates `dir`, and
+// throws util::InputError when the folder cannot be created or written to (checked here, so
+// the run stops before its first cycle).
 // Every file a run writes (the ARCHITECTURE.md output files, partition.json, *.vtu and *.pvtu
 // at the top and in kStatesFolder) counts as a result; nothing else is ever touched.
 void prepareResultsDir(const std::filesystem::path& dir, bool overwrite);
+
+// Undoes a run that failed before its first state: removes the result files and pieces from
+// `dir` (as prepareResultsDir would with `overwrite`) and, when `remove_dir` (the run created
+// it), the folder itself if nothing else is left in it. Never throws: it runs on an error path.
+void removeRunOutput(const std::filesystem::path& dir, bool remove_dir);
 
 // The progress line: refreshed in place (\r) when `interactive` (a terminal), otherwise one
 // line each 10% of the end time. Shows cycle, time, dt, % done, ETA and energy ratio.

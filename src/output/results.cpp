@@ -299,12 +299,15 @@ void ResultsWriter::writePlotState(const solver::Solver& s) {
   std::sort(cells.begin(), cells.end(),
             [](const Cell& a, const Cell& b) { return a.elem < b.elem; });
   const std::size_t nc = cells.size();
-  std::vector<int32_t> conn(8 * nc, 0);
-  std::vector<uint8_t> sizes(nc);
-  std::vector<double> stress(6 * nc, 0.0), stress_top(6 * nc, 0.0), stress_bottom(6 * nc, 0.0);
-  std::vector<double> eps(nc, 0.0), eps_top(nc, 0.0), eps_bottom(nc, 0.0), von_mises(nc);
-  std::vector<double> thickness(nc, 0.0), axial_force(nc, 0.0);
-  std::vector<int64_t> part(nc), rank(nc, sd.rank), elem_id(nc);
+  // Arrays hold at least one cell: FieldView tells Float64 from Int64 by the pointer that is
+  // set, and an empty vector's data() may be null (every element eroded, or none on this rank).
+  const std::size_t na = std::max<std::size_t>(nc, 1);
+  std::vector<int32_t> conn(8 * na, 0);
+  std::vector<uint8_t> sizes(na);
+  std::vector<double> stress(6 * na, 0.0), stress_top(6 * na, 0.0), stress_bottom(6 * na, 0.0);
+  std::vector<double> eps(na, 0.0), eps_top(na, 0.0), eps_bottom(na, 0.0), von_mises(na);
+  std::vector<double> thickness(na, 0.0), axial_force(na, 0.0);
+  std::vector<int64_t> part(na), rank(na, sd.rank), elem_id(na);
   for (std::size_t i = 0; i < nc; ++i) {
     const auto& c = cells[i];
     double layers[3][6] = {};
@@ -444,6 +447,7 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
   const long long eroded = comm_.sumAll(s.erodedElements());  // each rank erodes its own
   // Every rank sees every contact record: the largest penetration is the same everywhere.
   const double max_pen = s.contact() ? s.contact()->statistics().max_penetration_ratio : 0.0;
+  const solver::ErodedSums eroded_sums = s.eroded();
   if (!comm_.isRoot()) return;
   const auto& t = s.timing();
   nlohmann::json j;
@@ -482,6 +486,11 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
                  {"ratio", e.ratio}};
   j["mass"] = {{"physical", s.totalMass()}, {"added", s.addedMass()}};
   j["eroded_elements"] = eroded;
+  // What erosion took out of the model: the elements' physical mass (their nodes keep theirs,
+  // lumped) and the internal and hourglass energy they held, which stay in the energy sums.
+  j["eroded_mass"] = eroded_sums.mass;
+  j["eroded_internal_energy"] = eroded_sums.internal;
+  j["eroded_hourglass_energy"] = eroded_sums.hourglass;
   j["initial_dt"] = s.initialDt();
   j["peak_memory_bytes"] = peak;  // the largest rank
   j["communication_s"] = s.timing().communication;
@@ -501,8 +510,7 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
                     {"max_penetration_ratio", max_pen}};
   }
   j["state_digest"] = digest;
-  std::ofstream out(dir_ / "summary.json");
-  out << j.dump(2) << '\n';
+  writeTextFile(dir_ / "summary.json", j.dump(2) + "\n");
 }
 
 }  // namespace crumple::output

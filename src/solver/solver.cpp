@@ -119,16 +119,20 @@ void Solver::initialize() {
   std::vector<std::vector<double>> element_dt(sd_.solid_blocks.size());
   double dt_min = 1e300, rigid_dt = 1e300;
   int64_t dt_elem = -1, rigid_elem = -1;
+  // The lowest global index of an element whose initial geometry cannot run (inverted solid,
+  // zero-area shell, zero-length beam), on any rank: checked collectively below, so that every
+  // rank stops together and the same element is named whatever the partition.
+  int64_t bad = -1;
+  auto noteBad = [&](model::Family family, int64_t index) {
+    if (index < 0) return;
+    const int64_t g = sd_.globalElement(family, static_cast<int32_t>(index));
+    if (bad < 0 || g < bad) bad = g;
+  };
   for (std::size_t ib = 0; ib < sd_.solid_blocks.size(); ++ib) {
     auto& blk = sd_.solid_blocks[ib];
     elements::markIsolatedElements(blk, sd_.internal);
     const auto st = elements::initializeSolids(blk, sd_.x0, sd_.slots.data(), element_dt[ib], bv_);
-    if (st.bad_elem >= 0) {
-      throw util::NumericalError(fmt::format(
-          "solid element {} (part {}) has zero or negative initial volume: check its node "
-          "ordering (LS-DYNA: nodes 1-4 one face, 5-8 the opposite face, right-handed)",
-          sd_.elementId(st.bad_elem), blk.part_id));
-    }
+    noteBad(model::Family::Solid, st.bad_elem);
     // Rigid elements give mass only: no time step (unless nothing else sets one), no scaling.
     if (blk.rigid) {
       if (st.dt_elem >= 0 && st.dt_min < rigid_dt) {
@@ -150,20 +154,14 @@ void Solver::initialize() {
     elements::resizeShellBlock(blk, blk.size());
     const auto st = elements::initializeShells(blk, sd_.x0, sd_.slots.data(), shell_dt[ib]);
     if (blk.rigid) std::fill(shell_dt[ib].begin(), shell_dt[ib].end(), 0.0);
-    if (st.bad_elem >= 0)
-      throw util::NumericalError(fmt::format(
-          "shell element {} (part {}) has zero area: check its nodes",
-          sd_.elementId(sd_.globalElement(model::Family::Shell, st.bad_elem)), blk.part_id));
+    noteBad(model::Family::Shell, st.bad_elem);
     if (!blk.rigid && st.dt_elem >= 0)
       keepMin(st.dt_min, sd_.globalElement(model::Family::Shell, st.dt_elem), dt_min, dt_elem);
   }
   for (auto& blk : sd_.beam_blocks) {
     elements::resizeBeamBlock(blk, blk.size());
     const auto st = elements::initializeBeams(blk, sd_.x0, sd_.slots.data(), dts);
-    if (st.bad_elem >= 0)
-      throw util::NumericalError(fmt::format(
-          "beam element {} (part {}) has zero length",
-          sd_.elementId(sd_.globalElement(model::Family::Beam, st.bad_elem)), blk.part_id));
+    noteBad(model::Family::Beam, st.bad_elem);
     if (!blk.rigid && st.dt_elem >= 0)
       keepMin(st.dt_min, sd_.globalElement(model::Family::Beam, st.dt_elem), dt_other,
               dt_other_elem);
@@ -171,6 +169,22 @@ void Solver::initialize() {
   for (auto& blk : sd_.discrete_blocks) {
     elements::resizeDiscreteBlock(blk, blk.size());
     elements::initializeDiscretes(blk, sd_.x0, sd_.slots.data());
+  }
+  {
+    constexpr int64_t kNoElement = std::numeric_limits<int64_t>::max();
+    const int64_t g = comm_.minAll(bad >= 0 ? bad : kNoElement);
+    if (g != kNoElement) {
+      const auto family = sd_.familyOf(g);
+      const char* what = family == model::Family::Solid   ? "zero or negative volume"
+                         : family == model::Family::Shell ? "zero area or thickness"
+                                                          : "zero length";
+      const char* hint = family == model::Family::Solid
+                             ? "check its node ordering (LS-DYNA: nodes 1-4 one face, 5-8 the "
+                               "opposite face, right-handed)"
+                             : "check its nodes";
+      throw util::NumericalError(
+          fmt::format("{} has {} at cycle 0, time 0: {}", elementLabel(g), what, hint));
+    }
   }
   // Element masses of shells and beams (the sum of their corners' lumped masses, which the
   // kernels split equally among distinct corners), for the per-part sums of matsum.
@@ -296,6 +310,20 @@ void Solver::initialize() {
   if (ctl.dt_init > 0.0) dt_next_ = std::min(dt_next_, ctl.dt_init);
   dt_initial_ = dt_next_;
   dt_elem_ = dt_initial_elem_;
+  // Erosion floors of the element steps (before TSSFAC, as the kernels compare them): DTMIN x
+  // the initial step with *CONTROL_TIMESTEP ERODE = 1, and a *MAT_024 part's TDEL; such
+  // elements are removed instead of ending the run (beams and springs are not).
+  auto erodeFloor = [&](const domain::BlockBase& blk) {
+    double floor = ctl.erode_on_dtmin ? ctl.dt_min_ratio * dt_initial_ / ctl.tssfac : 0.0;
+    const int32_t mat = model_.parts[static_cast<std::size_t>(blk.part)].material;
+    if (mat != model::kNone)
+      if (const auto* law = std::get_if<model::PiecewiseLinearLaw>(
+              &model_.materials[static_cast<std::size_t>(mat)].law))
+        floor = std::max(floor, law->tdel / ctl.tssfac);
+    return blk.rigid ? 0.0 : floor;
+  };
+  for (auto& blk : sd_.solid_blocks) blk.erode_dt = erodeFloor(blk);
+  for (auto& blk : sd_.shell_blocks) blk.erode_dt = erodeFloor(blk);
   dt_ = 0.0;
   time_ = 0.0;
   cycle_ = 0;
@@ -515,9 +543,93 @@ void Solver::step() {
         break;
       }
   const int64_t bad_id = comm_.minAll(bad_node);
-  if (bad_id != kNoNode)
-    throw util::NumericalError(fmt::format(
-        "non-finite velocity at node {} at cycle {}, time {:.6g}", bad_id, cycle_, time_));
+  if (bad_id != kNoNode) {
+    // Name the element whose forces went non-finite (the usual cause: an element turned
+    // inside out or a material update that diverged); none means an external load or a
+    // constraint did it.
+    const int64_t local = non_finite_ ? nonFiniteElement() : -1;
+    const int64_t elem = comm_.minAll(local >= 0 ? local : kNoNode);
+    const std::string source =
+        elem != kNoNode ? "non-finite force in " + elementLabel(elem)
+                        : "non-finite external force or constraint (no element force is)";
+    throw util::NumericalError(
+        fmt::format("{}: non-finite velocity at node {} at cycle {}, time {:.6g}", source, bad_id,
+                    cycle_, time_));
+  }
+  checkEnergyBand();
+}
+
+int64_t Solver::nonFiniteElement() const {
+  int64_t found = -1;
+  auto scan = [&](const auto& blocks, model::Family family, std::size_t per) {
+    for (const auto& blk : blocks)
+      for (std::size_t e = 0; e < blk.size(); ++e) {
+        const double* slot = sd_.slots.data() + 3 * (blk.slot_offset + per * e);
+        if (std::all_of(slot, slot + 3 * per, [](double v) { return std::isfinite(v); })) continue;
+        const int64_t g = sd_.globalElement(family, blk.elem[e]);
+        if (found < 0 || g < found) found = g;
+      }
+  };
+  scan(sd_.solid_blocks, model::Family::Solid, kSlotsPer<domain::SolidBlock>);
+  scan(sd_.shell_blocks, model::Family::Shell, kSlotsPer<domain::ShellBlock>);
+  scan(sd_.beam_blocks, model::Family::Beam, kSlotsPer<domain::BeamBlock>);
+  scan(sd_.discrete_blocks, model::Family::Discrete, kSlotsPer<domain::DiscreteBlock>);
+  return found;
+}
+
+void Solver::checkEnergyBand() const {
+  const auto& ctl = model_.controls;
+  if (!(ctl.energy_ratio_max > 0.0) || cycle_ % 64 != 0) return;
+  const double ratio = energies().ratio;
+  if (ratio >= ctl.energy_ratio_min && ratio <= ctl.energy_ratio_max) return;
+  // No element is "the" culprit of an energy error; the one holding the most internal plus
+  // hourglass energy is where spurious energy (hourglassing, a diverging material) shows.
+  double most = -1.0;
+  int64_t elem = -1;
+  auto scan = [&](const auto& blocks, model::Family family) {
+    for (const auto& blk : blocks)
+      for (std::size_t e = 0; e < blk.size(); ++e) {
+        double en = blk.e_int[e];
+        if constexpr (requires { blk.e_hg; }) en += blk.e_hg[e];
+        const int64_t g = sd_.globalElement(family, blk.elem[e]);
+        if (en > most || (en == most && g < elem)) {
+          most = en;
+          elem = g;
+        }
+      }
+  };
+  scan(sd_.solid_blocks, model::Family::Solid);
+  scan(sd_.shell_blocks, model::Family::Shell);
+  scan(sd_.beam_blocks, model::Family::Beam);
+  scan(sd_.discrete_blocks, model::Family::Discrete);
+  const double global_most = -comm_.minAll(-most);
+  const int64_t g = controllingElement(elem, elem >= 0 && most == global_most);
+  throw util::NumericalError(fmt::format(
+      "energy ratio {:.4f} left the band [{:g}, {:g}] (--energy-band) at cycle {}, time {:.6g}; "
+      "most internal + hourglass energy in {}",
+      ratio, ctl.energy_ratio_min, ctl.energy_ratio_max, cycle_, time_, elementLabel(g)));
+}
+
+ErodedSums Solver::eroded() const {
+  // Per-element values summed in block order, then over ranks in rank order.
+  double mass = 0.0, internal = 0.0, hourglass = 0.0;
+  auto add = [&](const auto& blk, auto&& element_mass) {
+    if (blk.active.empty()) return;
+    for (std::size_t e = 0; e < blk.size(); ++e) {
+      if (blk.active[e]) continue;
+      mass += element_mass(e);
+      internal += blk.e_int[e];
+      if constexpr (requires { blk.e_hg; }) hourglass += blk.e_hg[e];
+    }
+  };
+  for (const auto& blk : sd_.solid_blocks)
+    add(blk, [&](std::size_t e) { return blk.rho0 * blk.vol0[e]; });
+  for (std::size_t ib = 0; ib < sd_.shell_blocks.size(); ++ib)
+    add(sd_.shell_blocks[ib], [&](std::size_t e) { return shell_mass_[ib][e]; });
+  for (std::size_t ib = 0; ib < sd_.beam_blocks.size(); ++ib)
+    add(sd_.beam_blocks[ib], [&](std::size_t e) { return beam_mass_[ib][e]; });
+  const auto sums = comm_.sumOrdered({mass, internal, hourglass});
+  return {static_cast<int64_t>(comm_.sumAll(eroded_)), sums[0], sums[1], sums[2]};
 }
 
 Energies Solver::energies() const {

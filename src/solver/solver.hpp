@@ -40,6 +40,13 @@ struct PartSums {
   double momentum[3] = {0, 0, 0};
 };
 
+// Elements removed by failure (erosion) so far: their count, their (physical) mass, and the
+// internal and hourglass energy they held when they were removed.
+struct ErodedSums {
+  int64_t elements = 0;
+  double mass = 0, internal = 0, hourglass = 0;
+};
+
 struct Timing {
   double elements = 0, contact = 0, constraints = 0, communication = 0, output = 0, other = 0;
 };
@@ -67,6 +74,8 @@ class Solver {
   // "shell element 12 (part 3)": the element controlling the initial step.
   const std::string& initialDtElement() const { return dt_initial_label_; }
   int64_t erodedElements() const { return eroded_; }
+  // Sums over every rank (collective).
+  ErodedSums eroded() const;
   const Timing& timing() const { return timing_; }
   Timing& timing() { return timing_; }
   const domain::Subdomain& subdomain() const { return sd_; }
@@ -110,6 +119,12 @@ class Solver {
   int64_t controllingElement(int64_t local_best, bool holds_global_min) const;
   // "solid element 7 (part 2)" for a global element index (collective).
   std::string elementLabel(int64_t global_index) const;
+  // The lowest global index of an element of this rank whose corner forces or moments are not
+  // finite (-1: none): the source of a non-finite velocity.
+  int64_t nonFiniteElement() const;
+  // --energy-band (Controls::energy_ratio_min/max): a NumericalError when the energy ratio has
+  // left the band (collective; every 64 cycles).
+  void checkEnergyBand() const;
 
   const model::Model& model_;
   domain::Subdomain& sd_;

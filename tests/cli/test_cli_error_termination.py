@@ -12,7 +12,7 @@ import xml.etree.ElementTree as ET
 sys.dont_write_bytecode = True  # keep __pycache__ out of the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import clitest  # noqa: E402
-from clitest import crumple, describe, read_summary  # noqa: E402
+from clitest import crumple, describe, example, read_summary  # noqa: E402
 
 
 def collapsing_block(element_id=42, part_id=3):
@@ -34,6 +34,36 @@ def collapsing_block(element_id=42, part_id=3):
     s += "                 0.1                -5.0\n"
     s += "*BOUNDARY_PRESCRIBED_MOTION_SET\n         2         3         2         1       1.0\n"
     return s + "*END\n"
+
+
+def pulled_block(fail_strain=0.05):
+    """The collapsing block turned around: the top face pulled up 5 mm in 0.1 ms, of a plastic
+    steel that fails at effective plastic strain `fail_strain` (*MAT_PLASTIC_KINEMATIC FS): the
+    element erodes early, and the run goes on to its end time without it."""
+    s = collapsing_block().replace("       1.0\n*DATABASE_BINARY_D3PLOT",
+                                  "     0.005\n*DATABASE_BINARY_D3PLOT")
+    s = s.replace("*MAT_ELASTIC\n         1  7.85e-06     210.0       0.3\n",
+                  "*MAT_PLASTIC_KINEMATIC\n         1  7.85e-06     210.0       0.3      0.25"
+                  "       1.0       0.0\n       0.0       0.0"
+                  f"{fail_strain:10.4g}       0.0\n")
+    return s.replace("                 0.1                -5.0", "                 0.1                 5.0")
+
+
+def degenerate_shell():
+    """One Belytschko-Tsay shell (element 5, part 2) whose four nodes lie on a line."""
+    s = "*KEYWORD\n*CONTROL_TERMINATION\n     0.001\n"
+    s += "*PART\nstrip\n         2         1         1\n"
+    s += "*SECTION_SHELL\n         1         2\n       1.0       1.0       1.0       1.0\n"
+    s += "*MAT_ELASTIC\n         1  7.85e-06     210.0       0.3\n*NODE\n"
+    s += "".join(f"{n:8d}{float(n):16.6f}{0.0:16.6f}{0.0:16.6f}\n" for n in (1, 2, 3, 4))
+    s += "*ELEMENT_SHELL\n       5       2       1       2       3       4\n"
+    return s + "*END\n"
+
+
+def message_cycle_time(test, p):
+    m = re.search(r"cycle (\d+), time (\S+?)[\s;:)]", p.stderr + " ")
+    test.assertIsNotNone(m, "the message names the cycle and time" + describe(p))
+    return int(m.group(1)), float(m.group(2))
 
 
 class ErrorTermination(clitest.TempDirTest):
@@ -89,6 +119,135 @@ class ErrorTermination(clitest.TempDirTest):
         p = crumple("run", "collapse.k", "-o", "out", "-q", cwd=self.tmp)
         self.assertEqual(p.returncode, 1, describe(p))
         self.assertIn("--overwrite", p.stderr, describe(p))
+
+
+    def check_error_run(self, p, out, *fragments):
+        """Exit 1, the fragments in the message, summary.json "error" with the message, cycle
+        and time matching, and the last state written at the failure time."""
+        self.assertEqual(p.returncode, 1, describe(p))
+        for fragment in fragments:
+            self.assertIn(fragment, p.stderr, describe(p))
+        cycle, time = message_cycle_time(self, p)
+        s = read_summary(out)
+        self.assertEqual(s["termination"], "error")
+        self.assertIn(fragments[0], s.get("message", ""))
+        self.assertEqual(s["cycles"], cycle)
+        self.assertAlmostEqual(s["end_time"], time, delta=1e-5 * abs(time))
+        root = ET.parse(os.path.join(out, "results.pvd")).getroot()
+        stamps = [float(d.get("timestep")) for d in root.iter("DataSet")]
+        self.assertEqual(stamps[-1], s["end_time"], "the last state is the failure's")
+        with open(os.path.join(out, "run.log"), encoding="utf-8") as f:
+            log = f.read()
+        self.assertIn("error termination: ", log)
+        self.assertIn(fragments[0], log)
+        return s
+
+    def test_time_step_below_dtmin(self):
+        # DTMIN 0.5: the crushed element's step halves long before it turns inside out.
+        deck = collapsing_block().replace("*CONTROL_TERMINATION\n       1.0\n",
+                                          "*CONTROL_TERMINATION\n       1.0         0       0.5\n")
+        self.write("dtmin.k", deck)
+        out = os.path.join(self.tmp, "out")
+        p = crumple("run", "dtmin.k", "-o", out, "-q", cwd=self.tmp)
+        self.check_error_run(p, out, "fell below DTMIN", "solid element 42 (part 3)")
+        self.assertNotIn("negative volume", p.stderr)
+
+    def test_erode_instead_of_stopping_at_dtmin(self):
+        # The crushed element with *CONTROL_TIMESTEP ERODE = 1 (and DTMIN 0.5), or with a
+        # *MAT_024 TDEL of half its initial step: it is removed when its step falls below the
+        # floor, and the run goes on to its end time.
+        erode = collapsing_block().replace(
+            "*CONTROL_TERMINATION\n       1.0\n",
+            "*CONTROL_TERMINATION\n      0.02         0       0.5\n*CONTROL_TIMESTEP\n"
+            "       0.0       0.9         0       0.0       0.0         0         1\n")
+        tdel = collapsing_block().replace(
+            "*CONTROL_TERMINATION\n       1.0\n", "*CONTROL_TERMINATION\n      0.02\n").replace(
+            "*MAT_ELASTIC\n         1  7.85e-06     210.0       0.3\n",
+            "*MAT_PIECEWISE_LINEAR_PLASTICITY\n         1  7.85e-06     210.0       0.3    1000.0"
+            "       0.0       0.0   5.18e-5\n")
+        for name, deck in (("erode", erode), ("tdel", tdel)):
+            with self.subTest(name):
+                self.write(name + ".k", deck)
+                out = os.path.join(self.tmp, name)
+                p = crumple("run", name + ".k", "-o", out, "-q", cwd=self.tmp)
+                self.assertEqual(p.returncode, 0, describe(p))
+                s = read_summary(out)
+                self.assertEqual(s["termination"], "normal")
+                self.assertAlmostEqual(s["end_time"], 0.02, delta=1e-12)
+                self.assertEqual(s["eroded_elements"], 1)
+                self.assertAlmostEqual(s["eroded_mass"], 7.85e-6, delta=1e-18)
+                # Crushed elastically to half its step: it held strain energy when it went.
+                self.assertGreater(s["eroded_internal_energy"], 0.0)
+                with open(os.path.join(out, "run.log"), encoding="utf-8") as f:
+                    self.assertIn("eroded: 1 element(s)", f.read())
+
+    def test_non_finite_force_names_the_element(self):
+        # A node thrown at 1e150 mm/ms, without bulk viscosity to shrink the step: within a few
+        # cycles the element's stresses and forces overflow to infinity and NaN.
+        deck = clitest.one_brick_deck(
+            extra="*CONTROL_BULK_VISCOSITY\n   1.0e-30   1.0e-30\n"
+                  "*INITIAL_VELOCITY_NODE\n       7  1.0e+150       0.0       0.0\n",
+            end_time=0.001)
+        self.write("nan.k", deck)
+        out = os.path.join(self.tmp, "out")
+        p = crumple("run", "nan.k", "-o", out, "-q", cwd=self.tmp)
+        self.check_error_run(p, out, "non-finite force in solid element 1 (part 1)",
+                             "non-finite velocity at node")
+
+    def test_energy_band(self):
+        # mixed_conditions.k (erosion, walls, loads) drifts 1 % from its energy balance by
+        # cycle 64: a band of +-1 % stops it there, a band of +-50 % lets it finish.
+        deck = os.path.join(os.path.dirname(example()), "tests", "data", "decks",
+                            "mixed_conditions.k")
+        out = os.path.join(self.tmp, "tight")
+        p = crumple("run", deck, "-o", out, "-q", "--energy-band", "0.99,1.01")
+        s = self.check_error_run(p, out, "energy ratio", "left the band [0.99, 1.01]",
+                                 "most internal + hourglass energy in solid element", "(part ")
+        self.assertTrue(s["energy"]["ratio"] < 0.99 or s["energy"]["ratio"] > 1.01, s["energy"])
+        out = os.path.join(self.tmp, "wide")
+        p = crumple("run", deck, "-o", out, "-q", "--energy-band", "0.5,1.5")
+        self.assertEqual(p.returncode, 0, describe(p))
+        self.assertEqual(read_summary(out)["termination"], "normal")
+        p = crumple("run", deck, "-o", os.path.join(self.tmp, "bad"), "-q", "--energy-band", "1.1,0.9")
+        self.assertEqual(p.returncode, 1, describe(p))
+        self.assertIn("--energy-band LO,HI: needs 0 < LO < 1 < HI", p.stderr)
+        self.assertFalse(os.path.exists(os.path.join(self.tmp, "bad")))
+
+    def test_degenerate_shell_before_the_first_cycle(self):
+        self.write("shell.k", degenerate_shell())
+        out = os.path.join(self.tmp, "out")
+        p = crumple("run", "shell.k", "-o", out, "-q", cwd=self.tmp)
+        self.assertEqual(p.returncode, 1, describe(p))
+        self.assertIn("shell element 5 (part 2) has zero area or thickness at cycle 0, time 0",
+                      p.stderr, describe(p))
+        self.assertFalse(os.path.exists(out), "nothing is written for a model that cannot start")
+        p = crumple("check", "shell.k", cwd=self.tmp)
+        self.assertEqual(p.returncode, 1, describe(p))
+        self.assertIn("shell element 5 (part 2)", p.stderr)
+
+    def test_erosion_reports_mass_and_energy(self):
+        self.write("pulled.k", pulled_block())
+        out = os.path.join(self.tmp, "out")
+        p = crumple("run", "pulled.k", "-o", out, "-q", cwd=self.tmp)
+        self.assertEqual(p.returncode, 0, describe(p))
+        s = read_summary(out)
+        self.assertEqual(s["termination"], "normal")
+        self.assertEqual(s["eroded_elements"], 1)
+        # The unit cube's mass, rho * 1 mm^3.
+        self.assertAlmostEqual(s["eroded_mass"], 7.85e-6, delta=1e-18)
+        # It had yielded before it failed: plastic work went into it, and stays counted.
+        self.assertGreater(s["eroded_internal_energy"], 0.0)
+        self.assertLessEqual(s["eroded_internal_energy"], s["energy"]["internal"] * (1 + 1e-12))
+        self.assertGreaterEqual(s["eroded_hourglass_energy"], 0.0)
+        with open(os.path.join(out, "run.log"), encoding="utf-8") as f:
+            log = f.read()
+        self.assertIn("eroded: 1 element(s), mass 7.85e-06, internal energy", log)
+        # Without failure nothing erodes and the keys say so.
+        self.write("intact.k", pulled_block(fail_strain=0.0))
+        p = crumple("run", "intact.k", "-o", os.path.join(self.tmp, "intact"), "-q", cwd=self.tmp)
+        self.assertEqual(p.returncode, 0, describe(p))
+        s = read_summary(os.path.join(self.tmp, "intact"))
+        self.assertEqual((s["eroded_elements"], s["eroded_mass"]), (0, 0.0))
 
 
 if __name__ == "__main__":

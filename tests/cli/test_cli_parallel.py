@@ -79,6 +79,25 @@ class DistributedErrors(TempDirTest):
         self.assertEqual(p.stderr.count("crumple: error:"), 1, describe(p))
         self.assertIn("'abc' is not a number", p.stderr)
 
+    def test_inverted_element_on_one_rank_stops_every_rank(self):
+        # Element 300 of mixed_conditions.k turned inside out: only the rank holding it sees
+        # it, yet every rank must stop before the first cycle (this hung before the check was
+        # made collective), with one message naming it and no results folder.
+        with open(os.path.join(clitest.SOURCE_DIR, "tests", "data", "decks", "mixed_conditions.k"),
+                  encoding="utf-8") as f:
+            lines = f.read().split("\n")
+        k = next(i for i, line in enumerate(lines) if line.startswith("     300       1"))
+        f = [lines[k][j:j + 8] for j in range(0, 80, 8)]
+        lines[k] = "".join(f[:2] + f[6:10] + f[2:6])
+        self.write("inverted.k", "\n".join(lines))
+        for n in (2, 3):
+            p = mpirun(n, "run", "inverted.k", "-q", "--threads", "1", "-o", f"out{n}", cwd=self.tmp)
+            self.assertNotEqual(p.returncode, 0, describe(p))
+            self.assertEqual(p.stderr.count("crumple: error:"), 1, describe(p))
+            self.assertIn("solid element 300 (part 1) has zero or negative volume at cycle 0",
+                          p.stderr, describe(p))
+            self.assertFalse(os.path.exists(os.path.join(self.tmp, f"out{n}")))
+
     def test_pvtu_pieces_carry_the_rank(self):
         out = os.path.join(self.tmp, "bar")
         p = mpirun(3, "run", example("bar_impact", "bar_impact.k"), "-o", out, "-q")

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 #include <utility>
 
@@ -20,6 +21,7 @@
 
 namespace fs = std::filesystem;
 using crumple::util::InputError;
+using Files = std::map<std::string, std::string>;  // a deck::MemorySource's files
 
 namespace {
 
@@ -258,6 +260,80 @@ TEST(DeckInclude, NestedRelativePathsAndSearchDirs) {
                 (t.path() / "nope.k").string() + ")");
   EXPECT_EQ(errorOf([&] { crumple::model::readModel(t.path() / "absent.k"); }),
             (t.path() / "absent.k").string() + ": cannot open the file");
+}
+
+TEST(DeckInclude, CyclesAreNamedWithTheirChain) {
+  TempDir t;
+  t.write("sub/unrelated.k", "");
+  t.write("b.k", "*KEYWORD\n*INCLUDE\nsub/../a.k\n");
+  const auto a = t.write("a.k", "*KEYWORD\n*INCLUDE\nb.k\n");
+  // The second spelling of a.k is the same file: recognised by its canonical path.
+  EXPECT_EQ(errorOf([&] { crumple::deck::readDeck(a); }),
+            (t.path() / "b.k").string() +
+                ":3: *INCLUDE card 1 field 1 (FILENAME): include cycle: " + a.string() + " -> " +
+                (t.path() / "b.k").string() + " -> " + (t.path() / "a.k").string());
+  const auto self = t.write("self.k", "*INCLUDE\nself.k\n");
+  EXPECT_NE(errorOf([&] { crumple::deck::readDeck(self); }).find("include cycle"),
+            std::string::npos);
+  // Including the same file twice, one after the other, is no cycle.
+  t.write("nodes.k", "*NODE\n1,0,0,0\n");
+  const auto twice = t.write("twice.k", "*INCLUDE\nnodes.k\n*INCLUDE\nnodes.k\n");
+  EXPECT_EQ(crumple::deck::readDeck(twice).keywords.size(), 2u);
+}
+
+TEST(DeckSource, MemoryFilesOnlyAndNothingFromDisk) {
+  using crumple::deck::MemorySource;
+  TempDir t;
+  const auto on_disk = t.write("real.k", "*NODE\n1,0,0,0\n");
+  const MemorySource files(
+      {{"main.k", "*INCLUDE\ninc/part.k\n*INCLUDE\n" + on_disk.string() + "\n"},
+       {"inc/part.k", "*NODE\n2,1,0,0\n"}});
+  // The include in memory is found; the absolute path of a real file is not.
+  EXPECT_EQ(errorOf([&] { crumple::deck::readDeck("main.k", files); }),
+            "main.k:3: *INCLUDE: cannot open '" + on_disk.string() + "' (tried " +
+                on_disk.string() + ")");
+  const MemorySource one(Files{{"x.k", "*NODE\n1,0,0,0\n"}});
+  EXPECT_EQ(crumple::deck::readDeck("x.k", one).keywords.size(), 1u);
+  EXPECT_EQ(errorOf([&] { crumple::deck::readDeck("y.k", one); }), "y.k: cannot open the file");
+}
+
+TEST(DeckLines, LongLinesAndBinaryDataAreRefused) {
+  using crumple::deck::kMaxLineLength;
+  using crumple::deck::MemorySource;
+  const std::string at_cap(kMaxLineLength, 'x');
+  // A title exactly at the cap is read; one character more is refused at its line.
+  EXPECT_EQ(crumple::deck::readDeck("a.k", MemorySource(Files{{"a.k", "*TITLE\n" + at_cap + "\n"}}))
+                .keywords[0]
+                .lines[0]
+                .text.size(),
+            kMaxLineLength);
+  EXPECT_EQ(
+      errorOf([&] {
+        crumple::deck::readDeck("a.k", MemorySource(Files{{"a.k", "*TITLE\n" + at_cap + "y"}}));
+      }),
+      "a.k:2: line longer than 65536 characters: this is not a keyword deck (or a line end "
+      "is missing)");
+  // Control characters other than tab, form feed, vertical tab and ^Z are binary data; CR LF
+  // line ends and bytes of UTF-8 text are not.
+  EXPECT_EQ(errorOf([&] {
+              crumple::deck::readDeck("b.k", MemorySource(Files{{"b.k", "*NODE\n1,0,0\x01,0\n"}}));
+            }),
+            "b.k:2: byte 0x01 in column 6: binary data, not a keyword deck (text)");
+  EXPECT_EQ(
+      errorOf([&] {
+        crumple::deck::readDeck("b.k", MemorySource(Files{{"b.k", std::string("*NODE\n\0", 8)}}));
+      }),
+      "b.k:2: byte 0x00 in column 1: binary data, not a keyword deck (text)");
+  const auto ok = crumple::deck::readDeck(
+      "c.k", MemorySource(Files{{"c.k", "*TITLE\r\nK\xc3\xa4se\tbox\f\r\n\x1a"}}));
+  EXPECT_EQ(ok.keywords[0].lines[0].text, "K\xc3\xa4se\tbox\f");
+}
+
+TEST(DeckTruncated, DefinitionWithoutCardsIsAnError) {
+  TempDir t;
+  const auto p = t.write("cut.k", std::string(kCube) + "*MAT_ELASTIC\n1,1,1,0.3\n*SECTION_SHELL\n");
+  EXPECT_EQ(errorOf([&] { crumple::model::readModel(p); }),
+            p.string() + ":20: *SECTION_SHELL has no data cards (is the file cut short?)");
 }
 
 TEST(DeckCase, KeywordsInCaseBlocksAreSkippedAndReported) {

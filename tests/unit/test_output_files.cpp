@@ -227,3 +227,52 @@ TEST(OutputProgress, TerminalRedrawsInPlaceAtMostFiveTimesASecond) {
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
   EXPECT_EQ(text.back(), '\n');
 }
+
+// A full disk, simulated by /dev/full (every write fails with ENOSPC): the writers must report
+// the file and the reason instead of ending "normally" with truncated results.
+TEST(OutputFullDisk, CsvWriterReportsTheFileOnFlush) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
+  crumple::output::CsvWriter csv("/dev/full", {"time", "value"});
+  // Rows go to the stream's buffer; the failure shows when they are handed to the system.
+  for (int i = 0; i < 10; ++i) csv.row({0.1 * i, 1.0});
+  try {
+    csv.flush();
+    FAIL() << "flush to /dev/full succeeded";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("error while writing '/dev/full'"), std::string::npos) << what;
+    EXPECT_NE(what.find("No space left on device"), std::string::npos) << what;
+  }
+}
+
+TEST(OutputFullDisk, TextFileReportsTheFile) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
+  try {
+    crumple::output::writeTextFile("/dev/full", std::string(100, 'x'));
+    FAIL() << "writing /dev/full succeeded";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("'/dev/full': No space left on device"), std::string::npos)
+        << e.what();
+  }
+  // The same call on a real file writes it whole.
+  const fs::path dir = freshDir();
+  crumple::output::writeTextFile(dir / "a.json", "{}\n");
+  EXPECT_EQ(slurp(dir / "a.json"), "{}\n");
+}
+
+TEST(OutputResultsDir, RemoveRunOutputTakesOnlyWhatARunWrites) {
+  const fs::path dir = freshDir();
+  touch(dir / "run.log");
+  touch(dir / "glstat.csv");
+  fs::create_directories(dir / crumple::output::kStatesFolder);
+  touch(dir / crumple::output::kStatesFolder / "state_00000.vtu");
+  touch(dir / "notes.txt");
+  crumple::output::removeRunOutput(dir, true);
+  // The user's file stays, and with it the folder.
+  ASSERT_TRUE(fs::exists(dir / "notes.txt"));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+  fs::remove(dir / "notes.txt");
+  touch(dir / "summary.json");
+  crumple::output::removeRunOutput(dir, true);
+  EXPECT_FALSE(fs::exists(dir));
+}
