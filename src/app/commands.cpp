@@ -602,6 +602,9 @@ int runCommand(const RunOptions& opt) {
       } catch (const std::exception& e2) {
         say(fmt::format("could not write the last state: {}\n", e2.what()));
       }
+      // And a dump of the state at the failure (collective, like the failure): an analyst can
+      // look at it, or continue from the last periodic dump with a restart deck.
+      if (started) writeDump("error termination");
     }
   } catch (const std::exception& e) {
     // Anything else (an I/O failure on one rank) may leave the others waiting in a

@@ -140,6 +140,9 @@ class ErrorTermination(clitest.TempDirTest):
             log = f.read()
         self.assertIn("error termination: ", log)
         self.assertIn(fragments[0], log)
+        # A restart dump of the state at the failure, named by its cycle.
+        self.assertIn(f"d3dump_{cycle:010d}", os.listdir(out))
+        self.assertIn("(error termination)", log)
         return s
 
     def test_time_step_below_dtmin(self):
