@@ -99,16 +99,19 @@ std::vector<KeywordSpec> makeTables() {
                   I("VID", 0, 0, 8), R("S", 1, Z, 16), I("PF", 0, 0, 8), R("OFFSET", 0, 0, 16)}}}});
   // ---- parts, sections, materials -----------------------------------------------------------
   // *PART; _INERTIA adds cards 3-5 (and card 6 for IRCS=1) after card 2 of each part.
-  t.push_back({"*PART",
-               {{"card 1", {A("HEADING", 70)}},
-                {"card 2",
-                 {I("PID"), I("SECID"), I("MID"), I("EOSID"), I("HGID"), I("GRAV"), I("ADPOPT"),
-                  I("TMID")}},
-                {"inertia card 3", {R("XC"), R("YC"), R("ZC"), R("TM"), I("IRCS"), I("NODEID")}},
-                {"inertia card 4", {R("IXX"), R("IXY"), R("IXZ"), R("IYY"), R("IYZ"), R("IZZ")}},
-                {"inertia card 5", {R("VTX"), R("VTY"), R("VTZ"), R("VRX"), R("VRY"), R("VRZ")}},
-                {"inertia card 6",
-                 {R("XL"), R("YL"), R("ZL"), R("XLIP"), R("YLIP"), R("ZLIP"), I("CID")}}}});
+  t.push_back(
+      {"*PART",
+       {{"card 1", {A("HEADING", 70)}},
+        {"card 2",
+         {I("PID"), I("SECID"), I("MID"), I("EOSID"), I("HGID"), I("GRAV"), I("ADPOPT"),
+          I("TMID")}},
+        {"contact card",
+         {R("FS"), R("FD"), R("DC"), R("VC"), R("OPTT"), R("SFT"), R("SSF", 1, Z), R("CPARM8")}},
+        {"inertia card 3", {R("XC"), R("YC"), R("ZC"), R("TM"), I("IRCS"), I("NODEID")}},
+        {"inertia card 4", {R("IXX"), R("IXY"), R("IXZ"), R("IYY"), R("IYZ"), R("IZZ")}},
+        {"inertia card 5", {R("VTX"), R("VTY"), R("VTZ"), R("VRX"), R("VRY"), R("VRZ")}},
+        {"inertia card 6",
+         {R("XL"), R("YL"), R("ZL"), R("XLIP"), R("YLIP"), R("ZLIP"), I("CID")}}}});
   t.push_back({"*SECTION_SOLID",
                {titleCard(),
                 {"card 1",

@@ -269,7 +269,7 @@ const std::vector<Meaning>& meanings() {
        Kind::Material},
       {"*MAT_S04", 1, readMatSpringNonlinear, {"TITLE"}, U::Definition, Kind::Material},
       {"*HOURGLASS", 1, readHourglass, {"TITLE"}, U::Definition, Kind::Hourglass},
-      {"*PART", 2, readParts, {"INERTIA"}, U::Reject},
+      {"*PART", 2, readParts, {"INERTIA", "CONTACT"}, U::Reject},
       {"*ELEMENT_SOLID", 3, readSolids, {}, U::Reject},
       {"*ELEMENT_SHELL", 3, readShells, {"THICKNESS"}, U::Reject},
       {"*ELEMENT_BEAM", 3, readBeams, {}, U::Reject},

@@ -54,8 +54,11 @@ Vec3 centroid(const Model& m, const int32_t* n, int count) {
   return c;
 }
 
-// Mean thickness of shell e: its own corner thicknesses, or its section's when it gives none.
+// Mean thickness of shell e: its part's *PART_CONTACT OPTT, else its own corner thicknesses,
+// or its section's when it gives none.
 double shellThickness(const Model& m, std::size_t e) {
+  const double optt = m.parts[std::size_t(m.shells.part[e])].contact_thickness;
+  if (optt > 0.0) return optt;
   auto t = m.shells.thickness[e];
   if (t[0] == 0.0 && t[1] == 0.0 && t[2] == 0.0 && t[3] == 0.0) {
     const auto& part = m.parts[std::size_t(m.shells.part[e])];
@@ -140,7 +143,10 @@ std::vector<Segment> partSegments(const Model& m, const std::vector<uint8_t>& in
     }
     const Vec3 av = areaVector(m, f);
     const double area2 = dot(av, av);
-    const double k = vol > 0.0 ? bulkModulus(m, m.solids.part[std::size_t(e)]) * area2 / vol : 0.0;
+    const int32_t part = m.solids.part[std::size_t(e)];
+    const double k =
+        vol > 0.0 ? m.parts[std::size_t(part)].contact_ssf * bulkModulus(m, part) * area2 / vol
+                  : 0.0;
     out.push_back({f, e, 0.0, k, area2 > 0.0 ? vol / std::sqrt(area2) : 0.0});
   }
   const auto shell0 = int64_t(m.familyOffset(Family::Shell));
@@ -155,7 +161,8 @@ std::vector<Segment> partSegments(const Model& m, const std::vector<uint8_t>& in
     const double diag = std::sqrt(std::max(dot(d1, d1), dot(d2, d2)));
     const Vec3 av = areaVector(m, f);
     const double area = std::sqrt(dot(av, av));
-    const double k = diag > 0.0 ? bulkModulus(m, p) * area / diag : 0.0;
+    const double k =
+        diag > 0.0 ? m.parts[std::size_t(p)].contact_ssf * bulkModulus(m, p) * area / diag : 0.0;
     out.push_back({f, shell0 + int64_t(e), thick, k, thick});
   }
   return out;

@@ -242,6 +242,16 @@ void readParts(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts
                  "equation of state " + std::to_string(eos) +
                      " is not used: the supported materials have their own pressure response",
                  c.where());
+    if (opts.has("CONTACT")) {
+      // _CONTACT (Keyword Manual, *PART_CONTACT): SSF scales the penalty stiffness of the
+      // part's segments and OPTT replaces its shells' contact thickness; part-based friction
+      // (FS, FD, DC, VC, used by interfaces whose FS is -1) is reported as not honoured.
+      const Card& cc = cur.read(spec.card("contact card"));
+      p.contact_ssf = cc.real("SSF");
+      p.contact_thickness = cc.real("OPTT");
+      if (p.contact_ssf <= 0) cc.fail("SSF", "must be positive");
+      if (p.contact_thickness < 0) cc.fail("OPTT", "must not be negative");
+    }
     if (opts.has("INERTIA")) readPartInertia(ctx, cur, p.id);
     ctx.model.parts.push_back(std::move(p));
     ctx.part_problem.push_back(std::move(problem));

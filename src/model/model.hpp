@@ -148,9 +148,11 @@ struct Part {
   int64_t id = 0;
   std::string title;
   SectionKind section_kind = SectionKind::Solid;
-  int32_t section = kNone;    // index into the Model's sections of that kind
-  int32_t material = kNone;   // index into Model::materials
-  int32_t hourglass = kNone;  // index into Model::hourglass; kNone = *CONTROL_HOURGLASS
+  int32_t section = kNone;         // index into the Model's sections of that kind
+  int32_t material = kNone;        // index into Model::materials
+  int32_t hourglass = kNone;       // index into Model::hourglass; kNone = *CONTROL_HOURGLASS
+  double contact_ssf = 1.0;        // *PART_CONTACT SSF: penalty scale of the part's segments
+  double contact_thickness = 0.0;  // *PART_CONTACT OPTT: shell contact thickness; 0 = the shell's
   util::SourceLoc where;
 };
 

@@ -48,6 +48,8 @@ void fields(A& a, M& m) {
         a(p.section);
         a(p.material);
         a(p.hourglass);
+        a(p.contact_ssf);
+        a(p.contact_thickness);
         loc(a, p.where);
       },
       m.parts);

@@ -363,6 +363,31 @@ TEST(BuildUnsupported, CountsFirstLocationsReasonsAndIgnoredFields) {
       << table;
 }
 
+// *PART_CONTACT: SSF scales the penalty stiffness of the part's segments (a single surface
+// over the part, against the same deck without it); FS (part-based friction) is reported as
+// read but not honoured.
+TEST(BuildContact, PartContactScalesStiffnessAndReportsFriction) {
+  TempDir t;
+  const std::string contact = "*CONTACT_AUTOMATIC_SINGLE_SURFACE\n1,0,3,0\n";
+  const Model plain = build(t, contact, "plain.k");
+  std::string mesh = kMesh;
+  const std::string part = "*PART\nblock\n1,1,1\n";
+  ASSERT_NE(mesh.find(part), std::string::npos);
+  mesh.replace(mesh.find(part), part.size(), "*PART_CONTACT\nblock\n1,1,1\n0.3,,,,,,2.5\n");
+  const Model scaled = readModel(t.write("scaled.k", mesh + contact));
+  ASSERT_EQ(plain.contacts.size(), 1u);
+  ASSERT_EQ(scaled.contacts.size(), 1u);
+  const auto& k0 = plain.contacts[0].a.segment_stiffness;
+  const auto& k1 = scaled.contacts[0].a.segment_stiffness;
+  ASSERT_EQ(k0.size(), 10u);  // two hexes sharing a face: ten free faces
+  ASSERT_EQ(k1.size(), k0.size());
+  for (std::size_t i = 0; i < k0.size(); ++i) EXPECT_DOUBLE_EQ(k1[i], 2.5 * k0[i]);
+  bool fs_reported = false;
+  for (const auto& f : scaled.ignored)
+    fs_reported |= f.keyword == "*PART_CONTACT" && f.field == "FS";
+  EXPECT_TRUE(fs_reported);
+}
+
 // The real decks in ../shared/decks, read to the end.
 TEST(BuildRealDecks, ReadToTheEnd) {
   const fs::path decks = fs::path(CRUMPLE_SHARED_DIR) / "decks";
