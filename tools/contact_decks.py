@@ -7,6 +7,7 @@ contact benchmark. Each function returns deck text; `main` writes one to a file:
   python3 tools/contact_decks.py hertz OUT.k [--n 16]
   python3 tools/contact_decks.py tube OUT.k [--size 2.5] [--length 120]
   python3 tools/contact_decks.py tied OUT.k
+  python3 tools/contact_decks.py cask OUT.k
 
 Units: SI (m, kg, s, Pa) for blocks, sliding and hertz; mm, ms, kg, GPa for the tube.
 """
@@ -294,9 +295,86 @@ upper half
 """
 
 
+def cask_drop(v: float = 5.0, end: float = 3.0e-4, n_theta: int = 24) -> str:
+    """A steel cask (a tube of outer radius 0.1 m, wall 0.02 m, height 0.3 m, in hexes) with a
+    lid (a disk of hexes tied to the tube's bottom face), dropped lid first at v onto a fixed
+    rigid target, with two-surface symmetric penalty contact between cask and target."""
+    m = Mesh()
+    R, wall, H, t_lid = 0.1, 0.02, 0.3, 0.02
+    nr, nz = 2, 6
+    ring = {}
+    for k in range(nz + 1):
+        for j in range(nr + 1):
+            r = R - wall + wall * j / nr
+            for i in range(n_theta):
+                a = 2 * math.pi * i / n_theta
+                ring[i, j, k] = m.add_node(r * math.cos(a), r * math.sin(a), t_lid + H * k / nz)
+    for k in range(nz):
+        for j in range(nr):
+            for i in range(n_theta):
+                i1 = (i + 1) % n_theta
+                m.add_solid(1, [ring[i, j, k], ring[i, j + 1, k], ring[i1, j + 1, k], ring[i1, j, k],
+                                ring[i, j, k + 1], ring[i, j + 1, k + 1], ring[i1, j + 1, k + 1],
+                                ring[i1, j, k + 1]])
+    # The lid: a square grid mapped onto the disk of radius R, two layers.
+    n = 8
+    disk = {}
+    for k in range(3):
+        for j in range(n + 1):
+            for i in range(n + 1):
+                x, y = 2.0 * i / n - 1.0, 2.0 * j / n - 1.0
+                disk[i, j, k] = m.add_node(R * x * math.sqrt(1 - y * y / 2),
+                                           R * y * math.sqrt(1 - x * x / 2), t_lid * k / 2)
+    for k in range(2):
+        for j in range(n):
+            for i in range(n):
+                m.add_solid(2, [disk[i, j, k], disk[i + 1, j, k], disk[i + 1, j + 1, k],
+                                disk[i, j + 1, k], disk[i, j, k + 1], disk[i + 1, j, k + 1],
+                                disk[i + 1, j + 1, k + 1], disk[i, j + 1, k + 1]])
+    cask_nodes = list(range(1, len(m.nodes) + 1))
+    block(m, 3, (-0.15, -0.15, -0.0405), (0.3, 0.3, 0.04), (6, 6, 1))
+    return f"""*KEYWORD
+*TITLE
+cask with a tied lid dropped on a rigid target (symmetric two-surface contact)
+*CONTROL_TERMINATION
+{end:10.4g}
+*DATABASE_GLSTAT
+   5.0e-06
+*DATABASE_MATSUM
+   5.0e-06
+*DATABASE_RCFORC
+   1.0e-06
+*PART
+cask body
+         1         1         1
+lid
+         2         1         1
+target
+         3         1         2
+*SECTION_SOLID
+         1         1
+*MAT_ELASTIC
+         1    7850.0   2.0e+11       0.3
+*MAT_RIGID
+         2    7850.0   2.0e+11       0.3
+       1.0         7         7
+*SET_PART_LIST
+         1
+         1         2
+*CONTACT_TIED_SURFACE_TO_SURFACE_ID
+         1
+         1         2         3         3
+*CONTACT_SURFACE_TO_SURFACE_ID
+         2
+         1         3         2         3
+*INITIAL_VELOCITY_NODE
+{_velocities(cask_nodes, (0, 0, -v))}{m.keyword_text()}*END
+"""
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    ap.add_argument("problem", choices=["blocks", "sliding", "hertz", "tube", "tied"])
+    ap.add_argument("problem", choices=["blocks", "sliding", "hertz", "tube", "tied", "cask"])
     ap.add_argument("out", type=pathlib.Path)
     ap.add_argument("--kind", default="SURFACE_TO_SURFACE")
     ap.add_argument("--mu", type=float, default=0.3)
@@ -314,6 +392,8 @@ def main() -> None:
         text = hertz_sphere(a.n, **extra)
     elif a.problem == "tied":
         text = tied_bar(**extra)
+    elif a.problem == "cask":
+        text = cask_drop(**extra)
     else:
         text = tube_crush(size=a.size, length=a.length, **extra)
     a.out.write_text(text)

@@ -8,7 +8,9 @@ decks from tools/contact_decks.py:
     within 3%;
   - an elastic ball on a rigid plate: Hertz peak force and contact duration within 10%;
   - a square tube crushed axially with single-surface contact: mean crush force between
-    0.8 x Wierzbicki-Abramowicz and 1.2 x Abramowicz-Jones, no fold through another.
+    0.8 x Wierzbicki-Abramowicz and 1.2 x Abramowicz-Jones, no fold through another;
+  - a bar of two tied halves on a stonewall; a cask with a tied lid dropped on a rigid target
+    (symmetric two-surface contact): impulse = change of momentum.
 
 Run as: python3 tests/verification/test_contact.py <crumple> <source dir>
 """
@@ -134,6 +136,27 @@ class ContactVerification(TempDirTest):
         # the reference, the plate's kinetic energy plus a little work, is small and the impact
         # transient moves the ratio by up to 1.5%).
         ratios = [r["energy_ratio"] for r in rows(out, "glstat.csv") if r["time"] >= 0.25]
+        self.assertLess(max(abs(r - 1.0) for r in ratios), 0.01, ratios)
+
+    def test_cask_drop_impulse_equals_momentum_change(self):
+        # A steel cask (hex tube with a hex lid tied to it) dropped lid first onto a rigid
+        # target, symmetric two-surface contact: the impulse of the contact force on the target
+        # is the cask's change of momentum; energy is conserved; the cask bounces.
+        out = self.run_deck("cask", decks().cask_drop(5.0, end=3.0e-4))
+        s = read_summary(out)
+        self.assertEqual(s["contact"]["tied_nodes"], 72)  # the tube's bottom ring
+        target = [r for r in rows(out, "rcforc.csv") if r["contact"] == 2 and r["side"] == 2]
+        impulse = sum(0.5 * (a["fz"] + b["fz"]) * (b["time"] - a["time"])
+                      for a, b in zip(target, target[1:]))
+        matsum = rows(out, "matsum.csv")
+        first, last = matsum[0]["time"], matsum[-1]["time"]
+        p0 = sum(r["z_momentum"] for r in matsum if r["time"] == first and r["part"] in (1, 2))
+        p1 = {r["part"]: r["z_momentum"] for r in matsum
+              if r["time"] == last and r["part"] in (1, 2)}
+        change = sum(p1.values()) - p0
+        self.assertAlmostEqual(-impulse, change, delta=0.01 * abs(change))
+        self.assertGreater(sum(p1.values()), 0.5 * abs(p0))
+        ratios = [r["energy_ratio"] for r in rows(out, "glstat.csv")]
         self.assertLess(max(abs(r - 1.0) for r in ratios), 0.01, ratios)
 
     def test_elastic_ball_matches_hertz(self):
