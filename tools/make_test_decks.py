@@ -16,7 +16,7 @@
                       pulled off so that welds fail during the run; a generalized weld, a
                       nodal rigid body, a tied node set, a fully constrained (CMO) anvil and
                       a spherical joint between the plate's body and block B.
-  contact_blocks.k, contact_tube.k, contact_tied.k
+  contact_blocks.k, contact_tube.k, contact_tied.k, contact_cask.k
                       contact decks of tools/contact_decks.py (two-surface, single-surface
                       with rigid plates, tied).
 """
@@ -393,8 +393,9 @@ def main() -> None:
         contact_decks.colliding_blocks("SURFACE_TO_SURFACE", 4, 5, 0.001))
     (out / "contact_tube.k").write_text(contact_decks.tube_crush(size=5.0, end=1.0))
     (out / "contact_tied.k").write_text(contact_decks.tied_bar(end=1.0e-4))
+    (out / "contact_cask.k").write_text(contact_decks.cask_drop(end=2.0e-4))
     print("wrote tests/data/decks/mixed_conditions.k, structures.k, rigid_welds.k, "
-          "contact_blocks.k, contact_tube.k and contact_tied.k")
+          "contact_blocks.k, contact_tube.k, contact_tied.k and contact_cask.k")
 
 
 if __name__ == "__main__":
