@@ -239,7 +239,17 @@ std::vector<KeywordSpec> makeTables() {
           R("FSF", 1, Z), R("VSF", 1, Z)}},
         {"card A",
          {I("SOFT"), R("SOFSCL", 0.1, Z), I("LCIDAB"), R("MAXPAR", 1.025, Z), R("SBOPT"),
-          I("DEPTH"), I("BSORT"), I("FRCFRQ", 1, Z)}}}});
+          I("DEPTH"), I("BSORT"), I("FRCFRQ", 1, Z)}},
+        // Optional cards B-D: read so that their non-default values are reported.
+        {"card B",
+         {R("PENMAX"), I("THKOPT"), I("SHLTHK"), I("SNLOG"), I("ISYM"), I("I2D3D"), R("SLDTHK"),
+          R("SLDSTF")}},
+        {"card C",
+         {I("IGAP"), I("IGNORE"), R("DPRFAC"), R("DTSTIF"), R("EDGEK"), R("UNUSED6"), R("UNUSED7"),
+          R("FLANGL")}},
+        {"card D",
+         {I("Q2TRI"), R("DTPCHK"), R("SFNBR"), R("FNLSCL"), R("DNLSCL"), I("TCSO"), I("TIEDID"),
+          I("SHLEDG")}}}});
   t.push_back(
       {"*CONTROL_SOLUTION", {{"card 1", {I("SOLN"), I("NLQ"), I("ISNAN"), I("LCINT", 100, Z)}}}});
   // ---- database -----------------------------------------------------------------------------

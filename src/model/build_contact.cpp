@@ -326,6 +326,11 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
   const Card& c2 = cur.readOptional(spec.card("card 2"));
   const Card& c3 = cur.readOptional(spec.card("card 3"));
   const Card& ca = cur.readOptional(spec.card("card A"));
+  for (const char* label : {"card B", "card C", "card D"})
+    if (!cur.atEnd()) cur.read(spec.card(label));
+  if (!cur.atEnd())
+    ctx.ignore(kw.name, "cards E and after", "not read (Crumple reads the optional cards A to D)",
+               ctx.deck.loc(cur.peek()));
   ci.where = c1.where();
   ci.fs = c2.real("FS");
   ci.fd = c2.blank("FD") || c2.real("FD") == 0.0 ? ci.fs : c2.real("FD");

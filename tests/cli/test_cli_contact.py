@@ -60,6 +60,18 @@ class Contact(TempDirTest):
         self.assertEqual(p.returncode, 1, describe(p))
         self.assertIn("*CONTACT_ERODING_SURFACE_TO_SURFACE_ID", p.stderr, describe(p))
 
+    def test_optional_cards_b_to_d_reported_and_later_lines_named(self):
+        text = decks().colliding_blocks().replace(
+            "         1         2         3         3\n",
+            "         1         2         3         3\n\n\n\n       0.5\n         1\n         1\n"
+            "         9\n", 1)
+        deck = self.write("cards.k", text)
+        p = crumple("check", deck, cwd=self.tmp)
+        self.assertEqual(p.returncode, 0, describe(p))
+        for fragment in ("PENMAX: value 0.5", "IGAP: value 1", "Q2TRI: value 1",
+                         "cards E and after: not read"):
+            self.assertIn(fragment, p.stdout, describe(p))
+
     def test_bad_contact_cards_name_file_line_and_field(self):
         base = decks().colliding_blocks()
         cases = [
