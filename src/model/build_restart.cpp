@@ -10,8 +10,7 @@
 namespace crumple::model {
 
 void readRestartDeck(const std::filesystem::path& path, Controls& controls) {
-  using namespace build;
-  using Handler = void (*)(Context&, const deck::Keyword&, const KeywordOptions&);
+  using namespace build;  // Context, KeywordOptions, Handler and the keyword readers
   static const std::pair<std::string_view, Handler> kAllowed[] = {
       {"*CONTROL_TERMINATION", readControlTermination},
       {"*DATABASE_BINARY_D3PLOT", readDatabaseD3plot},
