@@ -3,30 +3,18 @@
 #pragma once
 
 #include <array>
-#include <cmath>
+
+#include "util/vec3.hpp"
 
 namespace crumple::contact {
 
-using Vec3 = std::array<double, 3>;
-
-inline Vec3 sub(const Vec3& a, const Vec3& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-inline Vec3 add(const Vec3& a, const Vec3& b) {
-  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-}
-inline Vec3 scale(const Vec3& a, double s) {
-  return {a[0] * s, a[1] * s, a[2] * s};
-}
-inline double dot(const Vec3& a, const Vec3& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-inline Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-inline double norm(const Vec3& a) {
-  return std::sqrt(dot(a, a));
-}
+using util::add;
+using util::cross;
+using util::dot;
+using util::norm;
+using util::scale;
+using util::sub;
+using util::Vec3;
 
 struct Projection {
   std::array<double, 4> N{};  // weights of the segment nodes at the closest point

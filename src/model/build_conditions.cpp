@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "model/build_context.hpp"
+#include "util/vec3.hpp"
 
 namespace crumple::model::build {
 
@@ -18,19 +19,10 @@ using deck::Card;
 using deck::CardCursor;
 using deck::keywordSpec;
 
-Vec3 sub(const Vec3& a, const Vec3& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot(const Vec3& a, const Vec3& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec3 unit(const Vec3& a) {
-  const double n = std::sqrt(dot(a, a));
-  return n == 0.0 ? Vec3{} : Vec3{a[0] / n, a[1] / n, a[2] / n};
-}
+using util::cross;
+using util::dot;
+using util::sub;
+using util::unit;
 
 std::vector<int32_t> allNodes(const Model& m) {
   std::vector<int32_t> v(m.nodes.size());

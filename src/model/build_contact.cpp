@@ -7,6 +7,7 @@
 #include <map>
 
 #include "model/build_context.hpp"
+#include "util/vec3.hpp"
 
 namespace crumple::model::build {
 
@@ -15,15 +16,9 @@ using deck::Card;
 using deck::CardCursor;
 using deck::keywordSpec;
 
-Vec3 sub(const Vec3& a, const Vec3& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot(const Vec3& a, const Vec3& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
+using util::cross;
+using util::dot;
+using util::sub;
 
 // Bulk modulus of the part's material (rigid parts give theirs for contact only).
 double bulkModulus(const Model& m, int32_t part) {

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "model/build_context.hpp"
+#include "util/vec3.hpp"
 
 namespace crumple::model::build {
 
@@ -17,15 +18,9 @@ using deck::keywordSpec;
 
 constexpr std::string_view kRange[8] = {"B1", "E1", "B2", "E2", "B3", "E3", "B4", "E4"};
 
-Vec3 sub(const Vec3& a, const Vec3& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double norm(const Vec3& a) {
-  return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-}
+using util::cross;
+using util::norm;
+using util::sub;
 
 void sortUnique(std::vector<int32_t>& v) {
   std::sort(v.begin(), v.end());
