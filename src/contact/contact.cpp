@@ -51,9 +51,7 @@ struct Contact::Pass {
   double max_node_half = 0.0;
   std::vector<double> box;      // per segment: widened bounding box (lo xyz, hi xyz), each cycle
   std::vector<int32_t> needed;  // segments in this rank's candidate lists (ascending)
-  double sofscl = 0.0, vdc = 0.0, fs = 0.0, fd = 0.0, dc = 0.0, birth = 0.0, death = 0.0;
-  int soft = 0;
-  bool tied = false;  // nodes held to the point of the segment they started on
+  bool tied = false;            // nodes held to the point of the segment they started on
   // Bucket grid (rebuilt at each sort).
   std::array<double, 3> lo{};
   double cell = 1.0;
@@ -102,7 +100,6 @@ Contact::Contact(const model::Model& model, domain::Subdomain& sd, comm::Communi
 
   auto addPass = [&](int32_t iface, const model::ContactSurface& nodes,
                      const model::ContactSurface& segs, double sf, bool self) {
-    const auto& ci = model.contacts[std::size_t(iface)];
     Pass p;
     p.iface = iface;
     p.self = self;
@@ -138,14 +135,6 @@ Contact::Contact(const model::Model& model, domain::Subdomain& sd, comm::Communi
         p.near_node.insert(p.near_node.end(), v.begin(), v.end());
       }
     }
-    p.sofscl = ci.sofscl;
-    p.soft = ci.soft;
-    p.vdc = ci.vdc;
-    p.fs = ci.fs;
-    p.fd = ci.fd;
-    p.dc = ci.dc;
-    p.birth = ci.birth;
-    p.death = ci.death;
     num_checks_ += int32_t(p.node.size());
     for (std::size_t k = 0; k < p.node.size(); ++k) check_pass_.push_back(int32_t(passes_.size()));
     passes_.push_back(std::move(p));
@@ -844,9 +833,10 @@ void Contact::tiedForce(const Pass& p, int32_t check, double dt_prev,
   if (dt_prev > 0.0 && m_eff > 0.0) k = std::min(k, kStableFraction * m_eff / (dt_prev * dt_prev));
   Vec3 f = scale(g, k);
   double dissipated = 0.0;
-  if (p.vdc > 0.0) {
+  const auto& ci = model_.contacts[std::size_t(p.iface)];
+  if (ci.vdc > 0.0) {
     const Vec3 dv = sub(vc, at(v_, node));
-    const double c_damp = 0.01 * p.vdc * 2.0 * std::sqrt(k * m_eff);
+    const double c_damp = 0.01 * ci.vdc * 2.0 * std::sqrt(k * m_eff);
     f = add(f, scale(dv, c_damp));
     dissipated = c_damp * dot(dv, dv) * dt_prev;
   }
@@ -913,7 +903,8 @@ void Contact::computeForces(double time, double dt_prev) {
     const auto i = std::size_t(active);
     const int32_t check = my_checks_[i];
     const Pass& p = passes_[std::size_t(check_pass_[std::size_t(check)])];
-    if (time < p.birth || time > p.death) continue;
+    const auto& ci = model_.contacts[std::size_t(p.iface)];
+    if (time < ci.birth || time > ci.death) continue;
     Candidate best;
     if (p.tied) {
       if (tie_seg_[std::size_t(check)] < 0) continue;
@@ -946,7 +937,7 @@ void Contact::computeForces(double time, double dt_prev) {
     double k = p.seg_k[std::size_t(best.seg)];
     // SOFT = 1: a stiffness from the masses and the step, so soft foam against steel still
     // stops (LS-DYNA Theory Manual, "soft constraint penalty": 0.5 SOFSCL m / dt^2).
-    if (p.soft == 1 && dt0_ > 0.0) k = std::max(k, 0.5 * p.sofscl * m_eff / (dt0_ * dt0_));
+    if (ci.soft == 1 && dt0_ > 0.0) k = std::max(k, 0.5 * ci.sofscl * m_eff / (dt0_ * dt0_));
     // Stability: the contact spring adds k / m_eff to the square of the highest frequency of
     // the nodes it joins, which the element step (TSSFAC 0.9) leaves little room for; a node
     // of a symmetric interface may carry several springs. Capping k at kStableFraction
@@ -957,16 +948,16 @@ void Contact::computeForces(double time, double dt_prev) {
     const double vn = dot(vrel, n);
     double fn = k * pen;
     // Viscous damping, VDC percent of critical for the node-segment pair.
-    if (p.vdc > 0.0) fn -= 0.01 * p.vdc * 2.0 * std::sqrt(k * m_eff) * vn;
+    if (ci.vdc > 0.0) fn -= 0.01 * ci.vdc * 2.0 * std::sqrt(k * m_eff) * vn;
     fn = std::max(fn, 0.0);
     // Energy dissipated by the damping part of fn over the last step (v(n-1/2) dt(n-1/2)).
     double dissipated = -(fn - k * pen) * vn * dt_prev;
     Vec3 ft{};
-    if (p.fs > 0.0 || p.fd > 0.0) {
+    if (ci.fs > 0.0 || ci.fd > 0.0) {
       // Coulomb friction with an elastic stick (LS-DYNA Theory Manual, "Friction"): the
       // tangential force grows by k times the slip increment and is capped at mu fn.
       const Vec3 vt = sub(vrel, scale(n, vn));
-      const double mu = p.fd + (p.fs - p.fd) * std::exp(-p.dc * norm(vt));
+      const double mu = ci.fd + (ci.fs - ci.fd) * std::exp(-ci.dc * norm(vt));
       Vec3 old = at(friction_, std::size_t(check));
       old = sub(old, scale(n, dot(old, n)));
       ft = sub(old, scale(vt, k * dt_prev));
@@ -998,11 +989,17 @@ void Contact::computeForces(double time, double dt_prev) {
     std::copy_n(&records_[kRecord * order[r]], kRecord, &sorted[kRecord * r]);
   records_ = std::move(sorted);
 
-  std::fill(friction_.begin(), friction_.end(), 0.0);
+  // The history of the checks in contact last cycle is cleared (not of every check: this is
+  // the cycle's hot path, and most checks are never in contact), then set from the records.
+  for (const int32_t c : in_contact_) {
+    const auto check = std::size_t(c);
+    for (int k = 0; k < 3; ++k) friction_[3 * check + std::size_t(k)] = 0.0;
+    last_seg_[check] = -1;
+    last_side_[check] = 0;
+    entry_[check] = 0.0;
+  }
+  in_contact_.clear();
   std::fill(stored_.begin(), stored_.end(), 0.0);
-  std::fill(last_seg_.begin(), last_seg_.end(), -1);
-  std::fill(last_side_.begin(), last_side_.end(), int8_t(0));
-  std::fill(entry_.begin(), entry_.end(), 0.0);
   for (std::size_t r = 0; r < nrec; ++r) {
     const double* rec = &records_[kRecord * r];
     const auto check = std::size_t(rec[0]);
@@ -1011,6 +1008,7 @@ void Contact::computeForces(double time, double dt_prev) {
     const auto& sn = p.seg[std::size_t(rec[1])];
     for (int c = 0; c < 3; ++c) friction_[3 * check + std::size_t(c)] = rec[9 + c];
     last_seg_[check] = int32_t(rec[1]);
+    in_contact_.push_back(int32_t(check));
     last_side_[check] = int8_t(rec[15]);
     entry_[check] = rec[16];
     stored_[std::size_t(p.iface)] += rec[13];
@@ -1099,17 +1097,7 @@ std::vector<char> Contact::saveState() const {
   util::ArchiveWriter w;
   w.put<int64_t>(num_checks_);
   w.put(x);
-  w.put(x_sorted_);
-  w.put(friction_);
-  w.put(last_seg_);
-  w.put(last_side_);
-  w.put(entry_);
-  w.put(stored_);
-  w.put(dissipated_);
-  w.put(cycles_since_sort_);
-  w.put(stats_.sorts);
-  w.put(stats_.rebalances);
-  w.put(stats_.max_penetration_ratio);
+  const_cast<Contact*>(this)->history([&](const auto& v) { w.put(v); });
   return std::move(w.bytes());
 }
 
@@ -1122,19 +1110,12 @@ void Contact::loadState(const std::vector<char>& bytes) {
                            " checks, this deck " + std::to_string(num_checks_));
   std::vector<double> x;
   r.get(x);
-  r.get(x_sorted_);
-  r.get(friction_);
-  r.get(last_seg_);
-  r.get(last_side_);
-  r.get(entry_);
-  r.get(stored_);
-  r.get(dissipated_);
-  r.get(cycles_since_sort_);
-  r.get(stats_.sorts);
-  r.get(stats_.rebalances);
-  r.get(stats_.max_penetration_ratio);
+  history([&](auto& v) { r.get(v); });
   if (!r.atEnd() || x.size() != x_.size() || x_sorted_.size() != x_.size())
     throw util::InputError("restart dump: the contact section is inconsistent");
+  in_contact_.clear();
+  for (int32_t c = 0; c < num_checks_; ++c)
+    if (last_seg_[std::size_t(c)] >= 0) in_contact_.push_back(c);
   // The buckets, boxes and candidate lists of the last sort, rebuilt from its positions.
   x_ = x_sorted_;
   sortAll();

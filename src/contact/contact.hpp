@@ -86,6 +86,22 @@ class Contact {
   std::size_t localChecks() const { return my_checks_.size(); }
 
  private:
+  // Every piece of state a restart needs besides the positions of the last pass, in dump
+  // order: one list for saveState and loadState.
+  template <class F>
+  void history(F&& f) {
+    f(x_sorted_);
+    f(friction_);
+    f(last_seg_);
+    f(last_side_);
+    f(entry_);
+    f(stored_);
+    f(dissipated_);
+    f(cycles_since_sort_);
+    f(stats_.sorts);
+    f(stats_.rebalances);
+    f(stats_.max_penetration_ratio);
+  }
   struct Pass;  // one side's nodes against the other side's segments
   struct Candidate;
   // Every contact node from its owner (set-up, sorts); the nodes this rank reads (each cycle).
@@ -133,11 +149,12 @@ class Contact {
     std::vector<double> buffer;  // 6 per node: x, v
   };
   std::vector<Route> send_routes_, recv_routes_;
-  std::vector<double> x_sorted_;   // positions at the last bucket sort
-  std::vector<double> x_prev_;     // positions of the last cycle
-  std::vector<int32_t> last_seg_;  // per check: the segment in contact last cycle, or -1
-  std::vector<int8_t> last_side_;  // per check: the side of that (shell) segment, or 0
-  std::vector<double> entry_;      // per check: penetration at the start of the contact
+  std::vector<double> x_sorted_;     // positions at the last bucket sort
+  std::vector<double> x_prev_;       // positions of the last cycle
+  std::vector<int32_t> last_seg_;    // per check: the segment in contact last cycle, or -1
+  std::vector<int32_t> in_contact_;  // checks with a record last cycle (their history is set)
+  std::vector<int8_t> last_side_;    // per check: the side of that (shell) segment, or 0
+  std::vector<double> entry_;        // per check: penetration at the start of the contact
   // Tied checks: the segment, its four weights and the normal offset of the tied point.
   std::vector<int32_t> tie_seg_;
   std::vector<double> tie_weight_, tie_offset_;
