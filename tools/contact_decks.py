@@ -20,7 +20,7 @@ import pathlib
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from deckgen import Mesh, block  # noqa: E402
+from deckgen import Mesh, block, grid_solids  # noqa: E402
 
 
 def _velocities(ids, v) -> str:
@@ -126,12 +126,7 @@ def hertz_sphere(n: int = 16, radius: float = 0.01, E: float = 1.0e7, nu: float 
                 f = (1.0 - r_inf) + r_inf * r_inf / r_2 if r_2 > 0 else 1.0
                 sx, sy, sz = f * x, f * y, f * z
                 grid[i, j, k] = m.add_node(radius * sx, radius * sy, radius * (sz + 1.0) + 1e-5)
-    for k in range(n):
-        for j in range(n):
-            for i in range(n):
-                m.add_solid(1, [grid[i, j, k], grid[i + 1, j, k], grid[i + 1, j + 1, k],
-                                grid[i, j + 1, k], grid[i, j, k + 1], grid[i + 1, j, k + 1],
-                                grid[i + 1, j + 1, k + 1], grid[i, j + 1, k + 1]])
+    grid_solids(m, 1, grid, (n, n, n))
     ball = list(range(1, len(m.nodes) + 1))
     half = 1.5 * radius
     block(m, 2, (-half, -half, -0.2 * radius), (2 * half, 2 * half, 0.2 * radius), (6, 6, 1))
@@ -325,12 +320,7 @@ def cask_drop(v: float = 5.0, end: float = 3.0e-4, n_theta: int = 24) -> str:
                 x, y = 2.0 * i / n - 1.0, 2.0 * j / n - 1.0
                 disk[i, j, k] = m.add_node(R * x * math.sqrt(1 - y * y / 2),
                                            R * y * math.sqrt(1 - x * x / 2), t_lid * k / 2)
-    for k in range(2):
-        for j in range(n):
-            for i in range(n):
-                m.add_solid(2, [disk[i, j, k], disk[i + 1, j, k], disk[i + 1, j + 1, k],
-                                disk[i, j + 1, k], disk[i, j, k + 1], disk[i + 1, j, k + 1],
-                                disk[i + 1, j + 1, k + 1], disk[i, j + 1, k + 1]])
+    grid_solids(m, 2, disk, (n, n, 2))
     cask_nodes = list(range(1, len(m.nodes) + 1))
     block(m, 3, (-0.15, -0.15, -0.0405), (0.3, 0.3, 0.04), (6, 6, 1))
     return f"""*KEYWORD

@@ -67,13 +67,19 @@ def block(mesh: Mesh, part: int, origin, size, divisions) -> dict:
         for j in range(ny + 1):
             for i in range(nx + 1):
                 grid[i, j, k] = mesh.add_node(x0 + lx * i / nx, y0 + ly * j / ny, z0 + lz * k / nz)
+    grid_solids(mesh, part, grid, divisions)
+    return grid
+
+
+def grid_solids(mesh: Mesh, part: int, grid: dict, divisions) -> None:
+    """The nx*ny*nz hexes of a structured grid of node ids keyed (i, j, k), k slowest."""
+    nx, ny, nz = divisions
     for k in range(nz):
         for j in range(ny):
             for i in range(nx):
                 mesh.add_solid(part, [grid[i, j, k], grid[i + 1, j, k], grid[i + 1, j + 1, k],
                                       grid[i, j + 1, k], grid[i, j, k + 1], grid[i + 1, j, k + 1],
                                       grid[i + 1, j + 1, k + 1], grid[i, j + 1, k + 1]])
-    return grid
 
 
 def quarter_cylinder(mesh: Mesh, part: int, radius: float, length: float, n_core: int,
