@@ -183,16 +183,6 @@ void Contact::gatherNodes() {
   // All contact nodes, from their owners: at set-up and at every bucket sort (positions,
   // velocities, and the owner's positions of the previous pass for the crossing rule).
   const std::size_t ncn = cn_model_.size();
-  if (!comm_.distributed()) {
-    for (std::size_t i = 0; i < ncn; ++i) {
-      const auto l = std::size_t(cn_local_[i]);
-      for (int c = 0; c < 3; ++c) {
-        x_[3 * i + std::size_t(c)] = sd_.x[3 * l + std::size_t(c)];
-        v_[3 * i + std::size_t(c)] = sd_.v[3 * l + std::size_t(c)];
-      }
-    }
-    return;
-  }
   constexpr std::size_t kWidth = 11;
   std::vector<double> mine;
   for (std::size_t i = 0; i < ncn; ++i) {
@@ -851,11 +841,7 @@ void Contact::computeForces(double time, double dt_prev) {
   const auto t0 = Clock::now();
   // The needed entries of x_ become x(n-1) (they were read last cycle), then x(n).
   std::swap(x_prev_, x_);
-  if (comm_.distributed()) {
-    gatherNeeded();
-  } else {
-    gatherNodes();
-  }
+  gatherNeeded();
   const auto t1 = Clock::now();
   // Re-sort when some node may have travelled half the margin since the last sort: a node
   // and a segment closing at that speed stay within the 27 buckets searched. Each rank looks
@@ -878,8 +864,9 @@ void Contact::computeForces(double time, double dt_prev) {
       (max_sort_interval_ > 0 && cycles_since_sort_ >= max_sort_interval_)) {
     cycles_since_sort_ = 0;
     resorted = true;
-    // Every node, from its owner (with its position of the last pass, for the crossing rule).
-    if (comm_.distributed()) gatherNodes();
+    // Every node, from its owner (with its position of the last pass, for the crossing rule);
+    // serially too: serial is one rank.
+    gatherNodes();
     maybeRebalance();
     sortAll();
     ++stats_.sorts;
