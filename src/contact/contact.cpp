@@ -664,6 +664,26 @@ void Contact::maybeRebalance() {
   ++stats_.rebalances;
 }
 
+void Contact::recordOwnedPositions() {
+  for (std::size_t i = 0; i < cn_model_.size(); ++i)
+    if (cn_owned_[i])
+      for (int c = 0; c < 3; ++c)
+        x_owned_prev_[3 * i + std::size_t(c)] =
+            sd_.x[3 * std::size_t(cn_local_[i]) + std::size_t(c)];
+}
+
+void Contact::moveNode(std::size_t node, const Vec3& dx) {
+  // x and x0 together: a node moved before the first cycle is not strained.
+  const int32_t l = cn_local_[node];
+  for (int c = 0; c < 3; ++c) {
+    x_[3 * node + std::size_t(c)] += dx[std::size_t(c)];
+    if (l >= 0) {
+      sd_.x[3 * std::size_t(l) + std::size_t(c)] += dx[std::size_t(c)];
+      sd_.x0[3 * std::size_t(l) + std::size_t(c)] += dx[std::size_t(c)];
+    }
+  }
+}
+
 void Contact::tieNodes(const Pass& p, bool keep_offset) {
   // Each node is tied to the nearest point of the segment it lies on (within a tolerance of
   // the segment's size, as DYNA3D's tied slide surfaces), for the whole run; without _OFFSET
@@ -704,14 +724,7 @@ void Contact::tieNodes(const Pass& p, bool keep_offset) {
       continue;
     }
     const Vec3 dx = sub(best_pr.point, x);
-    const int32_t l = cn_local_[node];
-    for (int c = 0; c < 3; ++c) {
-      x_[3 * node + std::size_t(c)] += dx[std::size_t(c)];
-      if (l >= 0) {
-        sd_.x[3 * std::size_t(l) + std::size_t(c)] += dx[std::size_t(c)];
-        sd_.x0[3 * std::size_t(l) + std::size_t(c)] += dx[std::size_t(c)];
-      }
-    }
+    moveNode(node, dx);
   }
 }
 
@@ -729,11 +742,7 @@ void Contact::initialize(double dt0) {
     const auto all = comm_.allGather(mine);
     for (std::size_t k = 0; k + 2 <= all.size(); k += 2) mass_[std::size_t(all[k])] = all[k + 1];
   }
-  for (std::size_t i = 0; i < cn_model_.size(); ++i)
-    if (cn_owned_[i])
-      for (int c = 0; c < 3; ++c)
-        x_owned_prev_[3 * i + std::size_t(c)] =
-            sd_.x[3 * std::size_t(cn_local_[i]) + std::size_t(c)];
+  recordOwnedPositions();
   x_prev_.assign(x_.size(), 0.0);
   gatherNodes();
   x_prev_ = x_;
@@ -773,24 +782,13 @@ void Contact::initialize(double dt0) {
       }
       // DYNA3D moves the node back onto the surface (and says so).
       const Vec3 dx = scale(best.push, -best.gap);
-      const int32_t l = cn_local_[node];
-      for (int c = 0; c < 3; ++c) {
-        x_[3 * node + std::size_t(c)] += dx[std::size_t(c)];
-        if (l >= 0) {
-          sd_.x[3 * std::size_t(l) + std::size_t(c)] += dx[std::size_t(c)];
-          sd_.x0[3 * std::size_t(l) + std::size_t(c)] += dx[std::size_t(c)];
-        }
-      }
+      moveNode(node, dx);
       moved_initial_ = true;
     }
   }
   x_sorted_ = x_;
   x_prev_ = x_;
-  for (std::size_t i = 0; i < cn_model_.size(); ++i)
-    if (cn_owned_[i])
-      for (int c = 0; c < 3; ++c)
-        x_owned_prev_[3 * i + std::size_t(c)] =
-            sd_.x[3 * std::size_t(cn_local_[i]) + std::size_t(c)];
+  recordOwnedPositions();
   for (auto& p : passes_) updateBoxes(p, false);
   buildCandidateLists();
   buildRoutes();
@@ -872,11 +870,7 @@ void Contact::computeForces(double time, double dt_prev) {
     ++stats_.sorts;
   }
   // The owners' positions of this pass, sent with the next full gather.
-  for (std::size_t i = 0; i < cn_model_.size(); ++i)
-    if (cn_owned_[i])
-      for (int c = 0; c < 3; ++c)
-        x_owned_prev_[3 * i + std::size_t(c)] =
-            sd_.x[3 * std::size_t(cn_local_[i]) + std::size_t(c)];
+  recordOwnedPositions();
   for (auto& p : passes_) updateBoxes(p, !resorted);
   if (resorted) {
     buildCandidateLists();

@@ -119,6 +119,10 @@ class Contact {
   void collectCandidates(const Pass& pass, int32_t check, double margin,
                          std::vector<int32_t>& out) const;
   void buildCandidateLists();
+  // Owned nodes' current positions into x_owned_prev_ (sent with the next full gather).
+  void recordOwnedPositions();
+  // Moves a contact node before the first cycle (initial penetration, tie), on every rank.
+  void moveNode(std::size_t node, const std::array<double, 3>& dx);
   void tieNodes(const Pass& pass, bool keep_offset);
   void tiedForce(const Pass& pass, int32_t check, double dt_prev,
                  std::vector<double>& records) const;

@@ -77,32 +77,20 @@
 #include <variant>
 
 #include "materials/uniaxial.hpp"
+#include "util/vec3.hpp"
 
 namespace crumple::elements {
 
 namespace {
 
-using Vec = std::array<double, 3>;
+using Vec = util::Vec3;
 using Quat = std::array<double, 4>;  // w, x, y, z
-
-inline Vec sub(const Vec& a, const Vec& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-inline Vec add(const Vec& a, const Vec& b) {
-  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-}
-inline Vec scale(const Vec& a, double s) {
-  return {a[0] * s, a[1] * s, a[2] * s};
-}
-inline double dot(const Vec& a, const Vec& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-inline Vec cross(const Vec& a, const Vec& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-inline double norm(const Vec& a) {
-  return std::sqrt(dot(a, a));
-}
+using util::add;
+using util::cross;
+using util::dot;
+using util::norm;
+using util::scale;
+using util::sub;
 inline Vec nodeVec(const domain::NodeVector& v, int32_t n) {
   const double* p = &v[3 * static_cast<std::size_t>(n)];
   return {p[0], p[1], p[2]};
