@@ -1,6 +1,7 @@
 // The crumple subcommands, callable from main() and from tests.
 #pragma once
 
+#include <cstdint>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -24,6 +25,10 @@ struct RunOptions {
   std::string restart_deck;         // *CONTROL_TERMINATION / *DATABASE_ changes at restart
   double checkpoint_every = 0.0;    // wall seconds between dumps; 0: none
   std::vector<double> energy_band;  // --energy-band LO,HI: error when the energy ratio leaves it
+  int64_t cycles = 0;               // --cycles N: stop after N cycles (as ENDCYC); 0: no limit
+  // Run a deck that uses unsupported features which change the answer, leaving them out.
+  bool ignore_unsupported = false;
+  bool implicit_as_explicit = false;  // run an implicit deck explicitly
 };
 
 // Exit status: 0 normal termination, 1 error termination (ARCHITECTURE.md, Commands).
@@ -32,6 +37,8 @@ int runCommand(const RunOptions& opt);
 struct CheckOptions {
   std::string deck;
   bool strict = false;
+  bool json = false;  // the report as one JSON object on stdout
+  bool implicit_as_explicit = false;
 };
 int checkCommand(const CheckOptions& opt, std::FILE* out);
 

@@ -33,6 +33,15 @@ int dispatch(int argc, char** argv) {
   run_cmd->add_option("--endtime", run.end_time, "End time, overriding *CONTROL_TERMINATION")
       ->check(CLI::PositiveNumber);
   run_cmd->add_flag("--strict", run.strict, "Treat unsupported keywords as errors");
+  run_cmd
+      ->add_option("--cycles", run.cycles, "Stop after N cycles (as *CONTROL_TERMINATION ENDCYC)")
+      ->check(CLI::PositiveNumber);
+  run_cmd->add_flag("--ignore-unsupported", run.ignore_unsupported,
+                    "Run a deck that uses unsupported features which change the answer, leaving "
+                    "them out (said in run.log and summary.json)");
+  run_cmd->add_flag("--implicit-as-explicit", run.implicit_as_explicit,
+                    "Run an implicit deck (*CONTROL_IMPLICIT_GENERAL IMFLAG 1) explicitly; the "
+                    "answer will differ");
   run_cmd->add_flag("--overwrite", run.overwrite,
                     "Replace the results of an earlier run in the results folder");
   run_cmd->add_flag("-q,--quiet", run.quiet, "No progress line");
@@ -70,6 +79,9 @@ int dispatch(int argc, char** argv) {
       ->required()
       ->check(CLI::ExistingFile);
   check_cmd->add_flag("--strict", check.strict, "Exit with an error if anything is unsupported");
+  check_cmd->add_flag("--json", check.json, "Write the report as one JSON object");
+  check_cmd->add_flag("--implicit-as-explicit", check.implicit_as_explicit,
+                      "Check an implicit deck as it would run explicitly");
 
   std::string part_deck, part_dir, part_method = "metis";
   int part_count = 0;

@@ -95,7 +95,8 @@ void Card::parseField(std::size_t i, std::string_view raw) {
   if (s[0] == '&' || negate || (s.size() > 1 && s[0] == '+' && s[1] == '&')) {
     const std::string name(trim(s.substr(s[0] == '&' ? 1 : 2)));
     auto it = deck_->parameters.find(name);
-    if (it == deck_->parameters.end()) fail(f.name, "parameter '" + name + "' is not defined");
+    if (it == deck_->parameters.end())
+      throw util::FormatError(context(f.name) + ": parameter '" + name + "' is not defined");
     const Parameter& p = it->second;
     if (f.type == FieldType::Text) {
       v.text = p.type == 'C' ? p.text : fmtNumber(p.value);
@@ -116,13 +117,13 @@ void Card::parseField(std::size_t i, std::string_view raw) {
       return;
     case FieldType::Real: {
       const auto r = parseReal(s);
-      if (!r) fail(f.name, "'" + v.text + "' is not a number");
+      if (!r) throw util::FormatError(context(f.name) + ": '" + v.text + "' is not a number");
       v.num = *r;
       return;
     }
     case FieldType::Int: {
       const auto k = parseInteger(s);
-      if (!k) fail(f.name, "'" + v.text + "' is not an integer");
+      if (!k) throw util::FormatError(context(f.name) + ": '" + v.text + "' is not an integer");
       v.inum = *k;
       v.num = static_cast<double>(*k);
       return;

@@ -252,6 +252,11 @@ std::vector<KeywordSpec> makeTables() {
           I("SHLEDG")}}}});
   t.push_back(
       {"*CONTROL_SOLUTION", {{"card 1", {I("SOLN"), I("NLQ"), I("ISNAN"), I("LCINT", 100, Z)}}}});
+  // IMFLAG 0 explicit, 1 implicit, 2 explicit then implicit springback, < 0 a curve of time.
+  t.push_back({"*CONTROL_IMPLICIT_GENERAL",
+               {{"card 1",
+                 {I("IMFLAG"), R("DT0", 0, Q), I("IMFORM", 2, Q), I("NSBS", 1, Q), I("IGS", 2, Q),
+                  I("CNSTN", 0, Q), I("FORM", 0, Q), I("ZERO_V", 0, Q)}}}});
   // ---- database -----------------------------------------------------------------------------
   for (std::string_view name : {"*DATABASE_GLSTAT", "*DATABASE_MATSUM", "*DATABASE_NODOUT",
                                 "*DATABASE_RWFORC", "*DATABASE_RCFORC"})

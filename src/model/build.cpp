@@ -41,20 +41,46 @@ std::string_view kindName(Kind kind) {
   return "entity";
 }
 
-void Context::reportUnsupported(const deck::Keyword& kw, std::string_view reason) {
+void Context::reportUnsupported(const deck::Keyword& kw, std::string_view reason,
+                                bool changes_answer, std::string feature) {
   const auto key = std::make_pair(kw.name, std::string(reason));
   auto it = unsupported_row_.find(key);
   if (it == unsupported_row_.end()) {
     unsupported_row_.emplace(key, model.unsupported.size());
-    model.unsupported.push_back({kw.name, std::string(reason), 1, deck.loc(kw)});
+    if (feature.empty()) feature = kw.name;
+    model.unsupported.push_back(
+        {kw.name, std::string(reason), 1, deck.loc(kw), changes_answer, std::move(feature)});
   } else {
     ++model.unsupported[it->second].count;
   }
 }
 
-void Context::reject(const deck::Card& card, std::string_view field, const std::string& message) {
+void Context::recordError(std::string message) {
+  // The same problem met again (every element of a part without a material) is listed once.
+  if (!errors_seen_.insert(message).second) return;
+  model.errors.push_back({std::move(message)});
+}
+
+void Context::fail(std::string message) {
+  if (!options.collect_errors) throw util::InputError(message);
+  recordError(std::move(message));
+}
+
+void Context::reject(const deck::Card& card, std::string_view field, const std::string& message,
+                     std::string feature) {
   if (!options.allow_unsupported) card.fail(field, message);
-  reportUnsupported(card.keyword(), std::string(field) + ": " + message);
+  if (feature.empty()) feature = card.keyword().name + " " + std::string(field);
+  reportUnsupported(card.keyword(), std::string(field) + ": " + message, true, std::move(feature));
+}
+
+void Context::checkPartUsable(const deck::Card& c, int32_t part) {
+  const PartProblem& p = part_problem[static_cast<std::size_t>(part)];
+  if (p.empty()) return;
+  // The error is where the part or its definition is written; the element says why it matters.
+  if (p.feature.empty())
+    throw util::InputError(p.message + " (the part is used by " + c.keyword().name + " at " +
+                           c.where().str() + ")");
+  reject(c, "PID", p.message, p.feature);
 }
 
 void Context::rejectKeyword(const deck::Keyword& kw, const std::string& message) {
@@ -98,12 +124,29 @@ std::string Context::unsupportedDefinition(Kind kind, int64_t id) const {
          u->second.second.str() + ")";
 }
 
+std::string Context::unsupportedFeature(Kind kind, int64_t id) const {
+  auto u = unsupported_.find({kind, id});
+  if (u == unsupported_.end()) return {};
+  std::string what = u->second.first;
+  if (const auto t = what.find("_TITLE"); t != std::string::npos) what.erase(t, 6);
+  return what;
+}
+
+bool Context::isDefined(Kind kind, int64_t id) const {
+  return defined_.count({kind, id}) > 0 || unsupported_.count({kind, id}) > 0;
+}
+
 bool Context::isUnsupported(Kind kind, int64_t id) const {
   return unsupported_.count({kind, id}) > 0;
 }
 
 void Context::defineBroken(Kind kind, int64_t id, std::string message) {
   broken_.emplace(std::make_pair(kind, id), std::move(message));
+}
+
+std::string Context::brokenMessage(Kind kind, int64_t id) const {
+  auto b = broken_.find({kind, id});
+  return b == broken_.end() ? std::string{} : b->second;
 }
 
 std::string Context::undefinedMessage(Kind kind, int64_t id) const {
@@ -129,11 +172,15 @@ int32_t Context::part(const deck::Card& card, std::string_view field, int64_t id
   return i;
 }
 
-int32_t Context::curve(const deck::Card& card, std::string_view field, int64_t id) const {
+int32_t Context::curve(const deck::Card& card, std::string_view field, int64_t id) {
   if (id == 0) card.fail(field, "a curve id is required");
   const int32_t i = model.curveIndex(id);
-  if (i == kNone) card.fail(field, undefinedMessage(Kind::Curve, id));
-  return i;
+  if (i != kNone) return i;
+  // A curve of a kind Crumple does not read (*DEFINE_CURVE_SMOOTH, *DEFINE_TABLE): a missing
+  // feature, not an input error; `check` lists it and skips the record.
+  if (!isUnsupported(Kind::Curve, id)) card.fail(field, undefinedMessage(Kind::Curve, id));
+  reject(card, field, undefinedMessage(Kind::Curve, id), unsupportedFeature(Kind::Curve, id));
+  throw SkipRecord{};
 }
 
 namespace {
@@ -327,7 +374,8 @@ const std::vector<Meaning>& meanings() {
       {"*CONTROL_OUTPUT", 6, readIgnoredControl, {}},
       {"*CONTROL_SHELL", 6, readControlShell, {}},
       {"*CONTROL_CONTACT", 5, readControlContact, {}},
-      {"*CONTROL_SOLUTION", 6, readIgnoredControl, {}},
+      {"*CONTROL_SOLUTION", 6, readControlSolution, {}},
+      {"*CONTROL_IMPLICIT_GENERAL", 6, readControlImplicitGeneral, {}},
       {"*DATABASE_EXTENT_BINARY", 6, readIgnoredControl, {}},
       {"*DATABASE_GLSTAT", 6, readDatabaseAscii, {}},
       {"*DATABASE_MATSUM", 6, readDatabaseAscii, {}},
@@ -343,27 +391,59 @@ const std::vector<Meaning>& meanings() {
 }
 constexpr int kPhases = 7;
 
-// Why a keyword without a meaning is not acted on (first matching prefix wins).
-std::string_view unsupportedReason(std::string_view name) {
-  static const std::vector<std::pair<std::string_view, std::string_view>> reasons = {
-      {"*CONTROL_IMPLICIT", "implicit analysis only"},
-      {"*CONTROL_PARALLEL", "ignored: MPP/SMP option"},
-      {"*CONTROL_MPP", "ignored: MPP/SMP option"},
-      {"*CONTROL_CPU", "ignored: MPP/SMP option"},
-      {"*CONTROL_THERMAL", "thermal analysis not supported"},
-      {"*MAT_THERMAL", "thermal analysis not supported"},
-      {"*BOUNDARY_TEMPERATURE", "thermal analysis not supported"},
-      {"*BOUNDARY_CONVECTION", "thermal analysis not supported"},
-      {"*BOUNDARY_FLUX", "thermal analysis not supported"},
-      {"*BOUNDARY_RADIATION", "thermal analysis not supported"},
-      {"*INITIAL_TEMPERATURE", "thermal analysis not supported"},
-      {"*LOAD_THERMAL", "thermal analysis not supported"},
+// Why a keyword without a meaning is not acted on, and whether skipping it changes the
+// answer (first matching prefix wins). What is not listed is "not supported" and changes the
+// answer: an element, material, load, constraint or contact left out gives another problem,
+// so a run refuses it (unless told to ignore it) while `check` lists it.
+struct Unsupported {
+  std::string_view reason;
+  bool changes_answer;
+};
+Unsupported unsupportedReason(std::string_view name) {
+  static const std::vector<std::pair<std::string_view, Unsupported>> reasons = {
+      {"*CONTROL_IMPLICIT", {"implicit controls: not used by an explicit analysis", false}},
+      {"*CONTROL_PARALLEL", {"ignored: MPP/SMP option", false}},
+      {"*CONTROL_MPP", {"ignored: MPP/SMP option", false}},
+      {"*CONTROL_CPU", {"ignored: MPP/SMP option", false}},
+      {"*CONTROL_UNITS", {"ignored: units are the deck's own, consistent units", false}},
+      {"*CONTROL_STRUCTURED", {"ignored: structured-file output", false}},
+      {"*CONTROL_DEBUG", {"ignored: diagnostic output", false}},
+      {"*CONTROL_REPORT", {"ignored: diagnostic output", false}},
+      {"*CONTROL_SPH", {"SPH controls: used only with SPH particles", false}},
+      {"*CONTROL_THERMAL", {"thermal analysis not supported", true}},
+      {"*MAT_THERMAL", {"thermal analysis not supported", true}},
+      {"*BOUNDARY_TEMPERATURE", {"thermal analysis not supported", true}},
+      {"*BOUNDARY_CONVECTION", {"thermal analysis not supported", true}},
+      {"*BOUNDARY_FLUX", {"thermal analysis not supported", true}},
+      {"*BOUNDARY_RADIATION", {"thermal analysis not supported", true}},
+      {"*BOUNDARY_THERMAL", {"thermal analysis not supported", true}},
+      {"*INITIAL_TEMPERATURE", {"thermal analysis not supported", true}},
+      {"*LOAD_THERMAL", {"thermal analysis not supported", true}},
+      {"*DUALCESE", {"compressible CFD (DUALCESE) is out of scope", true}},
+      {"*MAT_USER_DEFINED", {"user material subroutines are out of scope", true}},
+      {"*USER_LOADING", {"user loading subroutines are out of scope", true}},
       // Output requests whose files Crumple does not write (yet): the run is unaffected.
-      {"*DATABASE_", "output not written yet"},
+      {"*DATABASE_", {"output not written yet", false}},
+      {"*CONTACT_FORCE_TRANSDUCER", {"output not written yet (force transducer)", false}},
+      {"*ELEMENT_SEATBELT_ACCELEROMETER", {"output not written yet (accelerometer)", false}},
+      {"*ELEMENT_PLOTEL", {"plotting elements carry no force: not drawn yet", false}},
+      {"*SENSOR_DEFINE", {"sensors act only through *SENSOR_CONTROL", false}},
+      {"*COMMENT", {"comment", false}},
+      {"*CASE", {"load cases: Crumple runs the deck without them", false}},
+      // Definitions act only through what refers to them; a reference to one is an error.
+      {"*DEFINE_", {"definition not supported (an error where it is used)", false}},
+      {"*SET_", {"set type not supported (an error where it is used)", false}},
+      {"*INTEGRATION_", {"integration rule not supported (an error where it is used)", false}},
+      {"*EOS_", {"equation of state not supported (an error where it is used)", false}},
   };
   for (const auto& [prefix, reason] : reasons)
     if (name.substr(0, prefix.size()) == prefix) return reason;
-  return "not supported";
+  return {"not supported", true};
+}
+
+void reportUnknown(Context& ctx, const deck::Keyword& kw) {
+  const Unsupported u = unsupportedReason(kw.name);
+  ctx.reportUnsupported(kw, u.reason, u.changes_answer);
 }
 
 // The meaning whose base is the longest prefix of `name` ending at a '_' boundary.
@@ -396,28 +476,96 @@ struct Planned {
 
 }  // namespace
 
+namespace {
+
+// The id a definition keyword defines: the first field of its first card after the title
+// line of _TITLE; 0 when there is none or it is not a number (nothing can refer to it).
+int64_t definedId(const Context& ctx, const deck::Keyword& kw) {
+  std::string_view name = kw.name;
+  const bool title = name.size() > 6 && name.substr(name.size() - 6) == "_TITLE";
+  std::size_t line = title ? 1 : 0;
+  while (line < kw.lines.size() && deck::trim(kw.lines[line].text).empty()) ++line;
+  if (line >= kw.lines.size()) return 0;
+  deck::Keyword one = kw;
+  one.lines = {kw.lines[line]};
+  try {
+    deck::CardCursor cur(one, ctx.deck);
+    return cur.read(deck::keywordSpec("*UNSUPPORTED_DEFINITION").card("card 1")).integer("ID");
+  } catch (const util::InputError&) {
+    return 0;
+  }
+}
+
+}  // namespace
+
 void readUnsupportedDefinition(Context& ctx, const deck::Keyword& kw, Kind kind) {
   std::string_view name = kw.name;
   // *MAT_ADD_EROSION, *MAT_THERMAL_* and the like add to a material rather than define one.
   const bool defines = !(name.rfind("*MAT_ADD_", 0) == 0 || name.rfind("*MAT_THERMAL", 0) == 0 ||
                          name.rfind("*MAT_NONLOCAL", 0) == 0);
-  ctx.reportUnsupported(kw, unsupportedReason(name));
+  const Unsupported u = unsupportedReason(name);
+  // A definition acts only through what uses it (a use is refused); an addition to one
+  // (erosion, thermal properties) changes the material it adds to.
+  ctx.reportUnsupported(
+      kw, defines ? "definition not supported (an error where it is used)" : u.reason, !defines);
   if (!defines) return;
-  // The id is the first field of the first card after the title line of _TITLE.
-  const bool title = name.size() > 6 && name.substr(name.size() - 6) == "_TITLE";
-  std::size_t line = title ? 1 : 0;
-  while (line < kw.lines.size() && deck::trim(kw.lines[line].text).empty()) ++line;
-  if (line >= kw.lines.size()) return;
-  deck::Keyword one = kw;
-  one.lines = {kw.lines[line]};
+  if (const int64_t id = definedId(ctx, kw); id != 0)
+    ctx.defineUnsupported(kind, id, kw.name, ctx.deck.loc(kw));
+}
+
+// A material, section or hourglass definition with an input error: LS-DYNA reads a deck whose
+// unused definitions are incomplete, so the error is kept for the parts that use it (an
+// error on use) and noted. Without an id nothing can use it: the error stands.
+void readDefinition(Context& ctx, const deck::Keyword& kw, Handler handler,
+                    const KeywordOptions& opts, Kind kind) {
+  const int64_t id = definedId(ctx, kw);
+  // A second definition of an id is an error whether or not anything uses it.
+  const bool redefined = id != 0 && ctx.isDefined(kind, id);
   try {
-    deck::CardCursor cur(one, ctx.deck);
-    const int64_t id =
-        cur.read(deck::keywordSpec("*UNSUPPORTED_DEFINITION").card("card 1")).integer("ID");
-    if (id != 0) ctx.defineUnsupported(kind, id, kw.name, ctx.deck.loc(kw));
-  } catch (const util::InputError&) {
-    // An id that is not a number (a character label): nothing can refer to it numerically.
+    handler(ctx, kw, opts);
+  } catch (const util::FormatError&) {
+    throw;  // unreadable text is an error wherever it is
+  } catch (const util::InputError& e) {
+    if (id == 0 || redefined) throw;
+    ctx.defineBroken(kind, id, e.what());
+    ctx.ignore(kw.name, "",
+               std::string(kindName(kind)) + " " + std::to_string(id) +
+                   " cannot be used (an error only if an element's part uses it): " + e.what(),
+               ctx.deck.loc(kw));
   }
+}
+
+void finishPhase(Context& ctx, int phase) {
+  switch (phase) {
+    case 0:
+      finishNodes(ctx);
+      finishCurves(ctx);
+      break;
+    case 1:
+      finishDefinitions(ctx);
+      break;
+    case 2:
+      finishParts(ctx);
+      break;
+    case 3:
+      finishSolids(ctx);
+      break;
+    default:
+      break;
+  }
+}
+
+// Parts that could not be run but that no element uses: said, not refused (LS-DYNA reads
+// such decks, e.g. a part kept only to label a charge position).
+void noteUnusedPartProblems(Context& ctx) {
+  const Model& m = ctx.model;
+  std::vector<char> used(m.parts.size(), 0);
+  for (std::size_t g = 0; g < m.numElements(); ++g)
+    used[static_cast<std::size_t>(m.elementPart(g))] = 1;
+  for (std::size_t i = 0; i < ctx.part_problem.size() && i < m.parts.size(); ++i)
+    if (!ctx.part_problem[i].empty() && !used[i])
+      ctx.ignore("*PART", "PID", ctx.part_problem[i].message + "; no element uses the part",
+                 m.parts[i].where);
 }
 
 }  // namespace build
@@ -442,21 +590,24 @@ Model buildModel(const deck::Deck& deck, const std::filesystem::path& path,
   std::vector<Planned> plan;
   for (const auto& kw : deck.keywords) {
     if (!kw.case_block.empty()) {
-      ctx.reportUnsupported(kw, "inside *CASE block (" + kw.case_block + "), not supported");
+      ctx.reportUnsupported(
+          kw,
+          "inside *CASE block (" + kw.case_block + "): Crumple runs the deck without load cases",
+          false);
       continue;
     }
     KeywordOptions opts;
     const Meaning* m = match(kw.name, opts);
     if (!m) {
-      ctx.reportUnsupported(kw, unsupportedReason(kw.name));
+      reportUnknown(ctx, kw);
       continue;
     }
     // A material, section or hourglass definition without its cards is what a file cut short
     // leaves (the handlers read a list of records, and would read none without a word).
     if (m->phase == 1 && std::all_of(kw.lines.begin(), kw.lines.end(),
                                      [](const auto& l) { return deck::trim(l.text).empty(); })) {
-      throw util::InputError(deck.loc(kw).str() + ": " + kw.name +
-                             " has no data cards (is the file cut short?)");
+      ctx.fail(deck.loc(kw).str() + ": " + kw.name + " has no data cards (is the file cut short?)");
+      continue;
     }
     std::string unknown;
     for (const auto& w : opts.words)
@@ -465,7 +616,7 @@ Model buildModel(const deck::Deck& deck, const std::filesystem::path& path,
     if (!unknown.empty()) {
       switch (m->unknown) {
         case UnknownOption::Report:
-          ctx.reportUnsupported(kw, unsupportedReason(kw.name));
+          reportUnknown(ctx, kw);
           continue;
         case UnknownOption::Reject:
           ctx.rejectKeyword(kw, "option " + unknown + " is not supported");
@@ -480,40 +631,29 @@ Model buildModel(const deck::Deck& deck, const std::filesystem::path& path,
 
   for (int phase = 0; phase < kPhases; ++phase) {
     for (const auto& p : plan) {
-      if (p.unsupported_definition) {
-        if (p.meaning->phase == phase) readUnsupportedDefinition(ctx, *p.keyword, p.meaning->kind);
-        continue;
-      }
-      if (p.meaning->phase == phase) p.meaning->handler(ctx, *p.keyword, p.options);
+      if (p.meaning->phase != phase) continue;
+      ctx.attempt([&] {
+        if (p.unsupported_definition)
+          readUnsupportedDefinition(ctx, *p.keyword, p.meaning->kind);
+        else if (phase == 1)
+          readDefinition(ctx, *p.keyword, p.meaning->handler, p.options, p.meaning->kind);
+        else
+          p.meaning->handler(ctx, *p.keyword, p.options);
+      });
     }
-    switch (phase) {
-      case 0:
-        finishNodes(ctx);
-        finishCurves(ctx);
-        break;
-      case 1:
-        finishDefinitions(ctx);
-        break;
-      case 2:
-        finishParts(ctx);
-        break;
-      case 3:
-        finishSolids(ctx);
-        break;
-      default:
-        break;
-    }
+    ctx.attempt([&] { finishPhase(ctx, phase); });
   }
-  finishRigid(ctx);
-  finishConditions(ctx);
-  finishControls(ctx);
+  ctx.attempt([&] { finishRigid(ctx); });
+  ctx.attempt([&] { finishConditions(ctx); });
+  ctx.attempt([&] { finishControls(ctx); });
   if (model.nodes.size() == 0)
-    throw util::InputError(path.string() + ": the deck defines no nodes (*NODE)");
-  if (model.numElements() == 0 && !options.allow_unsupported)
-    throw util::InputError(path.string() +
-                           ": the deck defines no elements Crumple can run (*ELEMENT_SOLID, "
-                           "_SHELL, _BEAM or _DISCRETE)");
+    ctx.fail(path.string() + ": the deck defines no nodes (*NODE)");
+  else if (model.numElements() == 0 && !options.allow_unsupported)
+    ctx.fail(path.string() +
+             ": the deck defines no elements Crumple can run (*ELEMENT_SOLID, _SHELL, _BEAM or "
+             "_DISCRETE)");
   model.finalize();
+  noteUnusedPartProblems(ctx);
   return model;
 }
 

@@ -18,6 +18,13 @@ struct ReadOptions {
   // on, so that everything can be listed. Such a Model may hold parts without a material or
   // section (kNone) and must not be run.
   bool allow_unsupported = false;
+  // true (crumple check): an input error in one keyword or record is recorded in
+  // Model::errors and reading goes on with the next, so that one pass lists every problem.
+  // Such a Model must not be run either.
+  bool collect_errors = false;
+  // An implicit deck (*CONTROL_IMPLICIT_GENERAL IMFLAG != 0) is run explicitly, and said so,
+  // instead of refused (crumple run --implicit-as-explicit).
+  bool implicit_as_explicit = false;
 };
 
 // Reads the deck at `path` (following *INCLUDE) and builds the validated Model.

@@ -49,9 +49,10 @@ void readSpc(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) 
   const auto& spec = keywordSpec(set ? "*BOUNDARY_SPC_SET" : "*BOUNDARY_SPC");
   const std::string_view first = set ? "NSID" : "NID";
   CardCursor cur(kw, ctx.deck);
-  if (opts.has("ID")) cur.read(spec.card("id card"));
   static constexpr std::string_view kDof[6] = {"DOFX", "DOFY", "DOFZ", "DOFRX", "DOFRY", "DOFRZ"};
-  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+  // _ID: a heading card precedes every record (Keyword Manual, *BOUNDARY_SPC).
+  while (nextRecord(cur, opts.has("ID"))) {
+    if (opts.has("ID")) cur.read(spec.card("id card"));
     const Card& c = cur.read(spec.card("card 1"));
     checkNoLocalSystem(ctx, c, "CID");
     DofMask mask = 0;
@@ -90,8 +91,9 @@ void readPrescribedMotion(Context& ctx, const deck::Keyword& kw, const KeywordOp
       keywordSpec(set ? "*BOUNDARY_PRESCRIBED_MOTION_SET" : "*BOUNDARY_PRESCRIBED_MOTION");
   const std::string_view first = set ? "NSID" : "NID";
   CardCursor cur(kw, ctx.deck);
-  if (opts.has("ID")) cur.read(spec.card("id card"));
-  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+  // _ID: a heading card precedes every record (Keyword Manual, *BOUNDARY_PRESCRIBED_MOTION).
+  while (nextRecord(cur, opts.has("ID"))) {
+    if (opts.has("ID")) cur.read(spec.card("id card"));
     const Card& c = cur.read(spec.card("card 1"));
     PrescribedMotion pm;
     // DOF 1-3: x, y, z translation. The others (motion along a vector, rotations, radial

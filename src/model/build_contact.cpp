@@ -22,7 +22,10 @@ using util::sub;
 
 // Bulk modulus of the part's material (rigid parts give theirs for contact only).
 double bulkModulus(const Model& m, int32_t part) {
-  const auto& law = m.materials[static_cast<std::size_t>(m.parts[std::size_t(part)].material)].law;
+  // A part without a usable material exists only in a deck `crumple check` reads on past.
+  const int32_t mat = m.parts[std::size_t(part)].material;
+  if (mat == kNone) return 0.0;
+  const auto& law = m.materials[static_cast<std::size_t>(mat)].law;
   return std::visit(
       [](const auto& l) -> double {
         if constexpr (requires { l.E, l.nu; })
@@ -55,10 +58,9 @@ double shellThickness(const Model& m, std::size_t e) {
   const double optt = m.parts[std::size_t(m.shells.part[e])].contact_thickness;
   if (optt > 0.0) return optt;
   auto t = m.shells.thickness[e];
-  if (t[0] == 0.0 && t[1] == 0.0 && t[2] == 0.0 && t[3] == 0.0) {
-    const auto& part = m.parts[std::size_t(m.shells.part[e])];
+  const auto& part = m.parts[std::size_t(m.shells.part[e])];
+  if (t[0] == 0.0 && t[1] == 0.0 && t[2] == 0.0 && t[3] == 0.0 && part.section != kNone)
     t = m.shell_sections[std::size_t(part.section)].t;
-  }
   double sum = 0.0;
   int n = 0;
   for (double v : t)

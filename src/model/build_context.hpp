@@ -17,6 +17,7 @@
 #include "deck/deck.hpp"
 #include "model/build.hpp"
 #include "model/model.hpp"
+#include "util/error.hpp"
 
 namespace crumple::model::build {
 
@@ -58,6 +59,10 @@ struct Frame {
 
 struct RigidInput;  // build_rigid.cpp
 
+// Thrown (only with ReadOptions::allow_unsupported, after the reason is reported) to skip the
+// rest of a record that depends on something Crumple does not support.
+struct SkipRecord {};
+
 class Context {
  public:
   Context(const deck::Deck& d, Model& m, ReadOptions o) : deck(d), model(m), options(o) {}
@@ -67,11 +72,15 @@ class Context {
   const ReadOptions options;
 
   // ---- reporting ------------------------------------------------------------------------
-  // A keyword not acted on: counted once per keyword name and reason.
-  void reportUnsupported(const deck::Keyword& kw, std::string_view reason);
+  // A keyword not acted on: counted once per keyword name and reason. `changes_answer`: see
+  // UnsupportedKeyword; `feature` (default: the keyword) names what Crumple lacks.
+  void reportUnsupported(const deck::Keyword& kw, std::string_view reason,
+                         bool changes_answer = true, std::string feature = {});
   // Something the solution needs but Crumple does not support: an InputError at the field,
   // or with ReadOptions::allow_unsupported an entry in Model::unsupported.
-  void reject(const deck::Card& card, std::string_view field, const std::string& message);
+  // `feature` names what is lacking for the compatibility matrix (default: keyword and field).
+  void reject(const deck::Card& card, std::string_view field, const std::string& message,
+              std::string feature = {});
   // A keyword option of that kind (no field to name).
   void rejectKeyword(const deck::Keyword& kw, const std::string& message);
   // Read but not honoured.
@@ -79,6 +88,29 @@ class Context {
               util::SourceLoc where);
   // Moves the cursor's unused non-default values into Model::ignored.
   void collect(deck::CardCursor& cursor);
+  // Runs `step`; with ReadOptions::collect_errors an InputError it throws is recorded in
+  // Model::errors and false returned, so that reading goes on with the next record or
+  // keyword. Without it the error propagates.
+  template <class F>
+  bool attempt(F&& step) {
+    if (!options.collect_errors) {
+      step();
+      return true;
+    }
+    try {
+      step();
+      return true;
+    } catch (const util::InputError& e) {
+      recordError(e.what());
+      return false;
+    } catch (const SkipRecord&) {
+      return false;  // already reported as unsupported
+    }
+  }
+  void recordError(std::string message);
+  // An input error found after reading (a duplicate id): thrown, or with collect_errors
+  // recorded, after which the caller skips the offending item.
+  void fail(std::string message);
 
   // ---- definitions and references -----------------------------------------------------------
   // Records that `id` of `kind` is defined by the card's field; a second definition is an
@@ -89,19 +121,27 @@ class Context {
   void defineUnsupported(Kind kind, int64_t id, std::string what, util::SourceLoc where);
   // "*MAT_RIGID (material 2 at ball.k:92)" for an id defined by an unsupported keyword.
   std::string unsupportedDefinition(Kind kind, int64_t id) const;
+  // "*MAT_JOHNSON_COOK", "*SECTION_SOLID ELFORM=10": the unsupported definition's keyword
+  // without _TITLE, for the compatibility matrix.
+  std::string unsupportedFeature(Kind kind, int64_t id) const;
   // Records that `id` of `kind` was read but cannot be used (a set naming a node that does
   // not exist): an error only if something refers to it.
   void defineBroken(Kind kind, int64_t id, std::string message);
   // The message for a reference to an id that has no supported definition: "material 7 is
   // not defined" or "curve 5 is defined by *DEFINE_TABLE (t.k:9), which is not supported".
   std::string undefinedMessage(Kind kind, int64_t id) const;
+  // The error that made `id` unusable (defineBroken), or empty.
+  std::string brokenMessage(Kind kind, int64_t id) const;
   bool isUnsupported(Kind kind, int64_t id) const;
+  bool isDefined(Kind kind, int64_t id) const;  // by a supported or an unsupported keyword
 
   // Model index of the node (InputError at the field if it is not defined).
   int32_t node(const deck::Card& card, std::string_view field, int64_t id) const;
   int32_t part(const deck::Card& card, std::string_view field, int64_t id) const;
   // Curve index; `id` 0 is an error ("a curve is required").
-  int32_t curve(const deck::Card& card, std::string_view field, int64_t id) const;
+  // A curve Crumple cannot read is refused (reject): with allow_unsupported the record that
+  // uses it is skipped (SkipRecord).
+  int32_t curve(const deck::Card& card, std::string_view field, int64_t id);
   const std::vector<int32_t>& nodeSet(const deck::Card& card, std::string_view field,
                                       int64_t id) const;
   const std::vector<int32_t>& partSet(const deck::Card& card, std::string_view field,
@@ -117,9 +157,18 @@ class Context {
   std::unordered_map<int64_t, int32_t> material_index, section_index, hourglass_index;
   std::map<int64_t, Box> boxes;
   std::map<int64_t, Frame> frames;
-  // Per part index: empty, or why a solid element of the part cannot be run ("part 2 uses
-  // *MAT_RIGID (material 2, ball.k:92), which is not supported yet").
-  std::vector<std::string> part_problem;
+  // Per part index: nothing, or why an element of the part cannot be run. A part no element
+  // uses may be incomplete, as LS-DYNA allows: the problem is an error only on use.
+  struct PartProblem {
+    // With a feature: "part 2 uses *MAT_JOHNSON_COOK (material 2 at b.k:92), which ...";
+    // without: the input error where it is written, "b.k:7: *PART card 2 field 3 (MID): ...".
+    std::string message;
+    std::string feature;  // "*MAT_JOHNSON_COOK" when Crumple lacks it; empty for an input error
+    bool empty() const { return message.empty(); }
+  };
+  std::vector<PartProblem> part_problem;
+  // An element card of `part` (field PID): refuses it when the part cannot be run.
+  void checkPartUsable(const deck::Card& c, int32_t part);
   // Raw inputs collected before sorting.
   struct NodeInput {
     int64_t id;
@@ -156,6 +205,7 @@ class Context {
   std::map<std::pair<std::string, std::string>, std::size_t> unsupported_row_;
   std::map<std::pair<Kind, int64_t>, std::string> broken_;
   std::unordered_map<int32_t, std::vector<int32_t>> part_nodes_;
+  std::set<std::string, std::less<>> errors_seen_;
 };
 
 // ---- keyword meanings (one function per keyword family) ------------------------------------
@@ -199,6 +249,12 @@ void readControlContact(Context&, const deck::Keyword&, const KeywordOptions&);
 void checkSectionKind(Context& ctx, const deck::Card& c, int32_t part, SectionKind kind);
 
 // Helpers shared by the build_*.cpp readers (build_mesh.cpp).
+// Moves to the next record of a keyword that holds several; false at its end. A record that
+// starts with a heading card (a *PART heading, a _TITLE title, an _ID card) starts at the next
+// line even when that line is blank: an empty heading is a card (Keyword Manual Vol. I,
+// "General card format"). One that starts with a data card skips blank lines. Trailing blank
+// lines end the keyword either way.
+bool nextRecord(deck::CardCursor& cur, bool starts_with_heading);
 int64_t positiveId(const deck::Card& c, std::string_view field);
 std::string readTitleCard(deck::CardCursor& cur, const deck::KeywordSpec& spec,
                           const KeywordOptions& opts);
@@ -260,6 +316,8 @@ void readControlTimestep(Context&, const deck::Keyword&, const KeywordOptions&);
 void readControlHourglass(Context&, const deck::Keyword&, const KeywordOptions&);
 void readControlBulkViscosity(Context&, const deck::Keyword&, const KeywordOptions&);
 void readControlEnergy(Context&, const deck::Keyword&, const KeywordOptions&);
+void readControlImplicitGeneral(Context&, const deck::Keyword&, const KeywordOptions&);
+void readControlSolution(Context&, const deck::Keyword&, const KeywordOptions&);
 // Keywords read only to report their non-default fields (*CONTROL_SOLID, ...).
 void readIgnoredControl(Context&, const deck::Keyword&, const KeywordOptions&);
 void readDatabaseAscii(Context&, const deck::Keyword&, const KeywordOptions&);

@@ -36,6 +36,37 @@ void readControlTermination(Context& ctx, const deck::Keyword& kw, const Keyword
   ctx.collect(cur);
 }
 
+// *CONTROL_IMPLICIT_GENERAL IMFLAG (Keyword Manual): anything but 0 asks for an implicit
+// (static or dynamic) solution, which an explicit code cannot give: refused with the reason,
+// or with ReadOptions::implicit_as_explicit run explicitly and said so.
+void readControlImplicitGeneral(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  CardCursor cur(kw, ctx.deck);
+  const Card& c = cur.readOptional(keywordSpec("*CONTROL_IMPLICIT_GENERAL").card("card 1"));
+  if (const int64_t imflag = c.integer("IMFLAG"); imflag != 0) {
+    const std::string what = "IMFLAG " + std::to_string(imflag) +
+                             " asks for an implicit analysis; Crumple is explicit only";
+    if (ctx.options.implicit_as_explicit)
+      ctx.ignore(kw.name, "IMFLAG", what + ": run explicitly (--implicit-as-explicit)", c.where());
+    else
+      ctx.reject(c, "IMFLAG",
+                 what + " (--implicit-as-explicit runs it explicitly; the answer will differ)",
+                 "implicit analysis");
+  }
+  ctx.collect(cur);
+}
+
+// *CONTROL_SOLUTION SOLN: 0 structural; 1 thermal only, 2 coupled thermal-structural.
+void readControlSolution(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  CardCursor cur(kw, ctx.deck);
+  const Card& c = cur.readOptional(keywordSpec("*CONTROL_SOLUTION").card("card 1"));
+  if (const int64_t soln = c.integer("SOLN"); soln != 0)
+    ctx.reject(c, "SOLN",
+               "SOLN " + std::to_string(soln) +
+                   " asks for a thermal analysis; thermal analysis is out of scope",
+               "thermal analysis");
+  ctx.collect(cur);
+}
+
 void readControlTimestep(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
   const auto& spec = keywordSpec("*CONTROL_TIMESTEP");
   CardCursor cur(kw, ctx.deck);
@@ -141,7 +172,7 @@ void readHistoryNode(Context& ctx, const deck::Keyword& kw, const KeywordOptions
     auto& h = ctx.model.history_nodes;
     if (std::find(h.begin(), h.end(), n) == h.end()) h.push_back(n);
   };
-  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+  while (nextRecord(cur, opts.has("ID"))) {
     if (opts.has("ID")) {
       // One node per card with its heading.
       const Card& c = cur.read(spec.card("id card"));

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "deck/number.hpp"
 #include "model/build_context.hpp"
 #include "util/error.hpp"
 
@@ -37,6 +38,16 @@ int64_t positiveId(const Card& c, std::string_view field) {
   const int64_t id = c.integer(field);
   if (id <= 0) c.fail(field, "the id must be a positive integer, not " + std::to_string(id));
   return id;
+}
+
+bool nextRecord(CardCursor& cur, bool starts_with_heading) {
+  const auto& lines = cur.keyword().lines;
+  const bool data_left =
+      std::any_of(lines.end() - static_cast<std::ptrdiff_t>(cur.remaining()), lines.end(),
+                  [](const deck::DataLine& l) { return !deck::trim(l.text).empty(); });
+  if (!data_left) return false;
+  if (!starts_with_heading) cur.skipBlankLines();
+  return true;
 }
 
 std::string readTitleCard(CardCursor& cur, const deck::KeywordSpec& spec,
@@ -103,10 +114,10 @@ void finishNodes(Context& ctx) {
     const auto& n = in[order[k]];
     if (k > 0 && in[order[k - 1]].id == n.id) {
       const auto& first = in[order[k - 1]];
-      throw util::InputError(ctx.deck.loc(n.file, n.line).str() +
-                             ": *NODE card 1 field 1 (NID): node " + std::to_string(n.id) +
-                             " is already defined at " +
-                             ctx.deck.loc(first.file, first.line).str());
+      ctx.fail(ctx.deck.loc(n.file, n.line).str() + ": *NODE card 1 field 1 (NID): node " +
+               std::to_string(n.id) + " is already defined at " +
+               ctx.deck.loc(first.file, first.line).str());
+      continue;
     }
     const auto index = static_cast<int32_t>(nodes.id.size());
     nodes.id.push_back(n.id);
@@ -130,7 +141,7 @@ void readSolids(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
     const Card& c = cur.read(spec.card("card 1"));
     const int64_t eid = positiveId(c, "EID");
     const int32_t part = ctx.part(c, "PID", c.integer("PID"));
-    if (!ctx.part_problem[part].empty()) ctx.reject(c, "PID", ctx.part_problem[part]);
+    ctx.checkPartUsable(c, part);
     checkSectionKind(ctx, c, part, SectionKind::Solid);
     // Card 1 with EID and PID only: the nodes follow on a second card of ten 8-character
     // fields (Keyword Manual, *ELEMENT_SOLID, the format of 10-node tetrahedra that
@@ -174,10 +185,10 @@ void finishFamily(Context& ctx, std::vector<Context::ElementInput<N>>& in, List&
     const auto& e = in[order[k]];
     if (k > 0 && in[order[k - 1]].id == e.id) {
       const auto& first = in[order[k - 1]];
-      throw util::InputError(ctx.deck.loc(e.file, e.line).str() + ": " + std::string(keyword) +
-                             " card 1 field 1 (EID): element " + std::to_string(e.id) +
-                             " is already defined at " +
-                             ctx.deck.loc(first.file, first.line).str());
+      ctx.fail(ctx.deck.loc(e.file, e.line).str() + ": " + std::string(keyword) +
+               " card 1 field 1 (EID): element " + std::to_string(e.id) +
+               " is already defined at " + ctx.deck.loc(first.file, first.line).str());
+      continue;
     }
     list.id.push_back(e.id);
     list.part.push_back(e.part);
@@ -208,24 +219,35 @@ void readParts(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts
   const auto& spec = keywordSpec("*PART");
   CardCursor cur(kw, ctx.deck);
   // One keyword may hold several parts, each a heading card and card 2.
-  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+  while (nextRecord(cur, true)) {
     const std::string heading = cur.read(spec.card("card 1")).text("HEADING");
     const Card& c = cur.read(spec.card("card 2"));
     Part p;
     p.id = positiveId(c, "PID");
     p.title = heading;
     p.where = c.where();
-    std::string problem;
+    // A part no element uses may be incomplete (no section, an undefined or unusable
+    // material), as LS-DYNA accepts: the first problem is kept and is an error on use.
+    Context::PartProblem problem;
     auto resolve = [&](std::string_view field, Kind kind,
                        const std::unordered_map<int64_t, int32_t>& index) -> int32_t {
       const int64_t id = c.integer(field);
-      if (id == 0) c.fail(field, "a " + std::string(kindName(kind)) + " id is required");
+      const std::string part = "part " + std::to_string(p.id);
       auto it = index.find(id);
       if (it != index.end()) return it->second;
-      if (!ctx.isUnsupported(kind, id)) c.fail(field, ctx.undefinedMessage(kind, id));
-      if (problem.empty())
-        problem = "part " + std::to_string(p.id) + " uses " + ctx.unsupportedDefinition(kind, id) +
-                  ", which is not supported yet";
+      if (!problem.empty()) return kNone;
+      if (id == 0) {
+        problem.message =
+            c.context(field) + ": a " + std::string(kindName(kind)) + " id is required";
+      } else if (const std::string broken = ctx.brokenMessage(kind, id); !broken.empty()) {
+        problem.message = broken;
+      } else if (ctx.isUnsupported(kind, id)) {
+        problem = {
+            part + " uses " + ctx.unsupportedDefinition(kind, id) + ", which is not supported yet",
+            ctx.unsupportedFeature(kind, id)};
+      } else {
+        problem.message = c.context(field) + ": " + ctx.undefinedMessage(kind, id);
+      }
       return kNone;
     };
     p.section = resolve("SECID", Kind::Section, ctx.section_index);
@@ -233,9 +255,10 @@ void readParts(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts
     p.material = resolve("MID", Kind::Material, ctx.material_index);
     if (const int64_t hg = c.integer("HGID"); hg != 0) {
       auto it = ctx.hourglass_index.find(hg);
-      if (it == ctx.hourglass_index.end())
-        c.fail("HGID", ctx.undefinedMessage(Kind::Hourglass, hg));
-      p.hourglass = it->second;
+      if (it != ctx.hourglass_index.end())
+        p.hourglass = it->second;
+      else if (problem.empty())
+        problem.message = c.context("HGID") + ": " + ctx.undefinedMessage(Kind::Hourglass, hg);
     }
     if (const int64_t eos = c.integer("EOSID"); eos != 0)
       ctx.ignore(kw.name, "EOSID",
@@ -263,13 +286,14 @@ void finishParts(Context& ctx) {
   auto& parts = ctx.model.parts;
   const auto order = ascending(parts.size(), [&](std::size_t i) { return parts[i].id; });
   std::vector<Part> sorted;
-  std::vector<std::string> problems;
+  std::vector<Context::PartProblem> problems;
   for (std::size_t k = 0; k < order.size(); ++k) {
     const Part& p = parts[order[k]];
-    if (k > 0 && parts[order[k - 1]].id == p.id)
-      throw util::InputError(p.where.str() + ": *PART card 2 field 1 (PID): part " +
-                             std::to_string(p.id) + " is already defined at " +
-                             parts[order[k - 1]].where.str());
+    if (k > 0 && parts[order[k - 1]].id == p.id) {
+      ctx.fail(p.where.str() + ": *PART card 2 field 1 (PID): part " + std::to_string(p.id) +
+               " is already defined at " + parts[order[k - 1]].where.str());
+      continue;
+    }
     sorted.push_back(p);
     problems.push_back(ctx.part_problem[order[k]]);
   }
@@ -281,11 +305,11 @@ void finishParts(Context& ctx) {
     const Material& m = ctx.model.materials[static_cast<std::size_t>(p.material)];
     const bool discrete = p.section_kind == SectionKind::Discrete;
     if (discrete != isDiscreteLaw(m.law))
-      throw util::InputError(p.where.str() + ": *PART card 2 field 3 (MID): part " +
-                             std::to_string(p.id) + " has " +
-                             (discrete ? "a *SECTION_DISCRETE section but material "
-                                       : "a continuum section but the spring material ") +
-                             std::to_string(m.id) + " (" + materialKeyword(m.law) + ")");
+      ctx.fail(p.where.str() + ": *PART card 2 field 3 (MID): part " + std::to_string(p.id) +
+               " has " +
+               (discrete ? "a *SECTION_DISCRETE section but material "
+                         : "a continuum section but the spring material ") +
+               std::to_string(m.id) + " (" + materialKeyword(m.law) + ")");
   }
   ctx.model.finalize();
 }
@@ -293,7 +317,7 @@ void finishParts(Context& ctx) {
 void readSectionSolid(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const auto& spec = keywordSpec("*SECTION_SOLID");
   CardCursor cur(kw, ctx.deck);
-  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+  while (nextRecord(cur, opts.has("TITLE"))) {
     title(cur, spec, opts);
     const Card& c = cur.read(spec.card("card 1"));
     SectionSolid s;
@@ -315,7 +339,8 @@ void readSectionSolid(Context& ctx, const deck::Keyword& kw, const KeywordOption
       ctx.defineUnsupported(Kind::Section, s.id, kw.name + " ELFORM=" + std::to_string(elform),
                             c.where());
       ctx.reportUnsupported(
-          kw, "ELFORM " + std::to_string(elform) + " not supported yet (1 and 2 are; 0 runs as 1)");
+          kw, "ELFORM " + std::to_string(elform) + " not supported yet (1 and 2 are; 0 runs as 1)",
+          false);
       ctx.collect(cur);
       continue;
     }
@@ -400,17 +425,30 @@ void readMatPiecewiseLinear(Context& ctx, const deck::Keyword& kw, const Keyword
     const double ev = c3.real(e), sv = c4.real(s);
     if (i > 1 && c3.blank(e) && c4.blank(s)) break;
     if (i > 1 && ev == 0.0 && sv == 0.0) break;
+    // The curve ends at the first strain that does not increase (trailing zeros of a
+    // partly filled card), as LS-DYNA reads EPS1-8 (Keyword Manual, *MAT_024).
+    if (i > 1 && ev <= eps.back()) {
+      c3.real(e);
+      c4.real(s);
+      break;
+    }
     eps.push_back(ev);
     es.push_back(sv);
   }
-  const bool table = es.size() >= 2 || (es.size() == 1 && es[0] != 0.0);
+  // The table needs two points (Keyword Manual, *MAT_024); with EPS2 = 0 it has fewer, and
+  // SIGY and ETAN give the hardening (older LSTC decks fill ES1-8 and leave EPS1-8 zero).
+  const bool table = es.size() >= 2;
+  if (!table && es.size() == 1 && es[0] != 0.0)
+    ctx.ignore(kw.name, "ES1",
+               "the EPS/ES table has fewer than two increasing strains (EPS2 = 0): SIGY and ETAN "
+               "define the hardening",
+               c4.where());
   if (lcss != 0) {
     if (ctx.model.curveIndex(lcss) == kNone && ctx.isUnsupported(Kind::Curve, lcss))
       ctx.reject(c2, "LCSS", ctx.undefinedMessage(Kind::Curve, lcss));
     else
       law.lcss = ctx.curve(c2, "LCSS", lcss);
   } else if (table) {
-    if (es.size() < 2) c4.fail("ES2", "at least two points (EPS1/ES1, EPS2/ES2) are needed");
     for (std::size_t i = 1; i < eps.size(); ++i)
       if (eps[i] <= eps[i - 1])
         c3.fail("EPS" + std::to_string(i + 1), "the plastic strains must increase");
@@ -432,7 +470,7 @@ void readMatPiecewiseLinear(Context& ctx, const deck::Keyword& kw, const Keyword
 void readHourglass(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const auto& spec = keywordSpec("*HOURGLASS");
   CardCursor cur(kw, ctx.deck);
-  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+  while (nextRecord(cur, opts.has("TITLE"))) {
     title(cur, spec, opts);
     const Card& c = cur.read(spec.card("card 1"));
     Hourglass h;

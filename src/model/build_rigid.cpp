@@ -234,8 +234,9 @@ void readNodalRigidBody(Context& ctx, const deck::Keyword& kw, const KeywordOpti
 void readPrescribedMotionRigid(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const auto& spec = keywordSpec("*BOUNDARY_PRESCRIBED_MOTION_RIGID");
   CardCursor cur(kw, ctx.deck);
-  if (opts.has("ID")) cur.read(spec.card("id card"));
-  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+  // _ID: a heading card precedes every record.
+  while (nextRecord(cur, opts.has("ID"))) {
+    if (opts.has("ID")) cur.read(spec.card("id card"));
     const Card& c = cur.read(spec.card("card 1"));
     RigidMotion m;
     // DOF 1-3 translations of the centre of mass, 5-7 rotations about the global axes
@@ -266,7 +267,7 @@ void readPrescribedMotionRigid(Context& ctx, const deck::Keyword& kw, const Keyw
 void readSpotweld(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const auto& spec = keywordSpec("*CONSTRAINED_SPOTWELD");
   CardCursor cur(kw, ctx.deck);
-  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+  while (nextRecord(cur, opts.has("ID"))) {
     SpotweldDef w;
     w.id = static_cast<int64_t>(ctx.model.rigid.welds.size()) + 1;
     if (opts.has("ID")) w.id = positiveId(cur.read(spec.card("id card")), "WID");
@@ -299,7 +300,7 @@ void readGeneralizedWeld(Context& ctx, const deck::Keyword& kw, const KeywordOpt
   }
   const auto& spec = keywordSpec("*CONSTRAINED_GENERALIZED_WELD_SPOT");
   CardCursor cur(kw, ctx.deck);
-  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+  while (nextRecord(cur, opts.has("ID"))) {
     SpotweldDef w;
     w.generalized = true;
     w.id = static_cast<int64_t>(ctx.model.rigid.welds.size()) + 1;
@@ -328,7 +329,7 @@ void readGeneralizedWeld(Context& ctx, const deck::Keyword& kw, const KeywordOpt
 void readConstrainedNodeSet(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const auto& spec = keywordSpec("*CONSTRAINED_NODE_SET");
   CardCursor cur(kw, ctx.deck);
-  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+  while (nextRecord(cur, opts.has("ID"))) {
     TiedNodeSet t;
     t.id = static_cast<int64_t>(ctx.model.rigid.node_sets.size()) + 1;
     if (opts.has("ID")) t.id = positiveId(cur.read(spec.card("id card")), "CNSID");
@@ -354,7 +355,7 @@ void readJoint(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts
   }
   const auto& spec = keywordSpec("*CONSTRAINED_JOINT");
   CardCursor cur(kw, ctx.deck);
-  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+  while (nextRecord(cur, opts.has("ID"))) {
     JointDef j;
     j.id = static_cast<int64_t>(ctx.model.rigid.joints.size()) + 1;
     if (opts.has("ID")) j.id = positiveId(cur.read(spec.card("id card")), "ID");

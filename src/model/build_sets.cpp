@@ -65,6 +65,10 @@ class Members {
                  " is not defined";
     return i;
   }
+  // Records a problem of a member (the first is kept).
+  void problem(const Card& c, std::string_view field, const std::string& message) {
+    if (problem_.empty()) problem_ = c.context(field) + ": " + message;
+  }
   // True if the set can be stored; otherwise it is recorded as broken.
   bool finish(const deck::Keyword& kw) {
     if (problem_.empty()) return true;
@@ -228,7 +232,12 @@ void readSegmentSet(Context& ctx, const deck::Keyword& kw, const KeywordOptions&
       int64_t id = c.integer(kN[k]);
       // A triangle repeats N3 as N4 (Keyword Manual, *SET_SEGMENT).
       if (k == 3 && id == 0) id = c.integer("N3");
-      if (id == 0) c.fail(kN[k], "node id missing");
+      // N3 = 0: a line segment of a 2-D (plane or axisymmetric) model; unusable in 3-D, and
+      // an error only if something uses the set.
+      if (id == 0) {
+        members.problem(c, kN[k], "node id missing (a 2-D line segment has no N3)");
+        continue;
+      }
       s[k] = members.resolve(c, kN[k], id, false);
     }
     segments.push_back(s);

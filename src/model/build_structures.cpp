@@ -39,7 +39,7 @@ Context::ElementInput<N> elementCard(Context& ctx, const Card& c, SectionKind ki
                              {},
                              c.fileIndex(),
                              c.lineNumber()};
-  if (!ctx.part_problem[e.part].empty()) ctx.reject(c, "PID", ctx.part_problem[e.part]);
+  ctx.checkPartUsable(c, e.part);
   checkSectionKind(ctx, c, e.part, kind);
   for (int i = 0; i < N; ++i) {
     const int64_t id = c.integer(names[i]);
@@ -57,6 +57,20 @@ void checkSectionKind(Context& ctx, const Card& c, int32_t part, SectionKind kin
   c.fail("PID", "part " + std::to_string(p.id) + " has a " + sectionKeyword(p.section_kind) +
                     " section, but " + c.keyword().name + " needs a " + sectionKeyword(kind));
 }
+
+namespace {
+// A shell needs a thickness: its own (THIC1) or its section's T1.
+void checkShellThickness(const Context& ctx, const Card& c, const Context::ElementInput<4>& e) {
+  if (e.real[0] > 0) return;
+  const Part& p = ctx.model.parts[static_cast<std::size_t>(e.part)];
+  if (p.section == kNone || p.section_kind != SectionKind::Shell) return;
+  const SectionShell& s = ctx.model.shell_sections[static_cast<std::size_t>(p.section)];
+  if (s.t[0] > 0) return;
+  c.fail("EID", "shell " + std::to_string(e.id) + " has no thickness: section " +
+                    std::to_string(s.id) + " gives T1 = 0 and the element none (" +
+                    "*ELEMENT_SHELL_THICKNESS)");
+}
+}  // namespace
 
 void readShells(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const auto& spec = keywordSpec("*ELEMENT_SHELL");
@@ -86,6 +100,7 @@ void readShells(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opt
                    "supported",
                    t.where());
     }
+    checkShellThickness(ctx, c, e);
     ctx.shell_input.push_back(e);
     ctx.collect(cur);
   }
@@ -129,7 +144,7 @@ void readDiscretes(Context& ctx, const deck::Keyword& kw, const KeywordOptions&)
 void readSectionShell(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const auto& spec = keywordSpec("*SECTION_SHELL");
   CardCursor cur(kw, ctx.deck);
-  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+  while (nextRecord(cur, opts.has("TITLE"))) {
     readTitleCard(cur, spec, opts);
     const Card& c = cur.read(spec.card("card 1"));
     const Card& c2 = cur.read(spec.card("card 2"));
@@ -144,7 +159,7 @@ void readSectionShell(Context& ctx, const deck::Keyword& kw, const KeywordOption
       ctx.defineUnsupported(Kind::Section, s.id, kw.name + " ELFORM=" + std::to_string(elform),
                             c.where());
       ctx.reportUnsupported(
-          kw, "ELFORM " + std::to_string(elform) + " not supported (2, 4 and 10 are)");
+          kw, "ELFORM " + std::to_string(elform) + " not supported (2, 4 and 10 are)", false);
       ctx.collect(cur);
       continue;
     }
@@ -164,7 +179,9 @@ void readSectionShell(Context& ctx, const deck::Keyword& kw, const KeywordOption
       const std::string f = "T" + std::to_string(i + 1);
       s.t[static_cast<std::size_t>(i)] = c2.real(f);
     }
-    if (!(s.t[0] > 0)) c2.fail("T1", "the shell thickness must be positive");
+    // T1 = 0 is valid when the elements give their own thickness (*ELEMENT_SHELL_THICKNESS,
+    // as pre-processors write per-element thickness): checked per element.
+    if (!(s.t[0] >= 0)) c2.fail("T1", "the shell thickness must not be negative");
     for (auto& t : s.t)
       if (t <= 0) t = s.t[0];
     if (c2.real("NLOC") != 0)
@@ -178,7 +195,7 @@ void readSectionShell(Context& ctx, const deck::Keyword& kw, const KeywordOption
 void readSectionBeam(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const auto& spec = keywordSpec("*SECTION_BEAM");
   CardCursor cur(kw, ctx.deck);
-  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+  while (nextRecord(cur, opts.has("TITLE"))) {
     readTitleCard(cur, spec, opts);
     const Card& c = cur.read(spec.card("card 1"));
     SectionBeam s;
@@ -191,8 +208,10 @@ void readSectionBeam(Context& ctx, const deck::Keyword& kw, const KeywordOptions
       ctx.define(Kind::Section, s.id, c, "SECID");
       ctx.defineUnsupported(Kind::Section, s.id, kw.name + " ELFORM=" + std::to_string(elform),
                             c.where());
-      ctx.reportUnsupported(kw, "ELFORM " + std::to_string(elform) +
-                                    " not supported (1 Hughes-Liu, 2 resultant, 3 truss are)");
+      ctx.reportUnsupported(kw,
+                            "ELFORM " + std::to_string(elform) +
+                                " not supported (1 Hughes-Liu, 2 resultant, 3 truss are)",
+                            false);
       ctx.collect(cur);
       continue;
     }
@@ -246,7 +265,7 @@ void readSectionBeam(Context& ctx, const deck::Keyword& kw, const KeywordOptions
 void readSectionDiscrete(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const auto& spec = keywordSpec("*SECTION_DISCRETE");
   CardCursor cur(kw, ctx.deck);
-  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+  while (nextRecord(cur, opts.has("TITLE"))) {
     readTitleCard(cur, spec, opts);
     const Card& c = cur.read(spec.card("card 1"));
     const Card& c2 = cur.readOptional(spec.card("card 2"));

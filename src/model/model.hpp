@@ -308,6 +308,18 @@ struct UnsupportedKeyword {
   std::string reason;   // e.g. "not supported", "output not written yet", "implicit only"
   int count = 0;
   util::SourceLoc first;
+  // Skipping it changes the answer (an element, material, load, constraint, contact...), as
+  // opposed to output requests and options without influence: a run refuses such a deck
+  // unless told to ignore what is unsupported.
+  bool changes_answer = true;
+  // What Crumple lacks, for the compatibility matrix: the keyword, or the definition a part
+  // uses ("*MAT_JOHNSON_COOK", "*SECTION_SOLID ELFORM=10").
+  std::string feature;
+};
+
+// An input error found by `crumple check`, which reads on past it to list every problem.
+struct InputProblem {
+  std::string message;  // "deck.k:12: *PART card 2 field 3 (MID): material 7 is not defined"
 };
 
 // A field or option the reader read but does not honour (e.g. a *CONTROL_SOLID option).
@@ -355,6 +367,7 @@ struct Model {
   Controls controls;
   std::vector<UnsupportedKeyword> unsupported;
   std::vector<IgnoredField> ignored;
+  std::vector<InputProblem> errors;  // only with ReadOptions::collect_errors
 
   // ---- the global element numbering (solids, shells, beams, discretes) ----------------------
   std::size_t familySize(Family f) const;

@@ -252,6 +252,8 @@ void fields(A& a, M& m) {
         a(u.reason);
         a(u.count);
         loc(a, u.first);
+        a(u.changes_answer);
+        a(u.feature);
       },
       m.unsupported);
   a.count(

@@ -457,6 +457,7 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
   j["threads"] = info.threads;
   j["termination"] = info.termination;
   if (!info.message.empty()) j["message"] = info.message;
+  if (!info.ignored_unsupported.empty()) j["ignored_unsupported"] = info.ignored_unsupported;
   j["end_time"] = s.time();
   j["cycles"] = s.cycle();
   j["wall_s"] = info.wall_s;

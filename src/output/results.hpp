@@ -23,6 +23,8 @@ struct RunInfo {
   double wall_s = 0.0;
   double setup_s = 0.0;     // reading, partitioning, distributing and initialising
   int64_t first_cycle = 0;  // a restarted run's first cycle: the rate counts this run's cycles
+  // --ignore-unsupported: the features left out (summary.json "ignored_unsupported").
+  std::vector<std::string> ignored_unsupported;
 };
 
 class ResultsWriter {

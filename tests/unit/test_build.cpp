@@ -270,16 +270,26 @@ TEST(BuildErrors, ExactMessages) {
   const std::string file = (t.path() / "e.k").string();
   auto at = [&](int line) { return file + ":" + std::to_string(line) + ": "; };
   // Lines 1-24 are kMesh.
-  EXPECT_EQ(err("*PART\nsecond\n2,1,7\n"),
-            at(27) + "*PART card 2 field 3 (MID): material 7 is not defined");
+  // A part, material or section no element uses may be incomplete (LS-DYNA reads such
+  // decks); an element of it is an error naming the part and, for a definition's own error,
+  // that definition's line.
+  EXPECT_EQ(err("*PART\nsecond\n2,1,7\n"), "");
+  const std::string use = "*PART\nsecond\n2,1,2\n*ELEMENT_SOLID\n3,2,1,2,3,4,5,6,7,8\n";
+  auto used = [&](int line) {
+    return " (the part is used by *ELEMENT_SOLID at " + file + ":" + std::to_string(line) + ")";
+  };
+  EXPECT_EQ(err("*PART\nsecond\n2,1,7\n*ELEMENT_SOLID\n3,2,1,2,3,4,5,6,7,8\n"),
+            at(27) + "*PART card 2 field 3 (MID): material 7 is not defined" + used(29));
   EXPECT_EQ(err("*ELEMENT_SOLID\n3,1,1,2,3,4,5,6,7,99\n"),
             at(26) + "*ELEMENT_SOLID card 1 field 10 (N8): node 99 is not defined");
   EXPECT_EQ(err("*NODE\n7,0,0,0\n"),
             at(26) + "*NODE card 1 field 1 (NID): node 7 is already defined at " + file + ":8");
-  EXPECT_EQ(err("*MAT_ELASTIC\n2,0,1,0.3\n"),
-            at(26) + "*MAT_ELASTIC card 1 field 2 (RO): the density must be positive");
-  EXPECT_EQ(err("*MAT_ELASTIC\n2,1,1,0.5\n"),
-            at(26) + "*MAT_ELASTIC card 1 field 4 (PR): Poisson's ratio must lie in (-1, 0.5)");
+  EXPECT_EQ(err("*MAT_ELASTIC\n2,0,1,0.3\n"), "");
+  EXPECT_EQ(err("*MAT_ELASTIC\n2,0,1,0.3\n" + use),
+            at(26) + "*MAT_ELASTIC card 1 field 2 (RO): the density must be positive" + used(31));
+  EXPECT_EQ(err("*MAT_ELASTIC\n2,1,1,0.5\n" + use),
+            at(26) + "*MAT_ELASTIC card 1 field 4 (PR): Poisson's ratio must lie in (-1, 0.5)" +
+                used(31));
   EXPECT_EQ(err("*MAT_ELASTIC\n1,1,1,0.3\n"),
             at(26) + "*MAT_ELASTIC card 1 field 1 (MID): material 1 is already defined at " + file +
                 ":24");
@@ -313,15 +323,17 @@ TEST(BuildErrors, TableHardeningAndRigidPart) {
                                     "*PART\nrigid\n2,1,2\n"
                                     "*ELEMENT_SOLID\n3,2,1,2,3,4,5,6,7,8\n"
                                     "*DEFINE_TABLE\n5\n"
-                                    "*MAT_024\n3,1,1,0.3,1\n0,0,5\n");
+                                    "*MAT_024\n3,1,1,0.3,1\n0,0,5\n"
+                                    "*PART\ntable\n3,1,3\n*ELEMENT_SOLID\n4,3,1,2,3,4,5,6,7,8\n");
   EXPECT_EQ(errorOf([&] { readModel(p); }),
             p.string() +
                 ":36: *MAT_024 card 2 field 3 (LCSS): curve 5 is defined by *DEFINE_TABLE (" +
-                p.string() + ":32), which is not supported yet");
+                p.string() + ":32), which is not supported yet (the part is used by " +
+                "*ELEMENT_SOLID at " + p.string() + ":41)");
   crumple::model::ReadOptions lenient;
   lenient.allow_unsupported = true;
   const Model m = readModel(p, lenient);
-  EXPECT_EQ(m.solids.size(), 3u);
+  EXPECT_EQ(m.solids.size(), 4u);
   // *MAT_RIGID is read: the part is a rigid body with the card's constants.
   const auto& rigid = m.materials[std::size_t(m.parts[m.partIndex(2)].material)];
   ASSERT_TRUE(std::holds_alternative<crumple::model::RigidLaw>(rigid.law));
@@ -334,7 +346,7 @@ TEST(BuildUnsupported, CountsFirstLocationsReasonsAndIgnoredFields) {
                                     "*CONTACT_FORCE_TRANSDUCER_PENALTY\n1\n"
                                     "*DATABASE_ELOUT\n0.1\n"
                                     "*contact_force_transducer_penalty\n2\n"
-                                    "*CONTROL_IMPLICIT_GENERAL\n1\n"
+                                    "*CONTROL_IMPLICIT_SOLVER\n1\n"
                                     "*CONTROL_MPP_IO_NODUMP\n"
                                     "*CONTROL_THERMAL_SOLVER\n1\n"
                                     "*CONTROL_SOLID\n1\n"
@@ -344,11 +356,15 @@ TEST(BuildUnsupported, CountsFirstLocationsReasonsAndIgnoredFields) {
   EXPECT_EQ(m.unsupported[0].keyword, "*CONTACT_FORCE_TRANSDUCER_PENALTY");
   EXPECT_EQ(m.unsupported[0].count, 2);
   EXPECT_EQ(m.unsupported[0].first.line, 25);
-  EXPECT_EQ(m.unsupported[0].reason, "not supported");
+  EXPECT_EQ(m.unsupported[0].reason, "output not written yet (force transducer)");
   EXPECT_EQ(m.unsupported[1].reason, "output not written yet");
-  EXPECT_EQ(m.unsupported[2].reason, "implicit analysis only");
+  EXPECT_EQ(m.unsupported[2].reason, "implicit controls: not used by an explicit analysis");
   EXPECT_EQ(m.unsupported[3].reason, "ignored: MPP/SMP option");
   EXPECT_EQ(m.unsupported[4].reason, "thermal analysis not supported");
+  // Only the thermal solver changes the answer: a run refuses the deck for it alone.
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_FALSE(m.unsupported[k].changes_answer) << k;
+  EXPECT_TRUE(m.unsupported[4].changes_answer);
+  EXPECT_EQ(m.unsupported[4].feature, "*CONTROL_THERMAL_SOLVER");
   ASSERT_EQ(m.ignored.size(), 2u);
   // Definitions are read before controls, so the section comes first.
   EXPECT_EQ(m.ignored[0].keyword, "*SECTION_SOLID");
@@ -358,7 +374,8 @@ TEST(BuildUnsupported, CountsFirstLocationsReasonsAndIgnoredFields) {
   const std::string table = crumple::model::formatUnsupported(m);
   const std::string loc = p.string() + ":25";
   EXPECT_EQ(table.rfind("keyword ", 0), 0u) << table;
-  EXPECT_NE(table.find("*CONTACT_FORCE_TRANSDUCER_PENALTY      2  " + loc + "  not supported\n"),
+  EXPECT_NE(table.find("*CONTACT_FORCE_TRANSDUCER_PENALTY      2  " + loc +
+                       "  output not written yet (force transducer)\n"),
             std::string::npos)
       << table;
 }

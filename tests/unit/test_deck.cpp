@@ -162,9 +162,12 @@ TEST(DeckFormat, FreeFormatCommentsBlankFieldsAndCase) {
                                     "  $ an indented comment\n"
                                     "1,7.8e-9,,0.3\n");
   // E blank -> 0 -> error, proving that an empty free-format entry is a blank field.
-  EXPECT_EQ(
-      errorOf([&] { crumple::model::readModel(p); }),
-      p.string() + ":23: *MAT_ELASTIC_TITLE card 1 field 3 (E): Young's modulus must be positive");
+  // (kCube's part 1 uses the material: the error names the element that makes it matter.)
+  EXPECT_EQ(errorOf([&] { crumple::model::readModel(p); }),
+            p.string() +
+                ":23: *MAT_ELASTIC_TITLE card 1 field 3 (E): Young's modulus must be positive (the "
+                "part is used by *ELEMENT_SOLID at " +
+                p.string() + ":12)");
   const auto q = t.write(
       "e.k", std::string(kCube) + "*MAT_ELASTIC_TITLE\nsteel, with a comma\n1,7.8e-9,2e5,0.3\n");
   const auto m = crumple::model::readModel(q);
@@ -349,7 +352,10 @@ TEST(DeckCase, KeywordsInCaseBlocksAreSkippedAndReported) {
   EXPECT_DOUBLE_EQ(m.initial_velocity[0][0], 0.0);
   ASSERT_EQ(m.unsupported.size(), 3u);
   EXPECT_EQ(m.unsupported[0].keyword, "*TITLE");
-  EXPECT_EQ(m.unsupported[0].reason, "inside *CASE block (CID=1), not supported");
+  EXPECT_EQ(m.unsupported[0].reason,
+            "inside *CASE block (CID=1): Crumple runs the deck without load cases");
+  // The base deck is what runs: nothing of a load case changes its answer.
+  for (const auto& u : m.unsupported) EXPECT_FALSE(u.changes_answer) << u.keyword;
   EXPECT_EQ(m.unsupported[1].keyword, "*CASE");
   EXPECT_EQ(m.unsupported[2].keyword, "*INITIAL_VELOCITY_NODE");
   EXPECT_EQ(m.unsupported[2].first.line, 27);

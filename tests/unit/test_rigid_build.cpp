@@ -159,7 +159,7 @@ TEST(RigidBuild, PrescribedRigidMotion) {
   TempDir t;
   const Model m = build(t,
                         "*BOUNDARY_PRESCRIBED_MOTION_RIGID_ID\n5,pull\n"
-                        "2,1,0,9,2.0\n2,7,2,9,0.5,0,3.0,1.0\n");
+                        "2,1,0,9,2.0\n6,turn\n2,7,2,9,0.5,0,3.0,1.0\n");
   const auto& mo = m.rigid.bodies.at(1).motions;
   ASSERT_EQ(mo.size(), 2u);
   EXPECT_EQ(mo[0].dof, 0);
