@@ -14,6 +14,7 @@
 #include <iterator>
 #include <map>
 #include <optional>
+#include <set>
 
 #include <nlohmann/json.hpp>
 
@@ -141,11 +142,27 @@ std::vector<const model::UnsupportedKeyword*> answerChanging(const model::Model&
   return out;
 }
 
+std::size_t featureCount(const model::Model& m) {
+  std::set<std::string> features;
+  for (const auto* u : answerChanging(m)) features.insert(u->feature);
+  return features.size();
+}
+
+// One line per feature (every element of every part of a missing material is one feature),
+// in order of first appearance.
 std::string answerChangingText(const model::Model& m) {
+  std::vector<std::string> order;
+  std::map<std::string, std::pair<int, const model::UnsupportedKeyword*>> by_feature;
+  for (const auto* u : answerChanging(m)) {
+    auto [it, added] = by_feature.try_emplace(u->feature, 0, u);
+    if (added) order.push_back(u->feature);
+    it->second.first += u->count;
+  }
   std::string out;
-  for (const auto* u : answerChanging(m))
-    out += fmt::format("  {} ({}x, first at {}): {}\n", u->feature, u->count, u->first.str(),
-                       u->reason);
+  for (const auto& f : order) {
+    const auto& [count, u] = by_feature.at(f);
+    out += fmt::format("  {} ({}x, first at {}): {}\n", f, count, u->first.str(), u->reason);
+  }
   return out;
 }
 
@@ -248,14 +265,14 @@ int checkCommand(const CheckOptions& opt, std::FILE* out) {
     std::fprintf(stderr, "crumple: error: the deck has %zu input error(s)%s\n", m.errors.size(),
                  changing.empty()
                      ? ""
-                     : fmt::format(" and uses {} unsupported feature(s)", changing.size()).c_str());
+                     : fmt::format(" and uses {} unsupported feature(s)", featureCount(m)).c_str());
     return 1;
   }
   if (status == "refused") {
     std::fprintf(stderr,
                  "crumple: error: this deck cannot run yet: it uses %zu feature(s) Crumple does "
                  "not support, and leaving them out would change the answer\n",
-                 changing.size());
+                 featureCount(m));
     return 1;
   }
   if (opt.strict && !m.unsupported.empty()) {

@@ -252,6 +252,14 @@ std::vector<KeywordSpec> makeTables() {
           I("SHLEDG")}}}});
   t.push_back(
       {"*CONTROL_SOLUTION", {{"card 1", {I("SOLN"), I("NLQ"), I("ISNAN"), I("LCINT", 100, Z)}}}});
+  // Dynamic relaxation (*CONTROL_DAMPING is its name in LS-DYNA 93x-94x decks); the
+  // parameters act only when IDRFLG or a curve's SIDR turns it on.
+  for (std::string_view name : {"*CONTROL_DYNAMIC_RELAXATION", "*CONTROL_DAMPING"})
+    t.push_back(
+        {name,
+         {{"card 1",
+           {I("NRCYCK", 250, Q), R("DRTOL", 0.001, Q), R("DRFCTR", 0.995, Q), R("DRTERM", 0, Q),
+            R("TSSFDR", 0, Q), I("IRELAL", 0, Q), R("EDTTL", 0, Q), I("IDRFLG")}}}});
   // IMFLAG 0 explicit, 1 implicit, 2 explicit then implicit springback, < 0 a curve of time.
   t.push_back({"*CONTROL_IMPLICIT_GENERAL",
                {{"card 1",
@@ -293,6 +301,10 @@ std::vector<KeywordSpec> makeTables() {
       {"*DEFINE_BOX",
        {titleCard(),
         {"card 1", {I("BOXID"), R("XMN"), R("XMX"), R("YMN"), R("YMX"), R("ZMN"), R("ZMX")}}}});
+  t.push_back(
+      {"*DEFINE_VECTOR",
+       {titleCard(),
+        {"card 1", {I("VID"), R("XT"), R("YT"), R("ZT"), R("XH"), R("YH"), R("ZH"), I("CID")}}}});
   t.push_back(
       {"*DEFINE_COORDINATE_SYSTEM",
        {titleCard(),

@@ -37,6 +37,8 @@ std::string_view kindName(Kind kind) {
       return "box";
     case Kind::CoordinateSystem:
       return "coordinate system";
+    case Kind::Vector:
+      return "vector";
   }
   return "entity";
 }
@@ -259,6 +261,7 @@ const std::vector<Meaning>& meanings() {
        U::Definition,
        Kind::Curve},
       {"*DEFINE_BOX", 0, readBox, {"TITLE"}, U::Definition, Kind::Box},
+      {"*DEFINE_VECTOR", 0, readVector, {"TITLE"}, U::Definition, Kind::Vector},
       {"*DEFINE_COORDINATE_SYSTEM",
        0,
        readCoordinateSystem,
@@ -376,6 +379,8 @@ const std::vector<Meaning>& meanings() {
       {"*CONTROL_CONTACT", 5, readControlContact, {}},
       {"*CONTROL_SOLUTION", 6, readControlSolution, {}},
       {"*CONTROL_IMPLICIT_GENERAL", 6, readControlImplicitGeneral, {}},
+      {"*CONTROL_DYNAMIC_RELAXATION", 6, readControlDynamicRelaxation, {}},
+      {"*CONTROL_DAMPING", 6, readControlDynamicRelaxation, {}},
       {"*DATABASE_EXTENT_BINARY", 6, readIgnoredControl, {}},
       {"*DATABASE_GLSTAT", 6, readDatabaseAscii, {}},
       {"*DATABASE_MATSUM", 6, readDatabaseAscii, {}},

@@ -77,12 +77,27 @@ std::optional<MotionCurve> readMotionCurve(Context& ctx, const Card& c) {
   m.vad = static_cast<int>(vad);
   m.curve = ctx.curve(c, "LCID", c.integer("LCID"));
   m.sf = c.real("SF");
-  c.integer("VID");  // the direction vector of DOF 4 and 8; not used by the DOFs supported
+  c.integer("VID");  // DOF 4 reads it (axisOfVector); marked here for the other DOFs
   const double death = c.real("DEATH");
   m.death = death >= 1e28 ? std::numeric_limits<double>::infinity() : death;
   m.birth = c.real("BIRTH");
   if (m.birth >= m.death) c.fail("DEATH", "the motion ends before it begins (BIRTH)");
   return m;
+}
+
+std::optional<std::pair<int, double>> axisOfVector(Context& ctx, const Card& c) {
+  const int64_t vid = c.integer("VID");
+  if (vid == 0) c.fail("VID", "DOF 4 moves along a vector: VID is required");
+  const auto it = ctx.vectors.find(vid);
+  if (it == ctx.vectors.end()) c.fail("VID", ctx.undefinedMessage(Kind::Vector, vid));
+  const Vec3& v = it->second;
+  for (int axis = 0; axis < 3; ++axis)
+    if (v[(axis + 1) % 3] == 0.0 && v[(axis + 2) % 3] == 0.0)
+      return std::make_pair(axis, v[axis] > 0 ? 1.0 : -1.0);
+  ctx.reject(c, "VID",
+             "DOF 4 along a vector that is not a global axis is not supported (motion normal to "
+             "it would need local axes)");
+  return std::nullopt;
 }
 
 void readPrescribedMotion(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
@@ -99,12 +114,22 @@ void readPrescribedMotion(Context& ctx, const deck::Keyword& kw, const KeywordOp
     // DOF 1-3: x, y, z translation. The others (motion along a vector, rotations, radial
     // motion) are not supported.
     const int64_t dof = c.integer("DOF");
-    if (dof < 1 || dof > 3) {
-      ctx.reject(c, "DOF", "DOF " + std::to_string(dof) + " is not supported (1, 2, 3 are)");
+    if (dof < 1 || dof > 4) {
+      ctx.reject(c, "DOF", "DOF " + std::to_string(dof) + " is not supported (1 to 4 are)");
       ctx.collect(cur);
       continue;
     }
     pm.dof = static_cast<int>(dof - 1);
+    double sign = 1.0;
+    if (dof == 4) {
+      const auto axis = axisOfVector(ctx, c);
+      if (!axis) {
+        ctx.collect(cur);
+        continue;
+      }
+      pm.dof = axis->first;
+      sign = axis->second;
+    }
     const auto motion = readMotionCurve(ctx, c);
     if (!motion) {
       ctx.collect(cur);
@@ -112,7 +137,7 @@ void readPrescribedMotion(Context& ctx, const deck::Keyword& kw, const KeywordOp
     }
     pm.kind = static_cast<MotionKind>(motion->vad);
     pm.curve = motion->curve;
-    pm.sf = motion->sf;
+    pm.sf = sign * motion->sf;
     pm.death = motion->death;
     pm.birth = motion->birth;
     for (int32_t n : nodesOf(ctx, c, first, set)) {

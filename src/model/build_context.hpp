@@ -39,6 +39,7 @@ enum class Kind : uint8_t {
   SegmentSet,
   Box,
   CoordinateSystem,
+  Vector,
 };
 std::string_view kindName(Kind kind);  // "material", "node set", ...
 
@@ -157,6 +158,7 @@ class Context {
   std::unordered_map<int64_t, int32_t> material_index, section_index, hourglass_index;
   std::map<int64_t, Box> boxes;
   std::map<int64_t, Frame> frames;
+  std::map<int64_t, Vec3> vectors;  // *DEFINE_VECTOR: unit direction tail -> head
   // Per part index: nothing, or why an element of the part cannot be run. A part no element
   // uses may be incomplete, as LS-DYNA allows: the problem is an error only on use.
   struct PartProblem {
@@ -266,6 +268,7 @@ void checkElastic(const deck::Card& c, double E, double nu);
 void readCurve(Context&, const deck::Keyword&, const KeywordOptions&);
 void readBox(Context&, const deck::Keyword&, const KeywordOptions&);
 void readCoordinateSystem(Context&, const deck::Keyword&, const KeywordOptions&);
+void readVector(Context&, const deck::Keyword&, const KeywordOptions&);
 void readNodeSetList(Context&, const deck::Keyword&, const KeywordOptions&);
 void readNodeSetGeneral(Context&, const deck::Keyword&, const KeywordOptions&);
 void readPartSetList(Context&, const deck::Keyword&, const KeywordOptions&);
@@ -284,6 +287,11 @@ struct MotionCurve {
   double sf = 1.0, birth = 0.0, death = 0.0;
 };
 std::optional<MotionCurve> readMotionCurve(Context& ctx, const deck::Card& c);
+// DOF 4 of a prescribed motion, translation along the vector VID with the motion normal to it
+// free (Keyword Manual, *BOUNDARY_PRESCRIBED_MOTION): along a global axis that is the axis'
+// DOF with the vector's sign, returned as {axis 0-2, sign}. A skew vector would need a
+// constraint in local axes: refused (nothing returned).
+std::optional<std::pair<int, double>> axisOfVector(Context& ctx, const deck::Card& c);
 void readInitialVelocity(Context&, const deck::Keyword&, const KeywordOptions&);
 void readInitialVelocityNode(Context&, const deck::Keyword&, const KeywordOptions&);
 void readInitialVelocityGeneration(Context&, const deck::Keyword&, const KeywordOptions&);
@@ -318,6 +326,7 @@ void readControlBulkViscosity(Context&, const deck::Keyword&, const KeywordOptio
 void readControlEnergy(Context&, const deck::Keyword&, const KeywordOptions&);
 void readControlImplicitGeneral(Context&, const deck::Keyword&, const KeywordOptions&);
 void readControlSolution(Context&, const deck::Keyword&, const KeywordOptions&);
+void readControlDynamicRelaxation(Context&, const deck::Keyword&, const KeywordOptions&);
 // Keywords read only to report their non-default fields (*CONTROL_SOLID, ...).
 void readIgnoredControl(Context&, const deck::Keyword&, const KeywordOptions&);
 void readDatabaseAscii(Context&, const deck::Keyword&, const KeywordOptions&);

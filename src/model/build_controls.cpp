@@ -55,6 +55,19 @@ void readControlImplicitGeneral(Context& ctx, const deck::Keyword& kw, const Key
   ctx.collect(cur);
 }
 
+// *CONTROL_DYNAMIC_RELAXATION (and its old name *CONTROL_DAMPING): IDRFLG 0 leaves dynamic
+// relaxation off unless a curve's SIDR asks for it (refused in readCurve); any other IDRFLG
+// runs a relaxation phase Crumple does not have.
+void readControlDynamicRelaxation(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  CardCursor cur(kw, ctx.deck);
+  const Card& c = cur.readOptional(keywordSpec(kw.name).card("card 1"));
+  if (const int64_t idrflg = c.integer("IDRFLG"); idrflg != 0)
+    ctx.reject(c, "IDRFLG",
+               "IDRFLG " + std::to_string(idrflg) + ": dynamic relaxation is not supported",
+               "dynamic relaxation");
+  ctx.collect(cur);
+}
+
 // *CONTROL_SOLUTION SOLN: 0 structural; 1 thermal only, 2 coupled thermal-structural.
 void readControlSolution(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
   CardCursor cur(kw, ctx.deck);

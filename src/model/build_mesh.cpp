@@ -438,11 +438,13 @@ void readMatPiecewiseLinear(Context& ctx, const deck::Keyword& kw, const Keyword
   // The table needs two points (Keyword Manual, *MAT_024); with EPS2 = 0 it has fewer, and
   // SIGY and ETAN give the hardening (older LSTC decks fill ES1-8 and leave EPS1-8 zero).
   const bool table = es.size() >= 2;
-  if (!table && es.size() == 1 && es[0] != 0.0)
+  if (!table && es.size() == 1 && es[0] != 0.0) {
+    for (int i = 2; i <= 8; ++i) c4.real("ES" + std::to_string(i));  // covered by the note
     ctx.ignore(kw.name, "ES1",
                "the EPS/ES table has fewer than two increasing strains (EPS2 = 0): SIGY and ETAN "
                "define the hardening",
                c4.where());
+  }
   if (lcss != 0) {
     if (ctx.model.curveIndex(lcss) == kNone && ctx.isUnsupported(Kind::Curve, lcss))
       ctx.reject(c2, "LCSS", ctx.undefinedMessage(Kind::Curve, lcss));

@@ -243,12 +243,22 @@ void readPrescribedMotionRigid(Context& ctx, const deck::Keyword& kw, const Keyw
     // (Keyword Manual, *BOUNDARY_PRESCRIBED_MOTION_RIGID); the others need a direction
     // vector or local axes.
     const int64_t dof = c.integer("DOF");
-    if (!((dof >= 1 && dof <= 3) || (dof >= 5 && dof <= 7))) {
-      ctx.reject(c, "DOF", "DOF " + std::to_string(dof) + " is not supported (1-3 and 5-7 are)");
+    if (dof < 1 || dof > 7) {
+      ctx.reject(c, "DOF", "DOF " + std::to_string(dof) + " is not supported (1-7 are)");
       ctx.collect(cur);
       continue;
     }
     m.dof = static_cast<int>(dof <= 3 ? dof - 1 : dof - 2);
+    double sign = 1.0;
+    if (dof == 4) {  // along a vector: see axisOfVector
+      const auto axis = axisOfVector(ctx, c);
+      if (!axis) {
+        ctx.collect(cur);
+        continue;
+      }
+      m.dof = axis->first;
+      sign = axis->second;
+    }
     const auto motion = readMotionCurve(ctx, c);
     if (!motion) {
       ctx.collect(cur);
@@ -256,7 +266,7 @@ void readPrescribedMotionRigid(Context& ctx, const deck::Keyword& kw, const Keyw
     }
     m.kind = static_cast<uint8_t>(motion->vad);
     m.curve = motion->curve;
-    m.sf = motion->sf;
+    m.sf = sign * motion->sf;
     m.death = motion->death;
     m.birth = motion->birth;
     input(ctx).motions.push_back({c.integer("PID"), m, c.context("PID")});

@@ -19,8 +19,10 @@ using deck::keywordSpec;
 constexpr std::string_view kRange[8] = {"B1", "E1", "B2", "E2", "B3", "E3", "B4", "E4"};
 
 using util::cross;
+using util::dot;
 using util::norm;
 using util::sub;
+using util::unit;
 
 void sortUnique(std::vector<int32_t>& v) {
   std::sort(v.begin(), v.end());
@@ -98,6 +100,10 @@ void readCurve(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts
   curve.id = c.integer("LCID");
   if (curve.id <= 0) c.fail("LCID", "the curve id must be a positive integer");
   ctx.define(Kind::Curve, curve.id, c, "LCID");
+  // SIDR 1 and 2 apply the curve in a dynamic-relaxation phase, which Crumple does not have.
+  if (const int64_t sidr = c.integer("SIDR"); sidr != 0)
+    ctx.reject(c, "SIDR", "SIDR " + std::to_string(sidr) + ": dynamic relaxation is not supported",
+               "dynamic relaxation");
   const double sfa = c.real("SFA"), sfo = c.real("SFO"), offa = c.real("OFFA"),
                offo = c.real("OFFO");
   // Keyword Manual, *DEFINE_CURVE, remarks: the values are scaled after the offsets are
@@ -136,6 +142,24 @@ void readBox(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) 
   for (int i = 0; i < 3; ++i)
     if (b.hi[i] < b.lo[i]) c.fail(kMax[i], "the maximum is below the minimum");
   ctx.boxes.emplace(id, b);
+  ctx.collect(cur);
+}
+
+// *DEFINE_VECTOR: the direction from the tail (XT, YT, ZT) to the head (XH, YH, ZH).
+void readVector(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*DEFINE_VECTOR");
+  CardCursor cur(kw, ctx.deck);
+  if (opts.has("TITLE")) cur.read(spec.card("title card"));
+  const Card& c = cur.read(spec.card("card 1"));
+  const int64_t id = c.integer("VID");
+  if (id <= 0) c.fail("VID", "the vector id must be a positive integer");
+  if (c.integer("CID") != 0)
+    ctx.reject(c, "CID", "a vector in a local coordinate system (CID) is not supported");
+  ctx.define(Kind::Vector, id, c, "VID");
+  const Vec3 d =
+      sub({c.real("XH"), c.real("YH"), c.real("ZH")}, {c.real("XT"), c.real("YT"), c.real("ZT")});
+  if (dot(d, d) == 0.0) c.fail("XH", "the head is the tail: the vector has no direction");
+  ctx.vectors.emplace(id, unit(d));
   ctx.collect(cur);
 }
 
