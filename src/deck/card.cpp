@@ -94,9 +94,9 @@ void Card::parseField(std::size_t i, std::string_view raw) {
   const bool negate = s.size() > 1 && s[0] == '-' && s[1] == '&';
   if (s[0] == '&' || negate || (s.size() > 1 && s[0] == '+' && s[1] == '&')) {
     const std::string name(trim(s.substr(s[0] == '&' ? 1 : 2)));
-    auto it = deck_->parameters.find(name);
-    if (it == deck_->parameters.end()) fail(f.name, "parameter '" + name + "' is not defined");
-    const Parameter& p = it->second;
+    const Parameter* found = deck_->parameter(name);
+    if (!found) fail(f.name, "parameter '" + name + "' is not defined");
+    const Parameter& p = *found;
     if (f.type == FieldType::Text) {
       v.text = p.type == 'C' ? p.text : fmtNumber(p.value);
       return;

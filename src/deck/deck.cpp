@@ -295,11 +295,12 @@ void Reader::includePath(const Keyword& kw, const FileState& file) {
 // silently, 5 keep the first silently.
 void Reader::define(const Card& card, std::string_view field, char type, const std::string& name,
                     Parameter p) {
+  p.name = name;
   p.type = type;
   p.where = card.where();
-  auto it = deck_.parameters.find(name);
+  auto it = deck_.parameters.find(upper(name));
   if (it == deck_.parameters.end()) {
-    deck_.parameters.emplace(name, std::move(p));
+    deck_.parameters.emplace(upper(name), std::move(p));
     return;
   }
   const std::string first = it->second.where.str();
@@ -373,9 +374,9 @@ void Reader::parameterExpressions(const Keyword& kw) {
   CardCursor cur(kw, deck_);
   cur.skipBlankLines();
   const ParameterLookup lookup = [this](std::string_view n) -> std::optional<double> {
-    auto it = deck_.parameters.find(std::string(n));
-    if (it == deck_.parameters.end() || it->second.type == 'C') return std::nullopt;
-    return it->second.value;
+    const Parameter* p = deck_.parameter(n);
+    if (!p || p->type == 'C') return std::nullopt;
+    return p->value;
   };
   while (!cur.atEnd()) {
     const Card& card = cur.read(spec);
@@ -406,6 +407,11 @@ void Reader::parameterDuplication(const Keyword& kw) {
 }
 
 }  // namespace
+
+const Parameter* Deck::parameter(std::string_view name) const {
+  const auto it = parameters.find(upper(name));
+  return it == parameters.end() ? nullptr : &it->second;
+}
 
 std::unique_ptr<std::istream> DiskSource::open(const fs::path& path) const {
   std::error_code ec;

@@ -13,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "deck/layout.hpp"
@@ -39,7 +40,8 @@ struct Keyword {
 };
 
 struct Parameter {
-  char type = 'R';  // 'R' real, 'I' integer, 'C' character
+  std::string name;  // as first written, for messages
+  char type = 'R';   // 'R' real, 'I' integer, 'C' character
   double value = 0.0;
   std::string text;  // the value as written (the string of a 'C' parameter)
   util::SourceLoc where;
@@ -54,8 +56,13 @@ struct ReaderNote {
 struct Deck {
   std::vector<std::string> files;  // display names, as the user would recognise them
   std::vector<Keyword> keywords;
-  std::map<std::string, Parameter> parameters;  // case-sensitive names
+  // Keyed by the upper-cased name: LS-DYNA parameter names are case-insensitive (a deck may
+  // define tEnd and use &TEnd). Look names up through parameter().
+  std::map<std::string, Parameter> parameters;
   std::vector<ReaderNote> notes;
+
+  // The parameter of that name in any case, or null.
+  const Parameter* parameter(std::string_view name) const;
 
   util::SourceLoc loc(int32_t file, int32_t line) const { return {files.at(file), line}; }
   util::SourceLoc loc(const Keyword& k) const { return loc(k.file, k.line); }

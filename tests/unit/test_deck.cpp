@@ -61,6 +61,19 @@ cube
 1,1
 )";
 
+// Reads "main.k" with `text` from memory, beside the files in `more`.
+crumple::deck::Deck memoryDeck(const std::string& text, Files more = {}) {
+  more["main.k"] = text;
+  return crumple::deck::readDeck("main.k", crumple::deck::MemorySource(std::move(more)));
+}
+
+// `field` of the first card of keyword `k` of the deck, read as `label` of `spec`'s table.
+double realOf(const crumple::deck::Deck& d, std::size_t k, std::string_view spec,
+              std::string_view label, std::string_view field) {
+  crumple::deck::CardCursor cur(d.keywords.at(k), d);
+  return cur.read(crumple::deck::keywordSpec(spec).card(label)).real(field);
+}
+
 }  // namespace
 
 TEST(DeckNumber, FortranAndCForms) {
@@ -239,6 +252,22 @@ TEST(DeckParameters, DuplicationFlag) {
             p3.string() +
                 ":7: *PARAMETER card 1 field 1 (PRMR1): parameter 'ro' is already defined at " +
                 p3.string() + ":5 (*PARAMETER_DUPLICATION DFLAG=3)");
+}
+
+TEST(DeckParameters, NamesAreCaseInsensitive) {
+  // Defined as tEnd, used as TEnd and &TEND (mainboltbexpl.k of the bolted-joint example).
+  const auto d = memoryDeck(
+      "*PARAMETER\nR     tEnd       5.0\n"
+      "*PARAMETER_EXPRESSION\nR   dtPlot TEnd/100.0\n"
+      "*PARAMETER\nR     TEND       7.0\n"
+      "*CONTROL_TERMINATION\n&TEND\n");
+  ASSERT_NE(d.parameter("tend"), nullptr);
+  EXPECT_EQ(d.parameter("TEnd")->name, "tEnd");
+  EXPECT_DOUBLE_EQ(d.parameter("DTPLOT")->value, 0.05);
+  EXPECT_DOUBLE_EQ(realOf(d, 0, "*CONTROL_TERMINATION", "card 1", "ENDTIM"), 5.0);
+  // Another spelling of the same name is a duplicate (DFLAG 1 keeps the first).
+  ASSERT_EQ(d.notes.size(), 1u);
+  EXPECT_EQ(d.notes[0].field, "TEND");
 }
 
 TEST(DeckInclude, NestedRelativePathsAndSearchDirs) {
