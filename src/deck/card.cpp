@@ -1,8 +1,9 @@
 #include "deck/card.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 #include "deck/number.hpp"
@@ -32,13 +33,23 @@ bool takesRestOfLine(const CardSpec& spec, std::size_t i) {
          spec.fields[i].width >= 70;
 }
 
+// The shortest text that reads back as exactly `v`: a parameter put into a text field (an
+// expression) keeps its value.
 std::string fmtNumber(double v) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, ec == std::errc() ? end : buf);
 }
 
 }  // namespace
+
+ParameterLookup numericParameters(const Deck& deck) {
+  return [&deck](std::string_view name) -> std::optional<double> {
+    const Parameter* p = deck.parameter(name);
+    if (!p || p->type == 'C') return std::nullopt;
+    return p->value;
+  };
+}
 
 Card::Card(const CardSpec& spec, const DataLine* line, const Keyword& keyword, const Deck& deck)
     : spec_(&spec),
@@ -83,6 +94,19 @@ Card::Card(const CardSpec& spec, const DataLine* line, const Keyword& keyword, c
   }
 }
 
+// "&name", "-&name" (negated) or "+&name": a field that is one *PARAMETER reference (Keyword
+// Manual, *PARAMETER). Anything more after the & ("&a*0.5+&b") is an expression instead.
+std::optional<Card::Reference> Card::plainReference(std::string_view s) {
+  const bool sign = s.size() > 1 && (s[0] == '-' || s[0] == '+') && s[1] == '&';
+  if (s[0] != '&' && !sign) return std::nullopt;
+  const std::string_view name = trim(s.substr(sign ? 2 : 1));
+  const auto nameChar = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+  };
+  if (name.empty() || !std::all_of(name.begin(), name.end(), nameChar)) return std::nullopt;
+  return Reference{std::string(name), s[0] == '-'};
+}
+
 void Card::parseField(std::size_t i, std::string_view raw) {
   const FieldSpec& f = spec_->fields[i];
   Value& v = values_[i];
@@ -90,30 +114,14 @@ void Card::parseField(std::size_t i, std::string_view raw) {
   if (s.empty()) return;
   v.blank = false;
   v.text = std::string(s);
-  // *PARAMETER reference: &name, or -&name for the negated value (Keyword Manual, *PARAMETER).
-  const bool negate = s.size() > 1 && s[0] == '-' && s[1] == '&';
-  if (s[0] == '&' || negate || (s.size() > 1 && s[0] == '+' && s[1] == '&')) {
-    const std::string name(trim(s.substr(s[0] == '&' ? 1 : 2)));
-    const Parameter* found = deck_->parameter(name);
-    if (!found) fail(f.name, "parameter '" + name + "' is not defined");
-    const Parameter& p = *found;
-    if (f.type == FieldType::Text) {
-      v.text = p.type == 'C' ? p.text : fmtNumber(p.value);
-      return;
-    }
-    if (p.type == 'C')
-      fail(f.name, "parameter '" + name + "' is a character parameter, a number is needed");
-    v.num = negate ? -p.value : p.value;
-    if (f.type == FieldType::Int) {
-      if (std::trunc(v.num) != v.num)
-        fail(f.name, "parameter '" + name + "' = " + fmtNumber(p.value) + " is not an integer");
-      v.inum = static_cast<int64_t>(v.num);
-    }
-    return;
+  if (const auto ref = plainReference(s)) return resolveReference(i, *ref);
+  if (f.type != FieldType::Text && s.find('&') != std::string_view::npos) {
+    const double x = evaluateInline(i, s);
+    return setNumber(i, x, "'" + v.text + "' = " + fmtNumber(x));
   }
   switch (f.type) {
     case FieldType::Text:
-      return;
+      return;  // an expression in a text field (*PARAMETER_EXPRESSION) stays text
     case FieldType::Real: {
       const auto r = parseReal(s);
       if (!r) fail(f.name, "'" + v.text + "' is not a number");
@@ -128,6 +136,37 @@ void Card::parseField(std::size_t i, std::string_view raw) {
       return;
     }
   }
+}
+
+void Card::resolveReference(std::size_t i, const Reference& ref) {
+  const FieldSpec& f = spec_->fields[i];
+  const Parameter* p = deck_->parameter(ref.name);
+  if (!p) fail(f.name, "parameter '" + ref.name + "' is not defined");
+  if (f.type == FieldType::Text) {
+    values_[i].text = p->type == 'C' ? p->text : fmtNumber(p->value);
+    return;
+  }
+  if (p->type == 'C')
+    fail(f.name, "parameter '" + ref.name + "' is a character parameter, a number is needed");
+  setNumber(i, ref.negate ? -p->value : p->value,
+            "parameter '" + ref.name + "' = " + fmtNumber(p->value));
+}
+
+// A field such as "&tp*0.5+&b" in a numeric field is evaluated like a *PARAMETER_EXPRESSION.
+double Card::evaluateInline(std::size_t i, std::string_view s) const {
+  try {
+    return evaluateExpression(s, numericParameters(*deck_));
+  } catch (const ExpressionError& e) {
+    fail(spec_->fields[i].name, e.what());
+  }
+}
+
+void Card::setNumber(std::size_t i, double x, const std::string& what) {
+  Value& v = values_[i];
+  v.num = x;
+  if (spec_->fields[i].type != FieldType::Int) return;
+  if (std::trunc(x) != x) fail(spec_->fields[i].name, what + " is not an integer");
+  v.inum = static_cast<int64_t>(x);
 }
 
 std::size_t Card::index(std::string_view field) const {

@@ -1,20 +1,27 @@
 // Typed reading of one card against its CardSpec, in fixed (standard, I10, long) or free
-// (comma separated) format, with *PARAMETER references (&name, -&name) resolved. Every error
+// (comma separated) format, with *PARAMETER references (&name, -&name) resolved and
+// expressions over them (&a*0.5+&b) evaluated in numeric fields. Every error
 // names file:line, keyword, card, field number and field name, e.g.
 //   deck.k:123: *MAT_ELASTIC card 1 field 3 (E): 'abc' is not a number
 #pragma once
 
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "deck/deck.hpp"
+#include "deck/expression.hpp"
 #include "deck/layout.hpp"
 #include "util/source_loc.hpp"
 
 namespace crumple::deck {
+
+// The deck's numeric parameters by name, for evaluateExpression (a character parameter is no
+// number).
+ParameterLookup numericParameters(const Deck& deck);
 
 // A field that was read with a value different from its default but that the code using
 // the keyword did not look at: reported so the user learns it is not honoured.
@@ -55,8 +62,17 @@ class Card {
     int64_t inum = 0;
     std::string text;
   };
+  struct Reference {
+    std::string name;
+    bool negate = false;
+  };
+  static std::optional<Reference> plainReference(std::string_view s);
   std::size_t index(std::string_view field) const;
   void parseField(std::size_t i, std::string_view raw);
+  void resolveReference(std::size_t i, const Reference& ref);
+  double evaluateInline(std::size_t i, std::string_view s) const;
+  // Sets a numeric field; `what` names the value if an integer field gets a fraction.
+  void setNumber(std::size_t i, double x, const std::string& what);
 
   const CardSpec* spec_;
   const Keyword* keyword_;

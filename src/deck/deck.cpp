@@ -373,11 +373,7 @@ void Reader::parameterExpressions(const Keyword& kw) {
   const CardSpec& spec = keywordSpec("*PARAMETER_EXPRESSION").card("card 1");
   CardCursor cur(kw, deck_);
   cur.skipBlankLines();
-  const ParameterLookup lookup = [this](std::string_view n) -> std::optional<double> {
-    const Parameter* p = deck_.parameter(n);
-    if (!p || p->type == 'C') return std::nullopt;
-    return p->value;
-  };
+  const ParameterLookup lookup = numericParameters(deck_);
   while (!cur.atEnd()) {
     const Card& card = cur.read(spec);
     const auto [type, name] = typeAndName(card, "PRMR");

@@ -270,6 +270,36 @@ TEST(DeckParameters, NamesAreCaseInsensitive) {
   EXPECT_EQ(d.notes[0].field, "TEND");
 }
 
+TEST(DeckParameters, ExpressionsAfterAnAmpersand) {
+  // sinusoid.k (muscle example): expressions in the 20-wide *DEFINE_CURVE point fields;
+  // eccentric.k: an expression that starts with a reference.
+  const auto d = memoryDeck(
+      "*PARAMETER\nR       tp       2.0R        a       4.0R        b       1.0\n"
+      "*PARAMETER_EXPRESSION\n"
+      "R rampLenS &A-&b\n"
+      "R    third 1.0/3.0\n"
+      "R    again &third\n"
+      "*DEFINE_CURVE\n         4\n"
+      "        &tp*0.500000     &a*-0.250000+&B\n"
+      "*DEFINE_CURVE\n1+&A/8\n"
+      "*DEFINE_CURVE\n-&a\n");
+  EXPECT_DOUBLE_EQ(d.parameter("rampLenS")->value, 3.0);
+  EXPECT_EQ(d.parameter("again")->value, 1.0 / 3.0);  // exactly: no digits lost on the way
+  crumple::deck::CardCursor cur(d.keywords.at(0), d);
+  const auto& spec = crumple::deck::keywordSpec("*DEFINE_CURVE");
+  cur.read(spec.card("card 1"));
+  const auto& point = cur.read(spec.card("point card"));
+  EXPECT_DOUBLE_EQ(point.real("A1"), 1.0);
+  EXPECT_DOUBLE_EQ(point.real("O1"), 0.0);
+  EXPECT_EQ(errorOf([&] { realOf(d, 1, "*DEFINE_CURVE", "card 1", "LCID"); }),
+            "main.k:11: *DEFINE_CURVE card 1 field 1 (LCID): '1+&A/8' = 1.5 is not an integer");
+  EXPECT_DOUBLE_EQ(realOf(d, 2, "*DEFINE_CURVE", "card 1", "LCID"), -4.0);  // a plain reference
+  const auto bad = memoryDeck("*DEFINE_CURVE\n&a*2\n");
+  EXPECT_EQ(errorOf([&] { realOf(bad, 0, "*DEFINE_CURVE", "card 1", "LCID"); }),
+            "main.k:2: *DEFINE_CURVE card 1 field 1 (LCID): expression '&a*2': parameter 'a' is "
+            "not defined");
+}
+
 TEST(DeckInclude, NestedRelativePathsAndSearchDirs) {
   TempDir t;
   t.write("mesh/nodes.k", "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n*INCLUDE\nmore/top.k\n");
