@@ -300,6 +300,30 @@ TEST(DeckParameters, ExpressionsAfterAnAmpersand) {
             "not defined");
 }
 
+TEST(DeckParameters, TypeLetterGluedToTheNameInFreeAndFixedFormat) {
+  // Run.k (hypervelocity impact template): "RA1,2251710e3", and RT defined but &t used -- the
+  // reason that deck stopped was the case of the name (see NamesAreCaseInsensitive).
+  const auto d = memoryDeck(
+      "*PARAMETER\n"
+      "RA1,2251710e3                                   \n"
+      "RT,1.2E-5\n"
+      "i n, 3,C  tag,steel\n"
+      "RpathLenN0  1.000000R      dT      0.500I      k2         7\n"
+      "*PARAMETER_EXPRESSION\n"
+      "Rf_r, 2-&dt\n"
+      "*CONTROL_TERMINATION\n"
+      "&t            600000\n");
+  EXPECT_DOUBLE_EQ(d.parameter("A1")->value, 2251710e3);
+  EXPECT_EQ(d.parameter("N")->type, 'I');
+  EXPECT_DOUBLE_EQ(d.parameter("n")->value, 3.0);
+  EXPECT_EQ(d.parameter("tag")->text, "steel");
+  EXPECT_DOUBLE_EQ(d.parameter("pathLenN0")->value, 1.0);
+  EXPECT_DOUBLE_EQ(d.parameter("k2")->value, 7.0);
+  EXPECT_DOUBLE_EQ(d.parameter("f_r")->value, 1.5);
+  EXPECT_DOUBLE_EQ(realOf(d, 0, "*CONTROL_TERMINATION", "card 1", "ENDTIM"), 1.2e-5);
+  EXPECT_DOUBLE_EQ(realOf(d, 0, "*CONTROL_TERMINATION", "card 1", "ENDCYC"), 600000.0);
+}
+
 TEST(DeckInclude, NestedRelativePathsAndSearchDirs) {
   TempDir t;
   t.write("mesh/nodes.k", "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n*INCLUDE\nmore/top.k\n");
