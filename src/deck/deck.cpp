@@ -112,7 +112,9 @@ bool readLine(std::istream& in, std::string& text, const std::string& display, i
 
 class Reader {
  public:
-  Reader(Deck& deck, const Source& source) : deck_(deck), source_(source) {}
+  // `main` is the deck's main file: *INCLUDE_PATH_RELATIVE entries are relative to its folder.
+  Reader(Deck& deck, const Source& source, const fs::path& main)
+      : deck_(deck), source_(source), main_{main.parent_path(), main.parent_path()} {}
 
   // `path` opens the file's includes (relative to its folder), `identity` recognises cycles,
   // `display` names it in messages.
@@ -127,7 +129,17 @@ class Reader {
   };
 
   void finish(Keyword& kw, FileState& file, int depth);
+  struct SearchDir {
+    fs::path dir, display;
+  };
+  struct Candidate {
+    fs::path full;
+    std::string display;
+  };
+
   void include(const Keyword& kw, FileState& file, int depth);
+  void includeFile(const Card& card, const std::string& name, FileState& file, int depth);
+  std::vector<Candidate> includeCandidates(const std::string& name, const FileState& file) const;
   void includePath(const Keyword& kw, const FileState& file);
   void parameters(const Keyword& kw);
   void parameterExpressions(const Keyword& kw);
@@ -140,9 +152,7 @@ class Reader {
   // The files being read, outermost first (identity, display name): an *INCLUDE of one of
   // them is a cycle.
   std::vector<std::pair<std::string, std::string>> open_;
-  struct SearchDir {
-    fs::path dir, display;
-  };
+  SearchDir main_;
   std::vector<SearchDir> search_;
   int dflag_ = 1;
   std::string case_block_;
@@ -221,70 +231,100 @@ void Reader::include(const Keyword& kw, FileState& file, int depth) {
   const CardSpec& spec = keywordSpec("*INCLUDE").card("card 1");
   CardCursor cur(kw, deck_);
   cur.skipBlankLines();
+  // One file name per line, as many lines as there are files (Keyword Manual, *INCLUDE).
   while (!cur.atEnd()) {
     const Card& card = cur.read(spec);
-    // A name longer than a line continues on the next line after a trailing " +"
-    // (Keyword Manual, *INCLUDE).
+    // A name longer than a line continues on the next line after a trailing " +".
     std::string name = card.text("FILENAME");
     while (name.size() >= 2 && name.substr(name.size() - 2) == " +" && !cur.atEnd()) {
       name.resize(name.size() - 2);
       name += cur.read(spec).text("FILENAME");
     }
-    if (depth > 40)
-      card.fail("FILENAME", "*INCLUDE nested more than 40 deep (does a file include itself?)");
-    const fs::path p(name);
-    std::vector<SearchDir> candidates;
-    if (p.is_absolute()) {
-      candidates.push_back({{}, {}});
-    } else {
-      candidates.push_back({file.dir, file.display_dir});
-      candidates.insert(candidates.end(), search_.begin(), search_.end());
-    }
-    bool found = false;
-    std::string tried;
-    for (const auto& c : candidates) {
-      const fs::path full = p.is_absolute() ? p : c.dir / p;
-      if (auto in = source_.open(full)) {
-        const std::string display =
-            p.is_absolute() ? p.string() : (c.display / p).lexically_normal().string();
-        const std::string identity = source_.identity(full);
-        const auto again = std::find_if(open_.begin(), open_.end(),
-                                        [&](const auto& o) { return o.first == identity; });
-        if (again != open_.end()) {
-          // Reading on would never end: name the chain so the user sees which line to cut.
-          std::string chain;
-          for (auto o = again; o != open_.end(); ++o) chain += o->second + " -> ";
-          card.fail("FILENAME", "include cycle: " + chain + display);
-        }
-        readFile(*in, full, identity, display, kw.format, depth + 1);
-        found = true;
-        break;
-      }
-      if (!tried.empty()) tried += ", ";
-      tried += (c.display / p).lexically_normal().string();
-    }
-    if (!found)
-      throw util::InputError(deck_.loc(kw).str() + ": " + kw.name + ": cannot open '" + name +
-                             "' (tried " + tried + ")");
+    includeFile(card, name, file, depth);
     cur.flush();
     cur.skipBlankLines();
   }
 }
 
+void Reader::includeFile(const Card& card, const std::string& name, FileState& file, int depth) {
+  if (depth > 40)
+    card.fail("FILENAME", "*INCLUDE nested more than 40 deep (does a file include itself?)");
+  std::string tried;
+  for (const auto& c : includeCandidates(name, file)) {
+    auto in = source_.open(c.full);
+    if (!in) {
+      tried += (tried.empty() ? "" : ", ") + c.display;
+      continue;
+    }
+    const std::string identity = source_.identity(c.full);
+    const auto again = std::find_if(open_.begin(), open_.end(),
+                                    [&](const auto& o) { return o.first == identity; });
+    if (again != open_.end()) {
+      // Reading on would never end: name the chain so the user sees which line to cut.
+      std::string chain;
+      for (auto o = again; o != open_.end(); ++o) chain += o->second + " -> ";
+      card.fail("FILENAME", "include cycle: " + chain + c.display);
+    }
+    return readFile(*in, c.full, identity, c.display, card.keyword().format, depth + 1);
+  }
+  // A name is the whole line, blanks included, as LS-DYNA reads it: "a.k b.k" is one name.
+  const std::string hint = name.find_first_of(" \t") == std::string::npos
+                               ? ""
+                               : "; *INCLUDE takes one file name per line";
+  throw util::InputError(deck_.loc(card.keyword()).str() + ": " + card.keyword().name +
+                         ": cannot open '" + name + "' (tried " + tried + ")" + hint);
+}
+
+// Where an *INCLUDE name may be, in order: the name (backslashes read as '/') in the
+// including file's folder, then in the *INCLUDE_PATH folders; then its last component in the
+// same folders, so that a deck written on another machine ("D:\models\mesh.k") finds the file
+// beside it. An absolute name is tried as written; a Windows drive path never is.
+std::vector<Reader::Candidate> Reader::includeCandidates(const std::string& name,
+                                                         const FileState& file) const {
+  std::string written = name;
+  std::replace(written.begin(), written.end(), '\\', '/');
+  const fs::path p(written);
+  const bool drive = written.size() > 1 && std::isalpha(static_cast<unsigned char>(written[0])) &&
+                     written[1] == ':';
+  std::vector<SearchDir> dirs{{file.dir, file.display_dir}};
+  dirs.insert(dirs.end(), search_.begin(), search_.end());
+  std::vector<Candidate> out;
+  auto add = [&](const fs::path& full, const fs::path& display) {
+    const std::string shown = display.lexically_normal().string();
+    const bool seen =
+        std::any_of(out.begin(), out.end(), [&](const Candidate& c) { return c.display == shown; });
+    if (!seen) out.push_back({full, shown});
+  };
+  if (p.is_absolute()) {
+    add(p, p);
+  } else if (!drive) {
+    for (const auto& d : dirs) add(d.dir / p, d.display / p);
+  }
+  const fs::path base = p.filename();
+  if (!base.empty())
+    for (const auto& d : dirs) add(d.dir / base, d.display / base);
+  return out;
+}
+
 // Directories searched for *INCLUDE files after the including file's own folder, in order
-// (Keyword Manual, *INCLUDE_PATH). Relative entries are taken relative to the file that
-// holds the *INCLUDE_PATH, which is what _RELATIVE asks for and the most useful reading of
-// the plain form.
+// (Keyword Manual, *INCLUDE_PATH). *INCLUDE_PATH_RELATIVE entries are relative to the folder
+// of the main deck (Keyword Manual, *INCLUDE_PATH_RELATIVE), so that a shared file can name
+// folders beside the case that includes it; relative *INCLUDE_PATH entries are taken relative
+// to the file that holds them.
 void Reader::includePath(const Keyword& kw, const FileState& file) {
   const CardSpec& spec = keywordSpec("*INCLUDE_PATH").card("card 1");
+  const SearchDir& base =
+      kw.name == "*INCLUDE_PATH_RELATIVE" ? main_ : SearchDir{file.dir, file.display_dir};
   CardCursor cur(kw, deck_);
   cur.skipBlankLines();
   while (!cur.atEnd()) {
-    const fs::path p(cur.read(spec).text("PATH"));
+    std::string written = cur.read(spec).text("PATH");
+    std::replace(written.begin(), written.end(), '\\', '/');
+    const fs::path p(written);
     if (p.is_absolute())
       search_.push_back({p, p});
     else
-      search_.push_back({file.dir / p, (file.display_dir / p).lexically_normal()});
+      search_.push_back({base.dir / p, (base.display / p).lexically_normal()});
     cur.flush();
     cur.skipBlankLines();
   }
@@ -445,7 +485,7 @@ Deck readDeck(const std::filesystem::path& path, const Source& source) {
   Deck deck;
   const auto in = source.open(path);
   if (!in) throw util::InputError(path.string() + ": cannot open the file");
-  Reader reader(deck, source);
+  Reader reader(deck, source, path);
   reader.readFile(*in, path, source.identity(path), path.string(), Format::Standard, 0);
   return deck;
 }

@@ -364,6 +364,55 @@ TEST(DeckInclude, CyclesAreNamedWithTheirChain) {
   EXPECT_EQ(crumple::deck::readDeck(twice).keywords.size(), 2u);
 }
 
+TEST(DeckInclude, WindowsPathsFallBackToTheFileNameBesideTheDeck) {
+  // A drive path written on another machine (main.k of the tensile-specimen example), a
+  // relative path with backslashes, and a file found only in an *INCLUDE_PATH folder.
+  const crumple::deck::MemorySource source(
+      Files{{"model/main.k",
+             "*INCLUDE_PATH\nrun\n*INCLUDE\nD:\\work\\model\\nodes.k\n"
+             "..\\model\\lib\\mat.k\nC:\\old\\spc.k\n"},
+            {"model/nodes.k", "*NODE\n1,0,0,0\n"},
+            {"model/lib/mat.k", "*MAT_ELASTIC\n1,1,1,0.3\n"},
+            {"model/run/spc.k", "*BOUNDARY_SPC_NODE\n1,0,1,1,1\n"}});
+  const auto deck = crumple::deck::readDeck("model/main.k", source);
+  ASSERT_EQ(deck.keywords.size(), 3u);
+  EXPECT_EQ(deck.files.at(deck.keywords[0].file), "model/nodes.k");
+  EXPECT_EQ(deck.files.at(deck.keywords[1].file), "model/lib/mat.k");
+  EXPECT_EQ(deck.files.at(deck.keywords[2].file), "model/run/spc.k");
+  // Nothing found: every path tried is named.
+  EXPECT_EQ(errorOf([&] { memoryDeck("*INCLUDE_PATH\nlib\n*INCLUDE\nD:\\x\\gone.k\n"); }),
+            "main.k:3: *INCLUDE: cannot open 'D:\\x\\gone.k' (tried gone.k, lib/gone.k)");
+  EXPECT_EQ(errorOf([&] { memoryDeck("*INCLUDE\nsub\\gone.k\n"); }),
+            "main.k:1: *INCLUDE: cannot open 'sub\\gone.k' (tried sub/gone.k, gone.k)");
+}
+
+TEST(DeckInclude, OneNamePerLineAndNamesWithBlanks) {
+  // input.k of the MAT_106 examples: one *INCLUDE, one file per line. A name may hold blanks
+  // ("Neo-Hookean - Tensor/"): the line is one name, as LS-DYNA reads it.
+  const Files files{{"mesh.k", "*NODE\n1,0,0,0\n"},
+                    {"my folder/mat 1.k", "*MAT_ELASTIC\n1,1,1,0.3\n"}};
+  const auto d = memoryDeck("*INCLUDE\nmesh.k\n$ a comment between\nmy folder/mat 1.k\n", files);
+  ASSERT_EQ(d.keywords.size(), 2u);
+  EXPECT_EQ(d.keywords[1].name, "*MAT_ELASTIC");
+  EXPECT_EQ(errorOf([&] { memoryDeck("*INCLUDE\nmesh.k mat.k\n", files); }),
+            "main.k:1: *INCLUDE: cannot open 'mesh.k mat.k' (tried mesh.k mat.k); *INCLUDE "
+            "takes one file name per line");
+}
+
+TEST(DeckInclude, IncludePathRelativeIsRelativeToTheMainDeck) {
+  // active_force_length_06.k of the VEXAT muscle example: the main deck includes a file one
+  // folder up, whose *INCLUDE_PATH_RELATIVE ../../../common/ only makes sense from the main
+  // deck's folder.
+  const Files files{
+      {"ex/umat/apfl/afl06/main.k", "*INCLUDE_PATH_RELATIVE\n../\n*INCLUDE\n../apfl.k\n"},
+      {"ex/umat/apfl/apfl.k", "*INCLUDE_PATH_RELATIVE\n../../../common/\n*INCLUDE\nparams.k\n"},
+      {"ex/common/params.k", "*PARAMETER\nR        a       1.0\n"}};
+  const auto d =
+      crumple::deck::readDeck("ex/umat/apfl/afl06/main.k", crumple::deck::MemorySource(files));
+  ASSERT_NE(d.parameter("a"), nullptr);
+  EXPECT_EQ(d.parameter("a")->where.file, "ex/common/params.k");
+}
+
 TEST(DeckSource, MemoryFilesOnlyAndNothingFromDisk) {
   using crumple::deck::MemorySource;
   TempDir t;
@@ -371,10 +420,11 @@ TEST(DeckSource, MemoryFilesOnlyAndNothingFromDisk) {
   const MemorySource files(
       {{"main.k", "*INCLUDE\ninc/part.k\n*INCLUDE\n" + on_disk.string() + "\n"},
        {"inc/part.k", "*NODE\n2,1,0,0\n"}});
-  // The include in memory is found; the absolute path of a real file is not.
+  // The include in memory is found; the absolute path of a real file is not (nor its name
+  // beside the deck).
   EXPECT_EQ(errorOf([&] { crumple::deck::readDeck("main.k", files); }),
             "main.k:3: *INCLUDE: cannot open '" + on_disk.string() + "' (tried " +
-                on_disk.string() + ")");
+                on_disk.string() + ", real.k)");
   const MemorySource one(Files{{"x.k", "*NODE\n1,0,0,0\n"}});
   EXPECT_EQ(crumple::deck::readDeck("x.k", one).keywords.size(), 1u);
   EXPECT_EQ(errorOf([&] { crumple::deck::readDeck("y.k", one); }), "y.k: cannot open the file");
