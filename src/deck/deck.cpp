@@ -170,6 +170,11 @@ void Reader::readFile(std::istream& in, const fs::path& path, const std::string&
   int32_t line_no = 0;
   while (readLine(in, text, display, line_no + 1)) {
     ++line_no;
+    // Encrypted input (Keyword Manual, "Encryption"): only LS-DYNA holds the key, and the
+    // cipher text that follows would otherwise be reported as binary data.
+    if (startsWith(trim(text), "-----BEGIN PGP MESSAGE-----"))
+      throw util::InputError(display + ":" + std::to_string(line_no) +
+                             ": encrypted (PGP) input cannot be read");
     if (isComment(text)) continue;
     if (text.empty() || text[0] != '*') {
       // Lines before the first keyword (a header) are not part of any keyword.

@@ -462,6 +462,13 @@ TEST(DeckLines, LongLinesAndBinaryDataAreRefused) {
   EXPECT_EQ(ok.keywords[0].lines[0].text, "K\xc3\xa4se\tbox\f");
 }
 
+TEST(DeckLines, EncryptedIncludeIsNamedAsSuch) {
+  // keyfile_include2.key (qd-cae test deck): plain keywords, then a PGP block of cipher bytes.
+  const Files files{{"enc.key", "*NODE\n1,0,0,0\n-----BEGIN PGP MESSAGE-----\n\x85\x01\x0c\n"}};
+  EXPECT_EQ(errorOf([&] { memoryDeck("*INCLUDE\nenc.key\n", files); }),
+            "enc.key:3: encrypted (PGP) input cannot be read");
+}
+
 TEST(DeckTruncated, DefinitionWithoutCardsIsAnError) {
   TempDir t;
   const auto p = t.write("cut.k", std::string(kCube) + "*MAT_ELASTIC\n1,1,1,0.3\n*SECTION_SHELL\n");
