@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "deck/number.hpp"
 #include "util/error.hpp"
@@ -61,37 +62,94 @@ Card::Card(const CardSpec& spec, const DataLine* line, const Keyword& keyword, c
       used_(spec.fields.size(), false) {
   if (!line) return;
   const std::string_view text = line->text;
-  const std::size_t n = spec.fields.size();
-  // Free format (Keyword Manual, "Free format input"): fields separated by commas. A card
-  // whose last field is a wide text field is free format only if a comma comes before that
-  // field's column, so that an expression such as max(a,b) in fixed columns stays whole.
-  // A card of one text field (a title, a file name) is never split.
-  const bool splittable = n > 1 || spec.fields[0].type != FieldType::Text;
-  std::size_t comma = splittable ? text.find(',') : std::string_view::npos;
-  if (n > 1 && comma != std::string_view::npos && takesRestOfLine(spec, n - 1)) {
-    int start = 0;
-    for (std::size_t i = 0; i + 1 < n; ++i) start += effectiveWidth(spec.fields[i], keyword.format);
-    if (comma >= static_cast<std::size_t>(start)) comma = std::string_view::npos;
-  }
-  if (comma != std::string_view::npos) {
-    std::size_t pos = 0;
-    for (std::size_t i = 0; i < n && pos <= text.size(); ++i) {
-      std::size_t end = takesRestOfLine(spec, i) ? std::string_view::npos : text.find(',', pos);
-      if (end == std::string_view::npos) end = text.size();
-      parseField(i, text.substr(pos, end - pos));
-      pos = end + 1;
-    }
+  if (freeFormat(text)) {
+    readFree(text);
     return;
   }
+  const std::vector<std::string_view> fields = fixedFields(text);
+  if (outOfColumns(text, fields) && readSpaced(text)) return;
+  for (std::size_t i = 0; i < fields.size(); ++i) parseField(i, fields[i]);
+}
+
+// A card of one text field (a title, a file name) is never split.
+bool Card::splittable() const {
+  return spec_->fields.size() > 1 || spec_->fields[0].type != FieldType::Text;
+}
+
+// Free format (Keyword Manual, "Free format input"): fields separated by commas. A card
+// whose last field is a wide text field is free format only if a comma comes before that
+// field's column, so that an expression such as max(a,b) in fixed columns stays whole.
+bool Card::freeFormat(std::string_view text) const {
+  const std::size_t comma = splittable() ? text.find(',') : std::string_view::npos;
+  const std::size_t n = spec_->fields.size();
+  if (comma == std::string_view::npos || n == 1 || !takesRestOfLine(*spec_, n - 1))
+    return comma != std::string_view::npos;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i + 1 < n; ++i)
+    start += static_cast<std::size_t>(effectiveWidth(spec_->fields[i], keyword_->format));
+  return comma < start;
+}
+
+void Card::readFree(std::string_view text) {
+  std::size_t pos = 0;
+  for (std::size_t i = 0; i < spec_->fields.size() && pos <= text.size(); ++i) {
+    std::size_t end = takesRestOfLine(*spec_, i) ? std::string_view::npos : text.find(',', pos);
+    if (end == std::string_view::npos) end = text.size();
+    parseField(i, text.substr(pos, end - pos));
+    pos = end + 1;
+  }
+}
+
+// The text of each field in the keyword's column widths, up to the end of the line.
+std::vector<std::string_view> Card::fixedFields(std::string_view text) const {
+  std::vector<std::string_view> out;
   std::size_t col = 0;
-  for (std::size_t i = 0; i < n && col < text.size(); ++i) {
+  for (std::size_t i = 0; i < spec_->fields.size() && col < text.size(); ++i) {
     const std::size_t w =
-        takesRestOfLine(spec, i)
+        takesRestOfLine(*spec_, i)
             ? std::string_view::npos
-            : static_cast<std::size_t>(effectiveWidth(spec.fields[i], keyword.format));
-    parseField(i, text.substr(col, w));
+            : static_cast<std::size_t>(effectiveWidth(spec_->fields[i], keyword_->format));
+    out.push_back(text.substr(col, w));
     col = w == std::string_view::npos ? text.size() : col + w;
   }
+  return out;
+}
+
+// A tab inside the line, or a blank inside a numeric field ("0       1": a script wrote 8-wide
+// columns into a 10-wide card), means the values are not in the card's columns.
+bool Card::outOfColumns(std::string_view text, const std::vector<std::string_view>& fields) const {
+  if (!splittable()) return false;
+  if (text.substr(0, text.find_last_not_of(" \t") + 1).find('\t') != std::string_view::npos)
+    return true;
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    const std::string_view s = trim(fields[i]);
+    if (spec_->fields[i].type != FieldType::Text &&
+        s.find_first_of(" \t") != std::string_view::npos && s.find('&') == std::string_view::npos)
+      return true;
+  }
+  return false;
+}
+
+// Reads the line as blank-separated values in field order, if there are no more values than
+// fields and each reads as its field's type; otherwise leaves the card unread (false).
+bool Card::readSpaced(std::string_view text) {
+  std::vector<std::string_view> tokens;
+  for (std::size_t pos = text.find_first_not_of(" \t"); pos != std::string_view::npos;) {
+    const std::size_t end = text.find_first_of(" \t", pos);
+    tokens.push_back(text.substr(pos, end - pos));
+    pos = end == std::string_view::npos ? end : text.find_first_not_of(" \t", end);
+  }
+  if (tokens.size() > spec_->fields.size()) return false;
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    const FieldType t = spec_->fields[i].type;
+    const bool ok = t == FieldType::Text || tokens[i].find('&') != std::string_view::npos ||
+                    (t == FieldType::Real ? parseReal(tokens[i]).has_value()
+                                          : parseInteger(tokens[i]).has_value());
+    if (!ok) return false;
+  }
+  for (std::size_t i = 0; i < tokens.size(); ++i) parseField(i, tokens[i]);
+  spaced_ = true;
+  return true;
 }
 
 // "&name", "-&name" (negated) or "+&name": a field that is one *PARAMETER reference (Keyword
@@ -259,7 +317,22 @@ const Card& CardCursor::read(const CardSpec& spec) {
   if (atEnd())
     throw util::InputError(deck_->loc(*keyword_).str() + ": " + keyword_->name + " " +
                            std::string(spec.label) + " is missing");
-  return cards_.emplace_back(spec, &keyword_->lines[next_++], *keyword_, *deck_);
+  return noteSpaced(cards_.emplace_back(spec, &keyword_->lines[next_++], *keyword_, *deck_));
+}
+
+// Once per keyword: the cards after the first are most likely written by the same script.
+const Card& CardCursor::noteSpaced(const Card& card) {
+  if (!card.readAsSpaceSeparated() || noted_spaced_) return card;
+  noted_spaced_ = true;
+  notes_.push_back({keyword_->name, std::string(card.label()),
+                    "values not in the card's columns (a tab, or blanks inside a number): read "
+                    "as space-separated fields in order",
+                    card.where()});
+  return card;
+}
+
+std::vector<ReaderNote> CardCursor::takeNotes() {
+  return std::exchange(notes_, {});
 }
 
 const Card& CardCursor::readOptional(const CardSpec& spec) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <unistd.h>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <filesystem>
@@ -514,4 +515,42 @@ TEST(DeckCard, CursorReadsTypedFieldsAndReportsUnusedValues) {
   EXPECT_TRUE(cur.atEnd());
   EXPECT_EQ(errorOf([&] { cur.read(keywordSpec("*CONTROL_SOLID").card("card 2")); }),
             "x.k:4: *CONTROL_SOLID card 2 is missing");
+}
+
+TEST(DeckCard, ValuesOutOfColumnsAreReadAsSpaceSeparatedFields) {
+  using namespace crumple::deck;
+  Deck deck;
+  deck.files = {"x.k"};
+  Keyword kw;
+  kw.name = "*BOUNDARY_SPC_NODE";
+  kw.line = 1;
+  // v41_ep_4p0uj.k (laser ablation): a script wrote 8-wide columns into this 10-wide card.
+  kw.lines = {{"       1       0       1       0       1       0       0       0", 0, 2},
+              {"2\t0\t0\t1", 0, 3},
+              {"         3         0         1         1", 0, 4},
+              {"      82       0       1       0       1       0       0       0", 0, 5}};
+  const CardSpec& spec = keywordSpec("*BOUNDARY_SPC").card("card 1");
+  CardCursor cur(kw, deck);
+  const std::vector<std::array<int64_t, 5>> expected{
+      {1, 0, 1, 0, 1}, {2, 0, 0, 1, 0}, {3, 0, 1, 1, 0}, {82, 0, 1, 0, 1}};
+  for (const auto& e : expected) {
+    const Card& c = cur.read(spec);
+    EXPECT_EQ(c.readAsSpaceSeparated(), e[0] != 3) << e[0];
+    EXPECT_EQ((std::array<int64_t, 5>{c.integer("NID"), c.integer("CID"), c.integer("DOFX"),
+                                      c.integer("DOFY"), c.integer("DOFZ")}),
+              e);
+  }
+  const auto notes = cur.takeNotes();
+  ASSERT_EQ(notes.size(), 1u);  // once per keyword
+  EXPECT_EQ(notes[0].keyword, "*BOUNDARY_SPC_NODE");
+  EXPECT_EQ(notes[0].where.str(), "x.k:2");
+  // More values than fields, or one that is not of its field's type: the columns stand, and
+  // so does their error.
+  kw.lines = {{"1 0 1 0 1 0 0 0 9", 0, 6}, {"1 x\t1", 0, 7}};
+  CardCursor again(kw, deck);
+  EXPECT_EQ(errorOf([&] { again.read(spec); }),
+            "x.k:6: *BOUNDARY_SPC_NODE card 1 field 1 (NID): '1 0 1 0 1' is not an integer");
+  EXPECT_EQ(errorOf([&] { again.read(spec); }),
+            "x.k:7: *BOUNDARY_SPC_NODE card 1 field 1 (NID): '1 x\t1' is not an integer");
+  EXPECT_TRUE(again.takeNotes().empty());
 }
