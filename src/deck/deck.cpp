@@ -63,6 +63,18 @@ KeywordLine parseKeywordLine(std::string_view line) {
   return k;
 }
 
+// The format a *KEYWORD line sets: LONG=Y 20-character fields, LONG=S standard, I10=Y at
+// least 10 characters. Anything else on the line (a memory size "*KEYWORD 100000000",
+// MEMORY=20M, NCPU=4) does not concern reading.
+Format keywordFormat(std::string_view trailing, Format format) {
+  const std::string t = upper(trailing);
+  if (t.find("LONG=Y") != std::string::npos) format = Format::Long;
+  if (t.find("LONG=S") != std::string::npos) format = Format::Standard;
+  if (t.find("I10=Y") != std::string::npos) format = Format::I10;
+  if (t.find("I10=N") != std::string::npos) format = Format::Standard;
+  return format;
+}
+
 bool isComment(std::string_view line) {
   const auto first = line.find_first_not_of(" \t");
   return first != std::string_view::npos && line[first] == '$';
@@ -113,8 +125,11 @@ bool readLine(std::istream& in, std::string& text, const std::string& display, i
 class Reader {
  public:
   // `main` is the deck's main file: *INCLUDE_PATH_RELATIVE entries are relative to its folder.
-  Reader(Deck& deck, const Source& source, const fs::path& main)
-      : deck_(deck), source_(source), main_{main.parent_path(), main.parent_path()} {}
+  Reader(Deck& deck, const Source& source, const fs::path& main, const ReadDeckOptions& options)
+      : deck_(deck),
+        source_(source),
+        options_(options),
+        main_{main.parent_path(), main.parent_path()} {}
 
   // `path` opens the file's includes (relative to its folder), `identity` recognises cycles,
   // `display` names it in messages.
@@ -142,13 +157,27 @@ class Reader {
   std::vector<Candidate> includeCandidates(const std::string& name, const FileState& file) const;
   void includePath(const Keyword& kw, const FileState& file);
   void parameters(const Keyword& kw);
+  void parameter(const Card& card, int k);
   void parameterExpressions(const Keyword& kw);
   void parameterDuplication(const Keyword& kw);
   void define(const Card& card, std::string_view field, char type, const std::string& name,
               Parameter p);
 
+  // Runs `step`; with ReadDeckOptions::collect_errors, an InputError from it is recorded in
+  // Deck::errors and reading goes on without what `step` would have read.
+  template <class Step>
+  void attempt(Step&& step) {
+    if (!options_.collect_errors) return step();
+    try {
+      step();
+    } catch (const util::InputError& e) {
+      deck_.errors.emplace_back(e.what());
+    }
+  }
+
   Deck& deck_;
   const Source& source_;
+  const ReadDeckOptions options_;
   // The files being read, outermost first (identity, display name): an *INCLUDE of one of
   // them is a cycle.
   std::vector<std::pair<std::string, std::string>> open_;
@@ -164,6 +193,11 @@ void Reader::readFile(std::istream& in, const fs::path& path, const std::string&
   deck_.files.push_back(display);
   FileState file{path.parent_path(), fs::path(display).parent_path(), format};
   open_.emplace_back(identity, display);
+  // Closed however reading ends: with collect_errors the includer reads on after an error.
+  struct Close {
+    std::vector<std::pair<std::string, std::string>>& open;
+    ~Close() { open.pop_back(); }
+  } close{open_};
 
   std::optional<Keyword> current;
   std::string text;
@@ -186,12 +220,7 @@ void Reader::readFile(std::istream& in, const fs::path& path, const std::string&
     KeywordLine k = parseKeywordLine(text);
     if (k.name == "*END") break;  // the rest of this file is not read (Keyword Manual, *END)
     if (k.name == "*KEYWORD") {
-      // LONG=Y: 20-character fields; LONG=S: standard; I10=Y: at least 10 characters.
-      const std::string t = upper(k.trailing);
-      if (t.find("LONG=Y") != std::string::npos) file.format = Format::Long;
-      if (t.find("LONG=S") != std::string::npos) file.format = Format::Standard;
-      if (t.find("I10=Y") != std::string::npos) file.format = Format::I10;
-      if (t.find("I10=N") != std::string::npos) file.format = Format::Standard;
+      file.format = keywordFormat(k.trailing, file.format);
       continue;
     }
     if (startsWith(k.name, "*CASE_BEGIN")) {
@@ -215,7 +244,6 @@ void Reader::readFile(std::istream& in, const fs::path& path, const std::string&
   }
   if (current) finish(*current, file, depth);
   if (in.bad()) throw util::InputError(display + ":" + std::to_string(line_no) + ": read error");
-  open_.pop_back();
 }
 
 void Reader::finish(Keyword& kw, FileState& file, int depth) {
@@ -238,14 +266,16 @@ void Reader::include(const Keyword& kw, FileState& file, int depth) {
   cur.skipBlankLines();
   // One file name per line, as many lines as there are files (Keyword Manual, *INCLUDE).
   while (!cur.atEnd()) {
-    const Card& card = cur.read(spec);
-    // A name longer than a line continues on the next line after a trailing " +".
-    std::string name = card.text("FILENAME");
-    while (name.size() >= 2 && name.substr(name.size() - 2) == " +" && !cur.atEnd()) {
-      name.resize(name.size() - 2);
-      name += cur.read(spec).text("FILENAME");
-    }
-    includeFile(card, name, file, depth);
+    attempt([&] {
+      const Card& card = cur.read(spec);
+      // A name longer than a line continues on the next line after a trailing " +".
+      std::string name = card.text("FILENAME");
+      while (name.size() >= 2 && name.substr(name.size() - 2) == " +" && !cur.atEnd()) {
+        name.resize(name.size() - 2);
+        name += cur.read(spec).text("FILENAME");
+      }
+      includeFile(card, name, file, depth);
+    });
     cur.flush();
     cur.skipBlankLines();
   }
@@ -391,27 +421,32 @@ void Reader::parameters(const Keyword& kw) {
   CardCursor cur(kw, deck_);
   cur.skipBlankLines();
   while (!cur.atEnd()) {
-    const Card& card = cur.read(spec);
-    for (int k = 1; k <= 4; ++k) {
-      const std::string prmr = "PRMR" + std::to_string(k), val = "VAL" + std::to_string(k);
-      if (card.blank(prmr)) continue;
-      const auto [type, name] = typeAndName(card, prmr);
-      Parameter p;
-      p.text = card.text(val);
-      if (type == 'R') {
-        const auto v = parseReal(p.text);
-        if (!v) card.fail(val, "'" + p.text + "' is not a number");
-        p.value = *v;
-      } else if (type == 'I') {
-        const auto v = parseInteger(p.text);
-        if (!v) card.fail(val, "'" + p.text + "' is not an integer");
-        p.value = static_cast<double>(*v);
-      }
-      define(card, prmr, type, name, std::move(p));
-    }
+    attempt([&] {
+      const Card& card = cur.read(spec);
+      for (int k = 1; k <= 4; ++k) attempt([&] { parameter(card, k); });
+    });
     cur.flush();
     cur.skipBlankLines();
   }
+}
+
+// The k-th PRMRk / VALk pair of a *PARAMETER card, if not blank.
+void Reader::parameter(const Card& card, int k) {
+  const std::string prmr = "PRMR" + std::to_string(k), val = "VAL" + std::to_string(k);
+  if (card.blank(prmr)) return;
+  const auto [type, name] = typeAndName(card, prmr);
+  Parameter p;
+  p.text = card.text(val);
+  if (type == 'R') {
+    const auto v = parseReal(p.text);
+    if (!v) card.fail(val, "'" + p.text + "' is not a number");
+    p.value = *v;
+  } else if (type == 'I') {
+    const auto v = parseInteger(p.text);
+    if (!v) card.fail(val, "'" + p.text + "' is not an integer");
+    p.value = static_cast<double>(*v);
+  }
+  define(card, prmr, type, name, std::move(p));
 }
 
 void Reader::parameterExpressions(const Keyword& kw) {
@@ -420,20 +455,22 @@ void Reader::parameterExpressions(const Keyword& kw) {
   cur.skipBlankLines();
   const ParameterLookup lookup = numericParameters(deck_);
   while (!cur.atEnd()) {
-    const Card& card = cur.read(spec);
-    const auto [type, name] = typeAndName(card, "PRMR");
-    Parameter p;
-    p.text = card.text("EXPRESSION");
-    if (type != 'C') {
-      try {
-        p.value = evaluateExpression(p.text, lookup);
-      } catch (const ExpressionError& e) {
-        card.fail("EXPRESSION", e.what());
+    attempt([&] {
+      const Card& card = cur.read(spec);
+      const auto [type, name] = typeAndName(card, "PRMR");
+      Parameter p;
+      p.text = card.text("EXPRESSION");
+      if (type != 'C') {
+        try {
+          p.value = evaluateExpression(p.text, lookup);
+        } catch (const ExpressionError& e) {
+          card.fail("EXPRESSION", e.what());
+        }
+        // An integer parameter takes the integer part, as a Fortran INT() would.
+        if (type == 'I') p.value = std::trunc(p.value);
       }
-      // An integer parameter takes the integer part, as a Fortran INT() would.
-      if (type == 'I') p.value = std::trunc(p.value);
-    }
-    define(card, "PRMR", type, name, std::move(p));
+      define(card, "PRMR", type, name, std::move(p));
+    });
     cur.flush();
     cur.skipBlankLines();
   }
@@ -483,14 +520,23 @@ std::string MemorySource::identity(const fs::path& path) const {
 }
 
 Deck readDeck(const std::filesystem::path& path) {
-  return readDeck(path, DiskSource{});
+  return readDeck(path, DiskSource{}, ReadDeckOptions{});
+}
+
+Deck readDeck(const std::filesystem::path& path, const ReadDeckOptions& options) {
+  return readDeck(path, DiskSource{}, options);
 }
 
 Deck readDeck(const std::filesystem::path& path, const Source& source) {
+  return readDeck(path, source, ReadDeckOptions{});
+}
+
+Deck readDeck(const std::filesystem::path& path, const Source& source,
+              const ReadDeckOptions& options) {
   Deck deck;
   const auto in = source.open(path);
   if (!in) throw util::InputError(path.string() + ": cannot open the file");
-  Reader reader(deck, source, path);
+  Reader reader(deck, source, path, options);
   reader.readFile(*in, path, source.identity(path), path.string(), Format::Standard, 0);
   return deck;
 }

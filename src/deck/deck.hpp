@@ -60,6 +60,9 @@ struct Deck {
   // define tEnd and use &TEnd). Look names up through parameter().
   std::map<std::string, Parameter> parameters;
   std::vector<ReaderNote> notes;
+  // With ReadDeckOptions::collect_errors: what was skipped, each as the exception would have
+  // said it ("file:line: ...").
+  std::vector<std::string> errors;
 
   // The parameter of that name in any case, or null.
   const Parameter* parameter(std::string_view name) const;
@@ -104,10 +107,23 @@ class MemorySource : public Source {
 // not a keyword deck, and reading on would hold an arbitrarily long line in memory.
 inline constexpr std::size_t kMaxLineLength = 64 * 1024;
 
+struct ReadDeckOptions {
+  // Record an error in one *INCLUDE (the file cannot be opened, a cycle, a bad line in it:
+  // too long, binary, encrypted) or in one *PARAMETER / *PARAMETER_EXPRESSION card in
+  // Deck::errors and read on without that file (from the bad line on) or parameter, so that
+  // one pass lists every such error. The main file failing to open or holding a bad line is
+  // still thrown.
+  bool collect_errors = false;
+};
+
 // Reads `path` and everything it includes. Throws util::InputError naming file:line (for a
 // missing include, the *INCLUDE line) on anything that prevents reading: a missing file, an
-// include cycle, a line longer than kMaxLineLength, binary data (control characters).
+// include cycle, a line longer than kMaxLineLength, binary data (control characters),
+// encrypted input; see ReadDeckOptions for reading on instead.
 Deck readDeck(const std::filesystem::path& path);
+Deck readDeck(const std::filesystem::path& path, const ReadDeckOptions& options);
 Deck readDeck(const std::filesystem::path& path, const Source& source);
+Deck readDeck(const std::filesystem::path& path, const Source& source,
+              const ReadDeckOptions& options);
 
 }  // namespace crumple::deck

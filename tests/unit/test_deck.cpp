@@ -63,9 +63,10 @@ cube
 )";
 
 // Reads "main.k" with `text` from memory, beside the files in `more`.
-crumple::deck::Deck memoryDeck(const std::string& text, Files more = {}) {
+crumple::deck::Deck memoryDeck(const std::string& text, Files more = {},
+                               crumple::deck::ReadDeckOptions options = {}) {
   more["main.k"] = text;
-  return crumple::deck::readDeck("main.k", crumple::deck::MemorySource(std::move(more)));
+  return crumple::deck::readDeck("main.k", crumple::deck::MemorySource(std::move(more)), options);
 }
 
 // `field` of the first card of keyword `k` of the deck, read as `label` of `spec`'s table.
@@ -468,6 +469,49 @@ TEST(DeckLines, EncryptedIncludeIsNamedAsSuch) {
   const Files files{{"enc.key", "*NODE\n1,0,0,0\n-----BEGIN PGP MESSAGE-----\n\x85\x01\x0c\n"}};
   EXPECT_EQ(errorOf([&] { memoryDeck("*INCLUDE\nenc.key\n", files); }),
             "enc.key:3: encrypted (PGP) input cannot be read");
+}
+
+TEST(DeckErrors, CollectModeRecordsEachBadIncludeOrParameterAndReadsOn) {
+  const Files files{{"good.k", "*NODE\n1,0,0,0\n"},
+                    {"loop.k", "*INCLUDE\nloop.k\n*NODE\n2,0,0,0\n"},
+                    {"bin.k", "*NODE\n3,0,0,0\n*NODE\n4,0\x01\n*NODE\n5,0,0,0\n"}};
+  const std::string main =
+      "*PARAMETER\n"
+      "R        a       1.0R        b       abcR        c       3.0\n"  // 2
+      "*PARAMETER_EXPRESSION\n"
+      "R        d &a+&zz\n"  // 4
+      "R        e &a+&c\n"
+      "*INCLUDE\n"  // 6
+      "missing.k\n"
+      "loop.k\n"
+      "bin.k\n"
+      "good.k\n"
+      "*NODE\n9,0,0,0\n";
+  const auto d = memoryDeck(main, files, {.collect_errors = true});
+  const std::vector<std::string> expected{
+      "main.k:2: *PARAMETER card 1 field 4 (VAL2): 'abc' is not a number",
+      "main.k:4: *PARAMETER_EXPRESSION card 1 field 2 (EXPRESSION): expression '&a+&zz': "
+      "parameter 'zz' is not defined",
+      "main.k:6: *INCLUDE: cannot open 'missing.k' (tried missing.k)",
+      "loop.k:2: *INCLUDE card 1 field 1 (FILENAME): include cycle: loop.k -> loop.k",
+      "bin.k:4: byte 0x01 in column 4: binary data, not a keyword deck (text)"};
+  EXPECT_EQ(d.errors, expected);
+  EXPECT_DOUBLE_EQ(d.parameter("c")->value, 3.0);
+  EXPECT_DOUBLE_EQ(d.parameter("e")->value, 4.0);
+  EXPECT_EQ(d.parameter("b"), nullptr);
+  // Nodes 2 (after the cycle in loop.k), 3 (before the bad line of bin.k), 1 and 9 are read.
+  std::vector<std::string> nodes;
+  for (const auto& k : d.keywords) nodes.push_back(k.lines.at(0).text);
+  EXPECT_EQ(nodes, (std::vector<std::string>{"2,0,0,0", "3,0,0,0", "1,0,0,0", "9,0,0,0"}));
+  // Without the option the first error is thrown, as before; the main file is always thrown.
+  EXPECT_EQ(errorOf([&] { memoryDeck(main, files); }), expected[0]);
+  EXPECT_EQ(errorOf([&] {
+              crumple::deck::readDeck("none.k", crumple::deck::MemorySource(files),
+                                      {.collect_errors = true});
+            }),
+            "none.k: cannot open the file");
+  EXPECT_EQ(errorOf([&] { memoryDeck("*NODE\n1,\x02\n", {}, {.collect_errors = true}); }),
+            "main.k:2: byte 0x02 in column 3: binary data, not a keyword deck (text)");
 }
 
 TEST(DeckTruncated, DefinitionWithoutCardsIsAnError) {
