@@ -167,6 +167,25 @@ TEST(DeckFormat, LongFormatBySuffixAndKeywordLine) {
   EXPECT_DOUBLE_EQ(m.nodes.x[m.nodeIndex(12)][2], 3.0);
 }
 
+TEST(DeckFormat, TextAfterTheKeywordName) {
+  // A memory size after *KEYWORD, a remark after *PART (*CONTROL_SPH "carte de control" in
+  // the SPH examples), a format suffix as its own word: none changes how the cards read.
+  TempDir t;
+  std::string cube = kCube + 9;
+  cube.replace(cube.find("*PART\n"), 6, "*PART  some text\n");
+  const auto p = t.write("d.k", "*KEYWORD 100000000\n" + cube +
+                                    "*MAT_ELASTIC   steel, for now\n1,1,1,0.3\n*NODE %\n" +
+                                    cols({{"12", 10}, {"1.5", 16}, {"2.5", 16}, {"3.5", 16}}));
+  const auto d = crumple::deck::readDeck(p);
+  EXPECT_EQ(d.keywords.at(2).name, "*PART");
+  EXPECT_EQ(d.keywords.at(2).trailing, "some text");
+  EXPECT_EQ(d.keywords.back().format, crumple::deck::Format::I10);
+  EXPECT_EQ(d.keywords.at(0).format, crumple::deck::Format::Standard);
+  const auto m = crumple::model::readModel(p);
+  EXPECT_EQ(m.parts.at(0).title, "cube");
+  EXPECT_DOUBLE_EQ(m.nodes.x[m.nodeIndex(12)][2], 3.5);
+}
+
 TEST(DeckFormat, FreeFormatCommentsBlankFieldsAndCase) {
   TempDir t;
   const auto p = t.write("d.k", std::string(kCube) +
