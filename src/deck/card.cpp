@@ -1,9 +1,11 @@
 #include "deck/card.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
+#include <utility>
 
 #include "deck/number.hpp"
 #include "util/error.hpp"
@@ -32,13 +34,23 @@ bool takesRestOfLine(const CardSpec& spec, std::size_t i) {
          spec.fields[i].width >= 70;
 }
 
+// The shortest text that reads back as exactly `v`: a parameter put into a text field (an
+// expression) keeps its value.
 std::string fmtNumber(double v) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, ec == std::errc() ? end : buf);
 }
 
 }  // namespace
+
+ParameterLookup numericParameters(const Deck& deck) {
+  return [&deck](std::string_view name) -> std::optional<double> {
+    const Parameter* p = deck.parameter(name);
+    if (!p || p->type == 'C') return std::nullopt;
+    return p->value;
+  };
+}
 
 Card::Card(const CardSpec& spec, const DataLine* line, const Keyword& keyword, const Deck& deck)
     : spec_(&spec),
@@ -50,37 +62,107 @@ Card::Card(const CardSpec& spec, const DataLine* line, const Keyword& keyword, c
       used_(spec.fields.size(), false) {
   if (!line) return;
   const std::string_view text = line->text;
-  const std::size_t n = spec.fields.size();
-  // Free format (Keyword Manual, "Free format input"): fields separated by commas. A card
-  // whose last field is a wide text field is free format only if a comma comes before that
-  // field's column, so that an expression such as max(a,b) in fixed columns stays whole.
-  // A card of one text field (a title, a file name) is never split.
-  const bool splittable = n > 1 || spec.fields[0].type != FieldType::Text;
-  std::size_t comma = splittable ? text.find(',') : std::string_view::npos;
-  if (n > 1 && comma != std::string_view::npos && takesRestOfLine(spec, n - 1)) {
-    int start = 0;
-    for (std::size_t i = 0; i + 1 < n; ++i) start += effectiveWidth(spec.fields[i], keyword.format);
-    if (comma >= static_cast<std::size_t>(start)) comma = std::string_view::npos;
-  }
-  if (comma != std::string_view::npos) {
-    std::size_t pos = 0;
-    for (std::size_t i = 0; i < n && pos <= text.size(); ++i) {
-      std::size_t end = takesRestOfLine(spec, i) ? std::string_view::npos : text.find(',', pos);
-      if (end == std::string_view::npos) end = text.size();
-      parseField(i, text.substr(pos, end - pos));
-      pos = end + 1;
-    }
+  if (freeFormat(text)) {
+    readFree(text);
     return;
   }
+  const std::vector<std::string_view> fields = fixedFields(text);
+  if (outOfColumns(text, fields) && readSpaced(text)) return;
+  for (std::size_t i = 0; i < fields.size(); ++i) parseField(i, fields[i]);
+}
+
+// A card of one text field (a title, a file name) is never split.
+bool Card::splittable() const {
+  return spec_->fields.size() > 1 || spec_->fields[0].type != FieldType::Text;
+}
+
+// Free format (Keyword Manual, "Free format input"): fields separated by commas. A card
+// whose last field is a wide text field is free format only if a comma comes before that
+// field's column, so that an expression such as max(a,b) in fixed columns stays whole.
+bool Card::freeFormat(std::string_view text) const {
+  const std::size_t comma = splittable() ? text.find(',') : std::string_view::npos;
+  const std::size_t n = spec_->fields.size();
+  if (comma == std::string_view::npos || n == 1 || !takesRestOfLine(*spec_, n - 1))
+    return comma != std::string_view::npos;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i + 1 < n; ++i)
+    start += static_cast<std::size_t>(effectiveWidth(spec_->fields[i], keyword_->format));
+  return comma < start;
+}
+
+void Card::readFree(std::string_view text) {
+  std::size_t pos = 0;
+  for (std::size_t i = 0; i < spec_->fields.size() && pos <= text.size(); ++i) {
+    std::size_t end = takesRestOfLine(*spec_, i) ? std::string_view::npos : text.find(',', pos);
+    if (end == std::string_view::npos) end = text.size();
+    parseField(i, text.substr(pos, end - pos));
+    pos = end + 1;
+  }
+}
+
+// The text of each field in the keyword's column widths, up to the end of the line.
+std::vector<std::string_view> Card::fixedFields(std::string_view text) const {
+  std::vector<std::string_view> out;
   std::size_t col = 0;
-  for (std::size_t i = 0; i < n && col < text.size(); ++i) {
+  for (std::size_t i = 0; i < spec_->fields.size() && col < text.size(); ++i) {
     const std::size_t w =
-        takesRestOfLine(spec, i)
+        takesRestOfLine(*spec_, i)
             ? std::string_view::npos
-            : static_cast<std::size_t>(effectiveWidth(spec.fields[i], keyword.format));
-    parseField(i, text.substr(col, w));
+            : static_cast<std::size_t>(effectiveWidth(spec_->fields[i], keyword_->format));
+    out.push_back(text.substr(col, w));
     col = w == std::string_view::npos ? text.size() : col + w;
   }
+  return out;
+}
+
+// A tab inside the line, or a blank inside a numeric field ("0       1": a script wrote 8-wide
+// columns into a 10-wide card), means the values are not in the card's columns.
+bool Card::outOfColumns(std::string_view text, const std::vector<std::string_view>& fields) const {
+  if (!splittable()) return false;
+  if (text.substr(0, text.find_last_not_of(" \t") + 1).find('\t') != std::string_view::npos)
+    return true;
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    const std::string_view s = trim(fields[i]);
+    if (spec_->fields[i].type != FieldType::Text &&
+        s.find_first_of(" \t") != std::string_view::npos && s.find('&') == std::string_view::npos)
+      return true;
+  }
+  return false;
+}
+
+// Reads the line as blank-separated values in field order, if there are no more values than
+// fields and each reads as its field's type; otherwise leaves the card unread (false).
+bool Card::readSpaced(std::string_view text) {
+  std::vector<std::string_view> tokens;
+  for (std::size_t pos = text.find_first_not_of(" \t"); pos != std::string_view::npos;) {
+    const std::size_t end = text.find_first_of(" \t", pos);
+    tokens.push_back(text.substr(pos, end - pos));
+    pos = end == std::string_view::npos ? end : text.find_first_not_of(" \t", end);
+  }
+  if (tokens.size() > spec_->fields.size()) return false;
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    const FieldType t = spec_->fields[i].type;
+    const bool ok = t == FieldType::Text || tokens[i].find('&') != std::string_view::npos ||
+                    (t == FieldType::Real ? parseReal(tokens[i]).has_value()
+                                          : parseInteger(tokens[i]).has_value());
+    if (!ok) return false;
+  }
+  for (std::size_t i = 0; i < tokens.size(); ++i) parseField(i, tokens[i]);
+  spaced_ = true;
+  return true;
+}
+
+// "&name", "-&name" (negated) or "+&name": a field that is one *PARAMETER reference (Keyword
+// Manual, *PARAMETER). Anything more after the & ("&a*0.5+&b") is an expression instead.
+std::optional<Card::Reference> Card::plainReference(std::string_view s) {
+  const bool sign = s.size() > 1 && (s[0] == '-' || s[0] == '+') && s[1] == '&';
+  if (s[0] != '&' && !sign) return std::nullopt;
+  const std::string_view name = trim(s.substr(sign ? 2 : 1));
+  const auto nameChar = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+  };
+  if (name.empty() || !std::all_of(name.begin(), name.end(), nameChar)) return std::nullopt;
+  return Reference{std::string(name), s[0] == '-'};
 }
 
 void Card::parseField(std::size_t i, std::string_view raw) {
@@ -90,31 +172,14 @@ void Card::parseField(std::size_t i, std::string_view raw) {
   if (s.empty()) return;
   v.blank = false;
   v.text = std::string(s);
-  // *PARAMETER reference: &name, or -&name for the negated value (Keyword Manual, *PARAMETER).
-  const bool negate = s.size() > 1 && s[0] == '-' && s[1] == '&';
-  if (s[0] == '&' || negate || (s.size() > 1 && s[0] == '+' && s[1] == '&')) {
-    const std::string name(trim(s.substr(s[0] == '&' ? 1 : 2)));
-    auto it = deck_->parameters.find(name);
-    if (it == deck_->parameters.end())
-      throw util::FormatError(context(f.name) + ": parameter '" + name + "' is not defined");
-    const Parameter& p = it->second;
-    if (f.type == FieldType::Text) {
-      v.text = p.type == 'C' ? p.text : fmtNumber(p.value);
-      return;
-    }
-    if (p.type == 'C')
-      fail(f.name, "parameter '" + name + "' is a character parameter, a number is needed");
-    v.num = negate ? -p.value : p.value;
-    if (f.type == FieldType::Int) {
-      if (std::trunc(v.num) != v.num)
-        fail(f.name, "parameter '" + name + "' = " + fmtNumber(p.value) + " is not an integer");
-      v.inum = static_cast<int64_t>(v.num);
-    }
-    return;
+  if (const auto ref = plainReference(s)) return resolveReference(i, *ref);
+  if (f.type != FieldType::Text && s.find('&') != std::string_view::npos) {
+    const double x = evaluateInline(i, s);
+    return setNumber(i, x, "'" + v.text + "' = " + fmtNumber(x));
   }
   switch (f.type) {
     case FieldType::Text:
-      return;
+      return;  // an expression in a text field (*PARAMETER_EXPRESSION) stays text
     case FieldType::Real: {
       const auto r = parseReal(s);
       if (!r) throw util::FormatError(context(f.name) + ": '" + v.text + "' is not a number");
@@ -129,6 +194,38 @@ void Card::parseField(std::size_t i, std::string_view raw) {
       return;
     }
   }
+}
+
+void Card::resolveReference(std::size_t i, const Reference& ref) {
+  const FieldSpec& f = spec_->fields[i];
+  const Parameter* p = deck_->parameter(ref.name);
+  if (!p)
+    throw util::FormatError(context(f.name) + ": parameter '" + ref.name + "' is not defined");
+  if (f.type == FieldType::Text) {
+    values_[i].text = p->type == 'C' ? p->text : fmtNumber(p->value);
+    return;
+  }
+  if (p->type == 'C')
+    fail(f.name, "parameter '" + ref.name + "' is a character parameter, a number is needed");
+  setNumber(i, ref.negate ? -p->value : p->value,
+            "parameter '" + ref.name + "' = " + fmtNumber(p->value));
+}
+
+// A field such as "&tp*0.5+&b" in a numeric field is evaluated like a *PARAMETER_EXPRESSION.
+double Card::evaluateInline(std::size_t i, std::string_view s) const {
+  try {
+    return evaluateExpression(s, numericParameters(*deck_));
+  } catch (const ExpressionError& e) {
+    throw util::FormatError(context(spec_->fields[i].name) + ": " + e.what());
+  }
+}
+
+void Card::setNumber(std::size_t i, double x, const std::string& what) {
+  Value& v = values_[i];
+  v.num = x;
+  if (spec_->fields[i].type != FieldType::Int) return;
+  if (std::trunc(x) != x) fail(spec_->fields[i].name, what + " is not an integer");
+  v.inum = static_cast<int64_t>(x);
 }
 
 std::size_t Card::index(std::string_view field) const {
@@ -221,7 +318,22 @@ const Card& CardCursor::read(const CardSpec& spec) {
   if (atEnd())
     throw util::InputError(deck_->loc(*keyword_).str() + ": " + keyword_->name + " " +
                            std::string(spec.label) + " is missing");
-  return cards_.emplace_back(spec, &keyword_->lines[next_++], *keyword_, *deck_);
+  return noteSpaced(cards_.emplace_back(spec, &keyword_->lines[next_++], *keyword_, *deck_));
+}
+
+// Once per keyword: the cards after the first are most likely written by the same script.
+const Card& CardCursor::noteSpaced(const Card& card) {
+  if (!card.readAsSpaceSeparated() || noted_spaced_) return card;
+  noted_spaced_ = true;
+  notes_.push_back({keyword_->name, std::string(card.label()),
+                    "values not in the card's columns (a tab, or blanks inside a number): read "
+                    "as space-separated fields in order",
+                    card.where()});
+  return card;
+}
+
+std::vector<ReaderNote> CardCursor::takeNotes() {
+  return std::exchange(notes_, {});
 }
 
 const Card& CardCursor::readOptional(const CardSpec& spec) {

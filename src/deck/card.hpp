@@ -1,20 +1,27 @@
 // Typed reading of one card against its CardSpec, in fixed (standard, I10, long) or free
-// (comma separated) format, with *PARAMETER references (&name, -&name) resolved. Every error
+// (comma separated) format, with *PARAMETER references (&name, -&name) resolved and
+// expressions over them (&a*0.5+&b) evaluated in numeric fields. Every error
 // names file:line, keyword, card, field number and field name, e.g.
 //   deck.k:123: *MAT_ELASTIC card 1 field 3 (E): 'abc' is not a number
 #pragma once
 
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "deck/deck.hpp"
+#include "deck/expression.hpp"
 #include "deck/layout.hpp"
 #include "util/source_loc.hpp"
 
 namespace crumple::deck {
+
+// The deck's numeric parameters by name, for evaluateExpression (a character parameter is no
+// number).
+ParameterLookup numericParameters(const Deck& deck);
 
 // A field that was read with a value different from its default but that the code using
 // the keyword did not look at: reported so the user learns it is not honoured.
@@ -44,9 +51,13 @@ class Card {
   int32_t fileIndex() const { return file_; }
   int32_t lineNumber() const { return line_; }
   const Keyword& keyword() const { return *keyword_; }
+  std::string_view label() const { return spec_->label; }
 
   // Fields not read through the accessors above whose value differs from the default.
   std::vector<UnusedValue> unusedValues() const;
+  // True when the fixed-format line was not in the card's columns (a tab, or blanks inside a
+  // numeric field) and was read as blank-separated values in field order instead.
+  bool readAsSpaceSeparated() const { return spaced_; }
 
  private:
   struct Value {
@@ -55,8 +66,23 @@ class Card {
     int64_t inum = 0;
     std::string text;
   };
+  struct Reference {
+    std::string name;
+    bool negate = false;
+  };
+  static std::optional<Reference> plainReference(std::string_view s);
+  bool splittable() const;
+  bool freeFormat(std::string_view text) const;
+  void readFree(std::string_view text);
+  std::vector<std::string_view> fixedFields(std::string_view text) const;
+  bool outOfColumns(std::string_view text, const std::vector<std::string_view>& fields) const;
+  bool readSpaced(std::string_view text);
   std::size_t index(std::string_view field) const;
   void parseField(std::size_t i, std::string_view raw);
+  void resolveReference(std::size_t i, const Reference& ref);
+  double evaluateInline(std::size_t i, std::string_view s) const;
+  // Sets a numeric field; `what` names the value if an integer field gets a fraction.
+  void setNumber(std::size_t i, double x, const std::string& what);
 
   const CardSpec* spec_;
   const Keyword* keyword_;
@@ -64,6 +90,7 @@ class Card {
   int32_t file_ = 0, line_ = 0;
   std::vector<Value> values_;
   mutable std::vector<bool> used_;
+  bool spaced_ = false;
 };
 
 // Walks the data lines of one keyword, card by card.
@@ -88,6 +115,9 @@ class CardCursor {
   // Hands back the unused non-default values of the cards read since the last call and
   // forgets those cards (list keywords call it per record to keep memory flat).
   std::vector<UnusedValue> flush();
+  // Hands back what the cards read so far want the user to know and forgets it: one note per
+  // keyword when a card was read as space-separated fields (Card::readAsSpaceSeparated).
+  std::vector<ReaderNote> takeNotes();
 
   const Keyword& keyword() const { return *keyword_; }
   const Deck& deck() const { return *deck_; }
@@ -95,8 +125,12 @@ class CardCursor {
  private:
   const Keyword* keyword_;
   const Deck* deck_;
+  const Card& noteSpaced(const Card& card);
+
   std::size_t next_ = 0;
   std::deque<Card> cards_;
+  std::vector<ReaderNote> notes_;
+  bool noted_spaced_ = false;
 };
 
 }  // namespace crumple::deck

@@ -63,6 +63,18 @@ KeywordLine parseKeywordLine(std::string_view line) {
   return k;
 }
 
+// The format a *KEYWORD line sets: LONG=Y 20-character fields, LONG=S standard, I10=Y at
+// least 10 characters. Anything else on the line (a memory size "*KEYWORD 100000000",
+// MEMORY=20M, NCPU=4) does not concern reading.
+Format keywordFormat(std::string_view trailing, Format format) {
+  const std::string t = upper(trailing);
+  if (t.find("LONG=Y") != std::string::npos) format = Format::Long;
+  if (t.find("LONG=S") != std::string::npos) format = Format::Standard;
+  if (t.find("I10=Y") != std::string::npos) format = Format::I10;
+  if (t.find("I10=N") != std::string::npos) format = Format::Standard;
+  return format;
+}
+
 bool isComment(std::string_view line) {
   const auto first = line.find_first_not_of(" \t");
   return first != std::string_view::npos && line[first] == '$';
@@ -112,7 +124,12 @@ bool readLine(std::istream& in, std::string& text, const std::string& display, i
 
 class Reader {
  public:
-  Reader(Deck& deck, const Source& source) : deck_(deck), source_(source) {}
+  // `main` is the deck's main file: *INCLUDE_PATH_RELATIVE entries are relative to its folder.
+  Reader(Deck& deck, const Source& source, const fs::path& main, const ReadDeckOptions& options)
+      : deck_(deck),
+        source_(source),
+        options_(options),
+        main_{main.parent_path(), main.parent_path()} {}
 
   // `path` opens the file's includes (relative to its folder), `identity` recognises cycles,
   // `display` names it in messages.
@@ -127,22 +144,44 @@ class Reader {
   };
 
   void finish(Keyword& kw, FileState& file, int depth);
+  struct SearchDir {
+    fs::path dir, display;
+  };
+  struct Candidate {
+    fs::path full;
+    std::string display;
+  };
+
   void include(const Keyword& kw, FileState& file, int depth);
+  void includeFile(const Card& card, const std::string& name, FileState& file, int depth);
+  std::vector<Candidate> includeCandidates(const std::string& name, const FileState& file) const;
   void includePath(const Keyword& kw, const FileState& file);
   void parameters(const Keyword& kw);
+  void parameter(const Card& card, int k);
   void parameterExpressions(const Keyword& kw);
   void parameterDuplication(const Keyword& kw);
   void define(const Card& card, std::string_view field, char type, const std::string& name,
               Parameter p);
 
+  // Runs `step`; with ReadDeckOptions::collect_errors, an InputError from it is recorded in
+  // Deck::errors and reading goes on without what `step` would have read.
+  template <class Step>
+  void attempt(Step&& step) {
+    if (!options_.collect_errors) return step();
+    try {
+      step();
+    } catch (const util::InputError& e) {
+      deck_.errors.emplace_back(e.what());
+    }
+  }
+
   Deck& deck_;
   const Source& source_;
+  const ReadDeckOptions options_;
   // The files being read, outermost first (identity, display name): an *INCLUDE of one of
   // them is a cycle.
   std::vector<std::pair<std::string, std::string>> open_;
-  struct SearchDir {
-    fs::path dir, display;
-  };
+  SearchDir main_;
   std::vector<SearchDir> search_;
   int dflag_ = 1;
   std::string case_block_;
@@ -154,12 +193,22 @@ void Reader::readFile(std::istream& in, const fs::path& path, const std::string&
   deck_.files.push_back(display);
   FileState file{path.parent_path(), fs::path(display).parent_path(), format};
   open_.emplace_back(identity, display);
+  // Closed however reading ends: with collect_errors the includer reads on after an error.
+  struct Close {
+    std::vector<std::pair<std::string, std::string>>& open;
+    ~Close() { open.pop_back(); }
+  } close{open_};
 
   std::optional<Keyword> current;
   std::string text;
   int32_t line_no = 0;
   while (readLine(in, text, display, line_no + 1)) {
     ++line_no;
+    // Encrypted input (Keyword Manual, "Encryption"): only LS-DYNA holds the key, and the
+    // cipher text that follows would otherwise be reported as binary data.
+    if (startsWith(trim(text), "-----BEGIN PGP MESSAGE-----"))
+      throw util::InputError(display + ":" + std::to_string(line_no) +
+                             ": encrypted (PGP) input cannot be read");
     if (isComment(text)) continue;
     if (text.empty() || text[0] != '*') {
       // Lines before the first keyword (a header) are not part of any keyword.
@@ -171,12 +220,7 @@ void Reader::readFile(std::istream& in, const fs::path& path, const std::string&
     KeywordLine k = parseKeywordLine(text);
     if (k.name == "*END") break;  // the rest of this file is not read (Keyword Manual, *END)
     if (k.name == "*KEYWORD") {
-      // LONG=Y: 20-character fields; LONG=S: standard; I10=Y: at least 10 characters.
-      const std::string t = upper(k.trailing);
-      if (t.find("LONG=Y") != std::string::npos) file.format = Format::Long;
-      if (t.find("LONG=S") != std::string::npos) file.format = Format::Standard;
-      if (t.find("I10=Y") != std::string::npos) file.format = Format::I10;
-      if (t.find("I10=N") != std::string::npos) file.format = Format::Standard;
+      file.format = keywordFormat(k.trailing, file.format);
       continue;
     }
     if (startsWith(k.name, "*CASE_BEGIN")) {
@@ -200,7 +244,6 @@ void Reader::readFile(std::istream& in, const fs::path& path, const std::string&
   }
   if (current) finish(*current, file, depth);
   if (in.bad()) throw util::InputError(display + ":" + std::to_string(line_no) + ": read error");
-  open_.pop_back();
 }
 
 void Reader::finish(Keyword& kw, FileState& file, int depth) {
@@ -221,70 +264,102 @@ void Reader::include(const Keyword& kw, FileState& file, int depth) {
   const CardSpec& spec = keywordSpec("*INCLUDE").card("card 1");
   CardCursor cur(kw, deck_);
   cur.skipBlankLines();
+  // One file name per line, as many lines as there are files (Keyword Manual, *INCLUDE).
   while (!cur.atEnd()) {
-    const Card& card = cur.read(spec);
-    // A name longer than a line continues on the next line after a trailing " +"
-    // (Keyword Manual, *INCLUDE).
-    std::string name = card.text("FILENAME");
-    while (name.size() >= 2 && name.substr(name.size() - 2) == " +" && !cur.atEnd()) {
-      name.resize(name.size() - 2);
-      name += cur.read(spec).text("FILENAME");
-    }
-    if (depth > 40)
-      card.fail("FILENAME", "*INCLUDE nested more than 40 deep (does a file include itself?)");
-    const fs::path p(name);
-    std::vector<SearchDir> candidates;
-    if (p.is_absolute()) {
-      candidates.push_back({{}, {}});
-    } else {
-      candidates.push_back({file.dir, file.display_dir});
-      candidates.insert(candidates.end(), search_.begin(), search_.end());
-    }
-    bool found = false;
-    std::string tried;
-    for (const auto& c : candidates) {
-      const fs::path full = p.is_absolute() ? p : c.dir / p;
-      if (auto in = source_.open(full)) {
-        const std::string display =
-            p.is_absolute() ? p.string() : (c.display / p).lexically_normal().string();
-        const std::string identity = source_.identity(full);
-        const auto again = std::find_if(open_.begin(), open_.end(),
-                                        [&](const auto& o) { return o.first == identity; });
-        if (again != open_.end()) {
-          // Reading on would never end: name the chain so the user sees which line to cut.
-          std::string chain;
-          for (auto o = again; o != open_.end(); ++o) chain += o->second + " -> ";
-          card.fail("FILENAME", "include cycle: " + chain + display);
-        }
-        readFile(*in, full, identity, display, kw.format, depth + 1);
-        found = true;
-        break;
+    attempt([&] {
+      const Card& card = cur.read(spec);
+      // A name longer than a line continues on the next line after a trailing " +".
+      std::string name = card.text("FILENAME");
+      while (name.size() >= 2 && name.substr(name.size() - 2) == " +" && !cur.atEnd()) {
+        name.resize(name.size() - 2);
+        name += cur.read(spec).text("FILENAME");
       }
-      if (!tried.empty()) tried += ", ";
-      tried += (c.display / p).lexically_normal().string();
-    }
-    if (!found)
-      throw util::InputError(deck_.loc(kw).str() + ": " + kw.name + ": cannot open '" + name +
-                             "' (tried " + tried + ")");
+      includeFile(card, name, file, depth);
+    });
     cur.flush();
     cur.skipBlankLines();
   }
 }
 
+void Reader::includeFile(const Card& card, const std::string& name, FileState& file, int depth) {
+  if (depth > 40)
+    card.fail("FILENAME", "*INCLUDE nested more than 40 deep (does a file include itself?)");
+  std::string tried;
+  for (const auto& c : includeCandidates(name, file)) {
+    auto in = source_.open(c.full);
+    if (!in) {
+      tried += (tried.empty() ? "" : ", ") + c.display;
+      continue;
+    }
+    const std::string identity = source_.identity(c.full);
+    const auto again = std::find_if(open_.begin(), open_.end(),
+                                    [&](const auto& o) { return o.first == identity; });
+    if (again != open_.end()) {
+      // Reading on would never end: name the chain so the user sees which line to cut.
+      std::string chain;
+      for (auto o = again; o != open_.end(); ++o) chain += o->second + " -> ";
+      card.fail("FILENAME", "include cycle: " + chain + c.display);
+    }
+    return readFile(*in, c.full, identity, c.display, card.keyword().format, depth + 1);
+  }
+  // A name is the whole line, blanks included, as LS-DYNA reads it: "a.k b.k" is one name.
+  const std::string hint = name.find_first_of(" \t") == std::string::npos
+                               ? ""
+                               : "; *INCLUDE takes one file name per line";
+  throw util::InputError(deck_.loc(card.keyword()).str() + ": " + card.keyword().name +
+                         ": cannot open '" + name + "' (tried " + tried + ")" + hint);
+}
+
+// Where an *INCLUDE name may be, in order: the name (backslashes read as '/') in the
+// including file's folder, then in the *INCLUDE_PATH folders; then its last component in the
+// same folders, so that a deck written on another machine ("D:\models\mesh.k") finds the file
+// beside it. An absolute name is tried as written; a Windows drive path never is.
+std::vector<Reader::Candidate> Reader::includeCandidates(const std::string& name,
+                                                         const FileState& file) const {
+  std::string written = name;
+  std::replace(written.begin(), written.end(), '\\', '/');
+  const fs::path p(written);
+  const bool drive = written.size() > 1 && std::isalpha(static_cast<unsigned char>(written[0])) &&
+                     written[1] == ':';
+  std::vector<SearchDir> dirs{{file.dir, file.display_dir}};
+  dirs.insert(dirs.end(), search_.begin(), search_.end());
+  std::vector<Candidate> out;
+  auto add = [&](const fs::path& full, const fs::path& display) {
+    const std::string shown = display.lexically_normal().string();
+    const bool seen =
+        std::any_of(out.begin(), out.end(), [&](const Candidate& c) { return c.display == shown; });
+    if (!seen) out.push_back({full, shown});
+  };
+  if (p.is_absolute()) {
+    add(p, p);
+  } else if (!drive) {
+    for (const auto& d : dirs) add(d.dir / p, d.display / p);
+  }
+  const fs::path base = p.filename();
+  if (!base.empty())
+    for (const auto& d : dirs) add(d.dir / base, d.display / base);
+  return out;
+}
+
 // Directories searched for *INCLUDE files after the including file's own folder, in order
-// (Keyword Manual, *INCLUDE_PATH). Relative entries are taken relative to the file that
-// holds the *INCLUDE_PATH, which is what _RELATIVE asks for and the most useful reading of
-// the plain form.
+// (Keyword Manual, *INCLUDE_PATH). *INCLUDE_PATH_RELATIVE entries are relative to the folder
+// of the main deck (Keyword Manual, *INCLUDE_PATH_RELATIVE), so that a shared file can name
+// folders beside the case that includes it; relative *INCLUDE_PATH entries are taken relative
+// to the file that holds them.
 void Reader::includePath(const Keyword& kw, const FileState& file) {
   const CardSpec& spec = keywordSpec("*INCLUDE_PATH").card("card 1");
+  const SearchDir& base =
+      kw.name == "*INCLUDE_PATH_RELATIVE" ? main_ : SearchDir{file.dir, file.display_dir};
   CardCursor cur(kw, deck_);
   cur.skipBlankLines();
   while (!cur.atEnd()) {
-    const fs::path p(cur.read(spec).text("PATH"));
+    std::string written = cur.read(spec).text("PATH");
+    std::replace(written.begin(), written.end(), '\\', '/');
+    const fs::path p(written);
     if (p.is_absolute())
       search_.push_back({p, p});
     else
-      search_.push_back({file.dir / p, (file.display_dir / p).lexically_normal()});
+      search_.push_back({base.dir / p, (base.display / p).lexically_normal()});
     cur.flush();
     cur.skipBlankLines();
   }
@@ -295,11 +370,12 @@ void Reader::includePath(const Keyword& kw, const FileState& file) {
 // silently, 5 keep the first silently.
 void Reader::define(const Card& card, std::string_view field, char type, const std::string& name,
                     Parameter p) {
+  p.name = name;
   p.type = type;
   p.where = card.where();
-  auto it = deck_.parameters.find(name);
+  auto it = deck_.parameters.find(upper(name));
   if (it == deck_.parameters.end()) {
-    deck_.parameters.emplace(name, std::move(p));
+    deck_.parameters.emplace(upper(name), std::move(p));
     return;
   }
   const std::string first = it->second.where.str();
@@ -345,53 +421,56 @@ void Reader::parameters(const Keyword& kw) {
   CardCursor cur(kw, deck_);
   cur.skipBlankLines();
   while (!cur.atEnd()) {
-    const Card& card = cur.read(spec);
-    for (int k = 1; k <= 4; ++k) {
-      const std::string prmr = "PRMR" + std::to_string(k), val = "VAL" + std::to_string(k);
-      if (card.blank(prmr)) continue;
-      const auto [type, name] = typeAndName(card, prmr);
-      Parameter p;
-      p.text = card.text(val);
-      if (type == 'R') {
-        const auto v = parseReal(p.text);
-        if (!v) card.fail(val, "'" + p.text + "' is not a number");
-        p.value = *v;
-      } else if (type == 'I') {
-        const auto v = parseInteger(p.text);
-        if (!v) card.fail(val, "'" + p.text + "' is not an integer");
-        p.value = static_cast<double>(*v);
-      }
-      define(card, prmr, type, name, std::move(p));
-    }
+    attempt([&] {
+      const Card& card = cur.read(spec);
+      for (int k = 1; k <= 4; ++k) attempt([&] { parameter(card, k); });
+    });
     cur.flush();
     cur.skipBlankLines();
   }
+}
+
+// The k-th PRMRk / VALk pair of a *PARAMETER card, if not blank.
+void Reader::parameter(const Card& card, int k) {
+  const std::string prmr = "PRMR" + std::to_string(k), val = "VAL" + std::to_string(k);
+  if (card.blank(prmr)) return;
+  const auto [type, name] = typeAndName(card, prmr);
+  Parameter p;
+  p.text = card.text(val);
+  if (type == 'R') {
+    const auto v = parseReal(p.text);
+    if (!v) card.fail(val, "'" + p.text + "' is not a number");
+    p.value = *v;
+  } else if (type == 'I') {
+    const auto v = parseInteger(p.text);
+    if (!v) card.fail(val, "'" + p.text + "' is not an integer");
+    p.value = static_cast<double>(*v);
+  }
+  define(card, prmr, type, name, std::move(p));
 }
 
 void Reader::parameterExpressions(const Keyword& kw) {
   const CardSpec& spec = keywordSpec("*PARAMETER_EXPRESSION").card("card 1");
   CardCursor cur(kw, deck_);
   cur.skipBlankLines();
-  const ParameterLookup lookup = [this](std::string_view n) -> std::optional<double> {
-    auto it = deck_.parameters.find(std::string(n));
-    if (it == deck_.parameters.end() || it->second.type == 'C') return std::nullopt;
-    return it->second.value;
-  };
+  const ParameterLookup lookup = numericParameters(deck_);
   while (!cur.atEnd()) {
-    const Card& card = cur.read(spec);
-    const auto [type, name] = typeAndName(card, "PRMR");
-    Parameter p;
-    p.text = card.text("EXPRESSION");
-    if (type != 'C') {
-      try {
-        p.value = evaluateExpression(p.text, lookup);
-      } catch (const ExpressionError& e) {
-        card.fail("EXPRESSION", e.what());
+    attempt([&] {
+      const Card& card = cur.read(spec);
+      const auto [type, name] = typeAndName(card, "PRMR");
+      Parameter p;
+      p.text = card.text("EXPRESSION");
+      if (type != 'C') {
+        try {
+          p.value = evaluateExpression(p.text, lookup);
+        } catch (const ExpressionError& e) {
+          card.fail("EXPRESSION", e.what());
+        }
+        // An integer parameter takes the integer part, as a Fortran INT() would.
+        if (type == 'I') p.value = std::trunc(p.value);
       }
-      // An integer parameter takes the integer part, as a Fortran INT() would.
-      if (type == 'I') p.value = std::trunc(p.value);
-    }
-    define(card, "PRMR", type, name, std::move(p));
+      define(card, "PRMR", type, name, std::move(p));
+    });
     cur.flush();
     cur.skipBlankLines();
   }
@@ -406,6 +485,11 @@ void Reader::parameterDuplication(const Keyword& kw) {
 }
 
 }  // namespace
+
+const Parameter* Deck::parameter(std::string_view name) const {
+  const auto it = parameters.find(upper(name));
+  return it == parameters.end() ? nullptr : &it->second;
+}
 
 std::unique_ptr<std::istream> DiskSource::open(const fs::path& path) const {
   std::error_code ec;
@@ -436,14 +520,23 @@ std::string MemorySource::identity(const fs::path& path) const {
 }
 
 Deck readDeck(const std::filesystem::path& path) {
-  return readDeck(path, DiskSource{});
+  return readDeck(path, DiskSource{}, ReadDeckOptions{});
+}
+
+Deck readDeck(const std::filesystem::path& path, const ReadDeckOptions& options) {
+  return readDeck(path, DiskSource{}, options);
 }
 
 Deck readDeck(const std::filesystem::path& path, const Source& source) {
+  return readDeck(path, source, ReadDeckOptions{});
+}
+
+Deck readDeck(const std::filesystem::path& path, const Source& source,
+              const ReadDeckOptions& options) {
   Deck deck;
   const auto in = source.open(path);
   if (!in) throw util::InputError(path.string() + ": cannot open the file");
-  Reader reader(deck, source);
+  Reader reader(deck, source, path, options);
   reader.readFile(*in, path, source.identity(path), path.string(), Format::Standard, 0);
   return deck;
 }

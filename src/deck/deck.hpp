@@ -13,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "deck/layout.hpp"
@@ -39,7 +40,8 @@ struct Keyword {
 };
 
 struct Parameter {
-  char type = 'R';  // 'R' real, 'I' integer, 'C' character
+  std::string name;  // as first written, for messages
+  char type = 'R';   // 'R' real, 'I' integer, 'C' character
   double value = 0.0;
   std::string text;  // the value as written (the string of a 'C' parameter)
   util::SourceLoc where;
@@ -54,8 +56,16 @@ struct ReaderNote {
 struct Deck {
   std::vector<std::string> files;  // display names, as the user would recognise them
   std::vector<Keyword> keywords;
-  std::map<std::string, Parameter> parameters;  // case-sensitive names
+  // Keyed by the upper-cased name: LS-DYNA parameter names are case-insensitive (a deck may
+  // define tEnd and use &TEnd). Look names up through parameter().
+  std::map<std::string, Parameter> parameters;
   std::vector<ReaderNote> notes;
+  // With ReadDeckOptions::collect_errors: what was skipped, each as the exception would have
+  // said it ("file:line: ...").
+  std::vector<std::string> errors;
+
+  // The parameter of that name in any case, or null.
+  const Parameter* parameter(std::string_view name) const;
 
   util::SourceLoc loc(int32_t file, int32_t line) const { return {files.at(file), line}; }
   util::SourceLoc loc(const Keyword& k) const { return loc(k.file, k.line); }
@@ -97,10 +107,23 @@ class MemorySource : public Source {
 // not a keyword deck, and reading on would hold an arbitrarily long line in memory.
 inline constexpr std::size_t kMaxLineLength = 64 * 1024;
 
+struct ReadDeckOptions {
+  // Record an error in one *INCLUDE (the file cannot be opened, a cycle, a bad line in it:
+  // too long, binary, encrypted) or in one *PARAMETER / *PARAMETER_EXPRESSION card in
+  // Deck::errors and read on without that file (from the bad line on) or parameter, so that
+  // one pass lists every such error. The main file failing to open or holding a bad line is
+  // still thrown.
+  bool collect_errors = false;
+};
+
 // Reads `path` and everything it includes. Throws util::InputError naming file:line (for a
 // missing include, the *INCLUDE line) on anything that prevents reading: a missing file, an
-// include cycle, a line longer than kMaxLineLength, binary data (control characters).
+// include cycle, a line longer than kMaxLineLength, binary data (control characters),
+// encrypted input; see ReadDeckOptions for reading on instead.
 Deck readDeck(const std::filesystem::path& path);
+Deck readDeck(const std::filesystem::path& path, const ReadDeckOptions& options);
 Deck readDeck(const std::filesystem::path& path, const Source& source);
+Deck readDeck(const std::filesystem::path& path, const Source& source,
+              const ReadDeckOptions& options);
 
 }  // namespace crumple::deck

@@ -101,6 +101,8 @@ void Context::collect(deck::CardCursor& cursor) {
   for (auto& u : cursor.flush())
     model.ignored.push_back(
         {u.keyword, u.field, "value " + u.value + " is read but not honoured", u.where});
+  for (auto& n : cursor.takeNotes())
+    model.ignored.push_back({n.keyword, n.field, n.reason, n.where});
 }
 
 void Context::define(Kind kind, int64_t id, const deck::Card& card, std::string_view field) {
@@ -580,7 +582,8 @@ Model readModel(const std::filesystem::path& path) {
 }
 
 Model readModel(const std::filesystem::path& path, const ReadOptions& options) {
-  return buildModel(deck::readDeck(path), path, options);
+  return buildModel(deck::readDeck(path, deck::ReadDeckOptions{options.collect_errors}), path,
+                    options);
 }
 
 Model buildModel(const deck::Deck& deck, const std::filesystem::path& path,
@@ -590,6 +593,7 @@ Model buildModel(const deck::Deck& deck, const std::filesystem::path& path,
   model.deck_path = path.string();
   Context ctx(deck, model, options);
   for (const auto& note : deck.notes) ctx.ignore(note.keyword, note.field, note.reason, note.where);
+  for (const auto& error : deck.errors) ctx.recordError(error);
 
   // Match every keyword first, so that unsupported ones are listed in deck order.
   std::vector<Planned> plan;

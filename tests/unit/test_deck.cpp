@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <unistd.h>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <filesystem>
@@ -60,6 +61,20 @@ cube
 *SECTION_SOLID
 1,1
 )";
+
+// Reads "main.k" with `text` from memory, beside the files in `more`.
+crumple::deck::Deck memoryDeck(const std::string& text, Files more = {},
+                               crumple::deck::ReadDeckOptions options = {}) {
+  more["main.k"] = text;
+  return crumple::deck::readDeck("main.k", crumple::deck::MemorySource(std::move(more)), options);
+}
+
+// `field` of the first card of keyword `k` of the deck, read as `label` of `spec`'s table.
+double realOf(const crumple::deck::Deck& d, std::size_t k, std::string_view spec,
+              std::string_view label, std::string_view field) {
+  crumple::deck::CardCursor cur(d.keywords.at(k), d);
+  return cur.read(crumple::deck::keywordSpec(spec).card(label)).real(field);
+}
 
 }  // namespace
 
@@ -150,6 +165,25 @@ TEST(DeckFormat, LongFormatBySuffixAndKeywordLine) {
   const auto m = crumple::model::readModel(b);
   EXPECT_DOUBLE_EQ(m.nodes.x[m.nodeIndex(11)][1], 2.5);
   EXPECT_DOUBLE_EQ(m.nodes.x[m.nodeIndex(12)][2], 3.0);
+}
+
+TEST(DeckFormat, TextAfterTheKeywordName) {
+  // A memory size after *KEYWORD, a remark after *PART (*CONTROL_SPH "carte de control" in
+  // the SPH examples), a format suffix as its own word: none changes how the cards read.
+  TempDir t;
+  std::string cube = kCube + 9;
+  cube.replace(cube.find("*PART\n"), 6, "*PART  some text\n");
+  const auto p = t.write("d.k", "*KEYWORD 100000000\n" + cube +
+                                    "*MAT_ELASTIC   steel, for now\n1,1,1,0.3\n*NODE %\n" +
+                                    cols({{"12", 10}, {"1.5", 16}, {"2.5", 16}, {"3.5", 16}}));
+  const auto d = crumple::deck::readDeck(p);
+  EXPECT_EQ(d.keywords.at(2).name, "*PART");
+  EXPECT_EQ(d.keywords.at(2).trailing, "some text");
+  EXPECT_EQ(d.keywords.back().format, crumple::deck::Format::I10);
+  EXPECT_EQ(d.keywords.at(0).format, crumple::deck::Format::Standard);
+  const auto m = crumple::model::readModel(p);
+  EXPECT_EQ(m.parts.at(0).title, "cube");
+  EXPECT_DOUBLE_EQ(m.nodes.x[m.nodeIndex(12)][2], 3.5);
 }
 
 TEST(DeckFormat, FreeFormatCommentsBlankFieldsAndCase) {
@@ -244,6 +278,76 @@ TEST(DeckParameters, DuplicationFlag) {
                 p3.string() + ":5 (*PARAMETER_DUPLICATION DFLAG=3)");
 }
 
+TEST(DeckParameters, NamesAreCaseInsensitive) {
+  // Defined as tEnd, used as TEnd and &TEND (mainboltbexpl.k of the bolted-joint example).
+  const auto d = memoryDeck(
+      "*PARAMETER\nR     tEnd       5.0\n"
+      "*PARAMETER_EXPRESSION\nR   dtPlot TEnd/100.0\n"
+      "*PARAMETER\nR     TEND       7.0\n"
+      "*CONTROL_TERMINATION\n&TEND\n");
+  ASSERT_NE(d.parameter("tend"), nullptr);
+  EXPECT_EQ(d.parameter("TEnd")->name, "tEnd");
+  EXPECT_DOUBLE_EQ(d.parameter("DTPLOT")->value, 0.05);
+  EXPECT_DOUBLE_EQ(realOf(d, 0, "*CONTROL_TERMINATION", "card 1", "ENDTIM"), 5.0);
+  // Another spelling of the same name is a duplicate (DFLAG 1 keeps the first).
+  ASSERT_EQ(d.notes.size(), 1u);
+  EXPECT_EQ(d.notes[0].field, "TEND");
+}
+
+TEST(DeckParameters, ExpressionsAfterAnAmpersand) {
+  // sinusoid.k (muscle example): expressions in the 20-wide *DEFINE_CURVE point fields;
+  // eccentric.k: an expression that starts with a reference.
+  const auto d = memoryDeck(
+      "*PARAMETER\nR       tp       2.0R        a       4.0R        b       1.0\n"
+      "*PARAMETER_EXPRESSION\n"
+      "R rampLenS &A-&b\n"
+      "R    third 1.0/3.0\n"
+      "R    again &third\n"
+      "*DEFINE_CURVE\n         4\n"
+      "        &tp*0.500000     &a*-0.250000+&B\n"
+      "*DEFINE_CURVE\n1+&A/8\n"
+      "*DEFINE_CURVE\n-&a\n");
+  EXPECT_DOUBLE_EQ(d.parameter("rampLenS")->value, 3.0);
+  EXPECT_EQ(d.parameter("again")->value, 1.0 / 3.0);  // exactly: no digits lost on the way
+  crumple::deck::CardCursor cur(d.keywords.at(0), d);
+  const auto& spec = crumple::deck::keywordSpec("*DEFINE_CURVE");
+  cur.read(spec.card("card 1"));
+  const auto& point = cur.read(spec.card("point card"));
+  EXPECT_DOUBLE_EQ(point.real("A1"), 1.0);
+  EXPECT_DOUBLE_EQ(point.real("O1"), 0.0);
+  EXPECT_EQ(errorOf([&] { realOf(d, 1, "*DEFINE_CURVE", "card 1", "LCID"); }),
+            "main.k:11: *DEFINE_CURVE card 1 field 1 (LCID): '1+&A/8' = 1.5 is not an integer");
+  EXPECT_DOUBLE_EQ(realOf(d, 2, "*DEFINE_CURVE", "card 1", "LCID"), -4.0);  // a plain reference
+  const auto bad = memoryDeck("*DEFINE_CURVE\n&a*2\n");
+  EXPECT_EQ(errorOf([&] { realOf(bad, 0, "*DEFINE_CURVE", "card 1", "LCID"); }),
+            "main.k:2: *DEFINE_CURVE card 1 field 1 (LCID): expression '&a*2': parameter 'a' is "
+            "not defined");
+}
+
+TEST(DeckParameters, TypeLetterGluedToTheNameInFreeAndFixedFormat) {
+  // Run.k (hypervelocity impact template): "RA1,2251710e3", and RT defined but &t used -- the
+  // reason that deck stopped was the case of the name (see NamesAreCaseInsensitive).
+  const auto d = memoryDeck(
+      "*PARAMETER\n"
+      "RA1,2251710e3                                   \n"
+      "RT,1.2E-5\n"
+      "i n, 3,C  tag,steel\n"
+      "RpathLenN0  1.000000R      dT      0.500I      k2         7\n"
+      "*PARAMETER_EXPRESSION\n"
+      "Rf_r, 2-&dt\n"
+      "*CONTROL_TERMINATION\n"
+      "&t            600000\n");
+  EXPECT_DOUBLE_EQ(d.parameter("A1")->value, 2251710e3);
+  EXPECT_EQ(d.parameter("N")->type, 'I');
+  EXPECT_DOUBLE_EQ(d.parameter("n")->value, 3.0);
+  EXPECT_EQ(d.parameter("tag")->text, "steel");
+  EXPECT_DOUBLE_EQ(d.parameter("pathLenN0")->value, 1.0);
+  EXPECT_DOUBLE_EQ(d.parameter("k2")->value, 7.0);
+  EXPECT_DOUBLE_EQ(d.parameter("f_r")->value, 1.5);
+  EXPECT_DOUBLE_EQ(realOf(d, 0, "*CONTROL_TERMINATION", "card 1", "ENDTIM"), 1.2e-5);
+  EXPECT_DOUBLE_EQ(realOf(d, 0, "*CONTROL_TERMINATION", "card 1", "ENDCYC"), 600000.0);
+}
+
 TEST(DeckInclude, NestedRelativePathsAndSearchDirs) {
   TempDir t;
   t.write("mesh/nodes.k", "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n*INCLUDE\nmore/top.k\n");
@@ -284,6 +388,55 @@ TEST(DeckInclude, CyclesAreNamedWithTheirChain) {
   EXPECT_EQ(crumple::deck::readDeck(twice).keywords.size(), 2u);
 }
 
+TEST(DeckInclude, WindowsPathsFallBackToTheFileNameBesideTheDeck) {
+  // A drive path written on another machine (main.k of the tensile-specimen example), a
+  // relative path with backslashes, and a file found only in an *INCLUDE_PATH folder.
+  const crumple::deck::MemorySource source(
+      Files{{"model/main.k",
+             "*INCLUDE_PATH\nrun\n*INCLUDE\nD:\\work\\model\\nodes.k\n"
+             "..\\model\\lib\\mat.k\nC:\\old\\spc.k\n"},
+            {"model/nodes.k", "*NODE\n1,0,0,0\n"},
+            {"model/lib/mat.k", "*MAT_ELASTIC\n1,1,1,0.3\n"},
+            {"model/run/spc.k", "*BOUNDARY_SPC_NODE\n1,0,1,1,1\n"}});
+  const auto deck = crumple::deck::readDeck("model/main.k", source);
+  ASSERT_EQ(deck.keywords.size(), 3u);
+  EXPECT_EQ(deck.files.at(deck.keywords[0].file), "model/nodes.k");
+  EXPECT_EQ(deck.files.at(deck.keywords[1].file), "model/lib/mat.k");
+  EXPECT_EQ(deck.files.at(deck.keywords[2].file), "model/run/spc.k");
+  // Nothing found: every path tried is named.
+  EXPECT_EQ(errorOf([&] { memoryDeck("*INCLUDE_PATH\nlib\n*INCLUDE\nD:\\x\\gone.k\n"); }),
+            "main.k:3: *INCLUDE: cannot open 'D:\\x\\gone.k' (tried gone.k, lib/gone.k)");
+  EXPECT_EQ(errorOf([&] { memoryDeck("*INCLUDE\nsub\\gone.k\n"); }),
+            "main.k:1: *INCLUDE: cannot open 'sub\\gone.k' (tried sub/gone.k, gone.k)");
+}
+
+TEST(DeckInclude, OneNamePerLineAndNamesWithBlanks) {
+  // input.k of the MAT_106 examples: one *INCLUDE, one file per line. A name may hold blanks
+  // ("Neo-Hookean - Tensor/"): the line is one name, as LS-DYNA reads it.
+  const Files files{{"mesh.k", "*NODE\n1,0,0,0\n"},
+                    {"my folder/mat 1.k", "*MAT_ELASTIC\n1,1,1,0.3\n"}};
+  const auto d = memoryDeck("*INCLUDE\nmesh.k\n$ a comment between\nmy folder/mat 1.k\n", files);
+  ASSERT_EQ(d.keywords.size(), 2u);
+  EXPECT_EQ(d.keywords[1].name, "*MAT_ELASTIC");
+  EXPECT_EQ(errorOf([&] { memoryDeck("*INCLUDE\nmesh.k mat.k\n", files); }),
+            "main.k:1: *INCLUDE: cannot open 'mesh.k mat.k' (tried mesh.k mat.k); *INCLUDE "
+            "takes one file name per line");
+}
+
+TEST(DeckInclude, IncludePathRelativeIsRelativeToTheMainDeck) {
+  // active_force_length_06.k of the VEXAT muscle example: the main deck includes a file one
+  // folder up, whose *INCLUDE_PATH_RELATIVE ../../../common/ only makes sense from the main
+  // deck's folder.
+  const Files files{
+      {"ex/umat/apfl/afl06/main.k", "*INCLUDE_PATH_RELATIVE\n../\n*INCLUDE\n../apfl.k\n"},
+      {"ex/umat/apfl/apfl.k", "*INCLUDE_PATH_RELATIVE\n../../../common/\n*INCLUDE\nparams.k\n"},
+      {"ex/common/params.k", "*PARAMETER\nR        a       1.0\n"}};
+  const auto d =
+      crumple::deck::readDeck("ex/umat/apfl/afl06/main.k", crumple::deck::MemorySource(files));
+  ASSERT_NE(d.parameter("a"), nullptr);
+  EXPECT_EQ(d.parameter("a")->where.file, "ex/common/params.k");
+}
+
 TEST(DeckSource, MemoryFilesOnlyAndNothingFromDisk) {
   using crumple::deck::MemorySource;
   TempDir t;
@@ -291,10 +444,11 @@ TEST(DeckSource, MemoryFilesOnlyAndNothingFromDisk) {
   const MemorySource files(
       {{"main.k", "*INCLUDE\ninc/part.k\n*INCLUDE\n" + on_disk.string() + "\n"},
        {"inc/part.k", "*NODE\n2,1,0,0\n"}});
-  // The include in memory is found; the absolute path of a real file is not.
+  // The include in memory is found; the absolute path of a real file is not (nor its name
+  // beside the deck).
   EXPECT_EQ(errorOf([&] { crumple::deck::readDeck("main.k", files); }),
             "main.k:3: *INCLUDE: cannot open '" + on_disk.string() + "' (tried " +
-                on_disk.string() + ")");
+                on_disk.string() + ", real.k)");
   const MemorySource one(Files{{"x.k", "*NODE\n1,0,0,0\n"}});
   EXPECT_EQ(crumple::deck::readDeck("x.k", one).keywords.size(), 1u);
   EXPECT_EQ(errorOf([&] { crumple::deck::readDeck("y.k", one); }), "y.k: cannot open the file");
@@ -330,6 +484,56 @@ TEST(DeckLines, LongLinesAndBinaryDataAreRefused) {
   const auto ok = crumple::deck::readDeck(
       "c.k", MemorySource(Files{{"c.k", "*TITLE\r\nK\xc3\xa4se\tbox\f\r\n\x1a"}}));
   EXPECT_EQ(ok.keywords[0].lines[0].text, "K\xc3\xa4se\tbox\f");
+}
+
+TEST(DeckLines, EncryptedIncludeIsNamedAsSuch) {
+  // keyfile_include2.key (qd-cae test deck): plain keywords, then a PGP block of cipher bytes.
+  const Files files{{"enc.key", "*NODE\n1,0,0,0\n-----BEGIN PGP MESSAGE-----\n\x85\x01\x0c\n"}};
+  EXPECT_EQ(errorOf([&] { memoryDeck("*INCLUDE\nenc.key\n", files); }),
+            "enc.key:3: encrypted (PGP) input cannot be read");
+}
+
+TEST(DeckErrors, CollectModeRecordsEachBadIncludeOrParameterAndReadsOn) {
+  const Files files{{"good.k", "*NODE\n1,0,0,0\n"},
+                    {"loop.k", "*INCLUDE\nloop.k\n*NODE\n2,0,0,0\n"},
+                    {"bin.k", "*NODE\n3,0,0,0\n*NODE\n4,0\x01\n*NODE\n5,0,0,0\n"}};
+  const std::string main =
+      "*PARAMETER\n"
+      "R        a       1.0R        b       abcR        c       3.0\n"  // 2
+      "*PARAMETER_EXPRESSION\n"
+      "R        d &a+&zz\n"  // 4
+      "R        e &a+&c\n"
+      "*INCLUDE\n"  // 6
+      "missing.k\n"
+      "loop.k\n"
+      "bin.k\n"
+      "good.k\n"
+      "*NODE\n9,0,0,0\n";
+  const auto d = memoryDeck(main, files, {.collect_errors = true});
+  const std::vector<std::string> expected{
+      "main.k:2: *PARAMETER card 1 field 4 (VAL2): 'abc' is not a number",
+      "main.k:4: *PARAMETER_EXPRESSION card 1 field 2 (EXPRESSION): expression '&a+&zz': "
+      "parameter 'zz' is not defined",
+      "main.k:6: *INCLUDE: cannot open 'missing.k' (tried missing.k)",
+      "loop.k:2: *INCLUDE card 1 field 1 (FILENAME): include cycle: loop.k -> loop.k",
+      "bin.k:4: byte 0x01 in column 4: binary data, not a keyword deck (text)"};
+  EXPECT_EQ(d.errors, expected);
+  EXPECT_DOUBLE_EQ(d.parameter("c")->value, 3.0);
+  EXPECT_DOUBLE_EQ(d.parameter("e")->value, 4.0);
+  EXPECT_EQ(d.parameter("b"), nullptr);
+  // Nodes 2 (after the cycle in loop.k), 3 (before the bad line of bin.k), 1 and 9 are read.
+  std::vector<std::string> nodes;
+  for (const auto& k : d.keywords) nodes.push_back(k.lines.at(0).text);
+  EXPECT_EQ(nodes, (std::vector<std::string>{"2,0,0,0", "3,0,0,0", "1,0,0,0", "9,0,0,0"}));
+  // Without the option the first error is thrown, as before; the main file is always thrown.
+  EXPECT_EQ(errorOf([&] { memoryDeck(main, files); }), expected[0]);
+  EXPECT_EQ(errorOf([&] {
+              crumple::deck::readDeck("none.k", crumple::deck::MemorySource(files),
+                                      {.collect_errors = true});
+            }),
+            "none.k: cannot open the file");
+  EXPECT_EQ(errorOf([&] { memoryDeck("*NODE\n1,\x02\n", {}, {.collect_errors = true}); }),
+            "main.k:2: byte 0x02 in column 3: binary data, not a keyword deck (text)");
 }
 
 TEST(DeckTruncated, DefinitionWithoutCardsIsAnError) {
@@ -380,4 +584,42 @@ TEST(DeckCard, CursorReadsTypedFieldsAndReportsUnusedValues) {
   EXPECT_TRUE(cur.atEnd());
   EXPECT_EQ(errorOf([&] { cur.read(keywordSpec("*CONTROL_SOLID").card("card 2")); }),
             "x.k:4: *CONTROL_SOLID card 2 is missing");
+}
+
+TEST(DeckCard, ValuesOutOfColumnsAreReadAsSpaceSeparatedFields) {
+  using namespace crumple::deck;
+  Deck deck;
+  deck.files = {"x.k"};
+  Keyword kw;
+  kw.name = "*BOUNDARY_SPC_NODE";
+  kw.line = 1;
+  // v41_ep_4p0uj.k (laser ablation): a script wrote 8-wide columns into this 10-wide card.
+  kw.lines = {{"       1       0       1       0       1       0       0       0", 0, 2},
+              {"2\t0\t0\t1", 0, 3},
+              {"         3         0         1         1", 0, 4},
+              {"      82       0       1       0       1       0       0       0", 0, 5}};
+  const CardSpec& spec = keywordSpec("*BOUNDARY_SPC").card("card 1");
+  CardCursor cur(kw, deck);
+  const std::vector<std::array<int64_t, 5>> expected{
+      {1, 0, 1, 0, 1}, {2, 0, 0, 1, 0}, {3, 0, 1, 1, 0}, {82, 0, 1, 0, 1}};
+  for (const auto& e : expected) {
+    const Card& c = cur.read(spec);
+    EXPECT_EQ(c.readAsSpaceSeparated(), e[0] != 3) << e[0];
+    EXPECT_EQ((std::array<int64_t, 5>{c.integer("NID"), c.integer("CID"), c.integer("DOFX"),
+                                      c.integer("DOFY"), c.integer("DOFZ")}),
+              e);
+  }
+  const auto notes = cur.takeNotes();
+  ASSERT_EQ(notes.size(), 1u);  // once per keyword
+  EXPECT_EQ(notes[0].keyword, "*BOUNDARY_SPC_NODE");
+  EXPECT_EQ(notes[0].where.str(), "x.k:2");
+  // More values than fields, or one that is not of its field's type: the columns stand, and
+  // so does their error.
+  kw.lines = {{"1 0 1 0 1 0 0 0 9", 0, 6}, {"1 x\t1", 0, 7}};
+  CardCursor again(kw, deck);
+  EXPECT_EQ(errorOf([&] { again.read(spec); }),
+            "x.k:6: *BOUNDARY_SPC_NODE card 1 field 1 (NID): '1 0 1 0 1' is not an integer");
+  EXPECT_EQ(errorOf([&] { again.read(spec); }),
+            "x.k:7: *BOUNDARY_SPC_NODE card 1 field 1 (NID): '1 x\t1' is not an integer");
+  EXPECT_TRUE(again.takeNotes().empty());
 }

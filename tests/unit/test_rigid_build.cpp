@@ -177,11 +177,27 @@ TEST(RigidBuild, PrescribedRigidMotion) {
             p.string() +
                 ":58: *BOUNDARY_PRESCRIBED_MOTION_RIGID card 1 field 1 (PID): part 3 "
                 "is not rigid (*MAT_RIGID)");
-  const auto q = t.write("q.k", mesh() + "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n1,4,0,9\n");
+  const auto q = t.write("q.k", mesh() + "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n1,8,0,9\n");
   EXPECT_EQ(errorOf([&] { readModel(q); }),
             q.string() +
-                ":58: *BOUNDARY_PRESCRIBED_MOTION_RIGID card 1 field 2 (DOF): DOF 4 is "
-                "not supported (1-3 and 5-7 are)");
+                ":58: *BOUNDARY_PRESCRIBED_MOTION_RIGID card 1 field 2 (DOF): DOF 8 is "
+                "not supported (1-7 are)");
+  // DOF 4: along *DEFINE_VECTOR VID, the motion normal to it free. A vector along -z is the
+  // z translation with the scale factor's sign turned.
+  const Model v = build(t,
+                        "*DEFINE_VECTOR\n3,1,1,1,1,1,-4\n"
+                        "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n2,4,0,9,2.0,3\n");
+  const auto& along = v.rigid.bodies.at(1).motions;
+  ASSERT_EQ(along.size(), 1u);
+  EXPECT_EQ(along[0].dof, 2);
+  EXPECT_EQ(along[0].sf, -2.0);
+  const auto skew = t.write("skew.k", mesh() +
+                                          "*DEFINE_VECTOR\n3,0,0,0,1,0,1\n"
+                                          "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n2,4,0,9,1.0,3\n");
+  EXPECT_NE(errorOf([&] {
+              readModel(skew);
+            }).find("(VID): DOF 4 along a vector that is not a global axis is not supported"),
+            std::string::npos);
 }
 
 TEST(RigidBuild, SpotweldsGeneralizedWeldsAndTiedSets) {
