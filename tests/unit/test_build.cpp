@@ -454,3 +454,80 @@ TEST(BuildRealDecks, ReadToTheEnd) {
   ASSERT_FALSE(w.nodal_loads.empty());
   EXPECT_EQ(w.nodal_loads[0].dof, 1);  // local y of system 23 is global y
 }
+
+// Rules of the keyword format that decks written by others rely on (Keyword Manual Vol. I,
+// "General card format"; issue "Real decks first").
+TEST(BuildRealDeckRules, BlankHeadingIsACardAndIdCardsPrecedeEveryRecord) {
+  TempDir t;
+  // A *PART whose heading line is blank (LS-PrePost writes one), and _ID records each with
+  // their heading card.
+  const Model m = build(t,
+                        "*PART\n\n2,1,1\n*ELEMENT_SOLID\n11,2,1,2,3,4,5,6,7,8\n"
+                        "*SET_NODE_LIST\n1\n1,2\n*SET_NODE_LIST\n2\n3\n"
+                        "*BOUNDARY_SPC_SET_ID\n1,first\n1,0,1,1,1\n2,second\n2,0,1,0,0\n");
+  ASSERT_NE(m.partIndex(2), crumple::model::kNone);
+  EXPECT_EQ(m.parts[std::size_t(m.partIndex(2))].title, "");
+  std::map<int64_t, int> mask;
+  for (const auto& s : m.spcs) mask[m.nodes.id[std::size_t(s.node)]] |= s.dofs;
+  EXPECT_EQ(mask[1], 7);
+  EXPECT_EQ(mask[2], 7);
+  EXPECT_EQ(mask[3], 1);
+}
+
+TEST(BuildRealDeckRules, UnusedDefinitionsMayBeIncomplete) {
+  TempDir t;
+  // Part 5 names a material and a section that do not exist, and material 6 has no density:
+  // nothing uses them, so the deck reads and says so.
+  const Model m = build(t, "*PART\nmarker\n5,77,88\n*MAT_ELASTIC\n6,0,1,0.3\n");
+  auto noted = [&](std::string_view text) {
+    return std::any_of(m.ignored.begin(), m.ignored.end(),
+                       [&](const auto& i) { return i.reason.find(text) != std::string::npos; });
+  };
+  EXPECT_TRUE(noted("no element uses the part"));
+  EXPECT_TRUE(noted("material 6 cannot be used"));
+  // Unreadable text is an error even in an unused definition.
+  const auto bad = t.write("bad.k", kMesh + "*MAT_ELASTIC\n6,1,x,0.3\n");
+  EXPECT_EQ(errorOf([&] { readModel(bad); }),
+            bad.string() + ":26: *MAT_ELASTIC card 1 field 3 (E): 'x' is not a number");
+}
+
+TEST(BuildRealDeckRules, ShellThicknessFromElementsWhenTheSectionGivesNone) {
+  TempDir t;
+  const std::string shells =
+      "*PART\nsheet\n2,2,1\n*SECTION_SHELL\n2,2\n0\n"
+      "*ELEMENT_SHELL_THICKNESS\n11,2,1,2,3,4\n1.5,1.5,1.5,1.5\n";
+  const Model m = build(t, shells);
+  EXPECT_EQ(m.shells.thickness.at(0)[0], 1.5);
+  // Without an element thickness the shell has none: an error naming it.
+  const auto p = t.write("none.k", kMesh +
+                                       "*PART\nsheet\n2,2,1\n*SECTION_SHELL\n2,2\n0\n"
+                                       "*ELEMENT_SHELL\n11,2,1,2,3,4\n");
+  EXPECT_NE(errorOf([&] {
+              readModel(p);
+            }).find("shell 11 has no thickness: section 2 gives T1 = 0 and the element none"),
+            std::string::npos);
+}
+
+TEST(BuildRealDeckRules, Mat024TableEndsAtTheFirstNonIncreasingStrain) {
+  TempDir t;
+  // EPS 0, 0.1, 0.2 then trailing zeros with their stresses: a three-point curve.
+  const Model m = build(t,
+                        "*MAT_024\n2,7.8e-9,2e5,0.3,250\n\n0,0.1,0.2,0,0,0,0,0\n"
+                        "250,300,330,400,0,0,0,0\n*PART\np2\n2,1,2\n"
+                        "*ELEMENT_SOLID\n11,2,1,2,3,4,5,6,7,8\n");
+  const auto& law = std::get<crumple::model::PiecewiseLinearLaw>(
+      m.materials.at(std::size_t(m.parts[std::size_t(m.partIndex(2))].material)).law);
+  const auto& c = m.curves.at(std::size_t(law.lcss));
+  EXPECT_EQ(c.x, (std::vector<double>{0, 0.1, 0.2}));
+  EXPECT_EQ(c.y, (std::vector<double>{250, 300, 330}));
+  // EPS2 = 0 (stresses given, strains left zero, as old LSTC decks do): SIGY and ETAN rule.
+  const Model old = build(t,
+                          "*MAT_024\n2,7.8e-9,2e5,0.3,121\n\n0,0,0,0,0,0,0,0\n"
+                          "121,215,257,287,301,320,346,378\n*PART\np2\n2,1,2\n"
+                          "*ELEMENT_SOLID\n11,2,1,2,3,4,5,6,7,8\n",
+                          "old.k");
+  const auto& bilinear = std::get<crumple::model::PiecewiseLinearLaw>(
+      old.materials.at(std::size_t(old.parts[std::size_t(old.partIndex(2))].material)).law);
+  EXPECT_EQ(bilinear.lcss, crumple::model::kNone);
+  EXPECT_EQ(bilinear.sigy, 121.0);
+}
