@@ -229,6 +229,12 @@ std::vector<KeywordSpec> makeTables() {
   t.push_back(
       {"*CONTACT",
        {{"id card", {I("CID"), A("HEADING", 70)}},
+        // _MPP: after the id card, before card 1; the second card only when it starts with
+        // '&' (Keyword Manual, *CONTACT, MPP cards). Distributed-memory settings: reported.
+        {"mpp card 1",
+         {I("IGNORE"), I("BCKT", 200, Z), I("LCBCKT"), I("NS2TRK", 3, Z), I("INITITR", 2, Z),
+          R("PARMAX", 1.0005, Z), A("UNUSED", 10, {}, Q), I("CPARM8")}},
+        {"mpp card 2", {A("AMP", 10, {}, Q), I("CHKSEGS"), R("PENSF", 1, Z), I("GRPABLE")}},
         {"card 1",
          {I("SSID"), I("MSID"), I("SSTYP"), I("MSTYP"), I("SBOXID"), I("MBOXID"), I("SPR"),
           I("MPR")}},
@@ -392,7 +398,10 @@ std::vector<KeywordSpec> makeTables() {
                  {idCard(),
                   {"card 1", {I("NSID"), I("NSIDEX"), I("BOXID"), R("BIRTH"), R("DEATH", 1e20, Z)}},
                   {"card 2", {R("XT"), R("YT"), R("ZT"), R("XH"), R("YH"), R("ZH"), R("FRIC")}},
-                  card3}});
+                  card3,
+                  // _DISPLAY: a part for drawing the wall (Keyword Manual, *RIGIDWALL_
+                  // GEOMETRIC); it carries no force.
+                  {"display card", {I("PID", 0, Q), R("RO", 0, Q), R("E", 0, Q), R("PR", 0, Q)}}}});
   t.push_back({"*BOUNDARY_PRESCRIBED_MOTION_RIGID",
                {idCard(),
                 {"card 1",

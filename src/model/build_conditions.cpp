@@ -445,6 +445,11 @@ void readRigidWallGeometric(Context& ctx, const deck::Keyword& kw, const Keyword
     w.radius = c3.real("RADSPH");
     if (w.radius <= 0) c3.fail("RADSPH", "must be positive");
   }
+  if (opts.has("DISPLAY")) {
+    const Card& d = cur.readOptional(spec.card("display card"));
+    ctx.ignore(kw.name, "display card", "drawing only: the wall is drawn by nothing here",
+               d.where());
+  }
   ctx.model.rigid_walls.push_back(std::move(w));
   ctx.collect(cur);
 }

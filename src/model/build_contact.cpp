@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 
+#include "deck/number.hpp"
 #include "model/build_context.hpp"
 #include "util/vec3.hpp"
 
@@ -277,9 +278,14 @@ ContactSurface makeSurface(const Model& m, const Side& side, double thickness_ov
 void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   // The words between *CONTACT_ and _ID/_TITLE name the algorithm.
   std::string name = kw.name;
-  for (std::string_view tail : {"_TITLE", "_ID"})
-    if (name.size() > tail.size() && name.substr(name.size() - tail.size()) == tail)
-      name.resize(name.size() - tail.size());
+  for (bool cut = true; cut;) {  // in any order: _MPP_ID, _ID_MPP, ...
+    cut = false;
+    for (std::string_view tail : {"_TITLE", "_ID", "_MPP"})
+      if (name.size() > tail.size() && name.substr(name.size() - tail.size()) == tail) {
+        name.resize(name.size() - tail.size());
+        cut = true;
+      }
+  }
   ContactInterface ci;
   if (name == "*CONTACT_NODES_TO_SURFACE") {
     ci.kind = ContactKind::NodesToSurface;
@@ -314,6 +320,11 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
     const Card& idc = cur.read(spec.card("id card"));
     if (!idc.blank("CID")) ci.id = idc.integer("CID");
     ci.title = idc.text("HEADING");
+  }
+  if (opts.has("MPP")) {
+    cur.read(spec.card("mpp card 1"));
+    if (!cur.atEnd() && deck::trim(cur.peek().text).rfind('&', 0) == 0)
+      cur.read(spec.card("mpp card 2"));
   }
   for (const auto& other : ctx.model.contacts)
     if (other.id == ci.id)

@@ -405,6 +405,37 @@ TEST(BuildContact, PartContactScalesStiffnessAndReportsFriction) {
   EXPECT_TRUE(fs_reported);
 }
 
+// _MPP: the MPP cards come after the id card and before card 1, the second only when it
+// starts with '&' (Keyword Manual, *CONTACT); their settings are reported, not honoured.
+TEST(BuildContact, MppCardsAreReadInTheirPlace) {
+  TempDir t;
+  const Model m = build(t,
+                        "*CONTACT_AUTOMATIC_SINGLE_SURFACE_MPP_ID\n7,with mpp\n"
+                        "0,100,,,,,,2\n&,1\n1,0,3,0\n0.2\n");
+  ASSERT_EQ(m.contacts.size(), 1u);
+  EXPECT_EQ(m.contacts[0].id, 7);
+  EXPECT_EQ(m.contacts[0].fs, 0.2);  // card 2, after the two MPP cards and card 1
+  auto reported = [&](std::string_view field) {
+    return std::any_of(m.ignored.begin(), m.ignored.end(),
+                       [&](const auto& i) { return i.field == field; });
+  };
+  EXPECT_TRUE(reported("BCKT"));
+  EXPECT_TRUE(reported("CPARM8"));
+  EXPECT_TRUE(reported("CHKSEGS"));
+}
+
+// _DISPLAY adds a drawing part's card at the end of a geometric wall: read, noted, no force.
+TEST(BuildWalls, DisplayCardIsReadAndNoted) {
+  TempDir t;
+  const Model m = build(t,
+                        "*RIGIDWALL_GEOMETRIC_CYLINDER_DISPLAY\n0\n5,0,0,5,0,1\n0.5,2\n"
+                        "99,7.8e-9,2e5,0.3\n");
+  ASSERT_EQ(m.rigid_walls.size(), 1u);
+  EXPECT_EQ(m.rigid_walls[0].radius, 0.5);
+  EXPECT_TRUE(std::any_of(m.ignored.begin(), m.ignored.end(),
+                          [](const auto& i) { return i.field == "display card"; }));
+}
+
 // The real decks in ../shared/decks, read to the end.
 TEST(BuildRealDecks, ReadToTheEnd) {
   const fs::path decks = fs::path(CRUMPLE_SHARED_DIR) / "decks";
