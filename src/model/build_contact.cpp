@@ -382,8 +382,15 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
     if (b.segments.empty()) c1.fail("MSID", "the master side has no segments");
   }
   if (a.nodes.empty()) c1.fail("SSID", "the slave side has no nodes");
-  if (ci.kind == ContactKind::SingleSurface && a.segments.empty())
-    c1.fail("SSID", "the surface has no segments");
+  if (ci.kind == ContactKind::SingleSurface && a.segments.empty()) {
+    // Beams make no segments: a surface of beams alone asks for beam contact.
+    if (ctx.model.beams.size() == 0) c1.fail("SSID", "the surface has no segments");
+    ctx.reject(c1, "SSID",
+               "the surface has no segments, only beam nodes: beam-to-beam contact is not "
+               "supported",
+               "beam contact");
+    throw SkipRecord{};
+  }
   ci.a = makeSurface(ctx.model, a, ci.sst);
   if (ci.kind != ContactKind::SingleSurface) ci.b = makeSurface(ctx.model, b, ci.mst);
   ctx.model.contacts.push_back(std::move(ci));
