@@ -249,8 +249,16 @@ int RigidBodies::width(int32_t group) const {
 
 RigidBodies::RigidBodies(const model::Model& m, const domain::Subdomain& sd,
                          const comm::Communicator& comm) {
+  if (m.rigid.empty()) return;
+  makeGroups(m, sd);
+  initBodies(m, sd, comm);
+  initJoints(m, sd, comm);
+}
+
+// The bodies, welds and tied sets of the model, and the group (body or set) of every local
+// node with the nodes of each group.
+void RigidBodies::makeGroups(const model::Model& m, const domain::Subdomain& sd) {
   const auto& rd = m.rigid;
-  if (rd.empty()) return;
   const std::size_t nn = sd.numNodes();
   group_.assign(nn, -1);
   in_body_.assign(nn, 0);
@@ -290,7 +298,7 @@ RigidBodies::RigidBodies(const model::Model& m, const domain::Subdomain& sd,
     mark(t.nodes, bodies_.size() + sets_.size());
     sets_.push_back(std::move(ts));
   }
-  const std::size_t nb = bodies_.size(), groups = nb + sets_.size();
+  const std::size_t nb = bodies_.size();
   for (std::size_t n = 0; n < nn; ++n) {
     const int32_t g = group_[n];
     if (g < 0) continue;
@@ -299,8 +307,14 @@ RigidBodies::RigidBodies(const model::Model& m, const domain::Subdomain& sd,
     else
       sets_[static_cast<std::size_t>(g) - nb].local.push_back(int32_t(n));
   }
+}
 
-  // Mass, centre, inertia and momenta of every body from all its nodes, in node order.
+// Mass, centre, inertia and momenta of every body from all its nodes, in node order (the
+// same sums on every rank).
+void RigidBodies::initBodies(const model::Model& m, const domain::Subdomain& sd,
+                             const comm::Communicator& comm) {
+  const std::size_t nn = sd.numNodes();
+  const std::size_t nb = bodies_.size(), groups = nb + sets_.size();
   std::vector<int64_t> keys;
   std::vector<double> values;
   for (std::size_t n = 0; n < nn; ++n) {
@@ -316,103 +330,116 @@ RigidBodies::RigidBodies(const model::Model& m, const domain::Subdomain& sd,
       keys, values, groups, [](int32_t) { return kSetupWidth; }, comm, all);
 
   for (std::size_t g = 0; g < nb; ++g) {
-    Body& b = bodies_[g];
-    const model::RigidBodyDef* def = g < rd.bodies.size() ? &rd.bodies[g] : nullptr;
-    const std::string name = def ? bodyName(*def)
-                                 : "spot weld " + std::to_string(b.id) + " (" +
-                                       rd.welds[g - rd.bodies.size()].where.str() + ")";
-    double mass = 0.0;
-    Vec3 s{}, p{};
-    for (std::size_t off : recs[g]) {
-      const double mi = all[off];
-      mass += mi;
-      for (int c = 0; c < 3; ++c) {
-        s[std::size_t(c)] += mi * all[off + 1 + std::size_t(c)];
-        p[std::size_t(c)] += mi * all[off + 4 + std::size_t(c)];
-      }
-    }
-    const bool given = def && def->inertia_given;
-    if (!(mass > 0.0) && !given)
-      throw util::InputError(name + " has no mass: its nodes carry no element or *ELEMENT_MASS");
-    const Vec3 cm_nodes = mass > 0.0 ? scaled(s, 1.0 / mass) : Vec3{};
-    // J = sum m (|r|^2 I - r r^T) + nodal rotational inertia, about the centre
-    // (LS-DYNA Theory Manual, "Rigid Body Dynamics"); L = sum m r x v.
-    double j[3][3] = {};
-    Vec3 l_nodes{};
-    for (std::size_t off : recs[g]) {
-      const double mi = all[off];
-      const Vec3 r = sub(at(all, off + 1), cm_nodes);
-      const double r2 = dot(r, r);
-      for (int a = 0; a < 3; ++a)
-        for (int c = 0; c < 3; ++c)
-          j[a][c] += mi * ((a == c ? r2 : 0.0) - r[std::size_t(a)] * r[std::size_t(c)]) +
-                     (a == c ? all[off + 7] : 0.0);
-      l_nodes = add(l_nodes, scaled(cross(r, at(all, off + 4)), mi));
-    }
-    Vec3 V0 = mass > 0.0 ? scaled(p, 1.0 / mass) : Vec3{};
-    if (given) {
-      // *PART_INERTIA: the nodes' motion (V0, omega0 about their own centre) carried over to
-      // the given centre and inertia.
-      double jn[3][3];
-      std::copy(&j[0][0], &j[0][0] + 9, &jn[0][0]);
-      Body nodes_body;
-      double e[3][3];
-      eigenSymmetric(jn, nodes_body.inertia, e);
-      nodes_body.q = fromMatrix(e);
-      double a[3][3];
-      inverseInertia(nodes_body, nodes_body.q, a);
-      const Vec3 w0 = matVec(a, l_nodes);
-      b.mass = def->mass;
-      b.x_cm = def->cm;
-      tensorMatrix(def->tensor, j);
-      V0 = add(V0, cross(w0, sub(b.x_cm, cm_nodes)));
-      b.L = matVec(j, w0);
-    } else {
-      b.mass = mass;
-      b.x_cm = cm_nodes;
-      b.L = l_nodes;
-    }
-    b.V = V0;
-    if (def && def->velocity_given) {
-      b.V = def->v0;
-      b.L = matVec(j, def->w0);
-    }
-    double e[3][3];
-    eigenSymmetric(j, b.inertia, e);
-    b.q = fromMatrix(e);
-    // CMO constraints hold from the start: L = J w with the constrained components of w zero.
-    for (int c = 0; c < 3; ++c)
-      if (b.fixed & (1u << c)) b.V[std::size_t(c)] = 0.0;
-    if (b.fixed & 070) {
-      double a[3][3];
-      inverseInertia(b, b.q, a);
-      Vec3 w = matVec(a, b.L);
-      for (int c = 0; c < 3; ++c)
-        if (b.fixed & (8u << c)) w[std::size_t(c)] = 0.0;
-      b.L = angularMomentum(b, b.q, w);
-    }
-    b.x_cm0 = b.x_cm;
-    b.x_cm_prev = b.x_cm;
-    b.q_prev = b.q;
-    b.V_prev = b.V;
-    b.L_prev = b.L;
-    double ainv[3][3];
-    inverseInertia(b, b.q, ainv);
-    b.omega = matVec(ainv, b.L);
-    double r[3][3];
-    matrix(b.q, r);
-    for (int32_t n : b.local) {
-      b.X.push_back(matTVec(r, sub(at(sd.x, 3 * std::size_t(n)), b.x_cm)));
-      in_body_[static_cast<std::size_t>(n)] = 1;
-    }
-    if (b.weld)
-      for (std::size_t off : recs[g]) b.all_X.push_back(matTVec(r, sub(at(all, off + 1), b.x_cm)));
+    const model::RigidBodyDef* def = g < m.rigid.bodies.size() ? &m.rigid.bodies[g] : nullptr;
+    initBody(bodies_[g], def, m, sd, recs[g], all);
   }
   for (std::size_t k = 0; k < sets_.size(); ++k)
     for (std::size_t off : recs[nb + k]) sets_[k].mass += all[off];
+}
 
-  // Joints: the mass behind each side of each pair (its body's, or the node's own).
-  for (const auto& j : rd.joints)
+void RigidBodies::initBody(Body& b, const model::RigidBodyDef* def, const model::Model& m,
+                           const domain::Subdomain& sd, const std::vector<std::size_t>& rec,
+                           const std::vector<double>& all) {
+  const auto& rd = m.rigid;
+  const std::size_t g = static_cast<std::size_t>(&b - bodies_.data());
+  const std::string name = def ? bodyName(*def)
+                               : "spot weld " + std::to_string(b.id) + " (" +
+                                     rd.welds[g - rd.bodies.size()].where.str() + ")";
+  double mass = 0.0;
+  Vec3 s{}, p{};
+  for (std::size_t off : rec) {
+    const double mi = all[off];
+    mass += mi;
+    for (int c = 0; c < 3; ++c) {
+      s[std::size_t(c)] += mi * all[off + 1 + std::size_t(c)];
+      p[std::size_t(c)] += mi * all[off + 4 + std::size_t(c)];
+    }
+  }
+  const bool given = def && def->inertia_given;
+  if (!(mass > 0.0) && !given)
+    throw util::InputError(name + " has no mass: its nodes carry no element or *ELEMENT_MASS");
+  const Vec3 cm_nodes = mass > 0.0 ? scaled(s, 1.0 / mass) : Vec3{};
+  // J = sum m (|r|^2 I - r r^T) + nodal rotational inertia, about the centre
+  // (LS-DYNA Theory Manual, "Rigid Body Dynamics"); L = sum m r x v.
+  double j[3][3] = {};
+  Vec3 l_nodes{};
+  for (std::size_t off : rec) {
+    const double mi = all[off];
+    const Vec3 r = sub(at(all, off + 1), cm_nodes);
+    const double r2 = dot(r, r);
+    for (int a = 0; a < 3; ++a)
+      for (int c = 0; c < 3; ++c)
+        j[a][c] += mi * ((a == c ? r2 : 0.0) - r[std::size_t(a)] * r[std::size_t(c)]) +
+                   (a == c ? all[off + 7] : 0.0);
+    l_nodes = add(l_nodes, scaled(cross(r, at(all, off + 4)), mi));
+  }
+  Vec3 V0 = mass > 0.0 ? scaled(p, 1.0 / mass) : Vec3{};
+  if (given) {
+    // *PART_INERTIA: the nodes' motion (V0, omega0 about their own centre) carried over to
+    // the given centre and inertia.
+    double jn[3][3];
+    std::copy(&j[0][0], &j[0][0] + 9, &jn[0][0]);
+    Body nodes_body;
+    double e[3][3];
+    eigenSymmetric(jn, nodes_body.inertia, e);
+    nodes_body.q = fromMatrix(e);
+    double a[3][3];
+    inverseInertia(nodes_body, nodes_body.q, a);
+    const Vec3 w0 = matVec(a, l_nodes);
+    b.mass = def->mass;
+    b.x_cm = def->cm;
+    tensorMatrix(def->tensor, j);
+    V0 = add(V0, cross(w0, sub(b.x_cm, cm_nodes)));
+    b.L = matVec(j, w0);
+  } else {
+    b.mass = mass;
+    b.x_cm = cm_nodes;
+    b.L = l_nodes;
+  }
+  b.V = V0;
+  if (def && def->velocity_given) {
+    b.V = def->v0;
+    b.L = matVec(j, def->w0);
+  }
+  double e[3][3];
+  eigenSymmetric(j, b.inertia, e);
+  b.q = fromMatrix(e);
+  // CMO constraints hold from the start: L = J w with the constrained components of w zero.
+  for (int c = 0; c < 3; ++c)
+    if (b.fixed & (1u << c)) b.V[std::size_t(c)] = 0.0;
+  if (b.fixed & 070) {
+    double a[3][3];
+    inverseInertia(b, b.q, a);
+    Vec3 w = matVec(a, b.L);
+    for (int c = 0; c < 3; ++c)
+      if (b.fixed & (8u << c)) w[std::size_t(c)] = 0.0;
+    b.L = angularMomentum(b, b.q, w);
+  }
+  b.x_cm0 = b.x_cm;
+  b.x_cm_prev = b.x_cm;
+  b.q_prev = b.q;
+  b.V_prev = b.V;
+  b.L_prev = b.L;
+  double ainv[3][3];
+  inverseInertia(b, b.q, ainv);
+  b.omega = matVec(ainv, b.L);
+  double r[3][3];
+  matrix(b.q, r);
+  for (int32_t n : b.local) {
+    b.X.push_back(matTVec(r, sub(at(sd.x, 3 * std::size_t(n)), b.x_cm)));
+    in_body_[static_cast<std::size_t>(n)] = 1;
+  }
+  if (b.weld)
+    for (std::size_t off : rec) b.all_X.push_back(matTVec(r, sub(at(all, off + 1), b.x_cm)));
+}
+
+// Joints: the mass behind each side of each pair (its body's, or the node's own).
+void RigidBodies::initJoints(const model::Model& m, const domain::Subdomain& sd,
+                             const comm::Communicator& comm) {
+  const std::size_t nb = bodies_.size();
+  std::vector<int64_t> keys;
+  std::vector<double> values, all;
+  for (const auto& j : m.rigid.joints)
     for (const auto& pair : j.pairs) {
       JointPair jp;
       jp.node = pair;
@@ -422,8 +449,6 @@ RigidBodies::RigidBodies(const model::Model& m, const domain::Subdomain& sd,
       joints_.push_back(jp);
     }
   if (joints_.empty()) return;
-  keys.clear();
-  values.clear();
   for (std::size_t p = 0; p < joints_.size(); ++p)
     for (int s = 0; s < 2; ++s) {
       const int32_t n = joints_[p].local[std::size_t(s)];

@@ -153,6 +153,15 @@ class RigidBodies {
   };
 
   int width(int32_t group) const;
+  // Construction steps (see the constructor).
+  void makeGroups(const model::Model& m, const domain::Subdomain& sd);
+  void initBodies(const model::Model& m, const domain::Subdomain& sd,
+                  const comm::Communicator& comm);
+  void initBody(Body& b, const model::RigidBodyDef* def, const model::Model& m,
+                const domain::Subdomain& sd, const std::vector<std::size_t>& rec,
+                const std::vector<double>& all);
+  void initJoints(const model::Model& m, const domain::Subdomain& sd,
+                  const comm::Communicator& comm);
   // The spatial inverse inertia R diag(1/I) R^T of a body at orientation q (0 on degenerate
   // axes: bodies of collinear point masses have no inertia about their line).
   static void inverseInertia(const Body& b, const Quat& q, double a[3][3]);

@@ -171,73 +171,104 @@ void fillBase(Block& b, const model::Model& model, int32_t part_index,
 
 }  // namespace
 
-Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& elem_rank, int rank,
-                         int num_ranks) {
-  if (elem_rank.size() != model.numElements())
-    throw std::invalid_argument("buildSubdomain: one rank per element expected");
-  Subdomain sd;
-  sd.rank = rank;
-  sd.num_ranks = num_ranks;
-  sd.global_nodes = static_cast<int64_t>(model.nodes.size());
-  sd.global_solids = static_cast<int64_t>(model.solids.size());
-  sd.global_elements = static_cast<int64_t>(model.numElements());
-  for (int f = 0; f < model::kFamilies; ++f) {
-    sd.family_offset[std::size_t(f)] =
-        static_cast<int64_t>(model.familyOffset(static_cast<model::Family>(f)));
-    sd.global_family[std::size_t(f)] =
-        static_cast<int64_t>(model.familySize(static_cast<model::Family>(f)));
-  }
-  const NodeRanks nr = nodeRanks(model, elem_rank);
-  const std::size_t n_model = model.nodes.size();
-  const int64_t num_elements = sd.global_elements;
+namespace {
 
-  // Nodes held here, ascending model index.
-  std::vector<int32_t> local_of(n_model, model::kNone);
-  for (std::size_t n = 0; n < n_model; ++n)
-    if (nr.holds(n, rank)) {
-      local_of[n] = static_cast<int32_t>(sd.node_model.size());
-      sd.node_model.push_back(static_cast<int32_t>(n));
-    }
-  const std::size_t nn = sd.node_model.size();
-  sd.node_id.resize(nn);
-  sd.node_owned.resize(nn);
-  sd.x0.resize(3 * nn);
-  for (std::size_t i = 0; i < nn; ++i) {
-    const auto m = static_cast<std::size_t>(sd.node_model[i]);
-    sd.node_id[i] = model.nodes.id[m];
-    sd.node_owned[i] = nr.lowest(m) == rank ? 1 : 0;
-    for (int c = 0; c < 3; ++c) sd.x0[3 * i + c] = model.nodes.x[m][c];
+// Builds one rank's Subdomain step by step (buildSubdomain below reads as the steps). The
+// slots are numbered as the steps run: element corners block by block, then pressure
+// segments, then what the neighbours send.
+class SubdomainBuilder {
+ public:
+  SubdomainBuilder(const model::Model& m, const std::vector<int32_t>& ranks, int r, int nr_ranks)
+      : model(m),
+        elem_rank(ranks),
+        rank(r),
+        num_ranks(nr_ranks),
+        nr(nodeRanks(m, ranks)),
+        num_elements(int64_t(m.numElements())) {}
+
+  Subdomain build() {
+    counts();
+    nodes();
+    for (auto& [part, elems, shared] : groupByPart(model::Family::Solid, model.solids))
+      addBlock(solidBlock(part, elems, shared), model::Family::Solid, sd.solid_blocks);
+    for (auto& [part, elems, shared] : groupByPart(model::Family::Shell, model.shells))
+      addBlock(shellBlock(part, elems, shared), model::Family::Shell, sd.shell_blocks);
+    for (auto& [part, elems, shared] : groupByPart(model::Family::Beam, model.beams))
+      addBlock(beamBlock(part, elems, shared), model::Family::Beam, sd.beam_blocks);
+    for (auto& [part, elems, shared] : groupByPart(model::Family::Discrete, model.discretes))
+      addBlock(discreteBlock(part, elems, shared), model::Family::Discrete, sd.discrete_blocks);
+    pressureSegments();
+    if (num_ranks > 1) neighbours();
+    sd.slots.assign(3 * slot, 0.0);
+    gatherPlans();
+    return std::move(sd);
   }
-  sd.x = sd.x0;
-  sd.v.assign(3 * nn, 0.0);
-  sd.a.assign(3 * nn, 0.0);
-  sd.f.assign(3 * nn, 0.0);
-  sd.f_ext.assign(3 * nn, 0.0);
-  sd.mass.assign(nn, 0.0);
-  sd.mass_added.assign(nn, 0.0);
-  sd.rotations = model.shells.size() + model.beams.size() > 0;
-  if (sd.rotations) {
-    sd.w.assign(3 * nn, 0.0);
-    sd.moment.assign(3 * nn, 0.0);
-    sd.inertia.assign(nn, 0.0);
+
+ private:
+  using Group = std::tuple<int32_t, std::vector<int32_t>, std::size_t>;  // part, elems, shared
+
+  void counts() {
+    sd.rank = rank;
+    sd.num_ranks = num_ranks;
+    sd.global_nodes = static_cast<int64_t>(model.nodes.size());
+    sd.global_solids = static_cast<int64_t>(model.solids.size());
+    sd.global_elements = num_elements;
+    for (int f = 0; f < model::kFamilies; ++f) {
+      sd.family_offset[std::size_t(f)] =
+          static_cast<int64_t>(model.familyOffset(static_cast<model::Family>(f)));
+      sd.global_family[std::size_t(f)] =
+          static_cast<int64_t>(model.familySize(static_cast<model::Family>(f)));
+    }
+  }
+
+  // Nodes held here, ascending model index, and their arrays.
+  void nodes() {
+    const std::size_t n_model = model.nodes.size();
+    local_of.assign(n_model, model::kNone);
+    for (std::size_t n = 0; n < n_model; ++n)
+      if (nr.holds(n, rank)) {
+        local_of[n] = static_cast<int32_t>(sd.node_model.size());
+        sd.node_model.push_back(static_cast<int32_t>(n));
+      }
+    nn = sd.node_model.size();
+    sd.node_id.resize(nn);
+    sd.node_owned.resize(nn);
+    sd.x0.resize(3 * nn);
+    for (std::size_t i = 0; i < nn; ++i) {
+      const auto m = static_cast<std::size_t>(sd.node_model[i]);
+      sd.node_id[i] = model.nodes.id[m];
+      sd.node_owned[i] = nr.lowest(m) == rank ? 1 : 0;
+      for (int c = 0; c < 3; ++c) sd.x0[3 * i + c] = model.nodes.x[m][c];
+    }
+    sd.x = sd.x0;
+    sd.v.assign(3 * nn, 0.0);
+    sd.a.assign(3 * nn, 0.0);
+    sd.f.assign(3 * nn, 0.0);
+    sd.f_ext.assign(3 * nn, 0.0);
+    sd.mass.assign(nn, 0.0);
+    sd.mass_added.assign(nn, 0.0);
+    sd.rotations = model.shells.size() + model.beams.size() > 0;
+    if (sd.rotations) {
+      sd.w.assign(3 * nn, 0.0);
+      sd.moment.assign(3 * nn, 0.0);
+      sd.inertia.assign(nn, 0.0);
+    }
   }
 
   // Blocks: one per family and part. Elements touching a node that another rank also holds
   // come first, so their forces can be sent while the others are computed; each group
   // ascending.
-  std::size_t slot = 0;
-  std::vector<Corner> internal, pressure;
-  auto groupByPart = [&](model::Family family, const std::vector<int32_t>& parts,
-                         const auto& nodes_of) {
+  template <class List>
+  std::vector<Group> groupByPart(model::Family family, const List& list) const {
     const std::size_t offset = model.familyOffset(family);
     std::map<int32_t, std::vector<int32_t>> rest, first;
-    for (std::size_t e = 0; e < parts.size(); ++e) {
+    for (std::size_t e = 0; e < list.part.size(); ++e) {
       if (elem_rank[offset + e] != rank) continue;
       bool shared = false;
-      for (int32_t n : nodes_of(e)) shared = shared || nr.shared(static_cast<std::size_t>(n));
-      (shared ? first : rest)[parts[e]].push_back(int32_t(e));
+      for (int32_t n : list.nodes[e]) shared = shared || nr.shared(static_cast<std::size_t>(n));
+      (shared ? first : rest)[list.part[e]].push_back(int32_t(e));
     }
-    std::vector<std::tuple<int32_t, std::vector<int32_t>, std::size_t>> out;
+    std::vector<Group> out;
     std::set<int32_t> keys;
     for (const auto& [p, v] : rest) keys.insert(p);
     for (const auto& [p, v] : first) keys.insert(p);
@@ -248,9 +279,11 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
       out.emplace_back(p, std::move(elems), shared_count);
     }
     return out;
-  };
-  // Records the corners of a block's elements and gives the block its slots.
-  auto addCorners = [&](BlockBase& b, model::Family family) {
+  }
+
+  // Records the corners of a block's elements, gives the block its slots and keeps it.
+  template <class Block>
+  void addBlock(Block b, model::Family family, std::vector<Block>& blocks) {
     const std::size_t offset = model.familyOffset(family);
     const int per = slotsPerElement(family);
     b.slot_offset = slot;
@@ -264,11 +297,11 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
     }
     slot += std::size_t(per) * b.size();
     sd.num_elements += b.size();
-  };
+    blocks.push_back(std::move(b));
+  }
 
-  for (auto& [part_index, elems, shared_count] :
-       groupByPart(model::Family::Solid, model.solids.part,
-                   [&](std::size_t e) { return model.solids.nodes[e]; })) {
+  SolidBlock solidBlock(int32_t part_index, const std::vector<int32_t>& elems,
+                        std::size_t shared_count) const {
     const auto& part = model.parts[static_cast<std::size_t>(part_index)];
     const auto& mat = model.materials[static_cast<std::size_t>(part.material)];
     SolidBlock b;
@@ -282,12 +315,11 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
     b.elform = model.solid_sections[static_cast<std::size_t>(part.section)].elform;
     // A fully integrated element has no hourglass modes to control.
     b.resize(b.size(), plastic, kinematic, b.elform == 1 && b.hourglass.ihq >= 4, b.elform == 2);
-    addCorners(b, model::Family::Solid);
-    sd.solid_blocks.push_back(std::move(b));
+    return b;
   }
-  for (auto& [part_index, elems, shared_count] :
-       groupByPart(model::Family::Shell, model.shells.part,
-                   [&](std::size_t e) { return model.shells.nodes[e]; })) {
+
+  ShellBlock shellBlock(int32_t part_index, const std::vector<int32_t>& elems,
+                        std::size_t shared_count) const {
     const auto& part = model.parts[static_cast<std::size_t>(part_index)];
     const auto& mat = model.materials[static_cast<std::size_t>(part.material)];
     const auto& sec = model.shell_sections[static_cast<std::size_t>(part.section)];
@@ -311,12 +343,11 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
       const auto& t = model.shells.thickness[static_cast<std::size_t>(b.elem[k])];
       b.corner_thickness[k] = t[0] > 0 ? t : sec.t;
     }
-    addCorners(b, model::Family::Shell);
-    sd.shell_blocks.push_back(std::move(b));
+    return b;
   }
-  for (auto& [part_index, elems, shared_count] :
-       groupByPart(model::Family::Beam, model.beams.part,
-                   [&](std::size_t e) { return model.beams.nodes[e]; })) {
+
+  BeamBlock beamBlock(int32_t part_index, const std::vector<int32_t>& elems,
+                      std::size_t shared_count) const {
     const auto& part = model.parts[static_cast<std::size_t>(part_index)];
     const auto& mat = model.materials[static_cast<std::size_t>(part.material)];
     const auto& sec = model.beam_sections[static_cast<std::size_t>(part.section)];
@@ -348,12 +379,11 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
       else
         b.orientation[k] = {std::nan(""), std::nan(""), std::nan("")};
     }
-    addCorners(b, model::Family::Beam);
-    sd.beam_blocks.push_back(std::move(b));
+    return b;
   }
-  for (auto& [part_index, elems, shared_count] :
-       groupByPart(model::Family::Discrete, model.discretes.part,
-                   [&](std::size_t e) { return model.discretes.nodes[e]; })) {
+
+  DiscreteBlock discreteBlock(int32_t part_index, const std::vector<int32_t>& elems,
+                              std::size_t shared_count) const {
     const auto& part = model.parts[static_cast<std::size_t>(part_index)];
     const auto& mat = model.materials[static_cast<std::size_t>(part.material)];
     DiscreteBlock b;
@@ -382,44 +412,45 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
       b.scale[k] = model.discretes.scale[e];
       b.offset[k] = model.discretes.offset[e];
     }
-    addCorners(b, model::Family::Discrete);
-    sd.discrete_blocks.push_back(std::move(b));
+    return b;
   }
 
   // Pressure segments: computed by the lowest rank that holds all four nodes.
-  auto segmentOwner = [&](std::size_t s) {
-    const auto& nodes = model.pressure_loads[s].nodes;
-    for (int r = 0; r < num_ranks; ++r) {
-      bool all = true;
-      for (int32_t n : nodes) all = all && nr.holds(static_cast<std::size_t>(n), r);
-      if (all) return r;
+  void pressureSegments() {
+    auto segmentOwner = [&](std::size_t s) {
+      const auto& nodes = model.pressure_loads[s].nodes;
+      for (int r = 0; r < num_ranks; ++r) {
+        bool all = true;
+        for (int32_t n : nodes) all = all && nr.holds(static_cast<std::size_t>(n), r);
+        if (all) return r;
+      }
+      return -1;
+    };
+    segment_owner.resize(model.pressure_loads.size());
+    for (std::size_t s = 0; s < model.pressure_loads.size(); ++s) {
+      segment_owner[s] = segmentOwner(s);
+      if (segment_owner[s] < 0)
+        throw util::InputError(
+            "a *LOAD_SEGMENT segment is not a face of any element held by one "
+            "rank; pressure segments must lie on element faces in a parallel run");
     }
-    return -1;
-  };
-  std::vector<int32_t> segment_owner(model.pressure_loads.size());
-  for (std::size_t s = 0; s < model.pressure_loads.size(); ++s) {
-    segment_owner[s] = segmentOwner(s);
-    if (segment_owner[s] < 0)
-      throw util::InputError(
-          "a *LOAD_SEGMENT segment is not a face of any element held by one "
-          "rank; pressure segments must lie on element faces in a parallel run");
+    sd.pressure_slot_offset = slot;
+    for (std::size_t s = 0; s < model.pressure_loads.size(); ++s) {
+      if (segment_owner[s] != rank) continue;
+      sd.pressure_segments.push_back(int32_t(s));
+      for (int a = 0; a < 4; ++a)
+        pressure.push_back({model.pressure_loads[s].nodes[a], num_elements + int64_t(s), a,
+                            int32_t(slot + a), false});
+      slot += 4;
+    }
+    sd.num_local_slots = slot;
   }
-  sd.pressure_slot_offset = slot;
-  for (std::size_t s = 0; s < model.pressure_loads.size(); ++s) {
-    if (segment_owner[s] != rank) continue;
-    sd.pressure_segments.push_back(int32_t(s));
-    for (int a = 0; a < 4; ++a)
-      pressure.push_back({model.pressure_loads[s].nodes[a], num_elements + int64_t(s), a,
-                          int32_t(slot + a), false});
-    slot += 4;
-  }
-  sd.num_local_slots = slot;
 
   // Neighbours: for each other rank sharing a node, what I send (my corners at nodes it
   // holds) and what I receive (its corners at nodes I hold), both in (source, corner) order.
   // Every rank knows the whole partition during set-up, so both sides derive the same lists
   // without a handshake.
-  if (num_ranks > 1) {
+  void neighbours() {
     std::vector<std::vector<std::pair<std::pair<int64_t, int32_t>, int32_t>>> send(num_ranks);
     std::vector<std::vector<std::pair<std::pair<int64_t, int32_t>, Corner>>> recv(num_ranks);
     auto addSend = [&](const Corner& c) {
@@ -470,19 +501,40 @@ Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& 
       sd.peers.push_back(std::move(p));
     }
   }
-  sd.slots.assign(3 * slot, 0.0);
 
   // Gather plans: this fixed order of summation is what makes nodal forces independent of
   // how elements are split among threads and ranks (ARCHITECTURE.md, Determinism).
-  std::vector<Corner> moments;
-  const auto split = std::stable_partition(internal.begin(), internal.end(),
-                                           [](const Corner& c) { return !c.rotational; });
-  moments.assign(split, internal.end());
-  internal.erase(split, internal.end());
-  sd.internal = gatherPlan(std::move(internal), local_of, nn);
-  sd.rotational = gatherPlan(std::move(moments), local_of, nn);
-  sd.pressure = gatherPlan(std::move(pressure), local_of, nn);
-  return sd;
+  void gatherPlans() {
+    std::vector<Corner> moments;
+    const auto split = std::stable_partition(internal.begin(), internal.end(),
+                                             [](const Corner& c) { return !c.rotational; });
+    moments.assign(split, internal.end());
+    internal.erase(split, internal.end());
+    sd.internal = gatherPlan(std::move(internal), local_of, nn);
+    sd.rotational = gatherPlan(std::move(moments), local_of, nn);
+    sd.pressure = gatherPlan(std::move(pressure), local_of, nn);
+  }
+
+  const model::Model& model;
+  const std::vector<int32_t>& elem_rank;
+  const int rank, num_ranks;
+  const NodeRanks nr;
+  const int64_t num_elements;
+  Subdomain sd;
+  std::vector<int32_t> local_of;  // local index of each model node, or kNone
+  std::size_t nn = 0;             // local nodes
+  std::size_t slot = 0;           // next force slot
+  std::vector<Corner> internal, pressure;
+  std::vector<int32_t> segment_owner;
+};
+
+}  // namespace
+
+Subdomain buildSubdomain(const model::Model& model, const std::vector<int32_t>& elem_rank, int rank,
+                         int num_ranks) {
+  if (elem_rank.size() != model.numElements())
+    throw std::invalid_argument("buildSubdomain: one rank per element expected");
+  return SubdomainBuilder(model, elem_rank, rank, num_ranks).build();
 }
 
 namespace {

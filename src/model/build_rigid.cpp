@@ -435,13 +435,10 @@ std::string describe(const Model& m, Owner o) {
 
 }  // namespace
 
-void finishRigid(Context& ctx) {
-  Model& m = ctx.model;
-  RigidDefinitions& rd = m.rigid;
-  RigidInput& in = input(ctx);
-  const std::size_t np = m.parts.size();
+namespace {
 
-  // Weld ids: explicit ones must be unique (the others are numbered in deck order).
+// Weld ids: explicit ones must be unique (the others are numbered in deck order).
+void checkWeldIds(const RigidDefinitions& rd, const RigidInput& in) {
   std::map<int64_t, std::size_t> weld_ids;
   for (std::size_t k = 0; k < rd.welds.size(); ++k) {
     if (!in.weld_explicit_id[k]) continue;
@@ -450,9 +447,12 @@ void finishRigid(Context& ctx) {
       throw util::InputError(rd.welds[k].where.str() + ": weld " + std::to_string(rd.welds[k].id) +
                              " is already defined at " + rd.welds[it->second].where.str());
   }
+}
 
-  // ---- bodies of rigid parts: union of merged parts, the master's root first ---------------
-  std::vector<int32_t> parent(np);
+// Rigid parts grouped by *CONSTRAINED_RIGID_BODIES (union of merged parts): root part ->
+// parts, a group named by its topmost master.
+std::map<int32_t, std::vector<int32_t>> mergedGroups(const Model& m, const RigidInput& in) {
+  std::vector<int32_t> parent(m.parts.size());
   std::iota(parent.begin(), parent.end(), 0);
   auto root = [&](int32_t p) {
     while (parent[std::size_t(p)] != p) p = parent[std::size_t(p)];
@@ -462,14 +462,21 @@ void finishRigid(Context& ctx) {
     const int32_t a = root(mg.master), b = root(mg.slave);
     if (a != b) parent[std::size_t(b)] = a;
   }
-  std::vector<int32_t> part_body(np, kNone);
-  std::map<int32_t, std::vector<int32_t>> groups;  // root part -> parts
-  for (int32_t p = 0; p < int32_t(np); ++p)
+  std::map<int32_t, std::vector<int32_t>> groups;
+  for (int32_t p = 0; p < int32_t(m.parts.size()); ++p)
     if (isRigidPart(m, p)) groups[root(p)].push_back(p);
-  // A merged body is named by its topmost master, the root of its group.
+  return groups;
+}
+
+// One body per group of rigid parts, the master's root first, in ascending root part id;
+// returns the body of every part (kNone for deformable ones).
+std::vector<int32_t> addPartBodies(Context& ctx, const RigidInput& in) {
+  Model& m = ctx.model;
+  auto groups = mergedGroups(m, in);
   std::vector<std::pair<int64_t, int32_t>> order;  // (root part id, root)
   for (const auto& [r, parts] : groups) order.emplace_back(m.parts[std::size_t(r)].id, r);
   std::sort(order.begin(), order.end());
+  std::vector<int32_t> part_body(m.parts.size(), kNone);
   for (const auto& [id, r] : order) {
     RigidBodyDef b;
     b.id = id;
@@ -495,12 +502,18 @@ void finishRigid(Context& ctx) {
                        std::to_string(id) + ", whose constraints apply to the whole body",
                    m.parts[std::size_t(p)].where);
     }
-    const auto body = static_cast<int32_t>(rd.bodies.size());
+    const auto body = static_cast<int32_t>(m.rigid.bodies.size());
     for (int32_t p : b.parts) part_body[std::size_t(p)] = body;
-    rd.bodies.push_back(std::move(b));
+    m.rigid.bodies.push_back(std::move(b));
   }
-  // *PART_INERTIA belongs to a rigid part that leads its body.
-  for (auto& [pid, inertia] : in.inertia) {
+  return part_body;
+}
+
+// *PART_INERTIA belongs to a rigid part that leads its body; IFLAG = 1 (merged parts and
+// extra nodes updating a *PART_INERTIA) is not supported; extra nodes join their body.
+void addInertiaAndExtras(Model& m, const RigidInput& in, const std::vector<int32_t>& part_body) {
+  RigidDefinitions& rd = m.rigid;
+  for (const auto& [pid, inertia] : in.inertia) {
     const int32_t p = m.partIndex(pid);
     if (p == kNone || !isRigidPart(m, p))
       failAt(inertia.context, "*PART_INERTIA applies to rigid parts (*MAT_RIGID) only; part " +
@@ -522,7 +535,6 @@ void finishRigid(Context& ctx) {
     b.w0 = v.w0;
     if (inertia.cm_node != kNone) b.nodes.push_back(inertia.cm_node);
   }
-  // IFLAG = 1 asks that merged parts and extra nodes update a *PART_INERTIA: not supported.
   for (const auto& mg : in.merges)
     if (mg.iflag && rd.bodies[std::size_t(part_body[std::size_t(mg.master)])].inertia_given)
       failAt(mg.context,
@@ -534,8 +546,10 @@ void finishRigid(Context& ctx) {
     b.nodes.insert(b.nodes.end(), e.nodes.begin(), e.nodes.end());
   }
   for (auto& b : rd.bodies) sortUnique(b.nodes);
+}
 
-  // ---- nodal rigid bodies, ascending id -------------------------------------------------------
+// Nodal rigid bodies after the part bodies, in ascending id.
+void addNodalBodies(Model& m, RigidInput& in) {
   std::stable_sort(in.nodal.begin(), in.nodal.end(),
                    [](const auto& a, const auto& b) { return a.body.id < b.body.id; });
   for (std::size_t k = 0; k < in.nodal.size(); ++k) {
@@ -547,23 +561,27 @@ void finishRigid(Context& ctx) {
       failAt(nb.context, "PID " + std::to_string(nb.body.id) +
                              " is a *PART; a nodal rigid body needs an id of its own");
     if (nb.body.nodes.empty()) failAt(nb.context, "the nodal rigid body has no nodes");
-    rd.bodies.push_back(nb.body);
+    m.rigid.bodies.push_back(nb.body);
   }
-  // Rigid parts without elements or extra nodes move nothing: no body.
-  std::vector<int32_t> renumber(rd.bodies.size(), kNone);
-  {
-    std::vector<RigidBodyDef> kept;
-    for (std::size_t k = 0; k < rd.bodies.size(); ++k)
-      if (!rd.bodies[k].nodes.empty()) {
-        renumber[k] = static_cast<int32_t>(kept.size());
-        kept.push_back(std::move(rd.bodies[k]));
-      }
-    rd.bodies = std::move(kept);
-    for (auto& b : part_body)
-      if (b != kNone) b = renumber[std::size_t(b)];
-  }
+}
 
-  // ---- prescribed rigid motion: by part (the part's body) or nodal rigid body id -------------
+// Rigid parts without elements or extra nodes move nothing: no body. Renumbers part_body.
+void dropEmptyBodies(RigidDefinitions& rd, std::vector<int32_t>& part_body) {
+  std::vector<int32_t> renumber(rd.bodies.size(), kNone);
+  std::vector<RigidBodyDef> kept;
+  for (std::size_t k = 0; k < rd.bodies.size(); ++k)
+    if (!rd.bodies[k].nodes.empty()) {
+      renumber[k] = static_cast<int32_t>(kept.size());
+      kept.push_back(std::move(rd.bodies[k]));
+    }
+  rd.bodies = std::move(kept);
+  for (auto& b : part_body)
+    if (b != kNone) b = renumber[std::size_t(b)];
+}
+
+// Prescribed rigid motion: by part (the part's body) or nodal rigid body id.
+void attachMotions(Model& m, const RigidInput& in, const std::vector<int32_t>& part_body) {
+  RigidDefinitions& rd = m.rigid;
   for (const auto& mo : in.motions) {
     int32_t body = kNone;
     if (const int32_t p = m.partIndex(mo.pid); p != kNone) {
@@ -579,8 +597,11 @@ void finishRigid(Context& ctx) {
     }
     if (body != kNone) rd.bodies[std::size_t(body)].motions.push_back(mo.motion);
   }
+}
 
-  // ---- one constraint per node ---------------------------------------------------------------
+// One constraint per node: the body, weld or tied set of every node.
+std::vector<Owner> claimNodes(const Model& m) {
+  const RigidDefinitions& rd = m.rigid;
   std::vector<Owner> owner(m.nodes.size());
   auto claim = [&](const std::vector<int32_t>& nodes, Owner o, const util::SourceLoc& where) {
     for (int32_t n : nodes) {
@@ -601,9 +622,14 @@ void finishRigid(Context& ctx) {
     claim(rd.welds[k].nodes, {Owner::Weld, int32_t(k)}, rd.welds[k].where);
   for (std::size_t k = 0; k < rd.node_sets.size(); ++k)
     claim(rd.node_sets[k].nodes, {Owner::NodeSet, int32_t(k)}, rd.node_sets[k].where);
+  return owner;
+}
 
-  // SPCs on rigid-body nodes become constraints of the body's centre of mass, as LS-DYNA
-  // converts them; on weld and tied nodes they would fight the constraint.
+// SPCs on rigid-body nodes become constraints of the body's centre of mass, as LS-DYNA
+// converts them; on weld and tied nodes they would fight the constraint.
+void convertSpcs(Context& ctx, const std::vector<Owner>& owner) {
+  const Model& m = ctx.model;
+  RigidDefinitions& rd = ctx.model.rigid;
   std::vector<char> noted(rd.bodies.size(), 0);
   for (auto it = ctx.spc_masks.begin(); it != ctx.spc_masks.end();) {
     const auto [node, mask] = *it;
@@ -634,6 +660,11 @@ void finishRigid(Context& ctx) {
           "node may not take further constraints");
     ++it;
   }
+}
+
+// Nodal prescribed motion on a constrained node would fight the constraint.
+void checkPrescribedNodes(const Model& m, const std::vector<Owner>& owner) {
+  const RigidDefinitions& rd = m.rigid;
   for (const auto& pm : m.prescribed) {
     const Owner o = owner[std::size_t(pm.node)];
     const bool conflict =
@@ -647,6 +678,22 @@ void finishRigid(Context& ctx) {
              ? "; prescribe the motion of a rigid body with *BOUNDARY_PRESCRIBED_MOTION_RIGID"
              : "; a constrained node may not take a prescribed motion"));
   }
+}
+
+}  // namespace
+
+void finishRigid(Context& ctx) {
+  Model& m = ctx.model;
+  RigidInput& in = input(ctx);
+  checkWeldIds(m.rigid, in);
+  std::vector<int32_t> part_body = addPartBodies(ctx, in);
+  addInertiaAndExtras(m, in, part_body);
+  addNodalBodies(m, in);
+  dropEmptyBodies(m.rigid, part_body);
+  attachMotions(m, in, part_body);
+  const std::vector<Owner> owner = claimNodes(m);
+  convertSpcs(ctx, owner);
+  checkPrescribedNodes(m, owner);
 }
 
 }  // namespace crumple::model::build
