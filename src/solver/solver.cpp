@@ -385,7 +385,6 @@ void Solver::step() {
   time_ += dt_half;
   ++cycle_;
   checkFiniteVelocities();
-  checkEnergyBand();
 }
 
 Solver::ElementPass Solver::computeInternalForces() {
@@ -654,19 +653,6 @@ std::string Solver::mostEnergeticElement() const {
   scan(sd_.discrete_blocks, model::Family::Discrete);
   const double global_most = -comm_.minAll(-most);
   return elementLabel(controllingElement(elem, elem >= 0 && most == global_most));
-}
-
-void Solver::checkEnergyBand() const {
-  const auto& ctl = model_.controls;
-  if (!(ctl.energy_ratio_max > 0.0) || cycle_ % 64 != 0) return;
-  const double ratio = energies().ratio;
-  if (ratio >= ctl.energy_ratio_min && ratio <= ctl.energy_ratio_max) return;
-  // No element is "the" culprit of an energy error; the one holding the most internal plus
-  // hourglass energy is where spurious energy (hourglassing, a diverging material) shows.
-  throw util::NumericalError(fmt::format(
-      "energy ratio {:.4f} left the band [{:g}, {:g}] (--energy-band) at cycle {}, time {:.6g}; "
-      "most internal + hourglass energy in {}",
-      ratio, ctl.energy_ratio_min, ctl.energy_ratio_max, cycle_, time_, mostEnergeticElement()));
 }
 
 ErodedSums Solver::eroded() const {

@@ -180,9 +180,6 @@ class Solver {
   // The lowest global index of an element of this rank whose corner forces or moments are not
   // finite (-1: none): the source of a non-finite velocity.
   int64_t nonFiniteElement() const;
-  // --energy-band (Controls::energy_ratio_min/max): a NumericalError when the energy ratio has
-  // left the band (collective; every 64 cycles).
-  void checkEnergyBand() const;
   const model::Model& model_;
   domain::Subdomain& sd_;
   comm::Communicator& comm_;
