@@ -2,29 +2,15 @@
 
 #include <mpi.h>
 
-#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 
+#include "util/timer.hpp"
+
 namespace crumple::comm {
 
 namespace {
-
-// Times a communication call into Communicator::seconds_.
-class Timed {
- public:
-  explicit Timed(double& sink) : sink_(sink), start_(std::chrono::steady_clock::now()) {}
-  ~Timed() {
-    sink_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
-  Timed(const Timed&) = delete;
-  Timed& operator=(const Timed&) = delete;
-
- private:
-  double& sink_;
-  std::chrono::steady_clock::time_point start_;
-};
 
 void check(int code, const char* what) {
   if (code != MPI_SUCCESS) throw std::runtime_error(std::string("MPI failure in ") + what);
@@ -32,7 +18,7 @@ void check(int code, const char* what) {
 
 template <class T>
 std::vector<T> gatherAll(const std::vector<T>& local, MPI_Datatype type, int size, double& t) {
-  Timed timer(t);
+  util::ScopedTimer timer(t);
   int n = static_cast<int>(local.size());
   std::vector<int> counts(static_cast<std::size_t>(size)), displs(static_cast<std::size_t>(size));
   check(MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD), "Allgather");
@@ -55,7 +41,7 @@ namespace {
 // order-independent for these types, so the result is the same whatever the message order).
 template <class T>
 T allReduce(T local, MPI_Datatype type, MPI_Op op, double& seconds) {
-  Timed t(seconds);
+  util::ScopedTimer t(seconds);
   T out = local;
   check(MPI_Allreduce(&local, &out, 1, type, op, MPI_COMM_WORLD), "Allreduce");
   return out;
@@ -109,7 +95,7 @@ std::vector<int64_t> Communicator::allGather(const std::vector<int64_t>& local) 
 
 std::vector<char> Communicator::gatherToRoot(const std::vector<char>& local) const {
   if (!mpi_) return local;
-  Timed t(seconds_);
+  util::ScopedTimer t(seconds_);
   const auto n = static_cast<long long>(local.size());
   std::vector<long long> counts(static_cast<std::size_t>(size_));
   check(MPI_Gather(&n, 1, MPI_LONG_LONG, counts.data(), 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD),
@@ -133,7 +119,7 @@ std::vector<char> Communicator::gatherToRoot(const std::vector<char>& local) con
 
 void Communicator::broadcast(std::vector<char>& bytes) const {
   if (!mpi_) return;
-  Timed t(seconds_);
+  util::ScopedTimer t(seconds_);
   long long n = static_cast<long long>(bytes.size());
   check(MPI_Bcast(&n, 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD), "Bcast");
   bytes.resize(static_cast<std::size_t>(n));
@@ -148,7 +134,7 @@ void Communicator::broadcast(std::vector<char>& bytes) const {
 void Communicator::exchangeBegin(const std::vector<Message>& sends,
                                  const std::vector<Message>& recvs) {
   if (!mpi_) return;
-  Timed t(seconds_);
+  util::ScopedTimer t(seconds_);
   auto post = [&](MPI_Request req) {
     const auto* p = reinterpret_cast<const std::byte*>(&req);
     requests_.insert(requests_.end(), p, p + sizeof(MPI_Request));
@@ -171,7 +157,7 @@ void Communicator::exchangeBegin(const std::vector<Message>& sends,
 
 void Communicator::exchangeEnd() {
   if (!mpi_ || requests_.empty()) return;
-  Timed t(seconds_);
+  util::ScopedTimer t(seconds_);
   std::vector<MPI_Request> reqs(requests_.size() / sizeof(MPI_Request));
   std::memcpy(reqs.data(), requests_.data(), requests_.size());
   check(MPI_Waitall(static_cast<int>(reqs.size()), reqs.data(), MPI_STATUSES_IGNORE), "Waitall");
@@ -180,7 +166,7 @@ void Communicator::exchangeEnd() {
 
 void Communicator::barrier() const {
   if (!mpi_) return;
-  Timed t(seconds_);
+  util::ScopedTimer t(seconds_);
   MPI_Barrier(MPI_COMM_WORLD);
 }
 

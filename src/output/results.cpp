@@ -4,7 +4,6 @@
 #include <sys/resource.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -13,6 +12,7 @@
 #include "elements/shell.hpp"
 #include "util/archive.hpp"
 #include "util/error.hpp"
+#include "util/timer.hpp"
 
 namespace crumple::output {
 
@@ -177,7 +177,7 @@ void ResultsWriter::loadState(const std::vector<char>& bytes, double time) {
 }
 
 void ResultsWriter::write(const solver::Solver& s, bool last) {
-  const auto t0 = std::chrono::steady_clock::now();
+  util::ScopedTimer timer(seconds_);
   const double t = s.time();
   const auto& sd = s.subdomain();
   const bool root = comm_.isRoot();
@@ -260,7 +260,6 @@ void ResultsWriter::write(const solver::Solver& s, bool last) {
     plot_.advance(t);
     last_plot_time_ = t;
   }
-  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 void ResultsWriter::writePlotState(const solver::Solver& s) {

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -11,15 +10,11 @@
 #include "elements/discrete.hpp"
 #include "elements/shell.hpp"
 #include "util/error.hpp"
+#include "util/timer.hpp"
 
 namespace crumple::solver {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double seconds(Clock::time_point a, Clock::time_point b) {
-  return std::chrono::duration<double>(b - a).count();
-}
 
 // Nodes are processed in fixed chunks whose partial sums are added in chunk order, so
 // reductions do not depend on the number of threads.
@@ -115,79 +110,120 @@ void zeroSlots(const Block& b, std::vector<double>& slots) {
 }  // namespace
 
 void Solver::initialize() {
-  const auto& ctl = model_.controls;
-  std::vector<std::vector<double>> element_dt(sd_.solid_blocks.size());
-  double dt_min = 1e300, rigid_dt = 1e300;
-  int64_t dt_elem = -1, rigid_elem = -1;
-  // The lowest global index of an element whose initial geometry cannot run (inverted solid,
-  // zero-area shell, zero-length beam), on any rank: checked collectively below, so that every
-  // rank stops together and the same element is named whatever the partition.
-  int64_t bad = -1;
+  InitialSteps steps = initializeElements();
+  checkInitialGeometry(steps.bad);
+  computeStructuralMasses();
+  assembleNodalMasses();
+  // Springs: their step needs the masses of their nodes.
+  for (const auto& blk : sd_.discrete_blocks)
+    for (std::size_t e = 0; e < blk.size(); ++e)
+      keepMin(elements::discreteStableStep(blk, sd_.mass, e),
+              sd_.globalElement(model::Family::Discrete, blk.elem[e]), steps.other,
+              steps.other_elem);
+  const std::vector<double> physical_mass = sd_.mass;
+  if (model_.controls.dt2ms != 0.0) scaleMasses(steps);
+  keepMin(steps.other, steps.other_elem, steps.dt_min, steps.dt_elem);
+  // Rigid elements give mass only: their slots stay zero from here on.
+  for (const auto& blk : sd_.solid_blocks)
+    if (blk.rigid) zeroSlots(blk, sd_.slots);
+  for (const auto& blk : sd_.shell_blocks)
+    if (blk.rigid) zeroSlots(blk, sd_.slots);
+  for (const auto& blk : sd_.beam_blocks)
+    if (blk.rigid) zeroSlots(blk, sd_.slots);
+  sumMasses(physical_mass);
+
+  for (std::size_t n = 0; n < sd_.numNodes(); ++n)
+    for (int c = 0; c < 3; ++c)
+      sd_.v[3 * n + c] = model_.initial_velocity[static_cast<std::size_t>(sd_.node_model[n])][c];
+  // Contact before the rigid bodies: moving initially penetrating nodes changes their shape.
+  if (contact_)
+    contact_->initialize(model_.controls.tssfac *
+                         comm_.minAll(std::min(steps.dt_min, steps.rigid)));
+  if (!model_.rigid.empty()) {
+    rigid_ = std::make_unique<constraints::RigidBodies>(model_, sd_, comm_);
+    rigid_->setInitialVelocities(sd_);
+  }
+  setInitialTimeStep(steps);
+  setErosionFloors();
+  dt_ = 0.0;
+  time_ = 0.0;
+  cycle_ = 0;
+  initial_energy_ = 0.0;
+  initial_energy_ = energies().kinetic;
+}
+
+Solver::InitialSteps Solver::initializeElements() {
+  InitialSteps steps;
+  steps.solid.resize(sd_.solid_blocks.size());
+  steps.shell.resize(sd_.shell_blocks.size());
+  // Checked collectively (checkInitialGeometry), so that every rank stops together and the
+  // same element is named whatever the partition.
   auto noteBad = [&](model::Family family, int64_t index) {
     if (index < 0) return;
     const int64_t g = sd_.globalElement(family, static_cast<int32_t>(index));
-    if (bad < 0 || g < bad) bad = g;
+    if (steps.bad < 0 || g < steps.bad) steps.bad = g;
   };
   for (std::size_t ib = 0; ib < sd_.solid_blocks.size(); ++ib) {
     auto& blk = sd_.solid_blocks[ib];
     elements::markIsolatedElements(blk, sd_.internal);
-    const auto st = elements::initializeSolids(blk, sd_.x0, sd_.slots.data(), element_dt[ib], bv_);
+    const auto st = elements::initializeSolids(blk, sd_.x0, sd_.slots.data(), steps.solid[ib], bv_);
     noteBad(model::Family::Solid, st.bad_elem);
     // Rigid elements give mass only: no time step (unless nothing else sets one), no scaling.
     if (blk.rigid) {
-      if (st.dt_elem >= 0 && st.dt_min < rigid_dt) {
-        rigid_dt = st.dt_min;
-        rigid_elem = st.dt_elem;
+      if (st.dt_elem >= 0 && st.dt_min < steps.rigid) {
+        steps.rigid = st.dt_min;
+        steps.rigid_elem = st.dt_elem;
       }
-      std::fill(element_dt[ib].begin(), element_dt[ib].end(), 0.0);
+      std::fill(steps.solid[ib].begin(), steps.solid[ib].end(), 0.0);
       continue;
     }
-    keepMin(st.dt_min, st.dt_elem, dt_min, dt_elem);
+    keepMin(st.dt_min, st.dt_elem, steps.dt_min, steps.dt_elem);
   }
-  // Beams and springs: never mass-scaled, so kept apart from the minimum of solids and shells.
-  double dt_other = 1e300;
-  int64_t dt_other_elem = -1;
-  std::vector<double> dts;
-  std::vector<std::vector<double>> shell_dt(sd_.shell_blocks.size());
   for (std::size_t ib = 0; ib < sd_.shell_blocks.size(); ++ib) {
     auto& blk = sd_.shell_blocks[ib];
     elements::resizeShellBlock(blk, blk.size());
-    const auto st = elements::initializeShells(blk, sd_.x0, sd_.slots.data(), shell_dt[ib]);
-    if (blk.rigid) std::fill(shell_dt[ib].begin(), shell_dt[ib].end(), 0.0);
+    const auto st = elements::initializeShells(blk, sd_.x0, sd_.slots.data(), steps.shell[ib]);
+    if (blk.rigid) std::fill(steps.shell[ib].begin(), steps.shell[ib].end(), 0.0);
     noteBad(model::Family::Shell, st.bad_elem);
     if (!blk.rigid && st.dt_elem >= 0)
-      keepMin(st.dt_min, sd_.globalElement(model::Family::Shell, st.dt_elem), dt_min, dt_elem);
+      keepMin(st.dt_min, sd_.globalElement(model::Family::Shell, st.dt_elem), steps.dt_min,
+              steps.dt_elem);
   }
+  std::vector<double> dts;
   for (auto& blk : sd_.beam_blocks) {
     elements::resizeBeamBlock(blk, blk.size());
     const auto st = elements::initializeBeams(blk, sd_.x0, sd_.slots.data(), dts);
     noteBad(model::Family::Beam, st.bad_elem);
     if (!blk.rigid && st.dt_elem >= 0)
-      keepMin(st.dt_min, sd_.globalElement(model::Family::Beam, st.dt_elem), dt_other,
-              dt_other_elem);
+      keepMin(st.dt_min, sd_.globalElement(model::Family::Beam, st.dt_elem), steps.other,
+              steps.other_elem);
   }
   for (auto& blk : sd_.discrete_blocks) {
     elements::resizeDiscreteBlock(blk, blk.size());
     elements::initializeDiscretes(blk, sd_.x0, sd_.slots.data());
   }
-  {
-    constexpr int64_t kNoElement = std::numeric_limits<int64_t>::max();
-    const int64_t g = comm_.minAll(bad >= 0 ? bad : kNoElement);
-    if (g != kNoElement) {
-      const auto family = sd_.familyOf(g);
-      const char* what = family == model::Family::Solid   ? "zero or negative volume"
-                         : family == model::Family::Shell ? "zero area or thickness"
-                                                          : "zero length";
-      const char* hint = family == model::Family::Solid
-                             ? "check its node ordering (LS-DYNA: nodes 1-4 one face, 5-8 the "
-                               "opposite face, right-handed)"
-                             : "check its nodes";
-      throw util::NumericalError(
-          fmt::format("{} has {} at cycle 0, time 0: {}", elementLabel(g), what, hint));
-    }
-  }
-  // Element masses of shells and beams (the sum of their corners' lumped masses, which the
-  // kernels split equally among distinct corners), for the per-part sums of matsum.
+  return steps;
+}
+
+void Solver::checkInitialGeometry(int64_t bad) const {
+  constexpr int64_t kNoElement = std::numeric_limits<int64_t>::max();
+  const int64_t g = comm_.minAll(bad >= 0 ? bad : kNoElement);
+  if (g == kNoElement) return;
+  const auto family = sd_.familyOf(g);
+  const char* what = family == model::Family::Solid   ? "zero or negative volume"
+                     : family == model::Family::Shell ? "zero area or thickness"
+                                                      : "zero length";
+  const char* hint = family == model::Family::Solid
+                         ? "check its node ordering (LS-DYNA: nodes 1-4 one face, 5-8 the "
+                           "opposite face, right-handed)"
+                         : "check its nodes";
+  throw util::NumericalError(
+      fmt::format("{} has {} at cycle 0, time 0: {}", elementLabel(g), what, hint));
+}
+
+void Solver::computeStructuralMasses() {
+  // The sum of the corners' lumped masses, which the kernels split equally among distinct
+  // corners.
   auto elementMasses = [&](const auto& blk, std::size_t per, std::size_t forces) {
     std::vector<double> m(blk.size(), 0.0);
     for (std::size_t e = 0; e < blk.size(); ++e)
@@ -199,6 +235,9 @@ void Solver::initialize() {
   for (const auto& blk : sd_.shell_blocks) shell_mass_.push_back(elementMasses(blk, 8, 4));
   beam_mass_.clear();
   for (const auto& blk : sd_.beam_blocks) beam_mass_.push_back(elementMasses(blk, 4, 2));
+}
+
+void Solver::assembleNodalMasses() {
   exchangeSharedSlots();
   gather(sd_.internal, sd_.mass, 1);
   if (sd_.rotations) gather(sd_.rotational, sd_.inertia, 1);
@@ -206,77 +245,66 @@ void Solver::initialize() {
   for (const auto& pm : model_.point_masses)
     if (const int32_t n = sd_.localNode(pm.node); n != model::kNone)
       sd_.mass[static_cast<std::size_t>(n)] += pm.mass;
-  // Springs: their step needs the masses of their nodes.
-  for (const auto& blk : sd_.discrete_blocks)
-    for (std::size_t e = 0; e < blk.size(); ++e)
-      keepMin(elements::discreteStableStep(blk, sd_.mass, e),
-              sd_.globalElement(model::Family::Discrete, blk.elem[e]), dt_other, dt_other_elem);
-  std::vector<double> physical_mass = sd_.mass;
+}
 
-  // Mass scaling (*CONTROL_TIMESTEP DT2MS): elements whose step TSSFAC*dt_e is below |DT2MS|
-  // get density scaled by (|DT2MS| / (TSSFAC dt_e))^2 so that they run at |DT2MS|. The added
-  // mass is reported; it is assembled through the slots like the physical mass.
-  if (ctl.dt2ms != 0.0) {
-    const double target = std::abs(ctl.dt2ms);
-    bool any = false;
-    // Solids and shells are scaled; beams and springs add nothing to the added mass. The
-    // slots still hold each corner's lumped mass (and a shell corner's rotary inertia) from
-    // initialisation: they become the added mass, (scale - 1) times that. A shell's inertia
-    // grows with its mass, so that its rotational modes slow down with the translational ones.
-    for (const auto& blk : sd_.beam_blocks) zeroSlots(blk, sd_.slots);
-    for (const auto& blk : sd_.discrete_blocks) zeroSlots(blk, sd_.slots);
-    auto scaleMasses = [&](auto& blocks, const std::vector<std::vector<double>>& steps) {
-      for (std::size_t ib = 0; ib < blocks.size(); ++ib) {
-        auto& blk = blocks[ib];
-        blk.mass_scale.assign(blk.paddedSize(), 1.0);
-        for (std::size_t e = 0; e < blk.size(); ++e) {
-          double* slot = sd_.slots.data() + 3 * (blk.slot_offset + 8 * e);
-          const double step = ctl.tssfac * steps[ib][e];
-          double factor = 0.0;
-          if (step > 0.0 && step < target) {
-            blk.mass_scale[e] = (target / step) * (target / step);
-            factor = blk.mass_scale[e] - 1.0;
-            any = true;
-          }
-          for (int a = 0; a < 8; ++a) slot[3 * a] *= factor;
+void Solver::scaleMasses(InitialSteps& steps) {
+  // Elements whose step TSSFAC*dt_e is below |DT2MS| get density scaled by
+  // (|DT2MS| / (TSSFAC dt_e))^2 so that they run at |DT2MS|. The added mass is reported; it is
+  // assembled through the slots like the physical mass.
+  const auto& ctl = model_.controls;
+  const double target = std::abs(ctl.dt2ms);
+  bool any = false;
+  // Solids and shells are scaled; beams and springs add nothing to the added mass. The
+  // slots still hold each corner's lumped mass (and a shell corner's rotary inertia) from
+  // initialisation: they become the added mass, (scale - 1) times that. A shell's inertia
+  // grows with its mass, so that its rotational modes slow down with the translational ones.
+  for (const auto& blk : sd_.beam_blocks) zeroSlots(blk, sd_.slots);
+  for (const auto& blk : sd_.discrete_blocks) zeroSlots(blk, sd_.slots);
+  auto scaleBlocks = [&](auto& blocks, const std::vector<std::vector<double>>& dt) {
+    for (std::size_t ib = 0; ib < blocks.size(); ++ib) {
+      auto& blk = blocks[ib];
+      blk.mass_scale.assign(blk.paddedSize(), 1.0);
+      for (std::size_t e = 0; e < blk.size(); ++e) {
+        double* slot = sd_.slots.data() + 3 * (blk.slot_offset + 8 * e);
+        const double step = ctl.tssfac * dt[ib][e];
+        double factor = 0.0;
+        if (step > 0.0 && step < target) {
+          blk.mass_scale[e] = (target / step) * (target / step);
+          factor = blk.mass_scale[e] - 1.0;
+          any = true;
         }
+        for (int a = 0; a < 8; ++a) slot[3 * a] *= factor;
       }
-    };
-    scaleMasses(sd_.solid_blocks, element_dt);
-    scaleMasses(sd_.shell_blocks, shell_dt);
-    if (comm_.anyAll(any)) {
-      exchangeSharedSlots();
-      gather(sd_.internal, sd_.mass_added, 1);
-      for (std::size_t n = 0; n < sd_.numNodes(); ++n) sd_.mass[n] += sd_.mass_added[n];
-      if (sd_.rotations) {
-        std::vector<double> inertia_added(sd_.numNodes(), 0.0);
-        gather(sd_.rotational, inertia_added, 1);
-        for (std::size_t n = 0; n < sd_.numNodes(); ++n) sd_.inertia[n] += inertia_added[n];
-      }
-      dt_min = 1e300;
-      dt_elem = -1;
-      auto scaledSteps = [&](const auto& blocks, const std::vector<std::vector<double>>& steps,
-                             model::Family family) {
-        for (std::size_t ib = 0; ib < blocks.size(); ++ib) {
-          const auto& blk = blocks[ib];
-          if (blk.rigid) continue;
-          for (std::size_t e = 0; e < blk.size(); ++e)
-            keepMin(steps[ib][e] * std::sqrt(blk.mass_scale[e]),
-                    sd_.globalElement(family, blk.elem[e]), dt_min, dt_elem);
-        }
-      };
-      scaledSteps(sd_.solid_blocks, element_dt, model::Family::Solid);
-      scaledSteps(sd_.shell_blocks, shell_dt, model::Family::Shell);
     }
+  };
+  scaleBlocks(sd_.solid_blocks, steps.solid);
+  scaleBlocks(sd_.shell_blocks, steps.shell);
+  if (!comm_.anyAll(any)) return;
+  exchangeSharedSlots();
+  gather(sd_.internal, sd_.mass_added, 1);
+  for (std::size_t n = 0; n < sd_.numNodes(); ++n) sd_.mass[n] += sd_.mass_added[n];
+  if (sd_.rotations) {
+    std::vector<double> inertia_added(sd_.numNodes(), 0.0);
+    gather(sd_.rotational, inertia_added, 1);
+    for (std::size_t n = 0; n < sd_.numNodes(); ++n) sd_.inertia[n] += inertia_added[n];
   }
-  keepMin(dt_other, dt_other_elem, dt_min, dt_elem);
-  // Rigid elements give mass only: their slots stay zero from here on.
-  for (const auto& blk : sd_.solid_blocks)
-    if (blk.rigid) zeroSlots(blk, sd_.slots);
-  for (const auto& blk : sd_.shell_blocks)
-    if (blk.rigid) zeroSlots(blk, sd_.slots);
-  for (const auto& blk : sd_.beam_blocks)
-    if (blk.rigid) zeroSlots(blk, sd_.slots);
+  steps.dt_min = 1e300;
+  steps.dt_elem = -1;
+  auto scaledSteps = [&](const auto& blocks, const std::vector<std::vector<double>>& dt,
+                         model::Family family) {
+    for (std::size_t ib = 0; ib < blocks.size(); ++ib) {
+      const auto& blk = blocks[ib];
+      if (blk.rigid) continue;
+      for (std::size_t e = 0; e < blk.size(); ++e)
+        keepMin(dt[ib][e] * std::sqrt(blk.mass_scale[e]), sd_.globalElement(family, blk.elem[e]),
+                steps.dt_min, steps.dt_elem);
+    }
+  };
+  scaledSteps(sd_.solid_blocks, steps.solid, model::Family::Solid);
+  scaledSteps(sd_.shell_blocks, steps.shell, model::Family::Shell);
+}
+
+void Solver::sumMasses(const std::vector<double>& physical_mass) {
   total_mass_ = 0.0;
   added_mass_ = 0.0;
   for (std::size_t n = 0; n < sd_.numNodes(); ++n)
@@ -287,21 +315,16 @@ void Solver::initialize() {
   const auto masses = comm_.sumOrdered({total_mass_, added_mass_});
   total_mass_ = masses[0];
   added_mass_ = masses[1];
+}
 
-  for (std::size_t n = 0; n < sd_.numNodes(); ++n)
-    for (int c = 0; c < 3; ++c)
-      sd_.v[3 * n + c] = model_.initial_velocity[static_cast<std::size_t>(sd_.node_model[n])][c];
-  // Contact before the rigid bodies: moving initially penetrating nodes changes their shape.
-  if (contact_) contact_->initialize(ctl.tssfac * comm_.minAll(std::min(dt_min, rigid_dt)));
-  if (!model_.rigid.empty()) {
-    rigid_ = std::make_unique<constraints::RigidBodies>(model_, sd_, comm_);
-    rigid_->setInitialVelocities(sd_);
-  }
-
+void Solver::setInitialTimeStep(const InitialSteps& steps) {
+  const auto& ctl = model_.controls;
+  double dt_min = steps.dt_min;
+  int64_t dt_elem = steps.dt_elem;
   // A model of rigid parts only runs at the step its rigid elements would have.
   if (comm_.minAll(dt_min) >= 1e300) {
-    dt_min = rigid_dt;
-    dt_elem = rigid_elem;
+    dt_min = steps.rigid;
+    dt_elem = steps.rigid_elem;
   }
   const double dt_global = comm_.minAll(dt_min);
   dt_initial_elem_ = controllingElement(dt_elem, dt_elem >= 0 && dt_min == dt_global);
@@ -310,9 +333,13 @@ void Solver::initialize() {
   if (ctl.dt_init > 0.0) dt_next_ = std::min(dt_next_, ctl.dt_init);
   dt_initial_ = dt_next_;
   dt_elem_ = dt_initial_elem_;
-  // Erosion floors of the element steps (before TSSFAC, as the kernels compare them): DTMIN x
-  // the initial step with *CONTROL_TIMESTEP ERODE = 1, and a *MAT_024 part's TDEL; such
-  // elements are removed instead of ending the run (beams and springs are not).
+}
+
+void Solver::setErosionFloors() {
+  // Before TSSFAC, as the kernels compare them: DTMIN x the initial step with
+  // *CONTROL_TIMESTEP ERODE = 1, and a *MAT_024 part's TDEL; such elements are removed instead
+  // of ending the run (beams and springs are not).
+  const auto& ctl = model_.controls;
   auto erodeFloor = [&](const domain::BlockBase& blk) {
     double floor = ctl.erode_on_dtmin ? ctl.dt_min_ratio * dt_initial_ / ctl.tssfac : 0.0;
     const int32_t mat = model_.parts[static_cast<std::size_t>(blk.part)].material;
@@ -324,17 +351,67 @@ void Solver::initialize() {
   };
   for (auto& blk : sd_.solid_blocks) blk.erode_dt = erodeFloor(blk);
   for (auto& blk : sd_.shell_blocks) blk.erode_dt = erodeFloor(blk);
-  dt_ = 0.0;
-  time_ = 0.0;
-  cycle_ = 0;
-  initial_energy_ = 0.0;
-  initial_energy_ = energies().kinetic;
 }
 
 bool Solver::finished() const {
   const auto& ctl = model_.controls;
   if (ctl.end_cycle > 0 && cycle_ >= ctl.end_cycle) return true;
   return time_ >= end_time_ * (1.0 - 1e-12);
+}
+
+void Solver::step() {
+  const ElementPass pass = computeInternalForces();
+  StableStep next;
+  {
+    // Both wait on every rank (global minima): their time is communication.
+    util::ScopedTimer timer(timing_.communication);
+    checkElementGeometry(pass);
+    next = stableTimeStep(pass);
+  }
+  dt_next_ = next.dt;
+  dt_elem_ = next.element;
+  computeExternalForces();
+  computeContactForces();
+  // Land exactly on the end time rather than overshoot it.
+  double dt_half = dt_next_;
+  const double remaining = end_time_ - time_;
+  if (remaining > 0.0 && dt_half > remaining) dt_half = remaining;
+  // dt(n) centred on t(n); the first cycle starts from v(-1/2) = v(0) with half a step.
+  const double dt_n = cycle_ == 0 ? 0.5 * dt_half : 0.5 * (dt_ + dt_half);
+  updateVelocities(dt_n);
+  addExternalWork(dt_n, applyConstraints(dt_n, dt_half));
+  updatePositions(dt_half);
+  dt_ = dt_half;
+  time_ += dt_half;
+  ++cycle_;
+  checkFiniteVelocities();
+}
+
+Solver::ElementPass Solver::computeInternalForces() {
+  // Elements at shared nodes first; their corner forces travel while the others compute.
+  ElementPass pass;
+  {
+    util::ScopedTimer timer(timing_.elements);
+    computeElementGroup(Group::Shared, pass);
+    boundary_.pressureForces(time_, sd_);
+  }
+  {
+    util::ScopedTimer timer(timing_.communication);
+    beginSharedExchange();
+  }
+  {
+    util::ScopedTimer timer(timing_.elements);
+    computeElementGroup(Group::Interior, pass);
+  }
+  {
+    util::ScopedTimer timer(timing_.communication);
+    endSharedExchange();
+  }
+  util::ScopedTimer timer(timing_.elements);
+  gather(sd_.internal, sd_.f, 3);
+  if (sd_.rotations) gather(sd_.rotational, sd_.moment, 3);
+  gather(sd_.pressure, sd_.f_ext, 3);
+  return pass;
 }
 
 void Solver::computeElementGroup(Group group, ElementPass& pass) {
@@ -385,62 +462,69 @@ void Solver::computeElementGroup(Group group, ElementPass& pass) {
   }
 }
 
-void Solver::finishElementPass(const ElementPass& pass) {
-  const double dt_min = pass.dt_min;
-  const int64_t dt_elem = pass.dt_elem, bad = pass.bad;
+void Solver::checkElementGeometry(const ElementPass& pass) const {
+  const int64_t bad = pass.bad;
   constexpr int64_t kNoElement = std::numeric_limits<int64_t>::max();
   const int64_t bad_id = comm_.minAll(bad >= 0 ? sd_.elementId(bad) : kNoElement);
-  if (bad_id != kNoElement) {
-    // The rank holding the element names its part; user ids ascend with model indices.
-    const int64_t part =
-        comm_.minAll(bad >= 0 && sd_.elementId(bad) == bad_id ? sd_.elementPart(bad) : kNoElement);
-    // The family of the element: the lowest global index with that user id on any rank.
-    const int64_t family = comm_.minAll(
-        bad >= 0 && sd_.elementId(bad) == bad_id ? int64_t(sd_.familyOf(bad)) : kNoElement);
-    const bool solid = family == int64_t(model::Family::Solid);
-    throw util::NumericalError(fmt::format("{} in {} element {} (part {}) at cycle {}, time {:.6g}",
-                                           solid ? "negative volume" : "collapsed geometry",
-                                           model::familyName(static_cast<model::Family>(family)),
-                                           bad_id, part, cycle_, time_));
-  }
-  const double dt_global = comm_.minAll(dt_min);
-  const int64_t dt_elem_global = controllingElement(dt_elem, dt_elem >= 0 && dt_min == dt_global);
+  if (bad_id == kNoElement) return;
+  // The rank holding the element names its part; user ids ascend with model indices.
+  const int64_t part =
+      comm_.minAll(bad >= 0 && sd_.elementId(bad) == bad_id ? sd_.elementPart(bad) : kNoElement);
+  // The family of the element: the lowest global index with that user id on any rank.
+  const int64_t family = comm_.minAll(
+      bad >= 0 && sd_.elementId(bad) == bad_id ? int64_t(sd_.familyOf(bad)) : kNoElement);
+  const bool solid = family == int64_t(model::Family::Solid);
+  throw util::NumericalError(fmt::format("{} in {} element {} (part {}) at cycle {}, time {:.6g}",
+                                         solid ? "negative volume" : "collapsed geometry",
+                                         model::familyName(static_cast<model::Family>(family)),
+                                         bad_id, part, cycle_, time_));
+}
+
+Solver::StableStep Solver::stableTimeStep(const ElementPass& pass) const {
+  const auto& ctl = model_.controls;
+  const double dt_global = comm_.minAll(pass.dt_min);
+  const int64_t element =
+      controllingElement(pass.dt_elem, pass.dt_elem >= 0 && pass.dt_min == dt_global);
   // No deformable element anywhere (rigid parts only): the initial step stays.
-  double dt_new = dt_global >= 1e300 ? dt_initial_ : model_.controls.tssfac * dt_global;
-  if (model_.controls.dt_max_curve != model::kNone)
-    dt_new = std::min(
-        dt_new, model_.curves[static_cast<std::size_t>(model_.controls.dt_max_curve)].value(time_));
-  if (!(dt_new > 0.0) || !std::isfinite(dt_new)) {
+  double dt = dt_global >= 1e300 ? dt_initial_ : ctl.tssfac * dt_global;
+  if (ctl.dt_max_curve != model::kNone)
+    dt = std::min(dt, model_.curves[static_cast<std::size_t>(ctl.dt_max_curve)].value(time_));
+  if (!(dt > 0.0) || !std::isfinite(dt)) {
     throw util::NumericalError(
-        fmt::format("time step collapsed to {:.3g} at cycle {}, time {:.6g} (controlling {})",
-                    dt_new, cycle_, time_, elementLabel(dt_elem_global)));
+        fmt::format("time step collapsed to {:.3g} at cycle {}, time {:.6g} (controlling {})", dt,
+                    cycle_, time_, elementLabel(element)));
   }
-  if (model_.controls.dt_min_ratio > 0.0 && dt_new < model_.controls.dt_min_ratio * dt_initial_) {
+  if (ctl.dt_min_ratio > 0.0 && dt < ctl.dt_min_ratio * dt_initial_) {
     throw util::NumericalError(fmt::format(
         "time step {:.3g} fell below DTMIN x initial step ({:.3g}) at cycle {}, time {:.6g} "
         "(controlling {})",
-        dt_new, model_.controls.dt_min_ratio * dt_initial_, cycle_, time_,
-        elementLabel(dt_elem_global)));
+        dt, ctl.dt_min_ratio * dt_initial_, cycle_, time_, elementLabel(element)));
   }
-  dt_next_ = dt_new;
-  dt_elem_ = dt_elem_global;
+  return {dt, element};
 }
 
-void Solver::updateKinematics() {
-  // Land exactly on the end time rather than overshoot it.
-  double dt_half = dt_next_;
-  const double remaining = end_time_ - time_;
-  if (remaining > 0.0 && dt_half > remaining) dt_half = remaining;
-  // dt(n) centred on t(n); the first cycle starts from v(-1/2) = v(0) with half a step.
-  const double dt_n = cycle_ == 0 ? 0.5 * dt_half : 0.5 * (dt_ + dt_half);
-  const std::size_t nn = sd_.numNodes();
-  v_old_.resize(sd_.v.size());
+void Solver::computeExternalForces() {
+  util::ScopedTimer timer(timing_.constraints);
+  boundary_.externalForces(time_, sd_, sd_.f_ext);
+  if (rigid_) rigid_->addJointForces(dt_next_, sd_, comm_);
+}
 
+void Solver::computeContactForces() {
+  // Contact forces join the internal force (a = (f + f_ext) / m), so rigid bodies and
+  // constraints see them like any other nodal force.
+  if (!contact_) return;
+  util::ScopedTimer timer(timing_.contact);
+  contact_->computeForces(time_, dt_);
+}
+
+void Solver::updateVelocities(double dt_n) {
   // One pass over the nodes: keep v(n-1/2), form a = F/m and v(n+1/2), and look for
   // non-finite values (fused: at a few bytes per flop, node passes are memory-bound).
   // Rotations in the same pass: omega(n+1/2) = omega(n-1/2) + dt M / I with the lumped (scaled)
   // rotary inertia of the shells and beams (Belytschko, Lin & Tsay 1984; the element kernels
   // keep their own frames, so no nodal rotation needs to be integrated).
+  const std::size_t nn = sd_.numNodes();
+  v_old_.resize(sd_.v.size());
   const bool rotations = sd_.rotations;
   if (rotations) w_old_.resize(sd_.w.size());
   int non_finite = 0;
@@ -465,16 +549,21 @@ void Solver::updateKinematics() {
     }
   }
   non_finite_ = non_finite != 0;
+}
 
-  const auto t0 = Clock::now();
+double Solver::applyConstraints(double dt_n, double dt_half) {
+  util::ScopedTimer timer(timing_.constraints);
   // Rigid bodies first: SPCs and prescribed motion act on free nodes only (build_rigid.cpp).
   double work = rigid_ ? rigid_->apply(time_, dt_n, dt_half, sd_, v_old_, comm_) : 0.0;
   work += boundary_.applyKinematics(time_, dt_n, dt_half, sd_, v_old_);
   rigidwall_energy_ += boundary_.applyRigidWalls(dt_n, dt_half, sd_, v_old_, comm_);
-  timing_.constraints += seconds(t0, Clock::now());
+  return work;
+}
 
-  // External work over dt_n at the mean of the old and the final (constrained) velocity,
-  // counted once per node, by the rank that owns it; in fixed chunks added in order.
+void Solver::addExternalWork(double dt_n, double work) {
+  // Over dt_n at the mean of the old and the final (constrained) velocity, counted once per
+  // node, by the rank that owns it; in fixed chunks added in order.
+  const std::size_t nn = sd_.numNodes();
   const std::size_t nchunk = boundary_.hasExternalForces() ? (nn + kNodeChunk - 1) / kNodeChunk : 0;
   std::vector<double> chunk_work(nchunk, 0.0);
 #pragma omp parallel for schedule(static)
@@ -492,48 +581,16 @@ void Solver::updateKinematics() {
   }
   for (double w : chunk_work) work += w;
   external_work_ += work;
-
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < 3 * nn; ++i) sd_.x[i] += dt_half * sd_.v[i];
-
-  dt_ = dt_half;
-  time_ += dt_half;
-  ++cycle_;
 }
 
-void Solver::step() {
-  // Elements at shared nodes first; their corner forces travel while the others compute.
-  ElementPass pass;
-  auto t0 = Clock::now();
-  computeElementGroup(Group::Shared, pass);
-  boundary_.pressureForces(time_, sd_);
-  auto t1 = Clock::now();
-  beginSharedExchange();
-  auto t2 = Clock::now();
-  computeElementGroup(Group::Interior, pass);
-  auto t3 = Clock::now();
-  endSharedExchange();
-  auto t4 = Clock::now();
-  gather(sd_.internal, sd_.f, 3);
-  if (sd_.rotations) gather(sd_.rotational, sd_.moment, 3);
-  gather(sd_.pressure, sd_.f_ext, 3);
-  auto t5 = Clock::now();
-  finishElementPass(pass);
-  auto t6 = Clock::now();
-  timing_.elements += seconds(t0, t1) + seconds(t2, t3) + seconds(t4, t5);
-  timing_.communication += seconds(t1, t2) + seconds(t3, t4) + seconds(t5, t6);
-  boundary_.externalForces(time_, sd_, sd_.f_ext);
-  if (rigid_) rigid_->addJointForces(dt_next_, sd_, comm_);
-  auto t7 = Clock::now();
-  timing_.constraints += seconds(t6, t7);
-  // Contact forces join the internal force (a = (f + f_ext) / m), so rigid bodies and
-  // constraints see them like any other nodal force.
-  if (contact_) {
-    contact_->computeForces(time_, dt_);
-    timing_.contact += seconds(t7, Clock::now());
-  }
-  updateKinematics();
-  // A non-finite velocity ends every rank (collective); the lowest node id is named.
+void Solver::updatePositions(double dt_half) {
+  const std::size_t n = 3 * sd_.numNodes();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) sd_.x[i] += dt_half * sd_.v[i];
+}
+
+void Solver::checkFiniteVelocities() const {
+  // The lowest node id is named.
   const int64_t kNoNode = std::numeric_limits<int64_t>::max();
   int64_t bad_node = kNoNode;
   if (non_finite_)
@@ -543,20 +600,18 @@ void Solver::step() {
         break;
       }
   const int64_t bad_id = comm_.minAll(bad_node);
-  if (bad_id != kNoNode) {
-    // Name the element whose forces went non-finite (the usual cause: an element turned
-    // inside out or a material update that diverged); none means an external load or a
-    // constraint did it.
-    const int64_t local = non_finite_ ? nonFiniteElement() : -1;
-    const int64_t elem = comm_.minAll(local >= 0 ? local : kNoNode);
-    const std::string source =
-        elem != kNoNode ? "non-finite force in " + elementLabel(elem)
-                        : "non-finite external force or constraint (no element force is)";
-    throw util::NumericalError(
-        fmt::format("{}: non-finite velocity at node {} at cycle {}, time {:.6g}", source, bad_id,
-                    cycle_, time_));
-  }
-  checkEnergyBand();
+  if (bad_id == kNoNode) return;
+  // Name the element whose forces went non-finite (the usual cause: an element turned inside
+  // out or a material update that diverged); none means an external load or a constraint did
+  // it.
+  const int64_t local = non_finite_ ? nonFiniteElement() : -1;
+  const int64_t elem = comm_.minAll(local >= 0 ? local : kNoNode);
+  const std::string source = elem != kNoNode
+                                 ? "non-finite force in " + elementLabel(elem)
+                                 : "non-finite external force or constraint (no element force is)";
+  throw util::NumericalError(
+      fmt::format("{}: non-finite velocity at node {} at cycle {}, time {:.6g}", source, bad_id,
+                  cycle_, time_));
 }
 
 int64_t Solver::nonFiniteElement() const {
@@ -577,13 +632,7 @@ int64_t Solver::nonFiniteElement() const {
   return found;
 }
 
-void Solver::checkEnergyBand() const {
-  const auto& ctl = model_.controls;
-  if (!(ctl.energy_ratio_max > 0.0) || cycle_ % 64 != 0) return;
-  const double ratio = energies().ratio;
-  if (ratio >= ctl.energy_ratio_min && ratio <= ctl.energy_ratio_max) return;
-  // No element is "the" culprit of an energy error; the one holding the most internal plus
-  // hourglass energy is where spurious energy (hourglassing, a diverging material) shows.
+std::string Solver::mostEnergeticElement() const {
   double most = -1.0;
   int64_t elem = -1;
   auto scan = [&](const auto& blocks, model::Family family) {
@@ -603,11 +652,7 @@ void Solver::checkEnergyBand() const {
   scan(sd_.beam_blocks, model::Family::Beam);
   scan(sd_.discrete_blocks, model::Family::Discrete);
   const double global_most = -comm_.minAll(-most);
-  const int64_t g = controllingElement(elem, elem >= 0 && most == global_most);
-  throw util::NumericalError(fmt::format(
-      "energy ratio {:.4f} left the band [{:g}, {:g}] (--energy-band) at cycle {}, time {:.6g}; "
-      "most internal + hourglass energy in {}",
-      ratio, ctl.energy_ratio_min, ctl.energy_ratio_max, cycle_, time_, elementLabel(g)));
+  return elementLabel(controllingElement(elem, elem >= 0 && most == global_most));
 }
 
 ErodedSums Solver::eroded() const {

@@ -1,15 +1,21 @@
 // The explicit cycle of DYNA3D (Hallquist, DYNA3D User Manual, UCRL-MA-107254, sec. 2):
-// central differences on a lumped mass, element by element, no matrix inversion.
+// central differences on a lumped mass, element by element, no matrix inversion. Solver::step
+// is the cycle, in this order:
 //
-//   computeElementGroup     element kernels write corner forces to their slots: first the
+//   computeInternalForces   element kernels write corner forces to their slots: first the
 //                           elements at nodes shared with other ranks, then (while their
-//                           forces travel: begin/endSharedExchange) all the others
-//   gather                  nodes sum their slots, local and received, in global element order
-//                           (follower pressure travels the same way)
-//   finishElementPass       inverted elements end the run; next step = TSSFAC x global min
-//   externalForces          nodal loads, gravity (Boundary)
-//   updateKinematics        a = F/m, v(n+1/2), rigid bodies and nodal constraints, SPC,
-//                           prescribed motion, stonewalls, x(n+1)
+//                           forces travel: begin/endSharedExchange) all the others; nodes sum
+//                           their slots, local and received, in global element order (gather;
+//                           follower pressure travels the same way)
+//   checkElementGeometry    an inverted or collapsed element ends every rank
+//   stableTimeStep          next step = TSSFAC x global min of the element steps
+//   computeExternalForces   nodal loads, gravity (Boundary), joint forces (RigidBodies)
+//   computeContactForces    penalty forces of the contact interfaces
+//   updateVelocities        a = F/m, v(n+1/2), omega(n+1/2)
+//   applyConstraints        rigid bodies and nodal constraints, SPC, prescribed motion,
+//                           stonewalls correct v(n+1/2)
+//   updatePositions         x(n+1) = x(n) + dt(n+1/2) v(n+1/2)
+//   checkFiniteVelocities   a NaN or infinity ends every rank, naming its source
 #pragma once
 
 #include <cstdint>
@@ -74,6 +80,9 @@ class Solver {
   // "shell element 12 (part 3)": the element controlling the initial step.
   const std::string& initialDtElement() const { return dt_initial_label_; }
   int64_t erodedElements() const { return eroded_; }
+  // The element holding the most internal plus hourglass energy, as "solid element 7 (part
+  // 2)" (collective): where spurious energy (hourglassing, a diverging material) shows.
+  std::string mostEnergeticElement() const;
   // Sums over every rank (collective).
   ErodedSums eroded() const;
   const Timing& timing() const { return timing_; }
@@ -105,16 +114,65 @@ class Solver {
   enum class Group { Shared, Interior };
   // Element kernels over one group of every block (elements at shared nodes, or the rest).
   void computeElementGroup(Group group, ElementPass& pass);
-  // The collective end of a pass: inverted elements end every rank; the next stable step.
-  void finishElementPass(const ElementPass& pass);
+  // Every element's corner forces, exchanged at shared nodes and summed at the nodes (f,
+  // moments, follower pressure into f_ext).
+  ElementPass computeInternalForces();
+  // Inverted or collapsed elements of the pass end every rank (collective).
+  void checkElementGeometry(const ElementPass& pass) const;
+  // The next step dt(n+1/2) and the element controlling it (collective); a collapsed step
+  // ends the run.
+  struct StableStep {
+    double dt = 0.0;
+    int64_t element = -1;  // global element index; -1: none
+  };
+  StableStep stableTimeStep(const ElementPass& pass) const;
+  void computeExternalForces();
+  void computeContactForces();
+  // a = F/m and v(n+1/2), omega(n+1/2) over dt(n); keeps v(n-1/2) and notes non-finite values.
+  void updateVelocities(double dt_n);
+  // Rigid bodies, spot welds, tied sets, SPC, prescribed motion and stonewalls correct
+  // v(n+1/2); returns the work of the constraints over dt(n).
+  double applyConstraints(double dt_n, double dt_half);
+  // Adds the work of the external forces over dt(n) to `work` and that to the total.
+  void addExternalWork(double dt_n, double work);
+  void updatePositions(double dt_half);
+  // A non-finite velocity ends every rank (collective), naming the node and its source.
+  void checkFiniteVelocities() const;
   // Sends this rank's corner slots at shared nodes to the neighbours and receives theirs into
   // the ghost slots (non-blocking: work may go on between begin and end).
   void beginSharedExchange();
   void endSharedExchange();
   void exchangeSharedSlots();
   void gather(const domain::GatherPlan& plan, std::vector<double>& out, int components) const;
-  void updateKinematics();
-  // User id of the element controlling the step, agreed by all ranks (collective).
+
+  // The steps of initialize(). Element steps are before TSSFAC.
+  struct InitialSteps {
+    std::vector<std::vector<double>> solid, shell;  // per block and element; 0 when rigid
+    double dt_min = 1e300;                          // solids and shells (mass scaling)
+    int64_t dt_elem = -1;
+    double other = 1e300;  // beams and springs: never mass-scaled
+    int64_t other_elem = -1;
+    double rigid = 1e300;  // rigid solids: the step of a model of rigid parts only
+    int64_t rigid_elem = -1;
+    // The lowest global index of an element whose initial geometry cannot run (inverted
+    // solid, zero-area shell, zero-length beam).
+    int64_t bad = -1;
+  };
+  // Element state from the initial geometry: corner masses in the slots, element steps.
+  InitialSteps initializeElements();
+  void checkInitialGeometry(int64_t bad) const;
+  // Element masses of shells and beams (matsum), from their corner masses in the slots.
+  void computeStructuralMasses();
+  // Nodal masses and rotary inertias from the slots; point masses.
+  void assembleNodalMasses();
+  // *CONTROL_TIMESTEP DT2MS: added mass where an element's step is below the target.
+  void scaleMasses(InitialSteps& steps);
+  // Total and added mass over all ranks; `physical_mass` is the mass before scaling.
+  void sumMasses(const std::vector<double>& physical_mass);
+  void setInitialTimeStep(const InitialSteps& steps);
+  // Erosion floors of the element steps (DTMIN with ERODE, *MAT_024 TDEL).
+  void setErosionFloors();
+
   // Global index of the element controlling the step, agreed by all ranks (collective).
   int64_t controllingElement(int64_t local_best, bool holds_global_min) const;
   // "solid element 7 (part 2)" for a global element index (collective).
@@ -122,10 +180,6 @@ class Solver {
   // The lowest global index of an element of this rank whose corner forces or moments are not
   // finite (-1: none): the source of a non-finite velocity.
   int64_t nonFiniteElement() const;
-  // --energy-band (Controls::energy_ratio_min/max): a NumericalError when the energy ratio has
-  // left the band (collective; every 64 cycles).
-  void checkEnergyBand() const;
-
   const model::Model& model_;
   domain::Subdomain& sd_;
   comm::Communicator& comm_;

@@ -1,0 +1,107 @@
+#include "app/report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "model/build.hpp"
+
+namespace crumple::app {
+
+std::string modelSummary(const model::Model& m, const solver::Solver& s) {
+  std::string out;
+  out += fmt::format("deck: {}\n", m.deck_path);
+  if (!m.title.empty()) out += fmt::format("title: {}\n", m.title);
+  out += fmt::format("nodes: {}\nsolid elements: {}\n", m.nodes.size(), m.solids.size());
+  if (m.shells.size() > 0) out += fmt::format("shell elements: {}\n", m.shells.size());
+  if (m.beams.size() > 0) out += fmt::format("beam elements: {}\n", m.beams.size());
+  if (m.discretes.size() > 0) out += fmt::format("discrete elements: {}\n", m.discretes.size());
+  std::map<std::pair<int32_t, int>, std::size_t> per_part;
+  for (std::size_t g = 0; g < m.numElements(); ++g)
+    ++per_part[{m.elementPart(g), int(m.element(g).first)}];
+  static constexpr const char* kPlural[] = {"solids", "shells", "beams", "discretes"};
+  static constexpr const char* kSingular[] = {"solid", "shell", "beam", "discrete"};
+  for (const auto& [key, count] : per_part) {
+    const auto& part = m.parts[static_cast<std::size_t>(key.first)];
+    const auto& mat = m.materials[static_cast<std::size_t>(part.material)];
+    out += fmt::format("  part {}{}: {} {}, {} {} (density {:g})\n", part.id,
+                       part.title.empty() ? "" : " \"" + part.title + "\"", count,
+                       count == 1 ? kSingular[key.second] : kPlural[key.second],
+                       model::materialKeyword(mat.law), mat.id, mat.rho);
+  }
+  out += fmt::format("total mass: {:.6g}\n", s.totalMass());
+  if (s.addedMass() > 0.0)
+    out += fmt::format("mass added by scaling (DT2MS): {:.6g} ({:.3g}%)\n", s.addedMass(),
+                       100.0 * s.addedMass() / s.totalMass());
+  out += fmt::format("initial time step: {:.6g} ({}, TSSFAC {:g})\n", s.initialDt(),
+                     s.initialDtElement(), m.controls.tssfac);
+  out += fmt::format("end time: {:g}\n", m.controls.end_time);
+  if (!m.contacts.empty()) {
+    static constexpr const char* kKind[] = {"nodes to surface", "surface to surface",
+                                            "single surface", "tied"};
+    for (const auto& c : m.contacts)
+      out += fmt::format(
+          "contact {}{}: {}{}, {} nodes / {} segments against {} segments\n", c.id,
+          c.title.empty() ? "" : " \"" + c.title + "\"", c.automatic ? "automatic " : "",
+          kKind[int(c.kind)], c.a.nodes.size(), c.a.segments.size(),
+          c.kind == model::ContactKind::SingleSurface ? c.a.segments.size() : c.b.segments.size());
+    // Initial penetrations: DYNA3D moves the nodes back onto the surface (IGNORE 0), and
+    // says so; with IGNORE 1 or 2 they are kept as an offset.
+    if (const auto* c = s.contact()) {
+      const auto& pen = c->initialPenetrations();
+      if (!pen.empty()) {
+        out += fmt::format("initial penetrations: {} ({})\n", pen.size(),
+                           c->movedInitialPenetrations()
+                               ? "moved back onto the surface before the first cycle"
+                               : "kept as an offset (IGNORE)");
+        const std::size_t shown = std::min<std::size_t>(pen.size(), 20);
+        for (std::size_t k = 0; k < shown; ++k)
+          out += fmt::format("  contact {} node {}: depth {:.4g}\n", pen[k].interface_id,
+                             pen[k].node_id, pen[k].depth);
+        if (shown < pen.size()) out += fmt::format("  ... and {} more\n", pen.size() - shown);
+      }
+    }
+  }
+  return out;
+}
+
+std::string warningsText(const model::Model& m) {
+  std::string out;
+  if (!m.unsupported.empty())
+    out += "keywords read but not acted on:\n" + model::formatUnsupported(m);
+  if (!m.ignored.empty()) out += "fields read but not honoured:\n" + model::formatIgnored(m);
+  return out;
+}
+
+std::vector<const model::UnsupportedKeyword*> answerChanging(const model::Model& m) {
+  std::vector<const model::UnsupportedKeyword*> out;
+  for (const auto& u : m.unsupported)
+    if (u.changes_answer) out.push_back(&u);
+  return out;
+}
+
+std::size_t featureCount(const model::Model& m) {
+  std::set<std::string> features;
+  for (const auto* u : answerChanging(m)) features.insert(u->feature);
+  return features.size();
+}
+
+std::string answerChangingText(const model::Model& m) {
+  std::vector<std::string> order;
+  std::map<std::string, std::pair<int, const model::UnsupportedKeyword*>> by_feature;
+  for (const auto* u : answerChanging(m)) {
+    auto [it, added] = by_feature.try_emplace(u->feature, 0, u);
+    if (added) order.push_back(u->feature);
+    it->second.first += u->count;
+  }
+  std::string out;
+  for (const auto& f : order) {
+    const auto& [count, u] = by_feature.at(f);
+    out += fmt::format("  {} ({}x, first at {}): {}\n", f, count, u->first.str(), u->reason);
+  }
+  return out;
+}
+
+}  // namespace crumple::app
