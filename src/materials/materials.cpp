@@ -86,11 +86,15 @@ Law makeLaw(const model::Material& m, const model::Model& model) {
           // A rigid part computes no stress; its elastic constants serve contact stiffness.
           checkElastic(m, "*MAT_RIGID", law.E, law.nu);
           return Elastic{moduliFromYoung(law.E, law.nu)};
-        } else if constexpr (!std::is_same_v<T, model::PiecewiseLinearLaw>) {
+        } else if constexpr (std::is_same_v<T, model::SpringElasticLaw> ||
+                             std::is_same_v<T, model::DamperViscousLaw> ||
+                             std::is_same_v<T, model::SpringNonlinearLaw>) {
           throw util::InputError(at(m, model::materialKeyword(m.law)) +
                                  "is a spring or damper material: only discrete elements "
                                  "(*ELEMENT_DISCRETE) can use it");
         } else {
+          static_assert(std::is_same_v<T, model::PiecewiseLinearLaw>,
+                        "a continuum law needs its case in makeLaw");
           const char* kw = "*MAT_PIECEWISE_LINEAR_PLASTICITY";
           checkElastic(m, kw, law.E, law.nu);
           PiecewiseLinear pl;

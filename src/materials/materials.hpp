@@ -74,4 +74,15 @@ Law makeLaw(const model::Material& m, const model::Model& model);
 // Bulk and shear modulus from E and nu.
 Moduli moduliFromYoung(double E, double nu);
 
+// Young's modulus from the bulk and shear moduli the laws store.
+inline double youngOf(const Moduli& m) {
+  return 9.0 * m.bulk * m.shear / (3.0 * m.bulk + m.shear);
+}
+
+// Plastic hardening modulus dsigma/deps_p of a bilinear curve with tangent Etan, so that the
+// uniaxial slope after yield, E Ep / (E + Ep), is Etan. Precondition Etan < E (makeLaw).
+inline double plasticModulus(double E, double etan) {
+  return E * etan / (E - etan);
+}
+
 }  // namespace crumple::materials

@@ -35,17 +35,6 @@ namespace {
 
 constexpr double kThird = 1.0 / 3.0;
 
-// Young's modulus from the bulk and shear moduli the laws store.
-double youngOf(const Moduli& m) {
-  return 9.0 * m.bulk * m.shear / (3.0 * m.bulk + m.shear);
-}
-
-// Plastic hardening modulus of a bilinear curve with tangent Etan: dsigma/deps_p.
-// Precondition Etan < E (checked by makeLaw).
-double plasticModulus(double E, double etan) {
-  return E * etan / (E - etan);
-}
-
 // Cowper-Symonds dynamic factor 1 + (rate / C)^(1/P), with the effective total strain rate
 // sqrt(2/3 dev(de):dev(de)) / dt (LS-DYNA keyword manual, MAT_003 and MAT_024).
 inline double cowperSymonds(double d0, double d1, double d2, double d3, double d4, double d5,

@@ -12,16 +12,6 @@ namespace crumple::materials {
 
 namespace {
 
-double youngOf(const Moduli& m) {
-  return 9.0 * m.bulk * m.shear / (3.0 * m.bulk + m.shear);
-}
-
-// Plastic modulus of a bilinear curve with tangent Etan (Etan < E, checked by makeLaw): the
-// uniaxial slope after yield, E Ep / (E + Ep), is then Etan.
-double plasticModulus(double E, double etan) {
-  return E * etan / (E - etan);
-}
-
 // Segment k of a curve holds [x[k], x[k+1]), clamped to the end segments (linear
 // extrapolation beyond), as model::Curve::valueExtrapolated.
 std::size_t segmentOf(std::span<const double> x, double t) {
@@ -89,6 +79,9 @@ FibreLaw fibreLawOf(const Law& law) {
             f.inv_P = 1.0 / l.p;
           }
           f.fail = l.fail;
+        } else if constexpr (!std::is_same_v<T, Elastic>) {
+          static_assert(model::kNoLaw<T>,
+                        "a law used by beams needs its fibre (uniaxial) update here");
         }
         return f;
       },

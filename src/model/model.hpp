@@ -84,6 +84,11 @@ using MaterialLaw = std::variant<ElasticLaw, PlasticKinematicLaw, PiecewiseLinea
 
 // "*MAT_ELASTIC", "*MAT_RIGID", ... for messages and summaries.
 const char* materialKeyword(const MaterialLaw& law);
+
+// For `static_assert(kNoLaw<T>, ...)` in the last branch of a visit over the laws: a law
+// added to a variant without its case there is a compile error, not a silent fallback.
+template <class>
+inline constexpr bool kNoLaw = false;
 // Laws of discrete elements (springs and dampers), as opposed to continuum and rigid laws.
 bool isDiscreteLaw(const MaterialLaw& law);
 
