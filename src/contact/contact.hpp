@@ -16,10 +16,16 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "comm/communicator.hpp"
+#include "contact/balance.hpp"
+#include "contact/pass.hpp"
+#include "contact/penalty.hpp"
+#include "contact/search.hpp"
 #include "domain/subdomain.hpp"
 #include "model/model.hpp"
 
@@ -83,7 +89,7 @@ class Contact {
   void loadState(const std::vector<char>& bytes);
 
   // Checks this rank computes now (the contact partition).
-  std::size_t localChecks() const { return my_checks_.size(); }
+  std::size_t localChecks() const { return partition_.mine().size(); }
 
  private:
   // Every piece of state a restart needs besides the positions of the last pass, in dump
@@ -102,36 +108,55 @@ class Contact {
     f(stats_.rebalances);
     f(stats_.max_penetration_ratio);
   }
-  struct Pass;  // one side's nodes against the other side's segments
   struct Candidate;
+  int32_t contactNode(int32_t model_node) const;
+  // The checks of `nodes` against the segments of `segs`, their penalty scaled by sf (SFS or
+  // SFM).
+  void addPass(int32_t iface, const model::ContactSurface& nodes, const model::ContactSurface& segs,
+               double sf, bool self);
   // Every contact node from its owner (set-up, sorts); the nodes this rank reads (each cycle).
   void gatherNodes();
   void gatherNeeded();
+  void gatherMasses();
   // After a sort: which nodes this rank reads, and who sends them (collective).
   void buildRoutes();
-  void sortAll();  // every pass's buckets, the margin and x_sorted_
-  double reachOf(const Pass& pass) const;
-  void sortBuckets(Pass& pass);
-  void updateBoxes(Pass& pass, bool needed_only);
-  // Looks for the segment a check penetrates; false if none.
-  std::array<double, 3> segmentNormal(const std::array<int32_t, 4>& seg) const;
-  // Segments a check may meet before the next sort (appended to `out`).
-  void collectCandidates(const Pass& pass, int32_t check, double margin,
-                         std::vector<int32_t>& out) const;
+  // Re-sorts the buckets when some node may have travelled half the margin since the last
+  // sort, or after BSORT cycles (collective); true if it did.
+  bool sortIfDue();
+  void sortAll();  // the buckets of every pass, and x_sorted_
   void buildCandidateLists();
   // Owned nodes' current positions into x_owned_prev_ (sent with the next full gather).
   void recordOwnedPositions();
   // Moves a contact node before the first cycle (initial penetration, tie), on every rank.
   void moveNode(std::size_t node, const std::array<double, 3>& dx);
-  void tieNodes(const Pass& pass, bool keep_offset);
-  void tiedForce(const Pass& pass, int32_t check, double dt_prev,
-                 std::vector<double>& records) const;
-  // The segment the check's node penetrates among `candidates`; false if none. `initial`: the
-  // check before the first cycle, which also takes nodes already inside.
-  bool search(const Pass& pass, int32_t check, const int32_t* candidates, std::size_t count,
-              Candidate& best, int64_t& tests, bool initial) const;
-  void partitionChecks(const std::vector<double>& weight);
-  void maybeRebalance();
+  void tieNodes(std::size_t pass, bool keep_offset);
+  void resolveInitialPenetrations(std::size_t pass);
+  // The segment a check's node penetrates among `candidates` (docs/theory.md, "Node against
+  // segment"); none if none. `initial`: the check before the first cycle, which also takes
+  // nodes already inside. `tests` counts the segments tested.
+  std::optional<Candidate> chooseSegment(std::size_t pass, int32_t check,
+                                         std::span<const int32_t> candidates, int64_t& tests,
+                                         bool initial) const;
+  // A check's node: its contact node, position and half shell thickness.
+  struct CheckNode {
+    int32_t check = 0;
+    std::size_t node = 0;
+    std::array<double, 3> x{};
+    double half = 0.0;
+  };
+  // One segment against a check's node: its contact surface and rank; none if the node is not
+  // in contact with it.
+  std::optional<Candidate> rankSegment(const Pass& pass, const CheckNode& node, std::size_t seg,
+                                       bool initial) const;
+  // Whether the check's node stays with the segment it was in contact with last cycle.
+  bool tracks(const Pass& pass, int32_t check, std::size_t seg, const Projection& pr) const;
+  // The records of this rank's checks in contact now.
+  std::vector<Record> checkContacts(double time, double dt_prev);
+  NodeAndSegment nodeAndSegment(std::size_t node, const std::array<int32_t, 4>& seg) const;
+  // Every rank's records, in check order.
+  void gatherRecords(std::vector<Record> mine);
+  // The records' forces into Subdomain::f, and the contact history of the next cycle.
+  void applyRecords();
 
   const model::Model& model_;
   domain::Subdomain& sd_;
@@ -161,25 +186,22 @@ class Contact {
   std::vector<double> entry_;        // per check: penetration at the start of the contact
   // Tied checks: the segment, its four weights and the normal offset of the tied point.
   std::vector<int32_t> tie_seg_;
-  std::vector<double> tie_weight_, tie_offset_;
+  std::vector<std::array<double, 4>> tie_weight_;
+  std::vector<double> tie_offset_;
   std::vector<Pass> passes_;
   int32_t num_checks_ = 0;
-  std::vector<int32_t> check_pass_;           // pass of each global check
-  std::vector<int32_t> my_checks_;            // ascending
-  std::vector<int32_t> cand_ptr_, cand_seg_;  // candidate segments of each of my checks (CSR)
-  std::vector<int32_t> active_;               // indices into my_checks_ with candidates (or a tie)
-  std::vector<double> friction_;              // tangential force history, 3 per check
-  std::vector<double> initial_gap_;           // IGNORE 1/2: initial penetration per check
-  std::vector<double> check_cost_;  // tests per check since the last balance (this rank's)
-  int64_t tests_since_balance_ = 0;
+  std::vector<int32_t> check_pass_;  // pass of each global check
+  std::vector<int32_t> check_node_;  // contact node of each global check
+  BucketSearch search_;
+  CheckPartition partition_;
+  std::vector<double> friction_;     // tangential force history, 3 per check
+  std::vector<double> initial_gap_;  // IGNORE 1/2: initial penetration per check
   double dt0_ = 0.0;
-  double sort_margin_ = 0.0;
   bool need_sort_ = true;
   int cycles_since_sort_ = 0;
   int max_sort_interval_ = 0;  // smallest BSORT of the interfaces (0: none)
 
-  // Records of the last cycle, sorted by check: see kRecord in contact.cpp.
-  std::vector<double> records_;
+  std::vector<Record> records_;     // of the last cycle, in check order
   std::vector<double> stored_;      // per interface: sum of k pen^2 / 2 of the last cycle
   std::vector<double> dissipated_;  // per interface: friction and damping, accumulated
   std::vector<InitialPenetration> initial_;

@@ -1,8 +1,12 @@
 // Where a node lies relative to a contact segment: the closest point of the segment, its
-// shape-function weights and the normal there. Shared by the search and the force kernel.
+// shape-function weights and the normal there, and the contact surface the segment offers the
+// node (docs/theory.md, "Node against segment"). Shared by the search and the force kernel.
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <optional>
+#include <vector>
 
 #include "util/vec3.hpp"
 
@@ -15,6 +19,14 @@ using util::norm;
 using util::scale;
 using util::sub;
 using util::Vec3;
+
+// Parametric tolerance of "the node is over the segment" (see project).
+constexpr double kInsideTolerance = 0.02;
+
+// Node i of an array of 3 doubles per node.
+inline Vec3 at(const std::vector<double>& a, std::size_t i) {
+  return {a[3 * i], a[3 * i + 1], a[3 * i + 2]};
+}
 
 struct Projection {
   std::array<double, 4> N{};  // weights of the segment nodes at the closest point
@@ -29,6 +41,50 @@ struct Projection {
 // that a node over the common edge of two segments is caught by both (DYNA3D does the same
 // to keep nodes from slipping between segments).
 Projection project(const Vec3& p, const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3,
-                   bool triangle, double tolerance = 0.02);
+                   bool triangle, double tolerance = kInsideTolerance);
+
+// Unit normal of the segment x0..x3 along its diagonals, (x2 - x0) x (x3 - x1); zero for a
+// degenerate segment.
+inline Vec3 segmentNormal(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3) {
+  const Vec3 c = cross(sub(x2, x0), sub(x3, x1));
+  const double len = norm(c);
+  return len > 0.0 ? scale(c, 1.0 / len) : Vec3{};
+}
+
+// The contact surface of one segment as one node sees it.
+struct SurfaceGap {
+  double gap = 0.0;  // distance of the node from the surface; negative: penetration
+  Vec3 push{};       // unit direction the node is pushed out
+  int side = 1;      // shells: the side of the mid-surface the node is on (along the normal)
+};
+
+// A solid face: one-sided, along the outward normal, offset by the node's half shell
+// thickness h_node. A node deeper than half the element under the face (`depth`) is on the
+// far side of something else: no contact.
+inline std::optional<SurfaceGap> solidFaceGap(const Projection& pr, double h_node, double depth) {
+  SurfaceGap g{pr.d - h_node, pr.normal, 1};
+  if (!(g.gap > -0.5 * depth)) return std::nullopt;
+  return g;
+}
+
+// A shell, the node over the segment: both sides are surfaces, offset from the mid-surface by
+// h, the sum of the node's and the segment's half thicknesses. `side` is the side the node is
+// on (the search's choice, from its history); a node through the whole contact thickness is
+// not this sheet's: no contact.
+inline std::optional<SurfaceGap> shellFaceGap(const Projection& pr, double h, int side) {
+  const double ds = side * pr.d;
+  if (ds < -h) return std::nullopt;
+  return SurfaceGap{ds - h, scale(pr.normal, double(side)), side};
+}
+
+// A shell, the node beyond the segment's edge (a free edge, the outside of a fold): the
+// surface is rounded, the node keeps the distance h from the nearest point of the segment, so
+// that nodes cannot slip past edges and ridges into the contact thickness of the next one.
+inline std::optional<SurfaceGap> shellEdgeGap(const Vec3& x, const Projection& pr, double h) {
+  const Vec3 r = sub(x, pr.point);
+  const double dist = norm(r);
+  if (!(dist < h) || !(dist > 0.0)) return std::nullopt;
+  return SurfaceGap{dist - h, scale(r, 1.0 / dist), dot(r, pr.normal) >= 0.0 ? 1 : -1};
+}
 
 }  // namespace crumple::contact

@@ -1,0 +1,30 @@
+// One side's nodes checked against the other side's segments, as the model gives them: the
+// unit the search, the partition and the force kernel share. Fixed for the run.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace crumple::contact {
+
+// Contact nodes are numbered over every interface, in ascending model index ("cn" numbering);
+// a check is one node of a pass against that pass's segments, numbered over every pass.
+struct Pass {
+  int32_t iface = 0;                        // index into Model::contacts
+  bool self = false;                        // single surface: skip segments next to the node
+  bool tied = false;                        // nodes held to the point of the segment they start on
+  int32_t first_check = 0;                  // global index of the first check
+  std::vector<int32_t> node;                // contact node of each check
+  std::vector<double> node_half;            // half shell thickness at the node
+  std::vector<std::array<int32_t, 4>> seg;  // contact nodes
+  std::vector<double> seg_half;             // half thickness (0: one-sided solid face)
+  std::vector<double> seg_k;                // penalty stiffness with the scale factors
+  std::vector<double> seg_depth;            // ContactSurface::segment_depth
+  // Single surface: the nodes sharing a segment with each node (CSR over contact nodes).
+  std::vector<int32_t> near_ptr, near_node;
+  double reach_extra = 0.0;  // largest node + segment half thickness
+  double max_node_half = 0.0;
+};
+
+}  // namespace crumple::contact
