@@ -68,6 +68,246 @@ materials::Moduli moduliOf(const materials::Law& law) {
   return std::visit([](const auto& m) { return m.moduli; }, law);
 }
 
+// The constants of one block for one call.
+struct SolidParams {
+  double dt = 0, lam2mu = 0, qm = 0;
+  bool stiffness_hg = false;
+  bool projected_hg = false;  // FB orthogonal hourglass vectors gamma; type 1 uses Gamma
+};
+
+// Kinematics of one batch at the mid-step geometry x(n-1/2) = x(n) - dt/2 v(n-1/2): the
+// volume and the velocity gradient L = dv_i/dx_j.
+struct SolidRates {
+  LaneArray vol_mid;
+  double L[3][3][kBatch];
+};
+
+// The spin increments (for the stress and the stored hourglass resistances) and the trace of
+// the rate of deformation (for the bulk viscosity).
+struct SolidSpin {
+  LaneArray trace_d, spin_xy, spin_yz, spin_zx;
+};
+
+// The current geometry and what follows from it: volume, density, wave speed, characteristic
+// length, bulk viscosity.
+struct SolidGeometry {
+  LaneArray vol, area, rho, c, c_dt, len, q, cbrt_vol;
+};
+
+inline void midStepGradient(const SolidParams& p, BatchScratch& w, SolidRates& r) {
+  const double dt = p.dt;
+  for (int c = 0; c < 3; ++c)
+    for (int a = 0; a < 8; ++a)
+      for (int l = 0; l < kBatch; ++l) w.xm[c][a][l] = w.x[c][a][l] - 0.5 * dt * w.v[c][a][l];
+  gradientOfAll(w.xm, w.b, std::make_index_sequence<8>{});
+  volumeOf(w.xm, w.b, r.vol_mid);
+  LaneArray inv_vol_mid;
+  for (int l = 0; l < kBatch; ++l) inv_vol_mid[l] = 1.0 / r.vol_mid[l];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int l = 0; l < kBatch; ++l) {
+        double s = 0.0;
+        for (int a = 0; a < 8; ++a) s += w.v[i][a][l] * w.b[j][a][l];
+        r.L[i][j][l] = s * inv_vol_mid[l];
+      }
+}
+
+// Stress: load the batch's records, the Jaumann rotation, then the material law.
+template <class Law>
+inline void updateStress(const Law& law, const SolidParams& p, const domain::SolidBlock& blk,
+                         std::size_t first, const double* sig_batch, const double* alpha_batch,
+                         BatchScratch& w, const SolidRates& r, SolidSpin& sp) {
+  const double dt = p.dt;
+  const auto& L = r.L;
+  for (int k = 0; k < 6; ++k)
+    for (int l = 0; l < kBatch; ++l) w.s[k][l] = sig_batch[k * kBatch + l];
+  if constexpr (Law::kPlastic)
+    for (int l = 0; l < kBatch; ++l) w.eps_p[l] = blk.eps_p[first + l];
+  if constexpr (Law::kKinematic)
+    for (int k = 0; k < 6; ++k)
+      for (int l = 0; l < kBatch; ++l) w.alpha[k][l] = alpha_batch[k * kBatch + l];
+  for (int l = 0; l < kBatch; ++l) {
+    const double wxy = sp.spin_xy[l] = 0.5 * (L[0][1][l] - L[1][0][l]) * dt;
+    const double wyz = sp.spin_yz[l] = 0.5 * (L[1][2][l] - L[2][1][l]) * dt;
+    const double wzx = sp.spin_zx[l] = 0.5 * (L[2][0][l] - L[0][2][l]) * dt;
+    rotateJaumann(w.s, l, wxy, wyz, wzx);
+    // The back stress is a tensor in the same frame: it rotates with the stress.
+    if constexpr (Law::kKinematic) rotateJaumann(w.alpha, l, wxy, wyz, wzx);
+    w.de[0][l] = L[0][0][l] * dt;
+    w.de[1][l] = L[1][1][l] * dt;
+    w.de[2][l] = L[2][2][l] * dt;
+    w.de[3][l] = 0.5 * (L[0][1][l] + L[1][0][l]) * dt;
+    w.de[4][l] = 0.5 * (L[1][2][l] + L[2][1][l]) * dt;
+    w.de[5][l] = 0.5 * (L[2][0][l] + L[0][2][l]) * dt;
+    sp.trace_d[l] = L[0][0][l] + L[1][1][l] + L[2][2][l];
+  }
+  detail::updateMaterial(law, w, dt);
+}
+
+// Geometry at x(n): volume, volume gradient, characteristic length, bulk viscosity.
+inline void currentGeometry(const SolidParams& p, const domain::SolidBlock& blk, std::size_t first,
+                            const BulkViscosity& bv, BatchScratch& w, const SolidSpin& sp,
+                            SolidGeometry& g) {
+  gradientOfAll(w.x, w.b, std::make_index_sequence<8>{});
+  volumeOf(w.x, w.b, g.vol);
+  maxFaceArea(w.x, g.area);
+  for (int l = 0; l < kBatch; ++l) {
+    const std::size_t e = first + static_cast<std::size_t>(l);
+    const double v_safe = g.vol[l] > 0.0 ? g.vol[l] : 1.0;
+    g.rho[l] = blk.rho0 * blk.vol0[e] / v_safe;
+    g.c[l] = std::sqrt(p.lam2mu / g.rho[l]);
+    // Mass scaling slows the element's waves: c / sqrt(scale) enters the stable step only.
+    g.c_dt[l] = blk.mass_scale.empty() ? g.c[l] : g.c[l] / std::sqrt(blk.mass_scale[e]);
+    g.len[l] = v_safe / g.area[l];
+    // Bulk viscosity (von Neumann-Richtmyer quadratic + Landshoff linear), compression only;
+    // LS-DYNA Theory Manual "Bulk viscosity".
+    const double td = sp.trace_d[l];
+    g.q[l] =
+        td < 0.0 ? g.rho[l] * g.len[l] * (bv.q1 * g.len[l] * td * td - bv.q2 * g.c[l] * td) : 0.0;
+    // V^(2/3) for the viscous hourglass coefficient only (cbrt is not cheap).
+    g.cbrt_vol[l] = p.stiffness_hg ? 0.0 : std::cbrt(v_safe);
+  }
+}
+
+// Internal energy (midpoint rule on the stress power, plus bulk viscosity work) and the
+// stress divergence f_a = -(sigma - q I) . B_a.
+inline void stressDivergence(const SolidParams& p, BatchScratch& w, const SolidRates& r,
+                             const SolidSpin& sp, const SolidGeometry& g, LaneArray& de_int) {
+  for (int l = 0; l < kBatch; ++l) {
+    de_int[l] = (detail::stressWork(w, l) - g.q[l] * sp.trace_d[l] * p.dt) * r.vol_mid[l];
+  }
+  for (int a = 0; a < 8; ++a)
+    for (int l = 0; l < kBatch; ++l) {
+      const double sxx = w.s[0][l] - g.q[l], syy = w.s[1][l] - g.q[l], szz = w.s[2][l] - g.q[l];
+      const double sxy = w.s[3][l], syz = w.s[4][l], szx = w.s[5][l];
+      const double bx = w.b[0][a][l], by = w.b[1][a][l], bz = w.b[2][a][l];
+      w.f[0][a][l] = -(sxx * bx + sxy * by + szx * bz);
+      w.f[1][a][l] = -(sxy * bx + syy * by + syz * bz);
+      w.f[2][a][l] = -(szx * bx + syz * by + szz * bz);
+    }
+}
+
+// Hourglass control (FB 1981 sec. 4; LS-DYNA Theory Manual "Hourglass control"), QM > 0:
+// adds the hourglass forces to w.f and their work to de_hg. Every loop runs over lanes
+// innermost so it vectorises.
+inline void hourglassForces(const SolidParams& p, domain::SolidBlock& blk, std::size_t first,
+                            BatchScratch& w, const SolidSpin& sp, const SolidGeometry& geo,
+                            LaneArray& de_hg) {
+  const double dt = p.dt;
+  const bool stiffness_hg = p.stiffness_hg;
+  LaneArray coef, inv_vol;
+  for (int l = 0; l < kBatch; ++l) {
+    double bb = 0.0;
+    for (int cc = 0; cc < 3; ++cc)
+      for (int a = 0; a < 8; ++a) bb += w.b[cc][a][l] * w.b[cc][a][l];
+    inv_vol[l] = 1.0 / geo.vol[l];
+    // Viscous: a_h = QM rho V^(2/3) c / 4 on the unnormalised vectors (LS-DYNA).
+    // Stiffness: QM (lambda + 2 mu) B:B / V per mode, integrated incrementally; FB
+    // normalise the hourglass vectors by 1/sqrt(8), hence the 1/8 on the +-1 vectors.
+    coef[l] = stiffness_hg
+                  ? 0.125 * p.qm * p.lam2mu * bb * inv_vol[l] * dt
+                  : 0.25 * p.qm * geo.rho[l] * geo.cbrt_vol[l] * geo.cbrt_vol[l] * geo.c[l];
+  }
+  // This batch's record of stored resistances (stiffness forms only).
+  double* hgq_batch = stiffness_hg ? blk.hgq.data() + first * 12 : nullptr;
+  if (stiffness_hg) {
+    // The stored resistance of each mode is a vector in the global frame: it turns with
+    // the element, by the same spin increment as the stress (FB 1981 sec. 4.2), or a
+    // rotated element would be pushed along its old directions.
+    for (int alpha = 0; alpha < 4; ++alpha) {
+      double* qx = hgq_batch + (3 * alpha) * kBatch;
+      double* qy = hgq_batch + (3 * alpha + 1) * kBatch;
+      double* qz = hgq_batch + (3 * alpha + 2) * kBatch;
+      for (int l = 0; l < kBatch; ++l) {
+        const double x0 = qx[l], y0 = qy[l], z0 = qz[l];
+        qx[l] = x0 + sp.spin_xy[l] * y0 - sp.spin_zx[l] * z0;
+        qy[l] = y0 - sp.spin_xy[l] * x0 + sp.spin_yz[l] * z0;
+        qz[l] = z0 + sp.spin_zx[l] * x0 - sp.spin_yz[l] * y0;
+      }
+    }
+  }
+  // All four modes first (vectors gamma and resistances), then one pass that adds their
+  // forces to the nodes: f_ia -= sum_alpha Q_i,alpha gamma_a,alpha.
+  double g[4][8][kBatch];
+  double force[4][3][kBatch];
+  for (int alpha = 0; alpha < 4; ++alpha) {
+    for (int a = 0; a < 8; ++a)
+      for (int l = 0; l < kBatch; ++l) g[alpha][a][l] = kGamma[alpha][a];
+    if (p.projected_hg) {
+      // gamma_a = Gamma_a - (1/V) (sum_b x_b Gamma_b) . B_a: orthogonal to linear fields.
+      double h[3][kBatch];
+      for (int cc = 0; cc < 3; ++cc)
+        for (int l = 0; l < kBatch; ++l) {
+          double sum = 0.0;
+          for (int a = 0; a < 8; ++a) sum += w.x[cc][a][l] * kGamma[alpha][a];
+          h[cc][l] = sum * inv_vol[l];
+        }
+      for (int a = 0; a < 8; ++a)
+        for (int l = 0; l < kBatch; ++l)
+          g[alpha][a][l] -=
+              h[0][l] * w.b[0][a][l] + h[1][l] * w.b[1][a][l] + h[2][l] * w.b[2][a][l];
+    }
+    for (int i = 0; i < 3; ++i) {
+      double qdot[kBatch], mean_force[kBatch];
+      for (int l = 0; l < kBatch; ++l) {
+        double sum = 0.0;
+        for (int a = 0; a < 8; ++a) sum += w.v[i][a][l] * g[alpha][a][l];
+        qdot[l] = sum;
+      }
+      double* fq = force[alpha][i];
+      if (stiffness_hg) {
+        double* stored = hgq_batch + (3 * alpha + i) * kBatch;
+        for (int l = 0; l < kBatch; ++l) {
+          const double old = stored[l];
+          fq[l] = old + coef[l] * qdot[l];
+          mean_force[l] = 0.5 * (old + fq[l]);  // trapezoidal work, as for the stress
+          stored[l] = fq[l];
+        }
+      } else {
+        for (int l = 0; l < kBatch; ++l) fq[l] = mean_force[l] = coef[l] * qdot[l];
+      }
+      for (int l = 0; l < kBatch; ++l) de_hg[l] += mean_force[l] * qdot[l] * dt;
+    }
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int a = 0; a < 8; ++a)
+      for (int l = 0; l < kBatch; ++l)
+        w.f[i][a][l] -= force[0][i][l] * g[0][a][l] + force[1][i][l] * g[1][a][l] +
+                        force[2][i][l] * g[2][a][l] + force[3][i][l] * g[3][a][l];
+}
+
+// Stores the state (whole batch, contiguous), then per element: forces and stable step.
+template <class Law>
+inline void storeSolidBatch(domain::SolidBlock& blk, std::size_t first, int n, double* sig_batch,
+                            double* alpha_batch, const BatchScratch& w, const SolidSpin& sp,
+                            const SolidGeometry& g, const LaneArray& de_int, const LaneArray& de_hg,
+                            const BulkViscosity& bv, double* slots, BlockStatus& st) {
+  const uint8_t* alive = &blk.active[first];
+  for (int k = 0; k < 6; ++k)
+    for (int l = 0; l < kBatch; ++l) sig_batch[k * kBatch + l] = alive[l] ? w.s[k][l] : 0.0;
+  if constexpr (Law::kPlastic)
+    for (int l = 0; l < kBatch; ++l)
+      blk.eps_p[first + l] = alive[l] ? w.eps_p[l] : blk.eps_p[first + l];
+  if constexpr (Law::kKinematic)
+    for (int k = 0; k < 6; ++k)
+      for (int l = 0; l < kBatch; ++l) alpha_batch[k * kBatch + l] = w.alpha[k][l];
+  for (int l = 0; l < kBatch; ++l) {
+    blk.vol[first + l] = g.vol[l];
+    blk.e_int[first + l] += alive[l] ? de_int[l] : 0.0;
+    blk.e_hg[first + l] += alive[l] ? de_hg[l] : 0.0;
+  }
+  for (int l = 0; l < n; ++l) {
+    const std::size_t e = first + static_cast<std::size_t>(l);
+    double* slot = slots + 3 * (blk.slot_offset + 8 * e);
+    if (!blk.active[e]) {
+      std::fill(slot, slot + 24, 0.0);
+      continue;
+    }
+    detail::finishElement(blk, e, l, w.f, g.vol[l], w.failed[l] != 0, g.len[l], g.c_dt[l],
+                          sp.trace_d[l], bv, slot, st);
+  }
+}
+
 // One portable binary, three instruction sets: GCC compiles this kernel (with everything it
 // calls inlined: flatten) for AVX-512, for AVX2 and for the x86-64 baseline, and picks one at
 // load time from the CPU. The clones do the same IEEE operations in the same order (no FMA
@@ -82,12 +322,12 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
   const std::size_t batch0 = range_first / kBatch;
   const std::size_t nbatch =
       range_last > range_first ? (range_last - range_first + kBatch - 1) / kBatch : 0;
-  const materials::Moduli mod = law.moduli;
-  const double lam2mu = mod.bulk + 4.0 / 3.0 * mod.shear;
-  const int ihq = blk.hourglass.ihq;
-  const double qm = blk.hourglass.qm;
-  const bool stiffness_hg = ihq >= 4;
-  const bool projected_hg = ihq >= 2;  // FB orthogonal hourglass vectors gamma; type 1 uses Gamma
+  SolidParams p;
+  p.dt = dt;
+  p.lam2mu = law.moduli.bulk + 4.0 / 3.0 * law.moduli.shear;
+  p.qm = blk.hourglass.qm;
+  p.stiffness_hg = blk.hourglass.ihq >= 4;
+  p.projected_hg = blk.hourglass.ihq >= 2;
   std::vector<BlockStatus> status(nbatch);
 
 #pragma omp parallel
@@ -97,207 +337,23 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
     for (std::size_t ib = 0; ib < nbatch; ++ib) {
       const std::size_t first = (batch0 + ib) * kBatch;
       const int n = static_cast<int>(std::min<std::size_t>(kBatch, ne - first));
-      BlockStatus& st = status[ib];
       gatherNodal(blk, first, n, x, w.x);
       gatherNodal(blk, first, n, v, w.v);
       // This batch's records of stress and back stress (batch-blocked storage).
       double* sig_batch = blk.sig.data() + first * 6;
       double* alpha_batch = Law::kKinematic ? blk.alpha.data() + first * 6 : nullptr;
-
-      // --- strain rate at the mid-step geometry x(n-1/2) = x(n) - dt/2 v(n-1/2) --------------
-      for (int c = 0; c < 3; ++c)
-        for (int a = 0; a < 8; ++a)
-          for (int l = 0; l < kBatch; ++l) w.xm[c][a][l] = w.x[c][a][l] - 0.5 * dt * w.v[c][a][l];
-      gradientOfAll(w.xm, w.b, std::make_index_sequence<8>{});
-      LaneArray vol_mid;
-      volumeOf(w.xm, w.b, vol_mid);
-      double L[3][3][kBatch];  // velocity gradient dv_i/dx_j
-      LaneArray inv_vol_mid;
-      for (int l = 0; l < kBatch; ++l) inv_vol_mid[l] = 1.0 / vol_mid[l];
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-          for (int l = 0; l < kBatch; ++l) {
-            double s = 0.0;
-            for (int a = 0; a < 8; ++a) s += w.v[i][a][l] * w.b[j][a][l];
-            L[i][j][l] = s * inv_vol_mid[l];
-          }
-
-      // --- stress: Jaumann rotation, then the material law ------------------------------------
-      for (int k = 0; k < 6; ++k)
-        for (int l = 0; l < kBatch; ++l) w.s[k][l] = sig_batch[k * kBatch + l];
-      if constexpr (Law::kPlastic)
-        for (int l = 0; l < kBatch; ++l) w.eps_p[l] = blk.eps_p[first + l];
-      if constexpr (Law::kKinematic)
-        for (int k = 0; k < 6; ++k)
-          for (int l = 0; l < kBatch; ++l) w.alpha[k][l] = alpha_batch[k * kBatch + l];
-      LaneArray trace_d, spin_xy, spin_yz, spin_zx;
-      for (int l = 0; l < kBatch; ++l) {
-        const double wxy = spin_xy[l] = 0.5 * (L[0][1][l] - L[1][0][l]) * dt;
-        const double wyz = spin_yz[l] = 0.5 * (L[1][2][l] - L[2][1][l]) * dt;
-        const double wzx = spin_zx[l] = 0.5 * (L[2][0][l] - L[0][2][l]) * dt;
-        rotateJaumann(w.s, l, wxy, wyz, wzx);
-        // The back stress is a tensor in the same frame: it rotates with the stress.
-        if constexpr (Law::kKinematic) rotateJaumann(w.alpha, l, wxy, wyz, wzx);
-        w.de[0][l] = L[0][0][l] * dt;
-        w.de[1][l] = L[1][1][l] * dt;
-        w.de[2][l] = L[2][2][l] * dt;
-        w.de[3][l] = 0.5 * (L[0][1][l] + L[1][0][l]) * dt;
-        w.de[4][l] = 0.5 * (L[1][2][l] + L[2][1][l]) * dt;
-        w.de[5][l] = 0.5 * (L[2][0][l] + L[0][2][l]) * dt;
-        trace_d[l] = L[0][0][l] + L[1][1][l] + L[2][2][l];
-      }
-      detail::updateMaterial(law, w, dt);
-
-      // --- geometry at x(n): volume, volume gradient, characteristic length -------------------
-      gradientOfAll(w.x, w.b, std::make_index_sequence<8>{});
-      LaneArray vol, area, rho, c, c_dt, len, q, cbrt_vol;
-      volumeOf(w.x, w.b, vol);
-      maxFaceArea(w.x, area);
-      for (int l = 0; l < kBatch; ++l) {
-        const std::size_t e = first + static_cast<std::size_t>(l);
-        const double v_safe = vol[l] > 0.0 ? vol[l] : 1.0;
-        rho[l] = blk.rho0 * blk.vol0[e] / v_safe;
-        c[l] = std::sqrt(lam2mu / rho[l]);
-        // Mass scaling slows the element's waves: c / sqrt(scale) enters the stable step only.
-        c_dt[l] = blk.mass_scale.empty() ? c[l] : c[l] / std::sqrt(blk.mass_scale[e]);
-        len[l] = v_safe / area[l];
-        // Bulk viscosity (von Neumann-Richtmyer quadratic + Landshoff linear), compression only;
-        // LS-DYNA Theory Manual "Bulk viscosity".
-        q[l] = trace_d[l] < 0.0
-                   ? rho[l] * len[l] *
-                         (bv.q1 * len[l] * trace_d[l] * trace_d[l] - bv.q2 * c[l] * trace_d[l])
-                   : 0.0;
-        // V^(2/3) for the viscous hourglass coefficient only (cbrt is not cheap).
-        cbrt_vol[l] = stiffness_hg ? 0.0 : std::cbrt(v_safe);
-      }
-
-      // --- internal energy: midpoint rule on the stress power, plus bulk viscosity work ------
-      LaneArray de_int;
-      for (int l = 0; l < kBatch; ++l) {
-        de_int[l] = (detail::stressWork(w, l) - q[l] * trace_d[l] * dt) * vol_mid[l];
-      }
-
-      // --- stress divergence: f_a = -(sigma - q I) . B_a --------------------------------------
-      for (int a = 0; a < 8; ++a)
-        for (int l = 0; l < kBatch; ++l) {
-          const double sxx = w.s[0][l] - q[l], syy = w.s[1][l] - q[l], szz = w.s[2][l] - q[l];
-          const double sxy = w.s[3][l], syz = w.s[4][l], szx = w.s[5][l];
-          const double bx = w.b[0][a][l], by = w.b[1][a][l], bz = w.b[2][a][l];
-          w.f[0][a][l] = -(sxx * bx + sxy * by + szx * bz);
-          w.f[1][a][l] = -(sxy * bx + syy * by + syz * bz);
-          w.f[2][a][l] = -(szx * bx + syz * by + szz * bz);
-        }
-
-      // --- hourglass control (FB 1981 sec. 4; LS-DYNA Theory Manual "Hourglass control") -----
-      // Every loop below runs over lanes innermost so it vectorises.
-      LaneArray de_hg;
+      SolidRates r;
+      midStepGradient(p, w, r);
+      SolidSpin sp;
+      updateStress(law, p, blk, first, sig_batch, alpha_batch, w, r, sp);
+      SolidGeometry g;
+      currentGeometry(p, blk, first, bv, w, sp, g);
+      LaneArray de_int, de_hg;
+      stressDivergence(p, w, r, sp, g, de_int);
       for (int l = 0; l < kBatch; ++l) de_hg[l] = 0.0;
-      if (qm > 0.0) {
-        LaneArray coef, inv_vol;
-        for (int l = 0; l < kBatch; ++l) {
-          double bb = 0.0;
-          for (int cc = 0; cc < 3; ++cc)
-            for (int a = 0; a < 8; ++a) bb += w.b[cc][a][l] * w.b[cc][a][l];
-          inv_vol[l] = 1.0 / vol[l];
-          // Viscous: a_h = QM rho V^(2/3) c / 4 on the unnormalised vectors (LS-DYNA).
-          // Stiffness: QM (lambda + 2 mu) B:B / V per mode, integrated incrementally; FB
-          // normalise the hourglass vectors by 1/sqrt(8), hence the 1/8 on the +-1 vectors.
-          coef[l] = stiffness_hg ? 0.125 * qm * lam2mu * bb * inv_vol[l] * dt
-                                 : 0.25 * qm * rho[l] * cbrt_vol[l] * cbrt_vol[l] * c[l];
-        }
-        // This batch's record of stored resistances (stiffness forms only).
-        double* hgq_batch = stiffness_hg ? blk.hgq.data() + first * 12 : nullptr;
-        if (stiffness_hg) {
-          // The stored resistance of each mode is a vector in the global frame: it turns with
-          // the element, by the same spin increment as the stress (FB 1981 sec. 4.2), or a
-          // rotated element would be pushed along its old directions.
-          for (int alpha = 0; alpha < 4; ++alpha) {
-            double* qx = hgq_batch + (3 * alpha) * kBatch;
-            double* qy = hgq_batch + (3 * alpha + 1) * kBatch;
-            double* qz = hgq_batch + (3 * alpha + 2) * kBatch;
-            for (int l = 0; l < kBatch; ++l) {
-              const double x0 = qx[l], y0 = qy[l], z0 = qz[l];
-              qx[l] = x0 + spin_xy[l] * y0 - spin_zx[l] * z0;
-              qy[l] = y0 - spin_xy[l] * x0 + spin_yz[l] * z0;
-              qz[l] = z0 + spin_zx[l] * x0 - spin_yz[l] * y0;
-            }
-          }
-        }
-        // All four modes first (vectors gamma and resistances), then one pass that adds their
-        // forces to the nodes: f_ia -= sum_alpha Q_i,alpha gamma_a,alpha.
-        double g[4][8][kBatch];
-        double force[4][3][kBatch];
-        for (int alpha = 0; alpha < 4; ++alpha) {
-          for (int a = 0; a < 8; ++a)
-            for (int l = 0; l < kBatch; ++l) g[alpha][a][l] = kGamma[alpha][a];
-          if (projected_hg) {
-            // gamma_a = Gamma_a - (1/V) (sum_b x_b Gamma_b) . B_a: orthogonal to linear fields.
-            double h[3][kBatch];
-            for (int cc = 0; cc < 3; ++cc)
-              for (int l = 0; l < kBatch; ++l) {
-                double sum = 0.0;
-                for (int a = 0; a < 8; ++a) sum += w.x[cc][a][l] * kGamma[alpha][a];
-                h[cc][l] = sum * inv_vol[l];
-              }
-            for (int a = 0; a < 8; ++a)
-              for (int l = 0; l < kBatch; ++l)
-                g[alpha][a][l] -=
-                    h[0][l] * w.b[0][a][l] + h[1][l] * w.b[1][a][l] + h[2][l] * w.b[2][a][l];
-          }
-          for (int i = 0; i < 3; ++i) {
-            double qdot[kBatch], mean_force[kBatch];
-            for (int l = 0; l < kBatch; ++l) {
-              double sum = 0.0;
-              for (int a = 0; a < 8; ++a) sum += w.v[i][a][l] * g[alpha][a][l];
-              qdot[l] = sum;
-            }
-            double* fq = force[alpha][i];
-            if (stiffness_hg) {
-              double* stored = hgq_batch + (3 * alpha + i) * kBatch;
-              for (int l = 0; l < kBatch; ++l) {
-                const double old = stored[l];
-                fq[l] = old + coef[l] * qdot[l];
-                mean_force[l] = 0.5 * (old + fq[l]);  // trapezoidal work, as for the stress
-                stored[l] = fq[l];
-              }
-            } else {
-              for (int l = 0; l < kBatch; ++l) fq[l] = mean_force[l] = coef[l] * qdot[l];
-            }
-            for (int l = 0; l < kBatch; ++l) de_hg[l] += mean_force[l] * qdot[l] * dt;
-          }
-        }
-        for (int i = 0; i < 3; ++i)
-          for (int a = 0; a < 8; ++a)
-            for (int l = 0; l < kBatch; ++l)
-              w.f[i][a][l] -= force[0][i][l] * g[0][a][l] + force[1][i][l] * g[1][a][l] +
-                              force[2][i][l] * g[2][a][l] + force[3][i][l] * g[3][a][l];
-      }
-
-      // --- store state (whole batch, contiguous), then per element: forces and stable step --
-      const uint8_t* alive = &blk.active[first];
-      for (int k = 0; k < 6; ++k)
-        for (int l = 0; l < kBatch; ++l) sig_batch[k * kBatch + l] = alive[l] ? w.s[k][l] : 0.0;
-      if constexpr (Law::kPlastic)
-        for (int l = 0; l < kBatch; ++l)
-          blk.eps_p[first + l] = alive[l] ? w.eps_p[l] : blk.eps_p[first + l];
-      if constexpr (Law::kKinematic)
-        for (int k = 0; k < 6; ++k)
-          for (int l = 0; l < kBatch; ++l) alpha_batch[k * kBatch + l] = w.alpha[k][l];
-      for (int l = 0; l < kBatch; ++l) {
-        blk.vol[first + l] = vol[l];
-        blk.e_int[first + l] += alive[l] ? de_int[l] : 0.0;
-        blk.e_hg[first + l] += alive[l] ? de_hg[l] : 0.0;
-      }
-      for (int l = 0; l < n; ++l) {
-        const std::size_t e = first + static_cast<std::size_t>(l);
-        double* slot = slots + 3 * (blk.slot_offset + 8 * e);
-        if (!blk.active[e]) {
-          std::fill(slot, slot + 24, 0.0);
-          continue;
-        }
-        detail::finishElement(blk, e, l, w.f, vol[l], w.failed[l] != 0, len[l], c_dt[l], trace_d[l],
-                              bv, slot, st);
-      }
+      if (p.qm > 0.0) hourglassForces(p, blk, first, w, sp, g, de_hg);
+      storeSolidBatch<Law>(blk, first, n, sig_batch, alpha_batch, w, sp, g, de_int, de_hg, bv,
+                           slots, status[ib]);
     }
   }
 

@@ -66,11 +66,198 @@ void gradientsAt(int q, const NodalBatch& x, NodalBatch& grad, LaneArray& det) {
   }
 }
 
+// Sums over the eight Gauss points of one batch: the internal energy, any failed point, the
+// element-level mean stress and plastic strain.
+struct FullPointSums {
+  LaneArray de_int, eps_mean;
+  uint8_t any_failed[kBatch] = {};
+  double sig_mean[6][kBatch] = {};
+};
+
+// The current geometry: volume, characteristic length, wave speed for the step, bulk viscosity.
+struct FullGeometry {
+  LaneArray vol, len, c_dt, qbv;
+};
+
+// The mid-step geometry x - dt/2 v and the element mean dilatation rate from its exact volume
+// gradient.
+inline void meanDilatation(double dt, BatchScratch& w, LaneArray& vol_mid, LaneArray& trace_mean) {
+  for (int c = 0; c < 3; ++c)
+    for (int a = 0; a < 8; ++a)
+      for (int l = 0; l < kBatch; ++l) w.xm[c][a][l] = w.x[c][a][l] - 0.5 * dt * w.v[c][a][l];
+  volumeGradient(w.xm, w.b);
+  detail::volumeOf(w.xm, w.b, vol_mid);
+  for (int l = 0; l < kBatch; ++l) {
+    double s = 0.0;
+    for (int c = 0; c < 3; ++c)
+      for (int a = 0; a < 8; ++a) s += w.v[c][a][l] * w.b[c][a][l];
+    trace_mean[l] = s / vol_mid[l];
+  }
+}
+
+// The Jaumann rotation of one point's stress (and back stress) and its B-bar strain increment:
+// the point's own deviatoric rate, the element's mean dilatation.
+template <class Law>
+inline void pointRates(double dt, const NodalBatch& grad, const LaneArray& trace_mean,
+                       BatchScratch& w) {
+  for (int l = 0; l < kBatch; ++l) {
+    double L[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        double s = 0.0;
+        for (int a = 0; a < 8; ++a) s += w.v[i][a][l] * grad[j][a][l];
+        L[i][j] = s;
+      }
+    const double wxy = 0.5 * (L[0][1] - L[1][0]) * dt;
+    const double wyz = 0.5 * (L[1][2] - L[2][1]) * dt;
+    const double wzx = 0.5 * (L[2][0] - L[0][2]) * dt;
+    detail::rotateJaumann(w.s, l, wxy, wyz, wzx);
+    if constexpr (Law::kKinematic) detail::rotateJaumann(w.alpha, l, wxy, wyz, wzx);
+    const double shift = (trace_mean[l] - (L[0][0] + L[1][1] + L[2][2])) / 3.0;
+    w.de[0][l] = (L[0][0] + shift) * dt;
+    w.de[1][l] = (L[1][1] + shift) * dt;
+    w.de[2][l] = (L[2][2] + shift) * dt;
+    w.de[3][l] = 0.5 * (L[0][1] + L[1][0]) * dt;
+    w.de[4][l] = 0.5 * (L[1][2] + L[2][1]) * dt;
+    w.de[5][l] = 0.5 * (L[2][0] + L[0][2]) * dt;
+  }
+}
+
+// Stress update at each Gauss point (loaded from and stored to the point records), summed
+// into the element-level view.
+template <class Law>
+inline void gaussPointStresses(const Law& law, domain::SolidBlock& blk, std::size_t first,
+                               double dt, const LaneArray& trace_mean, BatchScratch& w,
+                               NodalBatch& grad, FullPointSums& sums) {
+  const std::size_t padded = blk.paddedSize();
+  for (int l = 0; l < kBatch; ++l) sums.de_int[l] = sums.eps_mean[l] = 0.0;
+  for (int q = 0; q < 8; ++q) {
+    LaneArray det;
+    gradientsAt(q, w.xm, grad, det);
+    const std::size_t at = static_cast<std::size_t>(q) * padded + first;
+    for (int k = 0; k < 6; ++k)
+      for (int l = 0; l < kBatch; ++l) w.s[k][l] = blk.sig_ip[k][at + l];
+    if constexpr (Law::kPlastic)
+      for (int l = 0; l < kBatch; ++l) w.eps_p[l] = blk.eps_p_ip[at + l];
+    if constexpr (Law::kKinematic)
+      for (int k = 0; k < 6; ++k)
+        for (int l = 0; l < kBatch; ++l) w.alpha[k][l] = blk.alpha_ip[k][at + l];
+    pointRates<Law>(dt, grad, trace_mean, w);
+    detail::updateMaterial(law, w, dt);
+    for (int l = 0; l < kBatch; ++l) {
+      sums.de_int[l] += detail::stressWork(w, l) * det[l];  // unit Gauss weights
+      sums.any_failed[l] |= w.failed[l];
+    }
+    for (int k = 0; k < 6; ++k)
+      for (int l = 0; l < kBatch; ++l) {
+        blk.sig_ip[k][at + l] = w.s[k][l];
+        sums.sig_mean[k][l] += 0.125 * w.s[k][l];
+      }
+    if constexpr (Law::kPlastic)
+      for (int l = 0; l < kBatch; ++l) {
+        blk.eps_p_ip[at + l] = w.eps_p[l];
+        sums.eps_mean[l] += 0.125 * w.eps_p[l];
+      }
+    if constexpr (Law::kKinematic)
+      for (int k = 0; k < 6; ++k)
+        for (int l = 0; l < kBatch; ++l) blk.alpha_ip[k][at + l] = w.alpha[k][l];
+  }
+}
+
+// Geometry at x(n): volume, exact volume gradient, characteristic length, bulk viscosity (its
+// work taken from de_int).
+inline void fullGeometry(const domain::SolidBlock& blk, std::size_t first, double lam2mu, double dt,
+                         const BulkViscosity& bv, const LaneArray& trace_mean,
+                         const LaneArray& vol_mid, BatchScratch& w, FullGeometry& g,
+                         LaneArray& de_int) {
+  volumeGradient(w.x, w.b);
+  LaneArray area, rho, c;
+  detail::volumeOf(w.x, w.b, g.vol);
+  detail::maxFaceArea(w.x, area);
+  for (int l = 0; l < kBatch; ++l) {
+    const std::size_t e = first + static_cast<std::size_t>(l);
+    const double v_safe = g.vol[l] > 0.0 ? g.vol[l] : 1.0;
+    rho[l] = blk.rho0 * blk.vol0[e] / v_safe;
+    c[l] = std::sqrt(lam2mu / rho[l]);
+    g.c_dt[l] = blk.mass_scale.empty() ? c[l] : c[l] / std::sqrt(blk.mass_scale[e]);
+    g.len[l] = v_safe / area[l];
+    g.qbv[l] =
+        trace_mean[l] < 0.0
+            ? rho[l] * g.len[l] *
+                  (bv.q1 * g.len[l] * trace_mean[l] * trace_mean[l] - bv.q2 * c[l] * trace_mean[l])
+            : 0.0;
+    de_int[l] -= g.qbv[l] * trace_mean[l] * dt * vol_mid[l];
+  }
+}
+
+// Forces: deviatoric stress at each point on its own gradients; the mean pressure (plus bulk
+// viscosity) on the exact volume gradient, which the Gauss sum of det(J) grad N reproduces
+// exactly.
+inline void fullForces(const domain::SolidBlock& blk, std::size_t first, const FullGeometry& g,
+                       BatchScratch& w, NodalBatch& grad) {
+  const std::size_t padded = blk.paddedSize();
+  for (int c3 = 0; c3 < 3; ++c3)
+    for (int a = 0; a < 8; ++a)
+      for (int l = 0; l < kBatch; ++l) w.f[c3][a][l] = 0.0;
+  LaneArray pbar;
+  for (int l = 0; l < kBatch; ++l) pbar[l] = 0.0;
+  for (int q = 0; q < 8; ++q) {
+    LaneArray det;
+    gradientsAt(q, w.x, grad, det);
+    const std::size_t at = static_cast<std::size_t>(q) * padded + first;
+    for (int l = 0; l < kBatch; ++l) {
+      const double s0 = blk.sig_ip[0][at + l], s1 = blk.sig_ip[1][at + l],
+                   s2 = blk.sig_ip[2][at + l];
+      const double mean = (s0 + s1 + s2) / 3.0;
+      pbar[l] += mean * det[l];
+      const double dxx = (s0 - mean) * det[l], dyy = (s1 - mean) * det[l],
+                   dzz = (s2 - mean) * det[l];
+      const double sxy = blk.sig_ip[3][at + l] * det[l], syz = blk.sig_ip[4][at + l] * det[l],
+                   szx = blk.sig_ip[5][at + l] * det[l];
+      for (int a = 0; a < 8; ++a) {
+        const double gx = grad[0][a][l], gy = grad[1][a][l], gz = grad[2][a][l];
+        w.f[0][a][l] -= dxx * gx + sxy * gy + szx * gz;
+        w.f[1][a][l] -= sxy * gx + dyy * gy + syz * gz;
+        w.f[2][a][l] -= szx * gx + syz * gy + dzz * gz;
+      }
+    }
+  }
+  for (int l = 0; l < kBatch; ++l) {
+    // pbar holds the volume integral of the mean normal stress; per unit volume:
+    const double mean_stress = pbar[l] / (g.vol[l] != 0.0 ? g.vol[l] : 1.0) - g.qbv[l];
+    for (int a = 0; a < 8; ++a)
+      for (int i = 0; i < 3; ++i) w.f[i][a][l] -= mean_stress * w.b[i][a][l];
+  }
+}
+
+// Stores the element-level view (mean stress, mean plastic strain) for output and sums, then
+// the slots, erosion and stable step.
+template <class Law>
+inline void storeFullBatch(domain::SolidBlock& blk, std::size_t first, int n,
+                           const BulkViscosity& bv, const LaneArray& trace_mean,
+                           const FullPointSums& sums, const FullGeometry& g, const BatchScratch& w,
+                           double* slots, BlockStatus& st) {
+  for (int l = 0; l < n; ++l) {
+    const std::size_t e = first + static_cast<std::size_t>(l);
+    double* slot = slots + 3 * (blk.slot_offset + 8 * e);
+    if (!blk.active[e]) {
+      std::fill(slot, slot + 24, 0.0);
+      continue;
+    }
+    for (int k = 0; k < 6; ++k) blk.sigAt(k, e) = sums.sig_mean[k][l];
+    if constexpr (Law::kPlastic) blk.eps_p[e] = sums.eps_mean[l];
+    blk.vol[e] = g.vol[l];
+    blk.e_int[e] += sums.de_int[l];
+    // Eroded when any Gauss point reaches the failure strain (a documented choice).
+    detail::finishElement(blk, e, l, w.f, g.vol[l], sums.any_failed[l] != 0, g.len[l], g.c_dt[l],
+                          trace_mean[l], bv, slot, st);
+  }
+}
+
 template <class Law>
 BlockStatus fullBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVector& x,
                             const domain::NodeVector& v, double dt, const BulkViscosity& bv,
                             double* slots, std::size_t range_first, std::size_t range_last) {
-  const std::size_t padded = blk.paddedSize();
   const std::size_t nbatch =
       range_last > range_first ? (range_last - range_first + kBatch - 1) / kBatch : 0;
   const double lam2mu = law.moduli.bulk + 4.0 / 3.0 * law.moduli.shear;
@@ -84,153 +271,16 @@ BlockStatus fullBlockForces(const Law& law, domain::SolidBlock& blk, const domai
     for (std::size_t ib = 0; ib < nbatch; ++ib) {
       const std::size_t first = range_first + ib * kBatch;
       const int n = static_cast<int>(std::min<std::size_t>(kBatch, range_last - first));
-      BlockStatus& st = status[ib];
       detail::gatherNodal(blk, first, n, x, w.x);
       detail::gatherNodal(blk, first, n, v, w.v);
-      for (int c = 0; c < 3; ++c)
-        for (int a = 0; a < 8; ++a)
-          for (int l = 0; l < kBatch; ++l) w.xm[c][a][l] = w.x[c][a][l] - 0.5 * dt * w.v[c][a][l];
-
-      // Element mean dilatation rate from the exact volume gradient at mid-step.
-      volumeGradient(w.xm, w.b);
       LaneArray vol_mid, trace_mean;
-      detail::volumeOf(w.xm, w.b, vol_mid);
-      for (int l = 0; l < kBatch; ++l) {
-        double s = 0.0;
-        for (int c = 0; c < 3; ++c)
-          for (int a = 0; a < 8; ++a) s += w.v[c][a][l] * w.b[c][a][l];
-        trace_mean[l] = s / vol_mid[l];
-      }
-
-      // Stress update at each Gauss point.
-      LaneArray de_int, eps_mean;
-      uint8_t any_failed[kBatch] = {};
-      double sig_mean[6][kBatch] = {};
-      for (int l = 0; l < kBatch; ++l) de_int[l] = eps_mean[l] = 0.0;
-      for (int q = 0; q < 8; ++q) {
-        LaneArray det;
-        gradientsAt(q, w.xm, grad, det);
-        const std::size_t at = static_cast<std::size_t>(q) * padded + first;
-        for (int k = 0; k < 6; ++k)
-          for (int l = 0; l < kBatch; ++l) w.s[k][l] = blk.sig_ip[k][at + l];
-        if constexpr (Law::kPlastic)
-          for (int l = 0; l < kBatch; ++l) w.eps_p[l] = blk.eps_p_ip[at + l];
-        if constexpr (Law::kKinematic)
-          for (int k = 0; k < 6; ++k)
-            for (int l = 0; l < kBatch; ++l) w.alpha[k][l] = blk.alpha_ip[k][at + l];
-        for (int l = 0; l < kBatch; ++l) {
-          double L[3][3];
-          for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) {
-              double s = 0.0;
-              for (int a = 0; a < 8; ++a) s += w.v[i][a][l] * grad[j][a][l];
-              L[i][j] = s;
-            }
-          const double wxy = 0.5 * (L[0][1] - L[1][0]) * dt;
-          const double wyz = 0.5 * (L[1][2] - L[2][1]) * dt;
-          const double wzx = 0.5 * (L[2][0] - L[0][2]) * dt;
-          detail::rotateJaumann(w.s, l, wxy, wyz, wzx);
-          if constexpr (Law::kKinematic) detail::rotateJaumann(w.alpha, l, wxy, wyz, wzx);
-          // B-bar: the point's own deviatoric rate, the element's mean dilatation.
-          const double shift = (trace_mean[l] - (L[0][0] + L[1][1] + L[2][2])) / 3.0;
-          w.de[0][l] = (L[0][0] + shift) * dt;
-          w.de[1][l] = (L[1][1] + shift) * dt;
-          w.de[2][l] = (L[2][2] + shift) * dt;
-          w.de[3][l] = 0.5 * (L[0][1] + L[1][0]) * dt;
-          w.de[4][l] = 0.5 * (L[1][2] + L[2][1]) * dt;
-          w.de[5][l] = 0.5 * (L[2][0] + L[0][2]) * dt;
-        }
-        detail::updateMaterial(law, w, dt);
-        for (int l = 0; l < kBatch; ++l) {
-          de_int[l] += detail::stressWork(w, l) * det[l];  // unit Gauss weights
-          any_failed[l] |= w.failed[l];
-        }
-        for (int k = 0; k < 6; ++k)
-          for (int l = 0; l < kBatch; ++l) {
-            blk.sig_ip[k][at + l] = w.s[k][l];
-            sig_mean[k][l] += 0.125 * w.s[k][l];
-          }
-        if constexpr (Law::kPlastic)
-          for (int l = 0; l < kBatch; ++l) {
-            blk.eps_p_ip[at + l] = w.eps_p[l];
-            eps_mean[l] += 0.125 * w.eps_p[l];
-          }
-        if constexpr (Law::kKinematic)
-          for (int k = 0; k < 6; ++k)
-            for (int l = 0; l < kBatch; ++l) blk.alpha_ip[k][at + l] = w.alpha[k][l];
-      }
-
-      // Geometry at x(n): volume, exact volume gradient, characteristic length.
-      volumeGradient(w.x, w.b);
-      LaneArray vol, area, rho, c, c_dt, len, qbv;
-      detail::volumeOf(w.x, w.b, vol);
-      detail::maxFaceArea(w.x, area);
-      for (int l = 0; l < kBatch; ++l) {
-        const std::size_t e = first + static_cast<std::size_t>(l);
-        const double v_safe = vol[l] > 0.0 ? vol[l] : 1.0;
-        rho[l] = blk.rho0 * blk.vol0[e] / v_safe;
-        c[l] = std::sqrt(lam2mu / rho[l]);
-        c_dt[l] = blk.mass_scale.empty() ? c[l] : c[l] / std::sqrt(blk.mass_scale[e]);
-        len[l] = v_safe / area[l];
-        qbv[l] = trace_mean[l] < 0.0 ? rho[l] * len[l] *
-                                           (bv.q1 * len[l] * trace_mean[l] * trace_mean[l] -
-                                            bv.q2 * c[l] * trace_mean[l])
-                                     : 0.0;
-        de_int[l] -= qbv[l] * trace_mean[l] * dt * vol_mid[l];
-      }
-
-      // Forces: deviatoric stress at each point on its own gradients; the mean pressure
-      // (plus bulk viscosity) on the exact volume gradient, which the Gauss sum of det(J)
-      // grad N reproduces exactly.
-      for (int c3 = 0; c3 < 3; ++c3)
-        for (int a = 0; a < 8; ++a)
-          for (int l = 0; l < kBatch; ++l) w.f[c3][a][l] = 0.0;
-      LaneArray pbar;
-      for (int l = 0; l < kBatch; ++l) pbar[l] = 0.0;
-      for (int q = 0; q < 8; ++q) {
-        LaneArray det;
-        gradientsAt(q, w.x, grad, det);
-        const std::size_t at = static_cast<std::size_t>(q) * padded + first;
-        for (int l = 0; l < kBatch; ++l) {
-          const double s0 = blk.sig_ip[0][at + l], s1 = blk.sig_ip[1][at + l],
-                       s2 = blk.sig_ip[2][at + l];
-          const double mean = (s0 + s1 + s2) / 3.0;
-          pbar[l] += mean * det[l];
-          const double dxx = (s0 - mean) * det[l], dyy = (s1 - mean) * det[l],
-                       dzz = (s2 - mean) * det[l];
-          const double sxy = blk.sig_ip[3][at + l] * det[l], syz = blk.sig_ip[4][at + l] * det[l],
-                       szx = blk.sig_ip[5][at + l] * det[l];
-          for (int a = 0; a < 8; ++a) {
-            const double gx = grad[0][a][l], gy = grad[1][a][l], gz = grad[2][a][l];
-            w.f[0][a][l] -= dxx * gx + sxy * gy + szx * gz;
-            w.f[1][a][l] -= sxy * gx + dyy * gy + syz * gz;
-            w.f[2][a][l] -= szx * gx + syz * gy + dzz * gz;
-          }
-        }
-      }
-      for (int l = 0; l < kBatch; ++l) {
-        // pbar holds the volume integral of the mean normal stress; per unit volume:
-        const double mean_stress = pbar[l] / (vol[l] != 0.0 ? vol[l] : 1.0) - qbv[l];
-        for (int a = 0; a < 8; ++a)
-          for (int i = 0; i < 3; ++i) w.f[i][a][l] -= mean_stress * w.b[i][a][l];
-      }
-
-      // Store the element-level view (mean stress, mean plastic strain) for output and sums.
-      for (int l = 0; l < n; ++l) {
-        const std::size_t e = first + static_cast<std::size_t>(l);
-        double* slot = slots + 3 * (blk.slot_offset + 8 * e);
-        if (!blk.active[e]) {
-          std::fill(slot, slot + 24, 0.0);
-          continue;
-        }
-        for (int k = 0; k < 6; ++k) blk.sigAt(k, e) = sig_mean[k][l];
-        if constexpr (Law::kPlastic) blk.eps_p[e] = eps_mean[l];
-        blk.vol[e] = vol[l];
-        blk.e_int[e] += de_int[l];
-        // Eroded when any Gauss point reaches the failure strain (a documented choice).
-        detail::finishElement(blk, e, l, w.f, vol[l], any_failed[l] != 0, len[l], c_dt[l],
-                              trace_mean[l], bv, slot, st);
-      }
+      meanDilatation(dt, w, vol_mid, trace_mean);
+      FullPointSums sums;
+      gaussPointStresses(law, blk, first, dt, trace_mean, w, grad, sums);
+      FullGeometry g;
+      fullGeometry(blk, first, lam2mu, dt, bv, trace_mean, vol_mid, w, g, sums.de_int);
+      fullForces(blk, first, g, w, grad);
+      storeFullBatch<Law>(blk, first, n, bv, trace_mean, sums, g, w, slots, status[ib]);
     }
   }
   return detail::mergeStatus(status);

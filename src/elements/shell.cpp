@@ -54,43 +54,28 @@
 // Drilling rotations. A node carries three rotation rates and an element uses only their
 // in-plane components (tx, ty), so the component along the element normal (the drilling
 // rotation) has neither stiffness nor load where the elements at a node are coplanar. Where two
-// neighbours meet at an angle s (any bent or curved mesh), a rotation rate w of the node about
-// their mean normal turns each of them about its own in-plane axis at +-w s / 2: with the
-// rotation rates of the other corners this makes patterns that strain neither element (no
-// curvature, no transverse shear) and move only the bending hourglass modes (gamma.tx,
-// gamma.ty). The corner moments about the two elements' in-plane axes then have a component
-// of order s along the mean normal wherever they differ, which one-point elements do at their
-// corners (their moments are constant per element; in the strip below, bent about its width
-// with nu = 0.3 and clamped, M_yy and Q_y alternate in sign from element to element, Q_y at
-// 40% of Q_x, from the first millimetres of deflection). A stiffness hourglass form (IHQ 4, 5)
-// resists those patterns, with a stiffness of order s^2; the viscous forms (IHQ 1-3) cannot
-// hold a steady moment, so the node spins up about the normal under a steady torque, and the
-// bending hourglass modes it drives take the element's moments out (the structure unloads).
-// Measured on the 100 x 10 x 2 mm strip of tests/verification/test_structures.cpp, 20 x 2
-// elements, tip driven down 17 mm in 30 ms, IHQ 1: elastic (nu = 0.3), the edge nodes spun at
-// 3.8 rad/ms about the normal (in-plane rates below 0.06), rotational kinetic energy 0.096
-// against 0.525 internal, clamp reaction 10% below the nu = 0 strip; perfectly plastic, the
-// reaction fell from 0.98 P_c to 0.33 P_c with hourglass energy 0.135 against 0.059 internal.
-// Neither the time step (TSSFAC 0.4) nor the hourglass coefficient (QM 1e-6 to 0.3) changed
-// it; with nu = 0 nothing spun.
+// neighbours meet at an angle s, a rotation rate w of the node about their mean normal turns
+// each of them about its own in-plane axis at +-w s / 2: patterns that strain neither element
+// and move only the bending hourglass modes (gamma.tx, gamma.ty). A stiffness hourglass form
+// (IHQ 4, 5) resists them with a stiffness of order s^2; the viscous forms (IHQ 1-3) cannot hold
+// a steady moment, so the node spins up about the normal under a steady torque and the
+// structure unloads (measured on a bent strip: docs/theory.md, "Shells").
 // The constraint (Hughes & Brezzi 1989, "On drilling degrees of freedom", CMAME 72:105-121,
 // as a penalty; the fictitious drilling stiffness of flat shell elements, Kanok-Nukulchai
 // 1979, IJNME 14:179-200) ties each corner's rotation about the normal to the membrane's
 // spin, with a resistance accumulated like the stiffness hourglass forms (in the element
 // frame, midpoint energy):
 //   r_a = w_a.e3 - (dvy/dx - dvx/dy) / 2,   m_a += k_d r_a dt,   k_d = 0.01 E t^3 / 12
-// (a hundredth of the plate's bending rigidity per corner: in the strip above the results do
-// not change between 0.001 and 0.1; it adds at most k_d / I_a = 0.04 E / (rho A) to a squared
-// rotational frequency, with the t^2 / 12 floor of the inertia, a hundredth of the step's
-// limit 4.4 E / (rho A)). The corner moments m_a act about e3, and the reaction of their sum
-// on the membrane spin gives the in-plane forces (the transpose of the rate)
+// (a hundredth of the plate's bending rigidity per corner; it adds at most
+// k_d / I_a = 0.04 E / (rho A) to a squared rotational frequency, with the t^2 / 12 floor of the
+// inertia, a hundredth of the step's limit 4.4 E / (rho A)). The corner moments m_a act about
+// e3, and the reaction of their sum on the membrane spin gives the in-plane forces (the
+// transpose of the rate)
 //   fx_a += B2_a sum(m) / 2,   fy_a -= B1_a sum(m) / 2,
 // so that the element's forces and moments stay self-equilibrated. A rigid motion has r = 0 (a
 // spin about the normal turns the nodes and the membrane alike). The constraint's work counts
-// as hourglass energy (an artificial stabilisation, like hourglass work). With it the strip
-// above, elastic, bends as the nu = 0 strip does (internal energy 0.646 against 0.525), and
-// the plastic hinge holds 1.006 P_c with IHQ 1 (1.055 with IHQ 4, 1.067 before). Triangles have
-// none (they have no hourglass modes for the drilling rotation to drive).
+// as hourglass energy (an artificial stabilisation, like hourglass work). Triangles have none
+// (they have no hourglass modes for the drilling rotation to drive).
 //
 // C0 triangle (Belytschko, Stolarski & Carpenter 1984): the same frame, membrane (constant
 // strain: the quadrilateral formulas with corners 2 and 3 on one node give the CST gradients)
@@ -333,11 +318,491 @@ bool lawIsKinematic(const materials::Law& law) {
   return std::visit([](const auto& l) { return std::decay_t<decltype(l)>::kKinematic; }, law);
 }
 
+// The constants of one block for one call, shared by the phases below.
+struct ShellParams {
+  ShellConstants mc;
+  double dt = 0, inv_c = 0;
+  int nip = 0, npts = 0, fields = 0;
+  double kappa = 0;
+  bool stiffness_hg = false;
+  double qm = 0;
+  // Hourglass scale: QM dt for the stiffness forms, QM L_s / c for the viscous ones; the
+  // stiffness forms' resistance moves by its mean over the step.
+  double hg_dt = 0, hg_visc = 0, hg_old_weight = 0, hg_new_weight = 0;
+  double bwc = 0, drill_coef = 0;
+  bool thickness_update = false, scaled_mass = false, can_fail = false;
+  double zeta[kMaxShellPoints] = {}, weight[kMaxShellPoints] = {};
+};
+
+template <class Law>
+ShellParams shellParamsOf(const Law& law, const domain::ShellBlock& blk, double dt) {
+  ShellParams p;
+  p.mc = constantsOf(blk.law, blk.rho0);
+  p.dt = dt;
+  p.inv_c = 1.0 / p.mc.wave_speed;
+  p.nip = blk.nip;
+  p.npts = p.nip * kShellBatch;
+  p.fields = blk.sigFields();
+  p.kappa = blk.shear_factor;
+  p.stiffness_hg = blk.ihq >= 4;
+  p.qm = blk.qm;
+  p.hg_dt = p.stiffness_hg ? dt : 0.0;
+  p.hg_visc = p.stiffness_hg ? 0.0 : p.inv_c;
+  p.hg_old_weight = p.stiffness_hg ? 0.5 : 0.0;
+  p.hg_new_weight = p.stiffness_hg ? 0.5 : 1.0;
+  p.bwc = blk.bwc ? 1.0 : 0.0;
+  p.drill_coef = kDrillStiffness * p.mc.E * (1.0 / 12.0);
+  p.thickness_update = blk.thickness_update;
+  p.scaled_mass = !blk.mass_scale.empty();
+  p.can_fail = failureStrainOf(law) > 0.0;
+  for (int i = 0; i < p.nip; ++i) {
+    p.zeta[i] = blk.zeta[static_cast<std::size_t>(i)];
+    p.weight[i] = blk.weight[static_cast<std::size_t>(i)];
+  }
+  return p;
+}
+
+// One batch's elements: where they are in the block and their per-lane inputs.
+struct ShellLanes {
+  std::size_t first = 0;
+  int n = 0;         // elements in the batch (the lanes beyond repeat the last)
+  Lanes tri, thick;  // tri: 1 for a triangle (corners 2 and 3 on one node), else 0
+  bool any_tri = false;
+};
+
+// Mid-step velocity strains (membrane, curvature, transverse shear), drilling and hourglass
+// rates.
+struct ShellRates {
+  Lanes dxm, dym, gxy, kx, ky, kxy, gxz, gyz, area_mid;
+  double qdot[5][kShellBatch], rdrill[4][kShellBatch];
+};
+
+// Transverse shear stresses, the step's internal energy, the new thickness and the resultants.
+struct ShellResultants {
+  Lanes tau_yz, tau_zx, de_int, t_new, ezz, nxx, nyy, nxy, mxx, myy, mxy, qx, qy;
+};
+
+// What the force phase leaves for the stores: area, hourglass energy, stable step, resistances.
+struct ShellForcesOut {
+  Lanes area, de_hg, dte;
+  double hg_new[5][kShellBatch], drill_new[4][kShellBatch];
+};
+
+// Gathers the batch's corner coordinates, velocities and rotation rates; marks triangles.
+inline void loadBatch(const domain::ShellBlock& blk, const domain::NodeVector& x,
+                      const domain::NodeVector& v, const domain::NodeVector& w, ShellScratch& s,
+                      ShellLanes& ln) {
+  constexpr int B = kShellBatch;
+  gatherCorners(blk, ln.first, ln.n, x, s.x);
+  gatherCorners(blk, ln.first, ln.n, v, s.v);
+  gatherCorners(blk, ln.first, ln.n, w, s.w);
+  for (int l = 0; l < B; ++l) {
+    const auto& c = blk.conn[laneElement(ln.first, ln.n, l)];
+    ln.tri[l] = c[2] == c[3] ? 1.0 : 0.0;
+    ln.any_tri = ln.any_tri || c[2] == c[3];
+  }
+  for (int l = 0; l < B; ++l) ln.thick[l] = blk.thick[ln.first + static_cast<std::size_t>(l)];
+}
+
+// Velocity strains and hourglass rates at the mid-step geometry.
+inline void midStepRates(const ShellParams& p, ShellScratch& s, const ShellLanes& ln,
+                         ShellRates& r) {
+  constexpr int B = kShellBatch;
+  const double dt = p.dt;
+  for (int c = 0; c < 3; ++c)
+    for (int a = 0; a < 4; ++a)
+      for (int l = 0; l < B; ++l) s.xm[c][a][l] = s.x[c][a][l] - 0.5 * dt * s.v[c][a][l];
+  for (int l = 0; l < B; ++l) {
+    const LaneFrame f = frameAt(s.xm, l);
+    double vx[4], vy[4], vz[4], tx[4], ty[4], tz[4];
+    onAxis(f, 0, s.v, l, vx);
+    onAxis(f, 1, s.v, l, vy);
+    onAxis(f, 2, s.v, l, vz);
+    onAxis(f, 0, s.w, l, tx);
+    onAxis(f, 1, s.w, l, ty);
+    onAxis(f, 2, s.w, l, tz);
+    double sxx = 0, syy = 0, sxy = 0, cx = 0, cy = 0, cxy = 0, sz1 = 0, sz2 = 0, stx = 0, sty = 0,
+           spin = 0;
+    for (int a = 0; a < 4; ++a) {
+      sxx += f.b1[a] * vx[a];
+      syy += f.b2[a] * vy[a];
+      sxy += f.b2[a] * vx[a] + f.b1[a] * vy[a];
+      cx += f.b1[a] * ty[a];
+      cy -= f.b2[a] * tx[a];
+      cxy += f.b2[a] * ty[a] - f.b1[a] * tx[a];
+      sz1 += f.b1[a] * vz[a];
+      sz2 += f.b2[a] * vz[a];
+      stx += tx[a];
+      sty += ty[a];
+      spin += f.b1[a] * vy[a] - f.b2[a] * vx[a];
+    }
+    // Drilling rates: each corner's rotation rate about the normal less the membrane's
+    // spin (dvy/dx - dvx/dy) / 2.
+    for (int a = 0; a < 4; ++a) r.rdrill[a][l] = tz[a] - 0.5 * spin;
+    r.dxm[l] = sxx;
+    r.dym[l] = syy;
+    r.gxy[l] = sxy;
+    r.kx[l] = cx;
+    r.ky[l] = cy;
+    r.kxy[l] = cxy;
+    r.gxz[l] = sz1 + 0.25 * sty;
+    r.gyz[l] = sz2 - 0.25 * stx;
+    r.area_mid[l] = f.area;
+    // Hourglass rates of the five modes: membrane x, y (BWC: less the in-plane motion of
+    // the warped corners in a rigid rotation), bending x, y, transverse.
+    double g[4], gz;
+    hourglassOf(f, s.xm, l, g, gz);
+    gz *= p.bwc;
+    double r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
+    for (int a = 0; a < 4; ++a) {
+      r0 += g[a] * vx[a];
+      r1 += g[a] * vy[a];
+      r2 += g[a] * tx[a];
+      r3 += g[a] * ty[a];
+      r4 += g[a] * vz[a];
+    }
+    r.qdot[0][l] = r0 + gz * sz1;
+    r.qdot[1][l] = r1 + gz * sz2;
+    r.qdot[2][l] = r2;
+    r.qdot[3][l] = r3;
+    r.qdot[4][l] = r4;
+  }
+  if (ln.any_tri) {
+    for (int l = 0; l < B; ++l) {
+      if (ln.tri[l] == 0.0) continue;
+      const LaneFrame f = frameAt(s.xm, l);
+      double vz[4], tx[4], ty[4];
+      onAxis(f, 2, s.v, l, vz);
+      onAxis(f, 0, s.w, l, tx);
+      onAxis(f, 1, s.w, l, ty);
+      triangleShearRate(f, vz, tx, ty, r.gxz[l], r.gyz[l]);
+    }
+  }
+}
+
+// The plane-stress update at every point through the thickness. The stress work is the
+// midpoint rule, (s_old + s) / 2 : de summed over the points: its s_old half is taken here into
+// work, as the stresses are loaded. A failed point carries no stress; failed_points counts them.
+template <class Law>
+inline void pointStresses(const Law& law, const ShellParams& p, ShellScratch& s,
+                          const double* sig_batch, const double* ep_batch,
+                          const double* alpha_batch, const ShellLanes& ln, const ShellRates& r,
+                          Lanes& work, Lanes& failed_points) {
+  constexpr int B = kShellBatch;
+  const int nip = p.nip, npts = p.npts;
+  const double dt = p.dt;
+  for (int l = 0; l < B; ++l) work[l] = 0.0;
+  for (int ip = 0; ip < nip; ++ip) {
+    const double zp = 0.5 * p.zeta[ip], wp = 0.5 * p.weight[ip];
+    const double* rec = sig_batch + 3 * ip * B;
+    for (int l = 0; l < B; ++l) {
+      const double z = zp * ln.thick[l];
+      const int i = ip * B + l;
+      const double d0 = (r.dxm[l] + z * r.kx[l]) * dt, d1 = (r.dym[l] + z * r.ky[l]) * dt,
+                   d2 = 0.5 * (r.gxy[l] + z * r.kxy[l]) * dt;
+      const double s0 = rec[l], s1 = rec[B + l], s2 = rec[2 * B + l];
+      s.de[0][i] = d0;
+      s.de[1][i] = d1;
+      s.de[2][i] = d2;
+      s.s[0][i] = s0;
+      s.s[1][i] = s1;
+      s.s[2][i] = s2;
+      work[l] += wp * (s0 * d0 + s1 * d1 + 2.0 * s2 * d2);
+    }
+  }
+  if constexpr (Law::kPlastic)
+    for (int i = 0; i < npts; ++i) s.ep[i] = ep_batch[i];
+  if constexpr (Law::kKinematic)
+    for (int k = 0; k < 3; ++k)
+      for (int ip = 0; ip < nip; ++ip)
+        for (int l = 0; l < B; ++l) s.alpha[k][ip * B + l] = alpha_batch[(3 * ip + k) * B + l];
+  {
+    materials::PlaneStressPoints pts;
+    pts.n = npts;
+    pts.dt = dt;
+    for (int k = 0; k < 3; ++k) {
+      pts.s[k] = s.s[k];
+      pts.de[k] = s.de[k];
+      pts.alpha[k] = Law::kKinematic ? s.alpha[k] : nullptr;
+    }
+    pts.de_zz = s.dzz;
+    pts.eps_p = Law::kPlastic ? s.ep : nullptr;
+    pts.failed = p.can_fail ? s.failed : nullptr;
+    materials::updatePlaneStress(law, pts);
+  }
+  for (int l = 0; l < B; ++l) failed_points[l] = 0.0;
+  if (p.can_fail) {
+    for (int i = 0; i < npts; ++i) {
+      const bool f = s.failed[i] != 0;
+      for (int k = 0; k < 3; ++k) s.s[k][i] = f ? 0.0 : s.s[k][i];
+    }
+    for (int ip = 0; ip < nip; ++ip)
+      for (int l = 0; l < B; ++l) failed_points[l] += s.failed[ip * B + l] != 0 ? 1.0 : 0.0;
+  }
+}
+
+// Transverse shear (elastic), the step's internal energy (work holds the points' s_old half),
+// the thickness update and the resultants N, M, Q.
+inline void resultantsOf(const ShellParams& p, const ShellScratch& s, const double* sig_batch,
+                         const ShellLanes& ln, const ShellRates& r, Lanes& work,
+                         ShellResultants& q) {
+  constexpr int B = kShellBatch;
+  const int nip = p.nip;
+  const double dt = p.dt, kappa = p.kappa;
+  {
+    const double* rec_yz = sig_batch + (3 * nip) * B;
+    const double* rec_zx = sig_batch + (3 * nip + 1) * B;
+    for (int l = 0; l < B; ++l) {
+      const double old_yz = rec_yz[l], old_zx = rec_zx[l];
+      q.tau_yz[l] = old_yz + p.mc.G * r.gyz[l] * dt;
+      q.tau_zx[l] = old_zx + p.mc.G * r.gxz[l] * dt;
+      q.de_int[l] = kappa * 0.5 *
+                    ((old_yz + q.tau_yz[l]) * r.gyz[l] + (old_zx + q.tau_zx[l]) * r.gxz[l]) * dt;
+      q.ezz[l] = q.nxx[l] = q.nyy[l] = q.nxy[l] = q.mxx[l] = q.myy[l] = q.mxy[l] = 0.0;
+    }
+  }
+  for (int ip = 0; ip < nip; ++ip) {
+    const double wp = p.weight[ip], wz = p.weight[ip] * p.zeta[ip], hw = 0.5 * p.weight[ip];
+    for (int l = 0; l < B; ++l) {
+      const int i = ip * B + l;
+      work[l] +=
+          hw * (s.s[0][i] * s.de[0][i] + s.s[1][i] * s.de[1][i] + 2.0 * s.s[2][i] * s.de[2][i]);
+      q.ezz[l] += wp * s.dzz[i];
+      q.nxx[l] += wp * s.s[0][i];
+      q.nyy[l] += wp * s.s[1][i];
+      q.nxy[l] += wp * s.s[2][i];
+      q.mxx[l] += wz * s.s[0][i];
+      q.myy[l] += wz * s.s[1][i];
+      q.mxy[l] += wz * s.s[2][i];
+    }
+  }
+  for (int l = 0; l < B; ++l) {
+    q.de_int[l] = (q.de_int[l] + work[l]) * ln.thick[l] * r.area_mid[l];
+    const double t = p.thickness_update ? ln.thick[l] * (1.0 + q.ezz[l]) : ln.thick[l];
+    q.t_new[l] = t;
+    const double half_t2 = 0.5 * t * t;
+    q.nxx[l] *= t;
+    q.nyy[l] *= t;
+    q.nxy[l] *= t;
+    q.mxx[l] *= half_t2;
+    q.myy[l] *= half_t2;
+    q.mxy[l] *= half_t2;
+    q.qx[l] = kappa * t * q.tau_zx[l];
+    q.qy[l] = kappa * t * q.tau_yz[l];
+  }
+}
+
+// Forces, moments and stable step at the current geometry: resultants, hourglass and drilling
+// resistances to corner forces and moments (s.fg, s.mg, global frame, the forces on the nodes).
+inline void cornerForces(const ShellParams& p, const domain::ShellBlock& blk, ShellScratch& s,
+                         const ShellLanes& ln, const double* hg_old, const ShellRates& r,
+                         const ShellResultants& q, ShellForcesOut& o) {
+  constexpr int B = kShellBatch;
+  const double dt = p.dt;
+  Lanes inv_c_dt;
+  for (int l = 0; l < B; ++l) {
+    // Mass scaling slows the element's waves: c / sqrt(scale) enters the stable step only.
+    inv_c_dt[l] = p.scaled_mass
+                      ? std::sqrt(blk.mass_scale[laneElement(ln.first, ln.n, l)]) * p.inv_c
+                      : p.inv_c;
+  }
+  // The stored resistances copied to the stack: the loop below then has no pointer that
+  // might alias its stores, and GCC vectorises it.
+  double hg_prev[5][B], drill_prev[4][B];
+  for (int mode = 0; mode < 5; ++mode)
+    for (int l = 0; l < B; ++l) hg_prev[mode][l] = hg_old[mode * B + l];
+  {
+    const double* drill_old = blk.drill.data() + ln.first * 4;
+    for (int a = 0; a < 4; ++a)
+      for (int l = 0; l < B; ++l) drill_prev[a][l] = drill_old[a * B + l];
+  }
+  for (int l = 0; l < B; ++l) {
+    const LaneFrame f = frameAt(s.x, l);
+    const double A = f.area;
+    double m2 = 0.0;
+    for (int a = 0; a < 4; ++a) {
+      const int b = (a + 1) % 4;
+      const double dx = s.x[0][b][l] - s.x[0][a][l], dy = s.x[1][b][l] - s.x[1][a][l],
+                   dz = s.x[2][b][l] - s.x[2][a][l];
+      m2 = std::max(m2, dx * dx + dy * dy + dz * dz);
+    }
+    const double ls = A / std::sqrt(m2);  // A / longest side
+    o.area[l] = A;
+    o.dte[l] = (1.0 + ln.tri[l]) * ls * inv_c_dt[l];
+    // Resultants to corner forces (the triangle's transverse shear is added below).
+    const double quad = 1.0 - ln.tri[l];
+    const double sqx = quad * q.qx[l], sqy = quad * q.qy[l];
+    double fx[4], fy[4], fz[4], mx[4], my[4];
+    for (int a = 0; a < 4; ++a) {
+      const double b1 = f.b1[a], b2 = f.b2[a];
+      fx[a] = A * (b1 * q.nxx[l] + b2 * q.nxy[l]);
+      fy[a] = A * (b2 * q.nyy[l] + b1 * q.nxy[l]);
+      fz[a] = A * (b1 * sqx + b2 * sqy);
+      mx[a] = A * (-b2 * q.myy[l] - b1 * q.mxy[l] - 0.25 * sqy);
+      my[a] = A * (b1 * q.mxx[l] + b2 * q.mxy[l] + 0.25 * sqx);
+    }
+    // Hourglass resistances (none for triangles).
+    double g[4], gz, bb = 0.0;
+    hourglassOf(f, s.x, l, g, gz);
+    gz *= p.bwc;
+    for (int a = 0; a < 4; ++a) bb += f.b1[a] * f.b1[a] + f.b2[a] * f.b2[a];
+    const double t = q.t_new[l];
+    const double E = p.mc.E;
+    const double scale = quad * p.qm * (p.hg_dt + p.hg_visc * ls);
+    const double coef[5] = {scale * E * t * A * bb * 0.125, scale * E * t * A * bb * 0.125,
+                            scale * E * t * t * t * A * bb * (1.0 / 192.0),
+                            scale * E * t * t * t * A * bb * (1.0 / 192.0),
+                            scale * p.kappa * p.mc.G * t * t * t * bb * (1.0 / 12.0)};
+    double hf[5], e_hg = 0.0;
+    for (int mode = 0; mode < 5; ++mode) {
+      const double old = hg_prev[mode][l];
+      hf[mode] = old + coef[mode] * r.qdot[mode][l];
+      o.hg_new[mode][l] = hf[mode];
+      e_hg += (p.hg_old_weight * old + p.hg_new_weight * hf[mode]) * r.qdot[mode][l] * dt;
+    }
+    // Drilling moments (none for triangles), accumulated like the stiffness hourglass
+    // resistances; the membrane spin's share goes to the in-plane forces.
+    const double kd = quad * p.drill_coef * t * t * t;
+    double mz[4], drill_sum = 0.0;
+    for (int a = 0; a < 4; ++a) {
+      const double old = drill_prev[a][l];
+      mz[a] = old + kd * r.rdrill[a][l] * dt;
+      o.drill_new[a][l] = mz[a];
+      drill_sum += mz[a];
+      e_hg += 0.5 * (old + mz[a]) * r.rdrill[a][l] * dt;
+    }
+    o.de_hg[l] = e_hg;
+    for (int a = 0; a < 4; ++a) {
+      fx[a] += hf[0] * g[a] + 0.5 * f.b2[a] * drill_sum;
+      fy[a] += hf[1] * g[a] - 0.5 * f.b1[a] * drill_sum;
+      fz[a] += hf[4] * g[a] + gz * (hf[0] * f.b1[a] + hf[1] * f.b2[a]);
+      mx[a] += hf[2] * g[a];
+      my[a] += hf[3] * g[a];
+    }
+    // To the global frame, as the forces on the nodes (minus the internal forces).
+    for (int c = 0; c < 3; ++c)
+      for (int a = 0; a < 4; ++a) {
+        s.fg[c][a][l] = -(f.e[0][c] * fx[a] + f.e[1][c] * fy[a] + f.e[2][c] * fz[a]);
+        s.mg[c][a][l] = -(f.e[0][c] * mx[a] + f.e[1][c] * my[a] + f.e[2][c] * mz[a]);
+      }
+  }
+}
+
+// The triangles' edge-based transverse shear forces, added to s.fg, s.mg; corner 3's share
+// moved to corner 2 (one node).
+inline void triangleForces(ShellScratch& s, const ShellLanes& ln, const ShellResultants& q) {
+  for (int l = 0; l < kShellBatch; ++l) {
+    if (ln.tri[l] == 0.0) continue;
+    const LaneFrame f = frameAt(s.x, l);
+    double fz[4], mx[4], my[4];
+    triangleShearForces(f, q.qx[l], q.qy[l], fz, mx, my);
+    for (int c = 0; c < 3; ++c) {
+      for (int a = 0; a < 4; ++a) {
+        s.fg[c][a][l] -= f.e[2][c] * fz[a];
+        s.mg[c][a][l] -= f.e[0][c] * mx[a] + f.e[1][c] * my[a];
+      }
+      s.fg[c][2][l] += s.fg[c][3][l];
+      s.mg[c][2][l] += s.mg[c][3][l];
+      s.fg[c][3][l] = s.mg[c][3][l] = 0.0;
+    }
+  }
+}
+
+// Stores the batch's state (whole batch, eroded lanes zeroed or kept).
+template <class Law>
+inline void storeState(const ShellParams& p, domain::ShellBlock& blk, const ShellScratch& s,
+                       const ShellLanes& ln, double* sig_batch, double* ep_batch,
+                       double* alpha_batch, const ShellResultants& q, const ShellForcesOut& o) {
+  constexpr int B = kShellBatch;
+  const int nip = p.nip;
+  const std::size_t first = ln.first;
+  Lanes alive;  // 1 for an element not eroded (as double: the selects below vectorise)
+  for (int l = 0; l < B; ++l)
+    alive[l] = blk.active[first + static_cast<std::size_t>(l)] ? 1.0 : 0.0;
+  for (int ip = 0; ip < nip; ++ip)
+    for (int k = 0; k < 3; ++k) {
+      double* rec = sig_batch + (3 * ip + k) * B;
+      for (int l = 0; l < B; ++l) rec[l] = alive[l] != 0.0 ? s.s[k][ip * B + l] : 0.0;
+    }
+  {
+    double* rec_yz = sig_batch + (3 * nip) * B;
+    double* rec_zx = sig_batch + (3 * nip + 1) * B;
+    for (int l = 0; l < B; ++l) {
+      rec_yz[l] = alive[l] != 0.0 ? q.tau_yz[l] : 0.0;
+      rec_zx[l] = alive[l] != 0.0 ? q.tau_zx[l] : 0.0;
+    }
+  }
+  if constexpr (Law::kPlastic)
+    for (int i = 0; i < p.npts; ++i) {
+      const int l = i % B;
+      ep_batch[i] = alive[l] != 0.0 ? s.ep[i] : ep_batch[i];
+    }
+  if constexpr (Law::kKinematic)
+    for (int k = 0; k < 3; ++k)
+      for (int ip = 0; ip < nip; ++ip)
+        for (int l = 0; l < B; ++l) alpha_batch[(3 * ip + k) * B + l] = s.alpha[k][ip * B + l];
+  if (p.stiffness_hg) {
+    double* hgq_batch = blk.hgq.data() + first * 5;
+    for (int mode = 0; mode < 5; ++mode)
+      for (int l = 0; l < B; ++l)
+        hgq_batch[mode * B + l] = alive[l] != 0.0 ? o.hg_new[mode][l] : 0.0;
+  }
+  {
+    double* drill_batch = blk.drill.data() + first * 4;
+    for (int a = 0; a < 4; ++a)
+      for (int l = 0; l < B; ++l)
+        drill_batch[a * B + l] = alive[l] != 0.0 ? o.drill_new[a][l] : 0.0;
+  }
+  for (int l = 0; l < B; ++l) {
+    const std::size_t e = first + static_cast<std::size_t>(l);
+    blk.thick[e] = alive[l] != 0.0 ? q.t_new[l] : blk.thick[e];
+    blk.e_int[e] += alive[l] != 0.0 ? q.de_int[l] : 0.0;
+    blk.e_hg[e] += alive[l] != 0.0 ? o.de_hg[l] : 0.0;
+  }
+}
+
+// Per element: the slots, erosion (FAIL; ERODE or TDEL) and the stable step.
+inline void writeSlots(const ShellParams& p, domain::ShellBlock& blk, const ShellScratch& s,
+                       const ShellLanes& ln, const Lanes& failed_points, const ShellForcesOut& o,
+                       double* slots, BlockStatus& st) {
+  for (int l = 0; l < ln.n; ++l) {
+    const std::size_t e = ln.first + static_cast<std::size_t>(l);
+    double* slot = slots + 3 * (blk.slot_offset + 8 * e);
+    if (!blk.active[e]) {
+      std::fill(slot, slot + 24, 0.0);
+      continue;
+    }
+    if (!(o.area[l] > 0.0) && (st.bad_elem < 0 || blk.elem[e] < st.bad_elem))
+      st.bad_elem = blk.elem[e];
+    const bool failed = p.can_fail && failed_points[l] == static_cast<double>(p.nip);
+    if (failed || o.dte[l] < blk.erode_dt) {
+      blk.active[e] = 0;
+      if (failed) blk.failed[e] = 1;
+      for (int k = 0; k < p.fields; ++k) blk.sig[domain::ShellBlock::blocked(p.fields, k, e)] = 0.0;
+      if (p.stiffness_hg)
+        for (int mode = 0; mode < 5; ++mode) blk.hgqAt(mode, e) = 0.0;
+      for (int a = 0; a < 4; ++a) blk.drillAt(a, e) = 0.0;
+      std::fill(slot, slot + 24, 0.0);
+      ++st.eroded;
+      continue;
+    }
+    for (int a = 0; a < 4; ++a)
+      for (int c = 0; c < 3; ++c) {
+        slot[3 * a + c] = s.fg[c][a][l];
+        slot[12 + 3 * a + c] = s.mg[c][a][l];
+      }
+    if (o.dte[l] < st.dt_min) {
+      st.dt_min = o.dte[l];
+      st.dt_elem = blk.elem[e];
+    }
+  }
+}
+
 // One portable binary, three instruction sets, as the hex kernel (same bits on every path: no
-// FMA contraction, no fast-math). Each element loop runs over the lanes of the batch with the
-// element's frame built inside it (LaneFrame, in registers); GCC vectorises these loops across
-// lanes (checked with -fopt-info-vec: `#pragma omp simd` on them made GCC 12 give up and run
-// them scalar, at 1.5 times the time).
+// FMA contraction, no fast-math). The helpers above are inlined into each clone (flatten).
+// Each element loop runs over the lanes of the batch with the element's frame built inside it
+// (LaneFrame, in registers); GCC vectorises these loops across lanes (checked with
+// -fopt-info-vec; `#pragma omp simd` on them made GCC 12 run them scalar: docs/performance.md).
 template <class Law>
 [[gnu::flatten, gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] BlockStatus
 shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVector& x,
@@ -347,28 +812,7 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
   const std::size_t ne = range_last;
   const std::size_t batch0 = range_first / B;
   const std::size_t nbatch = range_last > range_first ? (range_last - range_first + B - 1) / B : 0;
-  const ShellConstants mc = constantsOf(blk.law, blk.rho0);
-  const double inv_c = 1.0 / mc.wave_speed;
-  const int nip = blk.nip;
-  const int npts = nip * B;
-  const int fields = blk.sigFields();
-  const double kappa = blk.shear_factor;
-  const bool stiffness_hg = blk.ihq >= 4;
-  const double qm = blk.qm;
-  // Hourglass scale: QM dt for the stiffness forms, QM L_s / c for the viscous ones; the
-  // stiffness forms' resistance moves by its mean over the step.
-  const double hg_dt = stiffness_hg ? dt : 0.0, hg_visc = stiffness_hg ? 0.0 : inv_c;
-  const double hg_old_weight = stiffness_hg ? 0.5 : 0.0, hg_new_weight = stiffness_hg ? 0.5 : 1.0;
-  const double bwc = blk.bwc ? 1.0 : 0.0;
-  const double drill_coef = kDrillStiffness * mc.E * (1.0 / 12.0);
-  const bool thickness_update = blk.thickness_update;
-  const bool scaled_mass = !blk.mass_scale.empty();
-  const bool can_fail = failureStrainOf(law) > 0.0;
-  double zeta[kMaxShellPoints], weight[kMaxShellPoints];
-  for (int i = 0; i < nip; ++i) {
-    zeta[i] = blk.zeta[static_cast<std::size_t>(i)];
-    weight[i] = blk.weight[static_cast<std::size_t>(i)];
-  }
+  const ShellParams p = shellParamsOf(law, blk, dt);
   std::vector<BlockStatus> status(nbatch);
 
 #pragma omp parallel
@@ -376,381 +820,29 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
     ShellScratch s;
 #pragma omp for schedule(static)
     for (std::size_t ib = 0; ib < nbatch; ++ib) {
-      const std::size_t first = (batch0 + ib) * B;
-      const int n = static_cast<int>(std::min<std::size_t>(B, ne - first));
-      BlockStatus& st = status[ib];
-      gatherCorners(blk, first, n, x, s.x);
-      gatherCorners(blk, first, n, v, s.v);
-      gatherCorners(blk, first, n, w, s.w);
-      Lanes tri;  // 1 for a triangle (corners 2 and 3 on one node), else 0
-      bool any_tri = false;
-      for (int l = 0; l < B; ++l) {
-        const auto& c = blk.conn[laneElement(first, n, l)];
-        tri[l] = c[2] == c[3] ? 1.0 : 0.0;
-        any_tri = any_tri || c[2] == c[3];
-      }
-      double* sig_batch = blk.sig.data() + first * static_cast<std::size_t>(fields);
+      ShellLanes ln;
+      ln.first = (batch0 + ib) * B;
+      ln.n = static_cast<int>(std::min<std::size_t>(B, ne - ln.first));
+      const std::size_t first = ln.first;
+      loadBatch(blk, x, v, w, s, ln);
+      double* sig_batch = blk.sig.data() + first * static_cast<std::size_t>(p.fields);
       double* ep_batch =
-          Law::kPlastic ? blk.eps_p.data() + first * static_cast<std::size_t>(nip) : nullptr;
-      double* alpha_batch =
-          Law::kKinematic ? blk.alpha.data() + first * static_cast<std::size_t>(3 * nip) : nullptr;
-      const double* hg_old = stiffness_hg ? blk.hgq.data() + first * 5 : s.zeros;
-      Lanes thick;
-      for (int l = 0; l < B; ++l) thick[l] = blk.thick[first + static_cast<std::size_t>(l)];
-
-      // --- velocity strains and hourglass rates at the mid-step geometry ----------------------
-      for (int c = 0; c < 3; ++c)
-        for (int a = 0; a < 4; ++a)
-          for (int l = 0; l < B; ++l) s.xm[c][a][l] = s.x[c][a][l] - 0.5 * dt * s.v[c][a][l];
-      Lanes dxm, dym, gxy, kx, ky, kxy, gxz, gyz, area_mid;
-      double qdot[5][B], rdrill[4][B];
-      for (int l = 0; l < B; ++l) {
-        const LaneFrame f = frameAt(s.xm, l);
-        double vx[4], vy[4], vz[4], tx[4], ty[4], tz[4];
-        onAxis(f, 0, s.v, l, vx);
-        onAxis(f, 1, s.v, l, vy);
-        onAxis(f, 2, s.v, l, vz);
-        onAxis(f, 0, s.w, l, tx);
-        onAxis(f, 1, s.w, l, ty);
-        onAxis(f, 2, s.w, l, tz);
-        double sxx = 0, syy = 0, sxy = 0, cx = 0, cy = 0, cxy = 0, sz1 = 0, sz2 = 0, stx = 0,
-               sty = 0, spin = 0;
-        for (int a = 0; a < 4; ++a) {
-          sxx += f.b1[a] * vx[a];
-          syy += f.b2[a] * vy[a];
-          sxy += f.b2[a] * vx[a] + f.b1[a] * vy[a];
-          cx += f.b1[a] * ty[a];
-          cy -= f.b2[a] * tx[a];
-          cxy += f.b2[a] * ty[a] - f.b1[a] * tx[a];
-          sz1 += f.b1[a] * vz[a];
-          sz2 += f.b2[a] * vz[a];
-          stx += tx[a];
-          sty += ty[a];
-          spin += f.b1[a] * vy[a] - f.b2[a] * vx[a];
-        }
-        // Drilling rates: each corner's rotation rate about the normal less the membrane's
-        // spin (dvy/dx - dvx/dy) / 2.
-        for (int a = 0; a < 4; ++a) rdrill[a][l] = tz[a] - 0.5 * spin;
-        dxm[l] = sxx;
-        dym[l] = syy;
-        gxy[l] = sxy;
-        kx[l] = cx;
-        ky[l] = cy;
-        kxy[l] = cxy;
-        gxz[l] = sz1 + 0.25 * sty;
-        gyz[l] = sz2 - 0.25 * stx;
-        area_mid[l] = f.area;
-        // Hourglass rates of the five modes: membrane x, y (BWC: less the in-plane motion of
-        // the warped corners in a rigid rotation), bending x, y, transverse.
-        double g[4], gz;
-        hourglassOf(f, s.xm, l, g, gz);
-        gz *= bwc;
-        double r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
-        for (int a = 0; a < 4; ++a) {
-          r0 += g[a] * vx[a];
-          r1 += g[a] * vy[a];
-          r2 += g[a] * tx[a];
-          r3 += g[a] * ty[a];
-          r4 += g[a] * vz[a];
-        }
-        qdot[0][l] = r0 + gz * sz1;
-        qdot[1][l] = r1 + gz * sz2;
-        qdot[2][l] = r2;
-        qdot[3][l] = r3;
-        qdot[4][l] = r4;
-      }
-      if (any_tri) {
-        for (int l = 0; l < B; ++l) {
-          if (tri[l] == 0.0) continue;
-          const LaneFrame f = frameAt(s.xm, l);
-          double vz[4], tx[4], ty[4];
-          onAxis(f, 2, s.v, l, vz);
-          onAxis(f, 0, s.w, l, tx);
-          onAxis(f, 1, s.w, l, ty);
-          triangleShearRate(f, vz, tx, ty, gxz[l], gyz[l]);
-        }
-      }
-
-      // --- plane-stress update at every point through the thickness ---------------------------
-      // The stress work is the midpoint rule, (s_old + s) / 2 : de summed over the points: its
-      // s_old half is taken here, as the stresses are loaded.
-      Lanes work;
-      for (int l = 0; l < B; ++l) work[l] = 0.0;
-      for (int p = 0; p < nip; ++p) {
-        const double zp = 0.5 * zeta[p], wp = 0.5 * weight[p];
-        const double* rec = sig_batch + 3 * p * B;
-        for (int l = 0; l < B; ++l) {
-          const double z = zp * thick[l];
-          const int i = p * B + l;
-          const double d0 = (dxm[l] + z * kx[l]) * dt, d1 = (dym[l] + z * ky[l]) * dt,
-                       d2 = 0.5 * (gxy[l] + z * kxy[l]) * dt;
-          const double s0 = rec[l], s1 = rec[B + l], s2 = rec[2 * B + l];
-          s.de[0][i] = d0;
-          s.de[1][i] = d1;
-          s.de[2][i] = d2;
-          s.s[0][i] = s0;
-          s.s[1][i] = s1;
-          s.s[2][i] = s2;
-          work[l] += wp * (s0 * d0 + s1 * d1 + 2.0 * s2 * d2);
-        }
-      }
-      if constexpr (Law::kPlastic)
-        for (int i = 0; i < npts; ++i) s.ep[i] = ep_batch[i];
-      if constexpr (Law::kKinematic)
-        for (int k = 0; k < 3; ++k)
-          for (int p = 0; p < nip; ++p)
-            for (int l = 0; l < B; ++l) s.alpha[k][p * B + l] = alpha_batch[(3 * p + k) * B + l];
-      {
-        materials::PlaneStressPoints pts;
-        pts.n = npts;
-        pts.dt = dt;
-        for (int k = 0; k < 3; ++k) {
-          pts.s[k] = s.s[k];
-          pts.de[k] = s.de[k];
-          pts.alpha[k] = Law::kKinematic ? s.alpha[k] : nullptr;
-        }
-        pts.de_zz = s.dzz;
-        pts.eps_p = Law::kPlastic ? s.ep : nullptr;
-        pts.failed = can_fail ? s.failed : nullptr;
-        materials::updatePlaneStress(law, pts);
-      }
-      // A failed point carries no stress; the element erodes when all its points have failed.
-      Lanes failed_points;
-      for (int l = 0; l < B; ++l) failed_points[l] = 0.0;
-      if (can_fail) {
-        for (int i = 0; i < npts; ++i) {
-          const bool f = s.failed[i] != 0;
-          for (int k = 0; k < 3; ++k) s.s[k][i] = f ? 0.0 : s.s[k][i];
-        }
-        for (int p = 0; p < nip; ++p)
-          for (int l = 0; l < B; ++l) failed_points[l] += s.failed[p * B + l] != 0 ? 1.0 : 0.0;
-      }
-
-      // --- transverse shear (elastic), energy, thickness, resultants --------------------------
-      Lanes tau_yz, tau_zx, de_int, t_new, ezz, nxx, nyy, nxy, mxx, myy, mxy, qx, qy;
-      {
-        double* rec_yz = sig_batch + (3 * nip) * B;
-        double* rec_zx = sig_batch + (3 * nip + 1) * B;
-        for (int l = 0; l < B; ++l) {
-          const double old_yz = rec_yz[l], old_zx = rec_zx[l];
-          tau_yz[l] = old_yz + mc.G * gyz[l] * dt;
-          tau_zx[l] = old_zx + mc.G * gxz[l] * dt;
-          de_int[l] =
-              kappa * 0.5 * ((old_yz + tau_yz[l]) * gyz[l] + (old_zx + tau_zx[l]) * gxz[l]) * dt;
-          ezz[l] = nxx[l] = nyy[l] = nxy[l] = mxx[l] = myy[l] = mxy[l] = 0.0;
-        }
-      }
-      for (int p = 0; p < nip; ++p) {
-        const double wp = weight[p], wz = weight[p] * zeta[p], hw = 0.5 * weight[p];
-        for (int l = 0; l < B; ++l) {
-          const int i = p * B + l;
-          work[l] +=
-              hw * (s.s[0][i] * s.de[0][i] + s.s[1][i] * s.de[1][i] + 2.0 * s.s[2][i] * s.de[2][i]);
-          ezz[l] += wp * s.dzz[i];
-          nxx[l] += wp * s.s[0][i];
-          nyy[l] += wp * s.s[1][i];
-          nxy[l] += wp * s.s[2][i];
-          mxx[l] += wz * s.s[0][i];
-          myy[l] += wz * s.s[1][i];
-          mxy[l] += wz * s.s[2][i];
-        }
-      }
-      for (int l = 0; l < B; ++l) {
-        de_int[l] = (de_int[l] + work[l]) * thick[l] * area_mid[l];
-        const double t = thickness_update ? thick[l] * (1.0 + ezz[l]) : thick[l];
-        t_new[l] = t;
-        const double half_t2 = 0.5 * t * t;
-        nxx[l] *= t;
-        nyy[l] *= t;
-        nxy[l] *= t;
-        mxx[l] *= half_t2;
-        myy[l] *= half_t2;
-        mxy[l] *= half_t2;
-        qx[l] = kappa * t * tau_zx[l];
-        qy[l] = kappa * t * tau_yz[l];
-      }
-
-      // --- forces, moments and stable step at the current geometry ----------------------------
-      Lanes inv_c_dt, area, de_hg, dte;
-      for (int l = 0; l < B; ++l) {
-        // Mass scaling slows the element's waves: c / sqrt(scale) enters the stable step only.
-        inv_c_dt[l] =
-            scaled_mass ? std::sqrt(blk.mass_scale[laneElement(first, n, l)]) * inv_c : inv_c;
-      }
-      // The stored resistances copied to the stack: the loop below then has no pointer that
-      // might alias its stores, and GCC vectorises it.
-      double hg_new[5][B], hg_prev[5][B], drill_new[4][B], drill_prev[4][B];
-      for (int mode = 0; mode < 5; ++mode)
-        for (int l = 0; l < B; ++l) hg_prev[mode][l] = hg_old[mode * B + l];
-      {
-        const double* drill_old = blk.drill.data() + first * 4;
-        for (int a = 0; a < 4; ++a)
-          for (int l = 0; l < B; ++l) drill_prev[a][l] = drill_old[a * B + l];
-      }
-      for (int l = 0; l < B; ++l) {
-        const LaneFrame f = frameAt(s.x, l);
-        const double A = f.area;
-        double m2 = 0.0;
-        for (int a = 0; a < 4; ++a) {
-          const int b = (a + 1) % 4;
-          const double dx = s.x[0][b][l] - s.x[0][a][l], dy = s.x[1][b][l] - s.x[1][a][l],
-                       dz = s.x[2][b][l] - s.x[2][a][l];
-          m2 = std::max(m2, dx * dx + dy * dy + dz * dz);
-        }
-        const double ls = A / std::sqrt(m2);  // A / longest side
-        area[l] = A;
-        dte[l] = (1.0 + tri[l]) * ls * inv_c_dt[l];
-        // Resultants to corner forces (the triangle's transverse shear is added below).
-        const double quad = 1.0 - tri[l];
-        const double sqx = quad * qx[l], sqy = quad * qy[l];
-        double fx[4], fy[4], fz[4], mx[4], my[4];
-        for (int a = 0; a < 4; ++a) {
-          const double b1 = f.b1[a], b2 = f.b2[a];
-          fx[a] = A * (b1 * nxx[l] + b2 * nxy[l]);
-          fy[a] = A * (b2 * nyy[l] + b1 * nxy[l]);
-          fz[a] = A * (b1 * sqx + b2 * sqy);
-          mx[a] = A * (-b2 * myy[l] - b1 * mxy[l] - 0.25 * sqy);
-          my[a] = A * (b1 * mxx[l] + b2 * mxy[l] + 0.25 * sqx);
-        }
-        // Hourglass resistances (none for triangles).
-        double g[4], gz, bb = 0.0;
-        hourglassOf(f, s.x, l, g, gz);
-        gz *= bwc;
-        for (int a = 0; a < 4; ++a) bb += f.b1[a] * f.b1[a] + f.b2[a] * f.b2[a];
-        const double t = t_new[l];
-        const double scale = quad * qm * (hg_dt + hg_visc * ls);
-        const double coef[5] = {scale * mc.E * t * A * bb * 0.125,
-                                scale * mc.E * t * A * bb * 0.125,
-                                scale * mc.E * t * t * t * A * bb * (1.0 / 192.0),
-                                scale * mc.E * t * t * t * A * bb * (1.0 / 192.0),
-                                scale * kappa * mc.G * t * t * t * bb * (1.0 / 12.0)};
-        double hf[5], e_hg = 0.0;
-        for (int mode = 0; mode < 5; ++mode) {
-          const double old = hg_prev[mode][l];
-          hf[mode] = old + coef[mode] * qdot[mode][l];
-          hg_new[mode][l] = hf[mode];
-          e_hg += (hg_old_weight * old + hg_new_weight * hf[mode]) * qdot[mode][l] * dt;
-        }
-        // Drilling moments (none for triangles), accumulated like the stiffness hourglass
-        // resistances; the membrane spin's share goes to the in-plane forces.
-        const double kd = quad * drill_coef * t * t * t;
-        double mz[4], drill_sum = 0.0;
-        for (int a = 0; a < 4; ++a) {
-          const double old = drill_prev[a][l];
-          mz[a] = old + kd * rdrill[a][l] * dt;
-          drill_new[a][l] = mz[a];
-          drill_sum += mz[a];
-          e_hg += 0.5 * (old + mz[a]) * rdrill[a][l] * dt;
-        }
-        de_hg[l] = e_hg;
-        for (int a = 0; a < 4; ++a) {
-          fx[a] += hf[0] * g[a] + 0.5 * f.b2[a] * drill_sum;
-          fy[a] += hf[1] * g[a] - 0.5 * f.b1[a] * drill_sum;
-          fz[a] += hf[4] * g[a] + gz * (hf[0] * f.b1[a] + hf[1] * f.b2[a]);
-          mx[a] += hf[2] * g[a];
-          my[a] += hf[3] * g[a];
-        }
-        // To the global frame, as the forces on the nodes (minus the internal forces).
-        for (int c = 0; c < 3; ++c)
-          for (int a = 0; a < 4; ++a) {
-            s.fg[c][a][l] = -(f.e[0][c] * fx[a] + f.e[1][c] * fy[a] + f.e[2][c] * fz[a]);
-            s.mg[c][a][l] = -(f.e[0][c] * mx[a] + f.e[1][c] * my[a] + f.e[2][c] * mz[a]);
-          }
-      }
-      if (any_tri) {
-        for (int l = 0; l < B; ++l) {
-          if (tri[l] == 0.0) continue;
-          const LaneFrame f = frameAt(s.x, l);
-          double fz[4], mx[4], my[4];
-          triangleShearForces(f, qx[l], qy[l], fz, mx, my);
-          for (int c = 0; c < 3; ++c) {
-            for (int a = 0; a < 4; ++a) {
-              s.fg[c][a][l] -= f.e[2][c] * fz[a];
-              s.mg[c][a][l] -= f.e[0][c] * mx[a] + f.e[1][c] * my[a];
-            }
-            // Corners 2 and 3 are one node: all of it at corner 2.
-            s.fg[c][2][l] += s.fg[c][3][l];
-            s.mg[c][2][l] += s.mg[c][3][l];
-            s.fg[c][3][l] = s.mg[c][3][l] = 0.0;
-          }
-        }
-      }
-
-      // --- store state (whole batch), then per element: slots, erosion, stable step ----------
-      Lanes alive;  // 1 for an element not eroded (as double: the selects below vectorise)
-      for (int l = 0; l < B; ++l)
-        alive[l] = blk.active[first + static_cast<std::size_t>(l)] ? 1.0 : 0.0;
-      for (int p = 0; p < nip; ++p)
-        for (int k = 0; k < 3; ++k) {
-          double* rec = sig_batch + (3 * p + k) * B;
-          for (int l = 0; l < B; ++l) rec[l] = alive[l] != 0.0 ? s.s[k][p * B + l] : 0.0;
-        }
-      {
-        double* rec_yz = sig_batch + (3 * nip) * B;
-        double* rec_zx = sig_batch + (3 * nip + 1) * B;
-        for (int l = 0; l < B; ++l) {
-          rec_yz[l] = alive[l] != 0.0 ? tau_yz[l] : 0.0;
-          rec_zx[l] = alive[l] != 0.0 ? tau_zx[l] : 0.0;
-        }
-      }
-      if constexpr (Law::kPlastic)
-        for (int i = 0; i < npts; ++i) {
-          const int l = i % B;
-          ep_batch[i] = alive[l] != 0.0 ? s.ep[i] : ep_batch[i];
-        }
-      if constexpr (Law::kKinematic)
-        for (int k = 0; k < 3; ++k)
-          for (int p = 0; p < nip; ++p)
-            for (int l = 0; l < B; ++l) alpha_batch[(3 * p + k) * B + l] = s.alpha[k][p * B + l];
-      if (stiffness_hg) {
-        double* hgq_batch = blk.hgq.data() + first * 5;
-        for (int mode = 0; mode < 5; ++mode)
-          for (int l = 0; l < B; ++l)
-            hgq_batch[mode * B + l] = alive[l] != 0.0 ? hg_new[mode][l] : 0.0;
-      }
-      {
-        double* drill_batch = blk.drill.data() + first * 4;
-        for (int a = 0; a < 4; ++a)
-          for (int l = 0; l < B; ++l)
-            drill_batch[a * B + l] = alive[l] != 0.0 ? drill_new[a][l] : 0.0;
-      }
-      for (int l = 0; l < B; ++l) {
-        const std::size_t e = first + static_cast<std::size_t>(l);
-        blk.thick[e] = alive[l] != 0.0 ? t_new[l] : blk.thick[e];
-        blk.e_int[e] += alive[l] != 0.0 ? de_int[l] : 0.0;
-        blk.e_hg[e] += alive[l] != 0.0 ? de_hg[l] : 0.0;
-      }
-      for (int l = 0; l < n; ++l) {
-        const std::size_t e = first + static_cast<std::size_t>(l);
-        double* slot = slots + 3 * (blk.slot_offset + 8 * e);
-        if (!blk.active[e]) {
-          std::fill(slot, slot + 24, 0.0);
-          continue;
-        }
-        if (!(area[l] > 0.0) && (st.bad_elem < 0 || blk.elem[e] < st.bad_elem))
-          st.bad_elem = blk.elem[e];
-        const bool failed = can_fail && failed_points[l] == static_cast<double>(nip);
-        if (failed || dte[l] < blk.erode_dt) {  // FAIL; ERODE or TDEL (erode_dt)
-          blk.active[e] = 0;
-          if (failed) blk.failed[e] = 1;
-          for (int k = 0; k < fields; ++k) blk.sig[domain::ShellBlock::blocked(fields, k, e)] = 0.0;
-          if (stiffness_hg)
-            for (int mode = 0; mode < 5; ++mode) blk.hgqAt(mode, e) = 0.0;
-          for (int a = 0; a < 4; ++a) blk.drillAt(a, e) = 0.0;
-          std::fill(slot, slot + 24, 0.0);
-          ++st.eroded;
-          continue;
-        }
-        for (int a = 0; a < 4; ++a)
-          for (int c = 0; c < 3; ++c) {
-            slot[3 * a + c] = s.fg[c][a][l];
-            slot[12 + 3 * a + c] = s.mg[c][a][l];
-          }
-        if (dte[l] < st.dt_min) {
-          st.dt_min = dte[l];
-          st.dt_elem = blk.elem[e];
-        }
-      }
+          Law::kPlastic ? blk.eps_p.data() + first * static_cast<std::size_t>(p.nip) : nullptr;
+      double* alpha_batch = Law::kKinematic
+                                ? blk.alpha.data() + first * static_cast<std::size_t>(3 * p.nip)
+                                : nullptr;
+      const double* hg_old = p.stiffness_hg ? blk.hgq.data() + first * 5 : s.zeros;
+      ShellRates r;
+      midStepRates(p, s, ln, r);
+      Lanes work, failed_points;
+      pointStresses(law, p, s, sig_batch, ep_batch, alpha_batch, ln, r, work, failed_points);
+      ShellResultants q;
+      resultantsOf(p, s, sig_batch, ln, r, work, q);
+      ShellForcesOut o;
+      cornerForces(p, blk, s, ln, hg_old, r, q, o);
+      if (ln.any_tri) triangleForces(s, ln, q);
+      storeState<Law>(p, blk, s, ln, sig_batch, ep_batch, alpha_batch, q, o);
+      writeSlots(p, blk, s, ln, failed_points, o, slots, status[ib]);
     }
   }
   return detail::mergeStatus(status);
