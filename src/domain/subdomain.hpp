@@ -119,6 +119,23 @@ struct Subdomain {
   std::vector<ShellBlock> shell_blocks;
   std::vector<BeamBlock> beam_blocks;
   std::vector<DiscreteBlock> discrete_blocks;
+  // Calls visit(blocks, family) for the block list of every element family, in family order (the
+  // global element order): code that treats the families alike goes through here, so that a
+  // new family is added to it once.
+  template <class F>
+  void forEachBlockList(F&& visit) {
+    visit(solid_blocks, model::Family::Solid);
+    visit(shell_blocks, model::Family::Shell);
+    visit(beam_blocks, model::Family::Beam);
+    visit(discrete_blocks, model::Family::Discrete);
+  }
+  template <class F>
+  void forEachBlockList(F&& visit) const {
+    visit(solid_blocks, model::Family::Solid);
+    visit(shell_blocks, model::Family::Shell);
+    visit(beam_blocks, model::Family::Beam);
+    visit(discrete_blocks, model::Family::Discrete);
+  }
   std::size_t num_elements = 0;  // held here
   // Global index of the first element of each family (Model::familyOffset).
   std::array<int64_t, model::kFamilies> family_offset{};

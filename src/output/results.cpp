@@ -278,23 +278,15 @@ void ResultsWriter::writePlotState(const solver::Solver& s) {
     std::size_t k;
   };
   std::vector<Cell> cells;
-  for (const auto& blk : sd.solid_blocks)
-    for (std::size_t k = 0; k < blk.size(); ++k)
-      if (blk.active[k]) cells.push_back({blk.elem[k], model::Family::Solid, &blk, k});
-  for (const auto& blk : sd.shell_blocks)
-    for (std::size_t k = 0; k < blk.size(); ++k)
-      if (blk.active[k])
-        cells.push_back(
-            {sd.globalElement(model::Family::Shell, blk.elem[k]), model::Family::Shell, &blk, k});
-  for (const auto& blk : sd.beam_blocks)
-    for (std::size_t k = 0; k < blk.size(); ++k)
-      if (blk.active[k])
-        cells.push_back(
-            {sd.globalElement(model::Family::Beam, blk.elem[k]), model::Family::Beam, &blk, k});
-  for (const auto& blk : sd.discrete_blocks)
-    for (std::size_t k = 0; k < blk.size(); ++k)
-      cells.push_back({sd.globalElement(model::Family::Discrete, blk.elem[k]),
-                       model::Family::Discrete, &blk, k});
+  sd.forEachBlockList([&](const auto& blocks, model::Family family) {
+    for (const auto& blk : blocks)
+      for (std::size_t k = 0; k < blk.size(); ++k) {
+        // Eroded elements are not drawn (discrete elements do not erode).
+        if constexpr (requires { blk.active; })
+          if (!blk.active[k]) continue;
+        cells.push_back({sd.globalElement(family, blk.elem[k]), family, &blk, k});
+      }
+  });
   std::sort(cells.begin(), cells.end(),
             [](const Cell& a, const Cell& b) { return a.elem < b.elem; });
   const std::size_t nc = cells.size();

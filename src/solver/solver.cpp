@@ -616,7 +616,8 @@ void Solver::checkFiniteVelocities() const {
 
 int64_t Solver::nonFiniteElement() const {
   int64_t found = -1;
-  auto scan = [&](const auto& blocks, model::Family family, std::size_t per) {
+  sd_.forEachBlockList([&](const auto& blocks, model::Family family) {
+    constexpr std::size_t per = kSlotsPer<typename std::decay_t<decltype(blocks)>::value_type>;
     for (const auto& blk : blocks)
       for (std::size_t e = 0; e < blk.size(); ++e) {
         const double* slot = sd_.slots.data() + 3 * (blk.slot_offset + per * e);
@@ -624,18 +625,14 @@ int64_t Solver::nonFiniteElement() const {
         const int64_t g = sd_.globalElement(family, blk.elem[e]);
         if (found < 0 || g < found) found = g;
       }
-  };
-  scan(sd_.solid_blocks, model::Family::Solid, kSlotsPer<domain::SolidBlock>);
-  scan(sd_.shell_blocks, model::Family::Shell, kSlotsPer<domain::ShellBlock>);
-  scan(sd_.beam_blocks, model::Family::Beam, kSlotsPer<domain::BeamBlock>);
-  scan(sd_.discrete_blocks, model::Family::Discrete, kSlotsPer<domain::DiscreteBlock>);
+  });
   return found;
 }
 
 std::string Solver::mostEnergeticElement() const {
   double most = -1.0;
   int64_t elem = -1;
-  auto scan = [&](const auto& blocks, model::Family family) {
+  sd_.forEachBlockList([&](const auto& blocks, model::Family family) {
     for (const auto& blk : blocks)
       for (std::size_t e = 0; e < blk.size(); ++e) {
         double en = blk.e_int[e];
@@ -646,11 +643,7 @@ std::string Solver::mostEnergeticElement() const {
           elem = g;
         }
       }
-  };
-  scan(sd_.solid_blocks, model::Family::Solid);
-  scan(sd_.shell_blocks, model::Family::Shell);
-  scan(sd_.beam_blocks, model::Family::Beam);
-  scan(sd_.discrete_blocks, model::Family::Discrete);
+  });
   const double global_most = -comm_.minAll(-most);
   return elementLabel(controllingElement(elem, elem >= 0 && most == global_most));
 }
@@ -679,20 +672,13 @@ ErodedSums Solver::eroded() const {
 
 Energies Solver::energies() const {
   Energies e;
-  for (const auto& blk : sd_.solid_blocks)
-    for (std::size_t k = 0; k < blk.size(); ++k) {
-      e.internal += blk.e_int[k];
-      e.hourglass += blk.e_hg[k];
-    }
-  for (const auto& blk : sd_.shell_blocks)
-    for (std::size_t k = 0; k < blk.size(); ++k) {
-      e.internal += blk.e_int[k];
-      e.hourglass += blk.e_hg[k];
-    }
-  for (const auto& blk : sd_.beam_blocks)
-    for (std::size_t k = 0; k < blk.size(); ++k) e.internal += blk.e_int[k];
-  for (const auto& blk : sd_.discrete_blocks)
-    for (std::size_t k = 0; k < blk.size(); ++k) e.internal += blk.e_int[k];
+  sd_.forEachBlockList([&](const auto& blocks, model::Family) {
+    for (const auto& blk : blocks)
+      for (std::size_t k = 0; k < blk.size(); ++k) {
+        e.internal += blk.e_int[k];
+        if constexpr (requires { blk.e_hg; }) e.hourglass += blk.e_hg[k];
+      }
+  });
   // Energies are reported at t(n), the time level of the stresses from the last element pass
   // and of the work integrals: the kinetic energy uses v(n) = (v(n-1/2) + v(n+1/2)) / 2.
   const bool stepped = v_old_.size() == sd_.v.size();
