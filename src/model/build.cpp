@@ -493,7 +493,12 @@ int64_t definedId(const Context& ctx, const deck::Keyword& kw) {
   std::size_t line = title ? 1 : 0;
   while (line < kw.lines.size() && deck::trim(kw.lines[line].text).empty()) ++line;
   if (line >= kw.lines.size()) return 0;
-  deck::Keyword one = kw;
+  // A keyword of that one line (not a copy of all the keyword's lines).
+  deck::Keyword one;
+  one.name = kw.name;
+  one.format = kw.format;
+  one.file = kw.file;
+  one.line = kw.line;
   one.lines = {kw.lines[line]};
   try {
     deck::CardCursor cur(one, ctx.deck);

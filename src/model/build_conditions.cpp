@@ -77,7 +77,7 @@ std::optional<MotionCurve> readMotionCurve(Context& ctx, const Card& c) {
   m.vad = static_cast<int>(vad);
   m.curve = ctx.curve(c, "LCID", c.integer("LCID"));
   m.sf = c.real("SF");
-  c.integer("VID");  // DOF 4 reads it (axisOfVector); marked here for the other DOFs
+  c.integer("VID");  // DOF 4 reads it (translationAxis); marked here for the other DOFs
   const double death = c.real("DEATH");
   m.death = death >= 1e28 ? std::numeric_limits<double>::infinity() : death;
   m.birth = c.real("BIRTH");
@@ -85,7 +85,8 @@ std::optional<MotionCurve> readMotionCurve(Context& ctx, const Card& c) {
   return m;
 }
 
-std::optional<std::pair<int, double>> axisOfVector(Context& ctx, const Card& c) {
+std::optional<std::pair<int, double>> translationAxis(Context& ctx, const Card& c, int64_t dof) {
+  if (dof != 4) return std::make_pair(static_cast<int>(dof - 1), 1.0);
   const int64_t vid = c.integer("VID");
   if (vid == 0) c.fail("VID", "DOF 4 moves along a vector: VID is required");
   const auto it = ctx.vectors.find(vid);
@@ -119,17 +120,13 @@ void readPrescribedMotion(Context& ctx, const deck::Keyword& kw, const KeywordOp
       ctx.collect(cur);
       continue;
     }
-    pm.dof = static_cast<int>(dof - 1);
-    double sign = 1.0;
-    if (dof == 4) {
-      const auto axis = axisOfVector(ctx, c);
-      if (!axis) {
-        ctx.collect(cur);
-        continue;
-      }
-      pm.dof = axis->first;
-      sign = axis->second;
+    const auto axis = translationAxis(ctx, c, dof);
+    if (!axis) {
+      ctx.collect(cur);
+      continue;
     }
+    pm.dof = axis->first;
+    const double sign = axis->second;
     const auto motion = readMotionCurve(ctx, c);
     if (!motion) {
       ctx.collect(cur);

@@ -287,11 +287,12 @@ struct MotionCurve {
   double sf = 1.0, birth = 0.0, death = 0.0;
 };
 std::optional<MotionCurve> readMotionCurve(Context& ctx, const deck::Card& c);
-// DOF 4 of a prescribed motion, translation along the vector VID with the motion normal to it
-// free (Keyword Manual, *BOUNDARY_PRESCRIBED_MOTION): along a global axis that is the axis'
-// DOF with the vector's sign, returned as {axis 0-2, sign}. A skew vector would need a
-// constraint in local axes: refused (nothing returned).
-std::optional<std::pair<int, double>> axisOfVector(Context& ctx, const deck::Card& c);
+// The translation axis (0-2) and sign of prescribed-motion DOF 1-4 (Keyword Manual,
+// *BOUNDARY_PRESCRIBED_MOTION). DOF 4 is translation along the vector VID with the motion
+// normal to it free: along a global axis that is the axis' DOF with the vector's sign. A skew
+// vector would need a constraint in local axes: refused (nothing returned).
+std::optional<std::pair<int, double>> translationAxis(Context& ctx, const deck::Card& c,
+                                                      int64_t dof);
 void readInitialVelocity(Context&, const deck::Keyword&, const KeywordOptions&);
 void readInitialVelocityNode(Context&, const deck::Keyword&, const KeywordOptions&);
 void readInitialVelocityGeneration(Context&, const deck::Keyword&, const KeywordOptions&);

@@ -248,17 +248,15 @@ void readPrescribedMotionRigid(Context& ctx, const deck::Keyword& kw, const Keyw
       ctx.collect(cur);
       continue;
     }
-    m.dof = static_cast<int>(dof <= 3 ? dof - 1 : dof - 2);
-    double sign = 1.0;
-    if (dof == 4) {  // along a vector: see axisOfVector
-      const auto axis = axisOfVector(ctx, c);
-      if (!axis) {
-        ctx.collect(cur);
-        continue;
-      }
-      m.dof = axis->first;
-      sign = axis->second;
+    // Translations 1-4 (4 along a vector) map to axes 0-2; rotations 5-7 to 3-5.
+    const auto axis =
+        dof <= 4 ? translationAxis(ctx, c, dof) : std::make_pair(static_cast<int>(dof - 2), 1.0);
+    if (!axis) {
+      ctx.collect(cur);
+      continue;
     }
+    m.dof = axis->first;
+    const double sign = axis->second;
     const auto motion = readMotionCurve(ctx, c);
     if (!motion) {
       ctx.collect(cur);
