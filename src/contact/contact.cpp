@@ -283,8 +283,10 @@ bool Contact::tracks(const Pass& p, int32_t check, std::size_t s, const Projecti
   return dot(n_last, pr.normal) > 0.7071;
 }
 
-std::optional<Contact::Candidate> Contact::rankSegment(const Pass& p, const CheckNode& c,
-                                                       std::size_t s, bool initial) const {
+// Inlined into its one caller, the per-candidate loop: called per candidate segment it cost
+// 0.3% of the contact step (callgrind, contact_tube, 1 thread).
+[[gnu::always_inline]] inline std::optional<Contact::Candidate> Contact::rankSegment(
+    const Pass& p, const CheckNode& c, std::size_t s, bool initial) const {
   const std::size_t node = c.node;
   const Vec3& x = c.x;
   const double h_node = c.half;
