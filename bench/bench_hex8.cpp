@@ -66,7 +66,7 @@ void runKernel(benchmark::State& state, model::MaterialLaw law, int ihq) {
 }
 
 void Hex8Elastic(benchmark::State& s) {
-  runKernel(s, model::ElasticLaw{210.0, 0.3}, 4);
+  runKernel(s, materials::Elastic::Params{210.0, 0.3}, 4);
 }
 void Hex8PlasticHourglassStiffness(benchmark::State& s) {
   model::PiecewiseLinearLaw law;
@@ -77,7 +77,7 @@ void Hex8PlasticHourglassStiffness(benchmark::State& s) {
   runKernel(s, law, 4);
 }
 void Hex8PlasticKinematicViscousHourglass(benchmark::State& s) {
-  model::PlasticKinematicLaw law;
+  materials::PlasticKinematic::Params law;
   law.E = 210.0;
   law.nu = 0.3;
   law.sigy = 0.001;

@@ -122,23 +122,25 @@ void runShell(benchmark::State& state, const materials::Law& law, int ihq, int w
   state.counters["elements"] = elems;
 }
 
+// Bilinear *MAT_024 from its deck parameters.
+materials::Law bilinear024(double sigy, double etan) {
+  materials::PiecewiseLinear::Params p;
+  p.E = 210.0;
+  p.nu = 0.3;
+  p.sigy = sigy;
+  p.etan = etan;
+  return materials::makeLaw(p, {}, "");
+}
+
 materials::Law plastic024() {
-  materials::PiecewiseLinear law;
-  law.moduli = materials::moduliFromYoung(210.0, 0.3);
-  law.sigy = 0.001;  // yields at once under the imposed strain rate
-  law.etan = 1.0;
-  return law;
+  return bilinear024(0.001, 1.0);  // yields at once under the imposed strain rate
 }
 
 // Crash-like plasticity: SIGY 0.3 GPa, and strain increments of about 1e-5 a step (strain
 // rates of about 1000/s), so that every point, once past yield, overshoots the yield surface by
 // about 1 % a step. Timed after 300 cycles, when all points are plastic.
 void ShellPlastic024Crash(benchmark::State& s) {
-  materials::PiecewiseLinear law;
-  law.moduli = materials::moduliFromYoung(210.0, 0.3);
-  law.sigy = 0.3;
-  law.etan = 1.0;
-  runShell(s, law, 1, 300);
+  runShell(s, bilinear024(0.3, 1.0), 1, 300);
 }
 void ShellElastic(benchmark::State& s) {
   runShell(s, materials::Elastic{materials::moduliFromYoung(210.0, 0.3)}, 1);

@@ -17,10 +17,6 @@ constexpr uint8_t Z = kZeroIsDefault;
 constexpr uint8_t Q = kQuiet;
 using Pairs = std::initializer_list<std::pair<std::string_view, std::string_view>>;
 
-// Title line of the _TITLE option and of *TITLE / *PART (the whole line, A80).
-CardSpec titleCard(std::string_view label = "title card") {
-  return {label, {A("TITLE", 80, {}, Q)}};
-}
 // Heading line of the _ID option of boundary conditions and rigid walls: ID (I10), HEADING (A70).
 CardSpec idCard() {
   return {"id card", {I("ID"), A("HEADING", 70)}};
@@ -137,33 +133,6 @@ std::vector<KeywordSpec> makeTables() {
                {titleCard(),
                 {"card 1", {I("SECID"), I("DRO"), R("KD"), R("V0"), R("CL"), R("FD")}},
                 {"card 2", {R("CDL"), R("TDL")}}}});
-  t.push_back(
-      {"*MAT_RIGID",
-       {titleCard(),
-        {"card 1", {I("MID"), R("RO"), R("E"), R("PR"), R("N"), R("COUPLE"), R("M"), R("ALIAS")}},
-        {"card 2", {R("CMO"), R("CON1"), R("CON2")}},
-        {"card 3", {R("LCO/A1"), R("A2"), R("A3"), R("V1"), R("V2"), R("V3")}}}});
-  t.push_back({"*MAT_SPRING_ELASTIC", {titleCard(), {"card 1", {I("MID"), R("K")}}}});
-  t.push_back({"*MAT_DAMPER_VISCOUS", {titleCard(), {"card 1", {I("MID"), R("DC")}}}});
-  t.push_back(
-      {"*MAT_SPRING_NONLINEAR_ELASTIC", {titleCard(), {"card 1", {I("MID"), I("LCD"), I("LCR")}}}});
-  t.push_back(
-      {"*MAT_ELASTIC",
-       {titleCard(), {"card 1", {I("MID"), R("RO"), R("E"), R("PR"), R("DA"), R("DB"), R("K")}}}});
-  t.push_back({"*MAT_PLASTIC_KINEMATIC",
-               {titleCard(),
-                {"card 1", {I("MID"), R("RO"), R("E"), R("PR"), R("SIGY"), R("ETAN"), R("BETA")}},
-                {"card 2", {R("SRC"), R("SRP"), R("FS"), R("VP")}}}});
-  t.push_back(
-      {"*MAT_PIECEWISE_LINEAR_PLASTICITY",
-       {titleCard(),
-        {"card 1",
-         {I("MID"), R("RO"), R("E"), R("PR"), R("SIGY"), R("ETAN"), R("FAIL"), R("TDEL")}},
-        {"card 2", {R("C"), R("P"), I("LCSS"), I("LCSR"), R("VP")}},
-        {"card 3",
-         {R("EPS1"), R("EPS2"), R("EPS3"), R("EPS4"), R("EPS5"), R("EPS6"), R("EPS7"), R("EPS8")}},
-        {"card 4",
-         {R("ES1"), R("ES2"), R("ES3"), R("ES4"), R("ES5"), R("ES6"), R("ES7"), R("ES8")}}}});
   t.push_back({"*HOURGLASS",
                {titleCard(),
                 {"card 1",

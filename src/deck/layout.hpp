@@ -61,6 +61,11 @@ constexpr FieldSpec A(std::string_view name, int width = 10, std::string_view de
   return {name, FieldType::Text, width, 0.0, def, flags};
 }
 
+// Title line of the _TITLE option and of *TITLE / *PART (the whole line, A80).
+inline CardSpec titleCard(std::string_view label = "title card") {
+  return {label, {A("TITLE", 80, {}, kQuiet)}};
+}
+
 // The table of a keyword; throws std::logic_error for a keyword without one (a coding error:
 // the builder asks only for keywords it gives meaning to).
 const KeywordSpec& keywordSpec(std::string_view name);

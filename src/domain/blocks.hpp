@@ -19,7 +19,6 @@
 #include <vector>
 
 #include "materials/materials.hpp"
-#include "materials/uniaxial.hpp"
 #include "model/model.hpp"
 
 namespace crumple::domain {
@@ -160,10 +159,8 @@ struct BeamBlock : BlockBase {
 
 // Discrete springs and dampers (*ELEMENT_DISCRETE, *SECTION_DISCRETE).
 struct DiscreteBlock : BlockBase {
-  enum class Kind : uint8_t { SpringElastic, DamperViscous, SpringNonlinear };
-  Kind kind = Kind::SpringElastic;
-  double k = 0.0;  // stiffness (SpringElastic) or damping constant (DamperViscous)
-  std::vector<double> curve_x, curve_y;  // SpringNonlinear: force vs elongation
+  using Kind = materials::DiscreteLaw::Kind;
+  materials::DiscreteLaw law;
   std::vector<std::array<int32_t, 2>> conn;
   std::vector<double> scale;    // *ELEMENT_DISCRETE S (force scale factor)
   std::vector<double> offset;   // *ELEMENT_DISCRETE OFFSET (initial elongation)

@@ -141,6 +141,25 @@ GatherPlan gatherPlan(std::vector<Corner> corners, const std::vector<int32_t>& l
   return plan;
 }
 
+// The model's curve with a model curve index, as the law units see it.
+materials::CurveData curveOf(const model::Model& model, int32_t index) {
+  if (index < 0 || static_cast<std::size_t>(index) >= model.curves.size())
+    throw util::InputError("curve index " + std::to_string(index) + " does not name a curve");
+  const model::Curve& c = model.curves[static_cast<std::size_t>(index)];
+  return {c.id, c.x, c.y};
+}
+
+// "deck.k:12: *MAT_ELASTIC 3: ", the prefix of a law's messages.
+std::string materialAt(const model::Material& mat) {
+  return mat.where.str() + ": " + model::materialKeyword(mat.law) + " " + std::to_string(mat.id) +
+         ": ";
+}
+
+materials::Law lawOf(const model::Model& model, const model::Material& mat) {
+  return materials::makeLaw(
+      mat.law, [&](int32_t i) { return curveOf(model, i); }, materialAt(mat));
+}
+
 bool isRigid(const model::Model& model, const model::Part& part) {
   return part.material != model::kNone &&
          std::holds_alternative<model::RigidLaw>(
@@ -306,12 +325,12 @@ class SubdomainBuilder {
     const auto& mat = model.materials[static_cast<std::size_t>(part.material)];
     SolidBlock b;
     fillBase(b, model, part_index, elems, shared_count, kSolidBatch, model.solids, local_of);
-    b.law = materials::makeLaw(mat, model);
+    b.law = lawOf(model, mat);
     b.rho0 = mat.rho;
     b.rigid = isRigid(model, part);
     b.hourglass = hourglassOf(model, part);
-    const bool plastic = std::visit([](const auto& law) { return law.kPlastic; }, b.law);
-    const bool kinematic = std::visit([](const auto& law) { return law.kKinematic; }, b.law);
+    const bool plastic = materials::isPlastic(b.law);
+    const bool kinematic = materials::isKinematic(b.law);
     b.elform = model.solid_sections[static_cast<std::size_t>(part.section)].elform;
     // A fully integrated element has no hourglass modes to control.
     b.resize(b.size(), plastic, kinematic, b.elform == 1 && b.hourglass.ihq >= 4, b.elform == 2);
@@ -325,7 +344,7 @@ class SubdomainBuilder {
     const auto& sec = model.shell_sections[static_cast<std::size_t>(part.section)];
     ShellBlock b;
     fillBase(b, model, part_index, elems, shared_count, kShellBatch, model.shells, local_of);
-    b.law = materials::makeLaw(mat, model);
+    b.law = lawOf(model, mat);
     b.rho0 = mat.rho;
     b.rigid = isRigid(model, part);
     b.elform = sec.elform == 10 ? 2 : sec.elform;
@@ -353,7 +372,7 @@ class SubdomainBuilder {
     const auto& sec = model.beam_sections[static_cast<std::size_t>(part.section)];
     BeamBlock b;
     fillBase(b, model, part_index, elems, shared_count, 1, model.beams, local_of);
-    b.law = materials::makeLaw(mat, model);
+    b.law = lawOf(model, mat);
     b.rho0 = mat.rho;
     b.rigid = isRigid(model, part);
     b.section.elform = sec.elform;
@@ -388,23 +407,8 @@ class SubdomainBuilder {
     const auto& mat = model.materials[static_cast<std::size_t>(part.material)];
     DiscreteBlock b;
     fillBase(b, model, part_index, elems, shared_count, 1, model.discretes, local_of);
-    std::visit(
-        [&](const auto& law) {
-          using T = std::decay_t<decltype(law)>;
-          if constexpr (std::is_same_v<T, model::SpringElasticLaw>) {
-            b.kind = DiscreteBlock::Kind::SpringElastic;
-            b.k = law.k;
-          } else if constexpr (std::is_same_v<T, model::DamperViscousLaw>) {
-            b.kind = DiscreteBlock::Kind::DamperViscous;
-            b.k = law.dc;
-          } else if constexpr (std::is_same_v<T, model::SpringNonlinearLaw>) {
-            b.kind = DiscreteBlock::Kind::SpringNonlinear;
-            const auto& c = model.curves[static_cast<std::size_t>(law.curve)];
-            b.curve_x = c.x;
-            b.curve_y = c.y;
-          }
-        },
-        mat.law);
+    b.law = materials::makeDiscreteLaw(
+        mat.law, [&](int32_t i) { return curveOf(model, i); }, materialAt(mat));
     b.scale.resize(b.size());
     b.offset.resize(b.size());
     for (std::size_t k = 0; k < b.size(); ++k) {

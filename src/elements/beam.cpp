@@ -370,8 +370,8 @@ void resizeBeamBlock(domain::BeamBlock& blk, std::size_t n) {
 BlockStatus initializeBeams(domain::BeamBlock& blk, const domain::NodeVector& x0, double* slots,
                             std::vector<double>& element_dt) {
   const Section sec = sectionOf(blk.section);
-  const double E = materials::youngsModulus(blk.law);
-  const double G = std::visit([](const auto& l) { return l.moduli.shear; }, blk.law);
+  const double E = materials::youngOf(materials::moduliOf(blk.law));
+  const double G = materials::moduliOf(blk.law).shear;
   const bool frames = blk.section.elform != 3;
   const double i_max = std::max(sec.iss, sec.itt);
   BlockStatus st;

@@ -65,9 +65,9 @@ void curveAt(const std::vector<double>& x, const std::vector<double>& y, double 
 // Spring force at elongation delta (springs only).
 double springForce(const domain::DiscreteBlock& b, std::size_t e, double delta) {
   const double u = delta + offsetOf(b, e);
-  if (b.kind == domain::DiscreteBlock::Kind::SpringElastic) return scaleOf(b, e) * b.k * u;
+  if (b.law.kind == domain::DiscreteBlock::Kind::SpringElastic) return scaleOf(b, e) * b.law.k * u;
   double value = 0.0, slope = 0.0;
-  curveAt(b.curve_x, b.curve_y, u, value, slope);
+  curveAt(b.law.curve_x, b.law.curve_y, u, value, slope);
   return scaleOf(b, e) * value;
 }
 
@@ -81,7 +81,7 @@ void resizeDiscreteBlock(domain::DiscreteBlock& blk, std::size_t n) {
 }
 
 void initializeDiscretes(domain::DiscreteBlock& blk, const domain::NodeVector& x0, double* slots) {
-  const bool damper = blk.kind == domain::DiscreteBlock::Kind::DamperViscous;
+  const bool damper = blk.law.kind == domain::DiscreteBlock::Kind::DamperViscous;
   for (std::size_t e = 0; e < blk.size(); ++e) {
     const auto& c = blk.conn[e];
     const Vec x1 = nodeVec(x0, c[0]), x2 = nodeVec(x0, c[1]);
@@ -102,7 +102,7 @@ BlockStatus computeDiscreteForces(domain::DiscreteBlock& blk, const domain::Node
                                   std::size_t first, std::size_t last) {
   if (first > last || last > blk.size())
     throw std::logic_error("computeDiscreteForces: element range outside the block");
-  const bool damper = blk.kind == domain::DiscreteBlock::Kind::DamperViscous;
+  const bool damper = blk.law.kind == domain::DiscreteBlock::Kind::DamperViscous;
   BlockStatus st;
   for (std::size_t e = first; e < last; ++e) {
     double* slot = slots + 3 * (blk.slot_offset + 2 * e);
@@ -119,7 +119,7 @@ BlockStatus computeDiscreteForces(domain::DiscreteBlock& blk, const domain::Node
       const Vec dm = {d[0] - 0.5 * dt * dv[0], d[1] - 0.5 * dt * dv[1], d[2] - 0.5 * dt * dv[2]};
       const double lm = std::sqrt(dot(dm, dm));
       const double rate = lm > 0.0 ? dot(dm, dv) / lm : 0.0;
-      force = length > 0.0 ? scaleOf(blk, e) * blk.k * rate : 0.0;
+      force = length > 0.0 ? scaleOf(blk, e) * blk.law.k * rate : 0.0;
       blk.e_int[e] += force * rate * dt;
       blk.elongation[e] = length - blk.length0[e];
     } else {
@@ -153,19 +153,19 @@ double discreteStableStep(const domain::DiscreteBlock& blk, const std::vector<do
   }
   if (!(m > 0.0)) return kNoLimit;
   const double s = scaleOf(blk, e);
-  switch (blk.kind) {
+  switch (blk.law.kind) {
     case domain::DiscreteBlock::Kind::DamperViscous: {
-      const double cd = std::abs(s * blk.k);
+      const double cd = std::abs(s * blk.law.k);
       return cd > 0.0 ? m / cd : kNoLimit;
     }
     case domain::DiscreteBlock::Kind::SpringNonlinear: {
       double value = 0.0, slope = 0.0;
-      curveAt(blk.curve_x, blk.curve_y, blk.elongation[e] + offsetOf(blk, e), value, slope);
+      curveAt(blk.law.curve_x, blk.law.curve_y, blk.elongation[e] + offsetOf(blk, e), value, slope);
       const double k = s * slope;
       return k > 0.0 ? std::sqrt(2.0 * m / k) : kNoLimit;
     }
     default: {
-      const double k = std::abs(s * blk.k);
+      const double k = std::abs(s * blk.law.k);
       return k > 0.0 ? std::sqrt(2.0 * m / k) : kNoLimit;
     }
   }

@@ -64,10 +64,6 @@ inline void gradientOfAll(const NodalBatch& x, NodalBatch& b, std::index_sequenc
   (gradientOfNode<int(A)>(x, b), ...);
 }
 
-materials::Moduli moduliOf(const materials::Law& law) {
-  return std::visit([](const auto& m) { return m.moduli; }, law);
-}
-
 // The constants of one block for one call.
 struct SolidParams {
   double dt = 0, lam2mu = 0, qm = 0;
@@ -376,7 +372,7 @@ double solidTimeStep(double length, double wave_speed, double trace_d, const Bul
 }
 
 void markIsolatedElements(domain::SolidBlock& blk, const domain::GatherPlan& plan) {
-  const materials::Moduli mod = moduliOf(blk.law);
+  const materials::Moduli mod = materials::moduliOf(blk.law);
   const double factor =
       std::min(1.0, std::sqrt((mod.bulk + 4.0 / 3.0 * mod.shear) / (3.0 * mod.bulk)));
   blk.dt_scale.clear();
@@ -403,15 +399,18 @@ BlockStatus computeSolidForces(domain::SolidBlock& block, const domain::NodeVect
   if (first % kBatch != 0 || (last % kBatch != 0 && last != block.size()) || last > block.size())
     throw std::logic_error("computeSolidForces: range not aligned to batches");
   return std::visit(
-      [&](const auto& law) {
-        return solidBlockForces(law, block, x, v, dt, bv, slots, first, last);
+      [&](const auto& law) -> BlockStatus {
+        if constexpr (materials::SolidLaw<std::decay_t<decltype(law)>>)
+          return solidBlockForces(law, block, x, v, dt, bv, slots, first, last);
+        else
+          materials::noUpdateFor(materials::Family::Solid);
       },
       block.law);
 }
 
 BlockStatus initializeSolids(domain::SolidBlock& blk, const domain::NodeVector& x0, double* slots,
                              std::vector<double>& element_dt, const BulkViscosity& bv) {
-  const materials::Moduli mod = moduliOf(blk.law);
+  const materials::Moduli mod = materials::moduliOf(blk.law);
   const double c = std::sqrt((mod.bulk + 4.0 / 3.0 * mod.shear) / blk.rho0);
   BlockStatus st;
   NodalBatch xb, bb;

@@ -292,8 +292,11 @@ BlockStatus computeFullSolidForces(domain::SolidBlock& block, const domain::Node
                                    const domain::NodeVector& v, double dt, const BulkViscosity& bv,
                                    double* slots, std::size_t first, std::size_t last) {
   return std::visit(
-      [&](const auto& law) {
-        return fullBlockForces(law, block, x, v, dt, bv, slots, first, last);
+      [&](const auto& law) -> BlockStatus {
+        if constexpr (materials::SolidLaw<std::decay_t<decltype(law)>>)
+          return fullBlockForces(law, block, x, v, dt, bv, slots, first, last);
+        else
+          materials::noUpdateFor(materials::Family::Solid);
       },
       block.law);
 }

@@ -292,30 +292,12 @@ struct ShellConstants {
 
 ShellConstants constantsOf(const materials::Law& law, double rho0) {
   ShellConstants c;
-  const materials::Moduli m = std::visit([](const auto& l) { return l.moduli; }, law);
+  const materials::Moduli m = materials::moduliOf(law);
   c.E = materials::youngModulus(m);
   c.nu = materials::poissonRatio(m);
   c.G = m.shear;
   c.wave_speed = std::sqrt(c.E / (rho0 * (1.0 - c.nu * c.nu)));
   return c;
-}
-
-// Effective plastic strain at failure (0: none).
-double failureStrainOf(const materials::Elastic&) {
-  return 0.0;
-}
-double failureStrainOf(const materials::PlasticKinematic& law) {
-  return law.fs;
-}
-double failureStrainOf(const materials::PiecewiseLinear& law) {
-  return law.fail;
-}
-
-bool lawIsPlastic(const materials::Law& law) {
-  return std::visit([](const auto& l) { return std::decay_t<decltype(l)>::kPlastic; }, law);
-}
-bool lawIsKinematic(const materials::Law& law) {
-  return std::visit([](const auto& l) { return std::decay_t<decltype(l)>::kKinematic; }, law);
 }
 
 // The constants of one block for one call, shared by the phases below.
@@ -354,7 +336,7 @@ ShellParams shellParamsOf(const Law& law, const domain::ShellBlock& blk, double 
   p.drill_coef = kDrillStiffness * p.mc.E * (1.0 / 12.0);
   p.thickness_update = blk.thickness_update;
   p.scaled_mass = !blk.mass_scale.empty();
-  p.can_fail = failureStrainOf(law) > 0.0;
+  p.can_fail = law.failureStrain() > 0.0;
   for (int i = 0; i < p.nip; ++i) {
     p.zeta[i] = blk.zeta[static_cast<std::size_t>(i)];
     p.weight[i] = blk.weight[static_cast<std::size_t>(i)];
@@ -528,7 +510,7 @@ inline void pointStresses(const Law& law, const ShellParams& p, ShellScratch& s,
     pts.de_zz = s.dzz;
     pts.eps_p = Law::kPlastic ? s.ep : nullptr;
     pts.failed = p.can_fail ? s.failed : nullptr;
-    materials::updatePlaneStress(law, pts);
+    law.updatePlaneStress(pts);
   }
   for (int l = 0; l < B; ++l) failed_points[l] = 0.0;
   if (p.can_fail) {
@@ -941,12 +923,12 @@ void resizeShellBlock(domain::ShellBlock& blk, std::size_t n) {
   blk.failed.assign(padded, 0);
   blk.sig.assign(padded * static_cast<std::size_t>(blk.sigFields()), 0.0);
   const std::size_t nip = static_cast<std::size_t>(blk.nip);
-  if (lawIsPlastic(blk.law)) {
+  if (materials::isPlastic(blk.law)) {
     blk.eps_p.assign(padded * nip, 0.0);
   } else {
     blk.eps_p.clear();
   }
-  if (lawIsKinematic(blk.law)) {
+  if (materials::isKinematic(blk.law)) {
     blk.alpha.assign(padded * 3 * nip, 0.0);
   } else {
     blk.alpha.clear();
@@ -1028,8 +1010,11 @@ BlockStatus computeShellForces(domain::ShellBlock& block, const domain::NodeVect
       last > block.size())
     throw std::logic_error("computeShellForces: range not aligned to batches");
   return std::visit(
-      [&](const auto& law) {
-        return shellBlockForces(law, block, x, v, w, dt, slots, first, last);
+      [&](const auto& law) -> BlockStatus {
+        if constexpr (materials::ShellLaw<std::decay_t<decltype(law)>>)
+          return shellBlockForces(law, block, x, v, w, dt, slots, first, last);
+        else
+          materials::noUpdateFor(materials::Family::Shell);
       },
       block.law);
 }

@@ -1,13 +1,10 @@
-// Hypoelastic law, elastic constants and the model -> law translation (makeLaw).
-// The plastic return mappings live in plastic.cpp.
+// What the rest of Crumple asks of a law, answered for every law of registry.hpp, and the
+// checks the law units share.
 #include "materials/materials.hpp"
 
-#include <cmath>
-#include <cstddef>
-#include <string>
-#include <type_traits>
+#include <stdexcept>
 
-#include "materials/soa.hpp"
+#include "deck/card.hpp"
 #include "util/error.hpp"
 
 namespace crumple::materials {
@@ -17,116 +14,129 @@ Moduli moduliFromYoung(double E, double nu) {
   return Moduli{E / (3.0 * (1.0 - 2.0 * nu)), E / (2.0 * (1.0 + nu))};
 }
 
+void readElastic(const deck::Card& c, double& E, double& nu) {
+  E = c.real("E");
+  nu = c.real("PR");
+  if (E <= 0) c.fail("E", "Young's modulus must be positive");
+  if (!(nu > -1.0 && nu < 0.5)) c.fail("PR", "Poisson's ratio must lie in (-1, 0.5)");
+}
+
+void checkYield(const deck::Card& c, double E, double sigy, double etan) {
+  if (sigy <= 0) c.fail("SIGY", "the yield stress must be positive");
+  if (etan < 0 || etan >= E) c.fail("ETAN", "the tangent modulus must lie in [0, E)");
+}
+
+void checkModuli(const std::string& at, double E, double nu) {
+  if (!(E > 0.0)) throw util::InputError(at + "E must be positive");
+  if (!(nu > -1.0 && nu < 0.5)) throw util::InputError(at + "PR must lie in (-1, 0.5)");
+}
+
+void checkTangent(const std::string& at, double E, double etan) {
+  if (!(etan >= 0.0 && etan < E)) throw util::InputError(at + "ETAN must lie in [0, E)");
+}
+
 namespace {
-// Hypoelastic (Hooke's law on the rate of deformation): the kernel has already applied the
-// Jaumann rotation, so the increment is ds = lambda tr(de) I + 2 G de with tensor shear
-// components (2 G de_xy is the shear stress increment for de_xy = D_xy dt).
-void elasticKernel(detail::Soa a, int n, double lam, double G2) {
-  for (int i = 0; i < n; ++i) {
-    const double lt = lam * (a.d0[i] + a.d1[i] + a.d2[i]);
-    a.s0[i] += lt + G2 * a.d0[i];
-    a.s1[i] += lt + G2 * a.d1[i];
-    a.s2[i] += lt + G2 * a.d2[i];
-    a.s3[i] += G2 * a.d3[i];
-    a.s4[i] += G2 * a.d4[i];
-    a.s5[i] += G2 * a.d5[i];
+
+template <class U>
+using Made = decltype(U::make(std::declval<const typename U::Params&>(),
+                              std::declval<const CurveAt&>(), std::declval<const std::string&>()));
+
+template <class U>
+constexpr bool kContinuum = requires(const Made<U>& m) {
+  m.moduli;
+};
+
+template <class U>
+constexpr bool supportsFamily(Family f) {
+  if constexpr (requires { U::kRigid; }) return f != Family::Discrete;
+  if constexpr (std::is_same_v<Made<U>, DiscreteLaw>) return f == Family::Discrete;
+  using M = Made<U>;
+  switch (f) {
+    case Family::Solid:
+      return SolidLaw<M>;
+    case Family::Shell:
+      return ShellLaw<M>;
+    case Family::Beam:
+      return BeamLaw<M>;
+    case Family::Discrete:
+      return false;
   }
-}
-}  // namespace
-
-void Elastic::update(PointBatch& b) const {
-  const double G2 = 2.0 * moduli.shear;
-  elasticKernel(detail::soaOf(b), b.n, moduli.bulk - G2 / 3.0, G2);
-}
-
-namespace {
-
-std::string at(const model::Material& m, const char* keyword) {
-  return m.where.str() + ": " + keyword + " " + std::to_string(m.id) + ": ";
-}
-
-// E and nu must give positive K and G; the builder validates these too, but a law built
-// from an unchecked Model must not silently produce negative wave speeds.
-void checkElastic(const model::Material& m, const char* keyword, double E, double nu) {
-  if (!(E > 0.0)) throw util::InputError(at(m, keyword) + "E must be positive");
-  if (!(nu > -1.0 && nu < 0.5)) throw util::InputError(at(m, keyword) + "PR must lie in (-1, 0.5)");
-}
-
-// Ep = E Etan / (E - Etan) is singular for Etan = E and negative beyond it.
-void checkTangent(const model::Material& m, const char* keyword, double E, double etan) {
-  if (!(etan >= 0.0 && etan < E))
-    throw util::InputError(at(m, keyword) + "ETAN must lie in [0, E)");
+  return false;
 }
 
 }  // namespace
 
-Law makeLaw(const model::Material& m, const model::Model& model) {
+std::string_view keywordOf(const LawParams& p) {
+  return std::visit([](const auto& l) { return UnitOf<std::decay_t<decltype(l)>>::kKeywords[0]; },
+                    p);
+}
+
+bool supports(const LawParams& p, Family f) {
   return std::visit(
-      [&](const auto& law) -> Law {
-        using T = std::decay_t<decltype(law)>;
-        if constexpr (std::is_same_v<T, model::ElasticLaw>) {
-          checkElastic(m, "*MAT_ELASTIC", law.E, law.nu);
-          return Elastic{moduliFromYoung(law.E, law.nu)};
-        } else if constexpr (std::is_same_v<T, model::PlasticKinematicLaw>) {
-          const char* kw = "*MAT_PLASTIC_KINEMATIC";
-          checkElastic(m, kw, law.E, law.nu);
-          checkTangent(m, kw, law.E, law.etan);
-          if (!(law.beta >= 0.0 && law.beta <= 1.0))
-            throw util::InputError(at(m, kw) + "BETA must lie in [0, 1]");
-          PlasticKinematic pk;
-          pk.moduli = moduliFromYoung(law.E, law.nu);
-          pk.sigy = law.sigy;
-          pk.etan = law.etan;
-          pk.beta = law.beta;
-          pk.src = law.src;
-          pk.srp = law.srp;
-          pk.fs = law.fs;
-          return pk;
-        } else if constexpr (std::is_same_v<T, model::RigidLaw>) {
-          // A rigid part computes no stress; its elastic constants serve contact stiffness.
-          checkElastic(m, "*MAT_RIGID", law.E, law.nu);
-          return Elastic{moduliFromYoung(law.E, law.nu)};
-        } else if constexpr (std::is_same_v<T, model::SpringElasticLaw> ||
-                             std::is_same_v<T, model::DamperViscousLaw> ||
-                             std::is_same_v<T, model::SpringNonlinearLaw>) {
-          throw util::InputError(at(m, model::materialKeyword(m.law)) +
+      [f](const auto& l) { return supportsFamily<UnitOf<std::decay_t<decltype(l)>>>(f); }, p);
+}
+
+Cost costOf(const LawParams& p) {
+  return std::visit([](const auto& l) { return UnitOf<std::decay_t<decltype(l)>>::kCost; }, p);
+}
+
+bool hasDensity(const LawParams& p) {
+  return std::visit([](const auto& l) { return UnitOf<std::decay_t<decltype(l)>>::kDensity; }, p);
+}
+
+bool isRigid(const LawParams& p) {
+  return std::visit(
+      [](const auto& l) {
+        return requires {
+          UnitOf<std::decay_t<decltype(l)>>::kRigid;
+        };
+      },
+      p);
+}
+
+Law makeLaw(const LawParams& p, const CurveAt& curves, const std::string& at) {
+  return std::visit(
+      [&](const auto& params) -> Law {
+        using U = UnitOf<std::decay_t<decltype(params)>>;
+        if constexpr (kContinuum<U>)
+          return U::make(params, curves, at);
+        else
+          throw util::InputError(at +
                                  "is a spring or damper material: only discrete elements "
                                  "(*ELEMENT_DISCRETE) can use it");
-        } else {
-          static_assert(std::is_same_v<T, model::PiecewiseLinearLaw>,
-                        "a continuum law needs its case in makeLaw");
-          const char* kw = "*MAT_PIECEWISE_LINEAR_PLASTICITY";
-          checkElastic(m, kw, law.E, law.nu);
-          PiecewiseLinear pl;
-          pl.moduli = moduliFromYoung(law.E, law.nu);
-          pl.sigy = law.sigy;
-          pl.etan = law.etan;
-          pl.c = law.c;
-          pl.p = law.p;
-          pl.fail = law.fail;
-          if (law.lcss != model::kNone) {
-            // LCSS given: SIGY and ETAN are ignored (LS-DYNA keyword manual, MAT_024); the
-            // initial yield stress is the curve's value at zero plastic strain.
-            if (law.lcss < 0 || static_cast<std::size_t>(law.lcss) >= model.curves.size())
-              throw util::InputError(at(m, kw) + "LCSS does not name a curve");
-            const model::Curve& c = model.curves[static_cast<std::size_t>(law.lcss)];
-            if (c.x.empty() || c.x.size() != c.y.size())
-              throw util::InputError(at(m, kw) + "LCSS curve " + std::to_string(c.id) +
-                                     " has no points");
-            for (std::size_t k = 1; k < c.x.size(); ++k)
-              if (!(c.x[k] >= c.x[k - 1]))
-                throw util::InputError(at(m, kw) + "LCSS curve " + std::to_string(c.id) +
-                                       " must have non-decreasing plastic strains");
-            pl.curve_eps = c.x;
-            pl.curve_sig = c.y;
-            pl.sigy = c.valueExtrapolated(0.0);
-          } else {
-            checkTangent(m, kw, law.E, law.etan);
-          }
-          return pl;
-        }
       },
-      m.law);
+      p);
+}
+
+DiscreteLaw makeDiscreteLaw(const LawParams& p, const CurveAt& curves, const std::string& at) {
+  return std::visit(
+      [&](const auto& params) -> DiscreteLaw {
+        using U = UnitOf<std::decay_t<decltype(params)>>;
+        if constexpr (std::is_same_v<Made<U>, DiscreteLaw>)
+          return U::make(params, curves, at);
+        else
+          throw util::InputError(at +
+                                 "is not a spring or damper material: discrete elements "
+                                 "need one");
+      },
+      p);
+}
+
+void noUpdateFor(Family f) {
+  static constexpr const char* kNames[] = {"solid", "shell", "beam", "discrete"};
+  throw std::logic_error(std::string("a law without a ") + kNames[static_cast<int>(f)] +
+                         " update reached its kernel");
+}
+
+FibreLaw fibreLawOf(const Law& law) {
+  return std::visit(
+      [](const auto& l) -> FibreLaw {
+        if constexpr (BeamLaw<std::decay_t<decltype(l)>>)
+          return l.fibre();
+        else
+          noUpdateFor(Family::Beam);
+      },
+      law);
 }
 
 }  // namespace crumple::materials

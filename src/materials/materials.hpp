@@ -1,88 +1,122 @@
-// Constitutive updates over batches of integration points (structure of arrays).
-//
-// A law is a plain struct of parameters with a const `update(PointBatch&)` that advances the
-// stress of every point in the batch over one time step. The element kernel has already
-// rotated the stress to the current configuration (Jaumann rate) and passes the strain
-// increment de = D*dt. Kernels are templated on the law (see elements/hex8.hpp), so there is
-// no virtual call per point.
-//
-// Voigt order everywhere: xx, yy, zz, xy, yz, zx, tensor (not engineering) shear components.
+// The material laws as the rest of Crumple sees them: the deck's parameters of any law
+// (LawParams, stored in the Model), the law a continuum element kernel runs (Law: a variant
+// over the laws that have stress updates, so a kernel is instantiated per law and makes no
+// virtual call per point) and the questions asked of a law by the model builder, the
+// partitioner and the solver. All of it is generated from the list in registry.hpp.
 #pragma once
 
 #include <cstdint>
+#include <string>
+#include <string_view>
+#include <type_traits>
 #include <variant>
-#include <vector>
 
-#include "model/model.hpp"
+#include "materials/registry.hpp"
 
 namespace crumple::materials {
 
-// A batch of n integration points; every pointer addresses n contiguous values.
-struct PointBatch {
-  int n = 0;
-  double dt = 0.0;
-  double* s[6] = {};          // stress, in/out
-  const double* de[6] = {};   // strain increment D*dt, in
-  double* eps_p = nullptr;    // effective plastic strain, in/out (laws with plasticity)
-  double* alpha[6] = {};      // back stress, in/out (laws with kinematic hardening)
-  uint8_t* failed = nullptr;  // out: set to 1 when the point reaches the failure strain
+// The element families a law can serve.
+enum class Family : uint8_t { Solid, Shell, Beam, Discrete };
+
+// A kernel law with the update of each continuum family (law.hpp).
+template <class L>
+concept SolidLaw = requires(const L& l, PointBatch& b) {
+  l.update(b);
+};
+template <class L>
+concept ShellLaw = requires(const L& l, PlaneStressPoints& b) {
+  l.updatePlaneStress(b);
+};
+template <class L>
+concept BeamLaw = requires(const L& l) {
+  l.fibre();
 };
 
-// Elastic moduli every law exposes for wave speeds and hourglass control.
-struct Moduli {
-  double bulk = 0.0;   // K
-  double shear = 0.0;  // G
+// Thrown by a kernel handed a law without its family's update: the model builder refuses such
+// a part (finishParts), so this is a coding error, never an input one.
+[[noreturn]] void noUpdateFor(Family f);
+
+namespace detail {
+
+template <class List>
+struct Variants;
+template <class... L>
+struct Variants<LawList<L...>> {
+  using Params = std::variant<typename L::Params...>;
 };
 
-// *MAT_ELASTIC: hypoelastic, s += lambda tr(de) I + 2 G de.
-struct Elastic {
-  Moduli moduli;
-  static constexpr bool kPlastic = false;
-  static constexpr bool kKinematic = false;
-  void update(PointBatch& b) const;
+template <class T, class... Ts>
+struct AppendUnique {
+  using type = std::conditional_t<(std::is_same_v<T, Ts> || ...), std::variant<Ts...>,
+                                  std::variant<Ts..., T>>;
+};
+template <class V, class... L>
+struct RuntimeOf;
+template <class... Ts>
+struct RuntimeOf<std::variant<Ts...>> {
+  using type = std::variant<Ts...>;
+};
+template <class... Ts, class L, class... Rest>
+struct RuntimeOf<std::variant<Ts...>, L, Rest...> {
+  using Made =
+      decltype(L::make(std::declval<const typename L::Params&>(), std::declval<const CurveAt&>(),
+                       std::declval<const std::string&>()));
+  // Continuum laws only: a law whose make() gives a continuum law adds it once.
+  using Next = std::conditional_t < requires(const Made& m) { m.moduli; }
+  , typename AppendUnique<Made, Ts...>::type, std::variant < Ts... >> ;
+  using type = typename RuntimeOf<Next, Rest...>::type;
+};
+template <class List>
+struct Runtime;
+template <class... L>
+struct Runtime<LawList<L...>> {
+  using type = typename RuntimeOf<std::variant<>, L...>::type;
 };
 
-// *MAT_PLASTIC_KINEMATIC: von Mises with linear mixed hardening (beta: 0 kinematic,
-// 1 isotropic), radial return; Cowper-Symonds scaling of the yield stress by
-// 1 + (rate/C)^(1/P); failure at effective plastic strain fs.
-struct PlasticKinematic {
-  Moduli moduli;
-  double sigy = 0, etan = 0, beta = 0, src = 0, srp = 0, fs = 0;
-  static constexpr bool kPlastic = true;
-  static constexpr bool kKinematic = true;
-  void update(PointBatch& b) const;
-};
+}  // namespace detail
 
-// *MAT_PIECEWISE_LINEAR_PLASTICITY: von Mises, isotropic hardening from a yield curve
-// (LCSS, stress vs effective plastic strain) or bilinear (SIGY, ETAN); Cowper-Symonds rate
-// scaling; failure at effective plastic strain `fail`.
-struct PiecewiseLinear {
-  Moduli moduli;
-  double sigy = 0, etan = 0, c = 0, p = 0, fail = 0;
-  std::vector<double> curve_eps, curve_sig;  // empty: bilinear from sigy/etan
-  static constexpr bool kPlastic = true;
-  static constexpr bool kKinematic = false;
-  void update(PointBatch& b) const;
-  double yieldStress(double eps_p) const;  // static (rate-free) flow stress
-};
+// The deck's parameters of any law.
+using LawParams = detail::Variants<AllLaws>::Params;
+// The law of a continuum element block.
+using Law = detail::Runtime<AllLaws>::type;
 
-using Law = std::variant<Elastic, PlasticKinematic, PiecewiseLinear>;
+template <class P>
+using UnitOf = typename P::Law;
 
-// Builds the law of a model material (curves resolved through the model).
-Law makeLaw(const model::Material& m, const model::Model& model);
+// "*MAT_ELASTIC", "*MAT_RIGID", ... for messages and summaries.
+std::string_view keywordOf(const LawParams& p);
+// Whether the law has an update for the element family (rigid laws serve every continuum
+// family; spring and damper laws only discrete elements).
+bool supports(const LawParams& p, Family f);
+// The cost class of the law for the partitioner.
+Cost costOf(const LawParams& p);
+// False for spring and damper laws, which have no density field.
+bool hasDensity(const LawParams& p);
+bool isRigid(const LawParams& p);
 
-// Bulk and shear modulus from E and nu.
-Moduli moduliFromYoung(double E, double nu);
+// The kernel law of a continuum part; `at` prefixes messages ("deck.k:12: *MAT_ELASTIC 3: ").
+// Throws util::InputError when the parameters are unusable or the law has no continuum update.
+Law makeLaw(const LawParams& p, const CurveAt& curves, const std::string& at);
+// The law of a discrete part; throws util::InputError for a law that is not a spring or damper.
+DiscreteLaw makeDiscreteLaw(const LawParams& p, const CurveAt& curves, const std::string& at);
 
-// Young's modulus from the bulk and shear moduli the laws store.
-inline double youngOf(const Moduli& m) {
-  return 9.0 * m.bulk * m.shear / (3.0 * m.bulk + m.shear);
+// Questions every kernel law answers.
+inline const Moduli& moduliOf(const Law& law) {
+  return std::visit([](const auto& l) -> const Moduli& { return l.moduli; }, law);
 }
-
-// Plastic hardening modulus dsigma/deps_p of a bilinear curve with tangent Etan, so that the
-// uniaxial slope after yield, E Ep / (E + Ep), is Etan. Precondition Etan < E (makeLaw).
-inline double plasticModulus(double E, double etan) {
-  return E * etan / (E - etan);
+inline double deletionStepOf(const Law& law) {
+  return std::visit([](const auto& l) { return l.deletionStep(); }, law);
 }
+inline double failureStrainOf(const Law& law) {
+  return std::visit([](const auto& l) { return l.failureStrain(); }, law);
+}
+inline bool isPlastic(const Law& law) {
+  return std::visit([](const auto& l) { return std::decay_t<decltype(l)>::kPlastic; }, law);
+}
+inline bool isKinematic(const Law& law) {
+  return std::visit([](const auto& l) { return std::decay_t<decltype(l)>::kKinematic; }, law);
+}
+// The beam fibre law; throws std::logic_error for a law without one (refused at build).
+FibreLaw fibreLawOf(const Law& law);
 
 }  // namespace crumple::materials

@@ -33,7 +33,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <vector>
+#include <span>
 
 namespace crumple::materials {
 
@@ -151,11 +151,6 @@ inline double newtonDenominator(double S, double q2, double H, double dg) {
 }
 
 // ---- linear mixed hardening (MAT_003, bilinear MAT_024) --------------------------------------
-struct LinearHardening {
-  ElasticConstants el;
-  double sigy = 0, Hi = 0, Hk = 0;
-  double C = 0, inv_P = 0;  // Cowper-Symonds
-};
 
 // Trial state of a chunk: what the Newton iteration needs per point.
 struct Trial {
@@ -190,8 +185,7 @@ inline double halleyStep(double c1, double c2, double sy, double k, double m1, d
 
 template <bool kKinematic, bool kRate>
 [[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] void linearPlaneStress(
-    Views a, int n, double dt, const LinearHardening P) {
-  const ElasticConstants& c = P.el;
+    Views a, int n, double dt, const ElasticConstants c, const LinearHardening P) {
   const double m1 = c.m1 + kTwoThirds * P.Hk, m2 = c.G2 + kTwoThirds * P.Hk;
   const double inv_m_min = 1.0 / std::min(m1, m2);
   const double inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;
@@ -321,6 +315,8 @@ template <bool kKinematic, bool kRate>
 
 // Failure by effective plastic strain: set where reached (a failed point stays failed because
 // its plastic strain never decreases).
+}  // namespace
+
 void markFailed(PlaneStressPoints& b, double limit) {
   if (b.failed == nullptr) return;
   uint8_t* __restrict failed = b.failed;
@@ -332,12 +328,14 @@ void markFailed(PlaneStressPoints& b, double limit) {
   for (int i = 0; i < b.n; ++i) failed[i] = static_cast<uint8_t>(ep[i] >= limit ? 1 : 0);
 }
 
+namespace {
+
 template <bool kKinematic>
-void linearUpdate(PlaneStressPoints& b, const LinearHardening& P) {
+void linearUpdate(PlaneStressPoints& b, const ElasticConstants& c, const LinearHardening& P) {
   if (P.C > 0.0) {
-    linearPlaneStress<kKinematic, true>(viewsOf(b), b.n, b.dt, P);
+    linearPlaneStress<kKinematic, true>(viewsOf(b), b.n, b.dt, c, P);
   } else {
-    linearPlaneStress<kKinematic, false>(viewsOf(b), b.n, b.dt, P);
+    linearPlaneStress<kKinematic, false>(viewsOf(b), b.n, b.dt, c, P);
   }
 }
 
@@ -345,7 +343,7 @@ void linearUpdate(PlaneStressPoints& b, const LinearHardening& P) {
 // Flow stress and slope of the curve at eps, with the segment convention of
 // model::Curve::valueExtrapolated: segment k holds [x[k], x[k+1]), clamped to the end segments
 // (linear extrapolation beyond them); a single point is a constant flow stress.
-void curveAt(const std::vector<double>& x, const std::vector<double>& y, double eps, double& h,
+void curveAt(std::span<const double> x, std::span<const double> y, double eps, double& h,
              double& slope) {
   if (x.size() == 1) {
     h = y[0];
@@ -369,11 +367,10 @@ void curveAt(const std::vector<double>& x, const std::vector<double>& y, double 
 // slope looked up at the current iterate; one point at a time (the segment search does not
 // vectorise).
 template <bool kRate>
-void curvePlaneStress(PlaneStressPoints& b, const PiecewiseLinear& law) {
-  const ElasticConstants c = elasticConstantsOf(law.moduli);
+void curvePlaneStress(PlaneStressPoints& b, const Moduli& moduli, const CurveHardening& law) {
+  const ElasticConstants c = elasticConstantsOf(moduli);
   const double m1 = c.m1, m2 = c.G2;
   const double inv_dt = b.dt > 0.0 ? 1.0 / b.dt : 0.0;
-  const double inv_P = kRate ? 1.0 / law.p : 0.0;
   for (int i = 0; i < b.n; ++i) {
     const double d0 = b.de[0][i], d1 = b.de[1][i], d2 = b.de[2][i];
     const double s0 = b.s[0][i], s1 = b.s[1][i];
@@ -382,10 +379,10 @@ void curvePlaneStress(PlaneStressPoints& b, const PiecewiseLinear& law) {
     const double t2 = b.s[2][i] + c.G2 * d2;
     const double x1 = t0 + t1, x2 = t0 - t1;
     const double c1 = x1 * x1 * (1.0 / 6.0), c2 = 0.5 * x2 * x2 + 2.0 * t2 * t2;
-    const double rf = kRate ? cowperSymonds(d0, d1, d2, inv_dt, law.c, inv_P) : 1.0;
+    const double rf = kRate ? cowperSymonds(d0, d1, d2, inv_dt, law.C, law.inv_P) : 1.0;
     const double e = b.eps_p[i];
     double h, slope;
-    curveAt(law.curve_eps, law.curve_sig, e, h, slope);
+    curveAt(law.eps, law.sig, e, h, slope);
     const double q_trial = std::sqrt(1.5 * (c1 + c2));
     double dg = 0.0;
     if (q_trial > rf * h) {
@@ -399,7 +396,7 @@ void curvePlaneStress(PlaneStressPoints& b, const PiecewiseLinear& law) {
         const double u1 = c1 * i1 * i1, u2 = c2 * i2 * i2;
         const double q2 = 1.5 * (u1 + u2);
         const double q = std::sqrt(q2);
-        curveAt(law.curve_eps, law.curve_sig, e + kTwoThirds * dg * q, h, slope);
+        curveAt(law.eps, law.sig, e + kTwoThirds * dg * q, h, slope);
         const double g = q - rf * h;
         if (g > 0.0) {
           lo = dg;
@@ -433,47 +430,26 @@ void curvePlaneStress(PlaneStressPoints& b, const PiecewiseLinear& law) {
 
 }  // namespace
 
-void updatePlaneStress(const Elastic& law, PlaneStressPoints& b) {
-  elasticPlaneStress(viewsOf(b), b.n, elasticConstantsOf(law.moduli));
+void planeStressElastic(PlaneStressPoints& b, const Moduli& m) {
+  elasticPlaneStress(viewsOf(b), b.n, elasticConstantsOf(m));
   if (b.failed != nullptr) std::fill(b.failed, b.failed + b.n, uint8_t{0});
 }
 
-void updatePlaneStress(const PlasticKinematic& law, PlaneStressPoints& b) {
-  LinearHardening P;
-  P.el = elasticConstantsOf(law.moduli);
-  P.sigy = law.sigy;
-  const double Ep = P.el.E * law.etan / (P.el.E - law.etan);
-  P.Hi = law.beta * Ep;
-  P.Hk = (1.0 - law.beta) * Ep;
-  if (law.src > 0.0 && law.srp > 0.0) {
-    P.C = law.src;
-    P.inv_P = 1.0 / law.srp;
+void planeStressLinear(PlaneStressPoints& b, const Moduli& m, const LinearHardening& P,
+                       bool kinematic) {
+  if (kinematic) {
+    linearUpdate<true>(b, elasticConstantsOf(m), P);
+  } else {
+    linearUpdate<false>(b, elasticConstantsOf(m), P);
   }
-  linearUpdate<true>(b, P);
-  markFailed(b, law.fs);
 }
 
-void updatePlaneStress(const PiecewiseLinear& law, PlaneStressPoints& b) {
-  const bool rate = law.c > 0.0 && law.p > 0.0;
-  if (!law.curve_eps.empty()) {
-    if (rate) {
-      curvePlaneStress<true>(b, law);
-    } else {
-      curvePlaneStress<false>(b, law);
-    }
+void planeStressCurve(PlaneStressPoints& b, const Moduli& m, const CurveHardening& P) {
+  if (P.C > 0.0) {
+    curvePlaneStress<true>(b, m, P);
   } else {
-    // Bilinear: isotropic linear hardening (no back stress needed).
-    LinearHardening P;
-    P.el = elasticConstantsOf(law.moduli);
-    P.sigy = law.sigy;
-    P.Hi = P.el.E * law.etan / (P.el.E - law.etan);
-    if (rate) {
-      P.C = law.c;
-      P.inv_P = 1.0 / law.p;
-    }
-    linearUpdate<false>(b, P);
+    curvePlaneStress<false>(b, m, P);
   }
-  markFailed(b, law.fail);
 }
 
 }  // namespace crumple::materials

@@ -13,14 +13,16 @@
 // return (materials.hpp) gives when it is fed the returned thickness strain; the unit tests
 // check this.
 //
-// Like materials.hpp, a law is applied to a batch of points held as structure of arrays, with
-// the overload chosen at compile time (no virtual call per point), and a point's result never
-// depends on the other points of the batch (each point iterates until its own convergence).
+// Like return_mapping.hpp, these are the building blocks a law unit's updatePlaneStress calls
+// on a batch of points held as structure of arrays (no virtual call per point), and a point's
+// result never depends on the other points of the batch (each point iterates until its own
+// convergence).
 #pragma once
 
 #include <cstdint>
 
-#include "materials/materials.hpp"
+#include "materials/law.hpp"
+#include "materials/return_mapping.hpp"
 
 namespace crumple::materials {
 
@@ -45,8 +47,15 @@ double poissonRatio(const Moduli& m);
 // last iterate); a return from an explicit step converges in 2 to 6.
 inline constexpr int kPlaneStressMaxIterations = 60;
 
-void updatePlaneStress(const Elastic& law, PlaneStressPoints& b);
-void updatePlaneStress(const PlasticKinematic& law, PlaneStressPoints& b);
-void updatePlaneStress(const PiecewiseLinear& law, PlaneStressPoints& b);
+// Plane-stress Hooke's law; clears b.failed.
+void planeStressElastic(PlaneStressPoints& b, const Moduli& m);
+// Linear mixed hardening (return_mapping.hpp); `kinematic` updates the back stress b.alpha.
+void planeStressLinear(PlaneStressPoints& b, const Moduli& m, const LinearHardening& P,
+                       bool kinematic);
+// Isotropic hardening along a yield curve.
+void planeStressCurve(PlaneStressPoints& b, const Moduli& m, const CurveHardening& P);
+// Sets b.failed to 1 where the effective plastic strain has reached `limit`, else 0 (all 0
+// when limit <= 0).
+void markFailed(PlaneStressPoints& b, double limit);
 
 }  // namespace crumple::materials

@@ -6,7 +6,7 @@
 // of one batch never overlap (PointBatch contract), which is what restrict promises.
 #pragma once
 
-#include "materials/materials.hpp"
+#include "materials/law.hpp"
 
 namespace crumple::materials::detail {
 

@@ -5,8 +5,6 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <type_traits>
-#include <variant>
 
 namespace crumple::materials {
 
@@ -40,53 +38,6 @@ void flowStressAndSlope(const FibreLaw& law, double eps_p, double& y, double& h)
 }
 
 }  // namespace
-
-double youngsModulus(const Law& law) {
-  return std::visit([](const auto& l) { return youngOf(l.moduli); }, law);
-}
-
-FibreLaw fibreLawOf(const Law& law) {
-  return std::visit(
-      [](const auto& l) {
-        using T = std::decay_t<decltype(l)>;
-        FibreLaw f;
-        f.E = youngOf(l.moduli);
-        f.G = l.moduli.shear;
-        if constexpr (std::is_same_v<T, PlasticKinematic>) {
-          // MAT_003: beta splits the plastic modulus between isotropic and kinematic
-          // hardening, as in the 3-D return (plastic.cpp).
-          const double Ep = plasticModulus(f.E, l.etan);
-          f.plastic = true;
-          f.sigy = l.sigy;
-          f.Hi = l.beta * Ep;
-          f.Hk = (1.0 - l.beta) * Ep;
-          if (l.src > 0.0 && l.srp > 0.0) {
-            f.C = l.src;
-            f.inv_P = 1.0 / l.srp;
-          }
-          f.fail = l.fs;
-        } else if constexpr (std::is_same_v<T, PiecewiseLinear>) {
-          f.plastic = true;
-          f.sigy = l.sigy;  // the curve's value at zero plastic strain when LCSS is given
-          if (l.curve_eps.empty()) {
-            f.Hi = plasticModulus(f.E, l.etan);
-          } else {
-            f.curve_eps = l.curve_eps;
-            f.curve_sig = l.curve_sig;
-          }
-          if (l.c > 0.0 && l.p > 0.0) {
-            f.C = l.c;
-            f.inv_P = 1.0 / l.p;
-          }
-          f.fail = l.fail;
-        } else if constexpr (!std::is_same_v<T, Elastic>) {
-          static_assert(model::kNoLaw<T>,
-                        "a law used by beams needs its fibre (uniaxial) update here");
-        }
-        return f;
-      },
-      law);
-}
 
 double flowStress(const FibreLaw& law, double eps_p) {
   double y = 0.0, h = 0.0;

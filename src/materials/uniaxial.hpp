@@ -19,12 +19,12 @@
 // truss (no shear) it is the exact one-dimensional return.
 //
 // Points are updated one at a time (blocks of beams are small, see domain/blocks.hpp): one
-// call per point, no virtual call; the law is translated once per block (fibreLawOf).
+// call per point, no virtual call; a law unit translates itself once per block (its fibre()).
 #pragma once
 
 #include <span>
 
-#include "materials/materials.hpp"
+#include "materials/law.hpp"
 
 namespace crumple::materials {
 
@@ -48,12 +48,6 @@ struct FibreLaw {
   double C = 0.0, inv_P = 0.0;  // Cowper-Symonds 1 + (rate / C)^(1/P); C == 0: rate independent
   double fail = 0.0;            // effective plastic strain at failure; 0: none
 };
-
-// Translates a law (once per block per cycle; no allocation).
-FibreLaw fibreLawOf(const Law& law);
-
-// Young's modulus of a law (wave speeds, resultant stiffness).
-double youngsModulus(const Law& law);
 
 // Static yield stress at an effective plastic strain (Hi and the curve; no rate factor).
 double flowStress(const FibreLaw& law, double eps_p);

@@ -247,11 +247,18 @@ struct Meaning {
   Kind kind = Kind::Material;  // for UnknownOption::Definition
 };
 
+// The table plus one meaning per keyword name of every law in materials/registry.hpp.
+std::vector<Meaning> withLaws(std::vector<Meaning> m) {
+  for (const LawReader& law : lawReaders())
+    m.push_back({law.keyword, 1, law.read, {"TITLE"}, UnknownOption::Definition, Kind::Material});
+  return m;
+}
+
 // Phases: 0 curves, boxes, frames, nodes; 1 materials, sections, hourglass; 2 parts;
 // 3 elements; 4 lists of sets; 5 general node sets; 6 everything that refers to the above.
 const std::vector<Meaning>& meanings() {
   using U = UnknownOption;
-  static const std::vector<Meaning> m = {
+  static const std::vector<Meaning> m = withLaws({
       {"*TITLE", 0, readTitle, {}},
       {"*DEFINE_CURVE", 0, readCurve, {"TITLE"}, U::Definition, Kind::Curve},
       {"*DEFINE_TABLE",
@@ -279,22 +286,6 @@ const std::vector<Meaning>& meanings() {
        {},
        U::Definition,
        Kind::Material},
-      {"*MAT_ELASTIC", 1, readMatElastic, {"TITLE"}, U::Definition, Kind::Material},
-      {"*MAT_001", 1, readMatElastic, {"TITLE"}, U::Definition, Kind::Material},
-      {"*MAT_PLASTIC_KINEMATIC",
-       1,
-       readMatPlasticKinematic,
-       {"TITLE"},
-       U::Definition,
-       Kind::Material},
-      {"*MAT_003", 1, readMatPlasticKinematic, {"TITLE"}, U::Definition, Kind::Material},
-      {"*MAT_PIECEWISE_LINEAR_PLASTICITY",
-       1,
-       readMatPiecewiseLinear,
-       {"TITLE"},
-       U::Definition,
-       Kind::Material},
-      {"*MAT_024", 1, readMatPiecewiseLinear, {"TITLE"}, U::Definition, Kind::Material},
       {"*SECTION",
        1,
        [](Context& c, const deck::Keyword& k, const KeywordOptions&) {
@@ -307,19 +298,6 @@ const std::vector<Meaning>& meanings() {
       {"*SECTION_SHELL", 1, readSectionShell, {"TITLE"}, U::Definition, Kind::Section},
       {"*SECTION_BEAM", 1, readSectionBeam, {"TITLE"}, U::Definition, Kind::Section},
       {"*SECTION_DISCRETE", 1, readSectionDiscrete, {"TITLE"}, U::Definition, Kind::Section},
-      {"*MAT_RIGID", 1, readMatRigid, {"TITLE"}, U::Definition, Kind::Material},
-      {"*MAT_020", 1, readMatRigid, {"TITLE"}, U::Definition, Kind::Material},
-      {"*MAT_SPRING_ELASTIC", 1, readMatSpringElastic, {"TITLE"}, U::Definition, Kind::Material},
-      {"*MAT_S01", 1, readMatSpringElastic, {"TITLE"}, U::Definition, Kind::Material},
-      {"*MAT_DAMPER_VISCOUS", 1, readMatDamperViscous, {"TITLE"}, U::Definition, Kind::Material},
-      {"*MAT_S02", 1, readMatDamperViscous, {"TITLE"}, U::Definition, Kind::Material},
-      {"*MAT_SPRING_NONLINEAR_ELASTIC",
-       1,
-       readMatSpringNonlinear,
-       {"TITLE"},
-       U::Definition,
-       Kind::Material},
-      {"*MAT_S04", 1, readMatSpringNonlinear, {"TITLE"}, U::Definition, Kind::Material},
       {"*HOURGLASS", 1, readHourglass, {"TITLE"}, U::Definition, Kind::Hourglass},
       {"*PART", 2, readParts, {"INERTIA", "CONTACT"}, U::Reject},
       {"*ELEMENT_SOLID", 3, readSolids, {}, U::Reject},
@@ -393,7 +371,7 @@ const std::vector<Meaning>& meanings() {
       {"*DATABASE_BINARY_D3DUMP", 6, readDatabaseD3dump, {}},
       {"*DATABASE_HISTORY_NODE", 6, readHistoryNode, {"ID"}},
       {"*DATABASE_HISTORY_NODE_SET", 6, readHistoryNodeSet, {}},
-  };
+  });
   return m;
 }
 constexpr int kPhases = 7;

@@ -218,9 +218,6 @@ void readNodes(Context&, const deck::Keyword&, const KeywordOptions&);
 void readSolids(Context&, const deck::Keyword&, const KeywordOptions&);
 void readParts(Context&, const deck::Keyword&, const KeywordOptions&);
 void readSectionSolid(Context&, const deck::Keyword&, const KeywordOptions&);
-void readMatElastic(Context&, const deck::Keyword&, const KeywordOptions&);
-void readMatPlasticKinematic(Context&, const deck::Keyword&, const KeywordOptions&);
-void readMatPiecewiseLinear(Context&, const deck::Keyword&, const KeywordOptions&);
 void readHourglass(Context&, const deck::Keyword&, const KeywordOptions&);
 // Definitions Crumple does not support (*MAT_RIGID, *SECTION_SHELL, *DEFINE_TABLE, ...):
 // reported, and their id remembered so that a use of it can say what it is.
@@ -237,12 +234,15 @@ void readDiscretes(Context&, const deck::Keyword&, const KeywordOptions&);
 void readSectionShell(Context&, const deck::Keyword&, const KeywordOptions&);
 void readSectionBeam(Context&, const deck::Keyword&, const KeywordOptions&);
 void readSectionDiscrete(Context&, const deck::Keyword&, const KeywordOptions&);
-void readMatRigid(Context&, const deck::Keyword&, const KeywordOptions&);
-void readMatSpringElastic(Context&, const deck::Keyword&, const KeywordOptions&);
-void readMatDamperViscous(Context&, const deck::Keyword&, const KeywordOptions&);
-void readMatSpringNonlinear(Context&, const deck::Keyword&, const KeywordOptions&);
 
 void readControlShell(Context&, const deck::Keyword&, const KeywordOptions&);
+
+// build_materials.cpp: the reader of every law of materials/registry.hpp, by keyword name
+struct LawReader {
+  std::string_view keyword;
+  Handler read;
+};
+const std::vector<LawReader>& lawReaders();
 
 // build_contact.cpp
 void readContact(Context&, const deck::Keyword&, const KeywordOptions&);
@@ -260,9 +260,10 @@ bool nextRecord(deck::CardCursor& cur, bool starts_with_heading);
 int64_t positiveId(const deck::Card& c, std::string_view field);
 std::string readTitleCard(deck::CardCursor& cur, const deck::KeywordSpec& spec,
                           const KeywordOptions& opts);
-// MID and RO of card 1 (the definition is recorded; RO must be positive).
-Material readMaterialBase(Context& ctx, const deck::Card& c, std::string title);
-void checkElastic(const deck::Card& c, double E, double nu);
+// MID and RO of card 1 (the definition is recorded; RO must be positive). Spring and damper
+// laws have no RO (`density` false).
+Material readMaterialBase(Context& ctx, const deck::Card& c, std::string title,
+                          bool density = true);
 
 // build_sets.cpp
 void readCurve(Context&, const deck::Keyword&, const KeywordOptions&);

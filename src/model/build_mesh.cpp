@@ -1,6 +1,6 @@
 // Meaning of the mesh and its definitions: *NODE, *ELEMENT_SOLID, *PART, *SECTION_SOLID,
-// *MAT_ELASTIC (001), *MAT_PLASTIC_KINEMATIC (003), *MAT_PIECEWISE_LINEAR_PLASTICITY (024),
-// *HOURGLASS (LS-DYNA Keyword Manual Vol. I and II).
+// *HOURGLASS (LS-DYNA Keyword Manual Vol. I and II); the material laws read their own cards
+// (build_materials.cpp).
 #include <algorithm>
 #include <numeric>
 
@@ -32,6 +32,36 @@ std::vector<std::size_t> ascending(std::size_t n, Get id) {
   return order;
 }
 
+materials::Family lawFamily(SectionKind k) {
+  switch (k) {
+    case SectionKind::Solid:
+      return materials::Family::Solid;
+    case SectionKind::Shell:
+      return materials::Family::Shell;
+    case SectionKind::Beam:
+      return materials::Family::Beam;
+    case SectionKind::Discrete:
+      return materials::Family::Discrete;
+  }
+  return materials::Family::Solid;
+}
+
+const char* sectionName(SectionKind k) {
+  static constexpr const char* kNames[] = {"a *SECTION_SOLID", "a *SECTION_SHELL",
+                                           "a *SECTION_BEAM", "a *SECTION_DISCRETE"};
+  return kNames[static_cast<int>(k)];
+}
+
+// What the law lacks for elements of the section kind.
+const char* updateName(SectionKind k) {
+  static constexpr const char* kNames[] = {
+      "update for solid elements", "plane-stress update for shell elements",
+      "uniaxial (fibre) update for beam elements",
+      "force law for discrete elements (springs and dampers need *MAT_SPRING_ELASTIC, "
+      "*MAT_DAMPER_VISCOUS or *MAT_SPRING_NONLINEAR_ELASTIC)"};
+  return kNames[static_cast<int>(k)];
+}
+
 }  // namespace
 
 int64_t positiveId(const Card& c, std::string_view field) {
@@ -56,28 +86,19 @@ std::string readTitleCard(CardCursor& cur, const deck::KeywordSpec& spec,
 }
 
 // MID and RO of card 1, shared by the materials, checked as LS-DYNA requires.
-Material readMaterialBase(Context& ctx, const Card& c, std::string t) {
+Material readMaterialBase(Context& ctx, const Card& c, std::string t, bool density) {
   Material m;
   m.id = positiveId(c, "MID");
   ctx.define(Kind::Material, m.id, c, "MID");
   m.title = std::move(t);
   m.where = c.where();
+  if (!density) return m;
   m.rho = c.real("RO");
   if (m.rho <= 0) c.fail("RO", "the density must be positive");
   return m;
 }
 
-void checkElastic(const Card& c, double E, double nu) {
-  if (E <= 0) c.fail("E", "Young's modulus must be positive");
-  if (!(nu > -1.0 && nu < 0.5)) c.fail("PR", "Poisson's ratio must lie in (-1, 0.5)");
-}
-
 namespace {
-
-void checkYield(const Card& c, double E, double sigy, double etan) {
-  if (sigy <= 0) c.fail("SIGY", "the yield stress must be positive");
-  if (etan < 0 || etan >= E) c.fail("ETAN", "the tangent modulus must lie in [0, E)");
-}
 
 std::string title(CardCursor& cur, const deck::KeywordSpec& spec, const KeywordOptions& opts) {
   return readTitleCard(cur, spec, opts);
@@ -299,17 +320,15 @@ void finishParts(Context& ctx) {
   }
   parts = std::move(sorted);
   ctx.part_problem = std::move(problems);
-  // Springs and dampers take spring materials, and nothing else does.
+  // A part's elements need their law's update for their family (materials/law.hpp).
   for (const Part& p : parts) {
     if (p.section == kNone || p.material == kNone) continue;
     const Material& m = ctx.model.materials[static_cast<std::size_t>(p.material)];
-    const bool discrete = p.section_kind == SectionKind::Discrete;
-    if (discrete != isDiscreteLaw(m.law))
+    if (!materials::supports(m.law, lawFamily(p.section_kind)))
       ctx.fail(p.where.str() + ": *PART card 2 field 3 (MID): part " + std::to_string(p.id) +
-               " has " +
-               (discrete ? "a *SECTION_DISCRETE section but material "
-                         : "a continuum section but the spring material ") +
-               std::to_string(m.id) + " (" + materialKeyword(m.law) + ")");
+               " has " + sectionName(p.section_kind) + " section but material " +
+               std::to_string(m.id) + " (" + materialKeyword(m.law) + ") has no " +
+               updateName(p.section_kind));
   }
   ctx.model.finalize();
 }
@@ -348,125 +367,6 @@ void readSectionSolid(Context& ctx, const deck::Keyword& kw, const KeywordOption
     ctx.model.solid_sections.push_back(s);
     ctx.collect(cur);
   }
-}
-
-void readMatElastic(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
-  const auto& spec = keywordSpec("*MAT_ELASTIC");
-  CardCursor cur(kw, ctx.deck);
-  std::string t = title(cur, spec, opts);
-  const Card& c = cur.read(spec.card("card 1"));
-  Material m = readMaterialBase(ctx, c, std::move(t));
-  ElasticLaw law{c.real("E"), c.real("PR")};
-  checkElastic(c, law.E, law.nu);
-  m.law = law;
-  ctx.model.materials.push_back(std::move(m));
-  ctx.collect(cur);
-}
-
-void readMatPlasticKinematic(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
-  const auto& spec = keywordSpec("*MAT_PLASTIC_KINEMATIC");
-  CardCursor cur(kw, ctx.deck);
-  std::string t = title(cur, spec, opts);
-  const Card& c = cur.read(spec.card("card 1"));
-  const Card& c2 = cur.readOptional(spec.card("card 2"));
-  Material m = readMaterialBase(ctx, c, std::move(t));
-  PlasticKinematicLaw law;
-  law.E = c.real("E");
-  law.nu = c.real("PR");
-  checkElastic(c, law.E, law.nu);
-  law.sigy = c.real("SIGY");
-  law.etan = c.real("ETAN");
-  checkYield(c, law.E, law.sigy, law.etan);
-  law.beta = c.real("BETA");
-  if (law.beta < 0 || law.beta > 1) c.fail("BETA", "must lie in [0, 1]");
-  law.src = c2.real("SRC");
-  law.srp = c2.real("SRP");
-  if (law.src < 0) c2.fail("SRC", "must not be negative");
-  if (law.srp < 0) c2.fail("SRP", "must not be negative");
-  law.fs = c2.real("FS");
-  if (law.fs < 0)
-    ctx.reject(c2, "FS", "a negative FS (failure by *MAT_ADD_EROSION) is not supported");
-  m.law = law;
-  ctx.model.materials.push_back(std::move(m));
-  ctx.collect(cur);
-}
-
-void readMatPiecewiseLinear(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
-  const auto& spec = keywordSpec("*MAT_PIECEWISE_LINEAR_PLASTICITY");
-  CardCursor cur(kw, ctx.deck);
-  std::string t = title(cur, spec, opts);
-  const Card& c = cur.read(spec.card("card 1"));
-  const Card& c2 = cur.readOptional(spec.card("card 2"));
-  const Card& c3 = cur.readOptional(spec.card("card 3"));
-  const Card& c4 = cur.readOptional(spec.card("card 4"));
-  Material m = readMaterialBase(ctx, c, std::move(t));
-  PiecewiseLinearLaw law;
-  law.E = c.real("E");
-  law.nu = c.real("PR");
-  checkElastic(c, law.E, law.nu);
-  law.sigy = c.real("SIGY");
-  law.etan = c.real("ETAN");
-  law.fail = c.real("FAIL");
-  if (law.fail < 0) {
-    ctx.reject(c, "FAIL", "a user failure subroutine (FAIL < 0) is not supported");
-    law.fail = 0;
-  }
-  law.tdel = c.real("TDEL");
-  law.c = c2.real("C");
-  law.p = c2.real("P");
-  if (c2.integer("LCSR") != 0)
-    ctx.reject(c2, "LCSR", "a strain-rate scaling curve (LCSR) is not supported");
-  // Hardening (Keyword Manual, *MAT_024): LCSS, else the EPS/ES pairs of cards 3-4, else
-  // SIGY and ETAN.
-  const int64_t lcss = c2.integer("LCSS");
-  std::vector<double> eps, es;
-  for (int i = 1; i <= 8; ++i) {
-    const std::string e = "EPS" + std::to_string(i), s = "ES" + std::to_string(i);
-    const double ev = c3.real(e), sv = c4.real(s);
-    if (i > 1 && c3.blank(e) && c4.blank(s)) break;
-    if (i > 1 && ev == 0.0 && sv == 0.0) break;
-    // The curve ends at the first strain that does not increase (trailing zeros of a
-    // partly filled card), as LS-DYNA reads EPS1-8 (Keyword Manual, *MAT_024).
-    if (i > 1 && ev <= eps.back()) {
-      c3.real(e);
-      c4.real(s);
-      break;
-    }
-    eps.push_back(ev);
-    es.push_back(sv);
-  }
-  // The table needs two points (Keyword Manual, *MAT_024); with EPS2 = 0 it has fewer, and
-  // SIGY and ETAN give the hardening (older LSTC decks fill ES1-8 and leave EPS1-8 zero).
-  const bool table = es.size() >= 2;
-  if (!table && es.size() == 1 && es[0] != 0.0) {
-    for (int i = 2; i <= 8; ++i) c4.real("ES" + std::to_string(i));  // covered by the note
-    ctx.ignore(kw.name, "ES1",
-               "the EPS/ES table has fewer than two increasing strains (EPS2 = 0): SIGY and ETAN "
-               "define the hardening",
-               c4.where());
-  }
-  if (lcss != 0) {
-    if (ctx.model.curveIndex(lcss) == kNone && ctx.isUnsupported(Kind::Curve, lcss))
-      ctx.reject(c2, "LCSS", ctx.undefinedMessage(Kind::Curve, lcss));
-    else
-      law.lcss = ctx.curve(c2, "LCSS", lcss);
-  } else if (table) {
-    for (std::size_t i = 1; i < eps.size(); ++i)
-      if (eps[i] <= eps[i - 1])
-        c3.fail("EPS" + std::to_string(i + 1), "the plastic strains must increase");
-    // A curve of its own, id -MID, so that the solver sees one hardening representation.
-    Curve curve;
-    curve.id = -m.id;
-    curve.x = eps;
-    curve.y = es;
-    law.lcss = static_cast<int32_t>(ctx.model.curves.size());
-    ctx.model.curves.push_back(std::move(curve));
-  } else {
-    checkYield(c, law.E, law.sigy, law.etan);
-  }
-  m.law = law;
-  ctx.model.materials.push_back(std::move(m));
-  ctx.collect(cur);
 }
 
 void readHourglass(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {

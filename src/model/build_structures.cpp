@@ -1,6 +1,5 @@
 // Meaning of the structural element keywords: *ELEMENT_SHELL(_THICKNESS), *ELEMENT_BEAM,
-// *ELEMENT_DISCRETE, *SECTION_SHELL, *SECTION_BEAM, *SECTION_DISCRETE, *MAT_RIGID (020),
-// *MAT_SPRING_ELASTIC (S01), *MAT_DAMPER_VISCOUS (S02), *MAT_SPRING_NONLINEAR_ELASTIC (S04)
+// *ELEMENT_DISCRETE, *SECTION_SHELL, *SECTION_BEAM, *SECTION_DISCRETE
 // and *CONTROL_SHELL (LS-DYNA Keyword Manual Vol. I and II).
 #include <algorithm>
 #include <cmath>
@@ -285,88 +284,6 @@ void readSectionDiscrete(Context& ctx, const deck::Keyword& kw, const KeywordOpt
     ctx.model.discrete_sections.push_back(s);
     ctx.collect(cur);
   }
-}
-
-void readMatRigid(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
-  const auto& spec = keywordSpec("*MAT_RIGID");
-  CardCursor cur(kw, ctx.deck);
-  std::string t = readTitleCard(cur, spec, opts);
-  const Card& c = cur.read(spec.card("card 1"));
-  const Card& c2 = cur.readOptional(spec.card("card 2"));
-  const Card& c3 = cur.readOptional(spec.card("card 3"));
-  Material m = readMaterialBase(ctx, c, std::move(t));
-  RigidLaw law;
-  law.E = c.real("E");
-  law.nu = c.real("PR");
-  checkElastic(c, law.E, law.nu);
-  for (auto f : {"N", "COUPLE", "M", "ALIAS"}) c.real(f);  // coupling with MADYMO: not used
-  const double cmo = c2.real("CMO");
-  if (cmo == -1.0)
-    ctx.reject(c2, "CMO", "constraints in a local coordinate system (CMO=-1) are not supported");
-  else if (cmo != 0.0 && cmo != 1.0)
-    c2.fail("CMO", "must be 0, 1 or -1");
-  law.cmo = static_cast<int>(cmo);
-  if (law.cmo == 1) {
-    const double con1 = c2.real("CON1"), con2 = c2.real("CON2");
-    if (con1 < 0 || con1 > 7 || con1 != std::floor(con1)) c2.fail("CON1", "must be 0 to 7");
-    if (con2 < 0 || con2 > 7 || con2 != std::floor(con2)) c2.fail("CON2", "must be 0 to 7");
-    law.con1 = static_cast<int>(con1);
-    law.con2 = static_cast<int>(con2);
-  } else {
-    c2.real("CON1");
-    c2.real("CON2");
-  }
-  // Card 3 (local axes for output) changes no result.
-  for (auto f : {"LCO/A1", "A2", "A3", "V1", "V2", "V3"}) c3.real(f);
-  m.law = law;
-  ctx.model.materials.push_back(std::move(m));
-  ctx.collect(cur);
-}
-
-namespace {
-// Spring and damper materials (*MAT_S01, S02, S04): card 1 only, no density (RO = 0). `law`
-// reads and checks the card's own fields and returns the law.
-template <class ReadLaw>
-void readSpringMaterial(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts,
-                        std::string_view keyword, ReadLaw&& law) {
-  const auto& spec = keywordSpec(keyword);
-  CardCursor cur(kw, ctx.deck);
-  std::string t = readTitleCard(cur, spec, opts);
-  const Card& c = cur.read(spec.card("card 1"));
-  Material m;
-  m.id = positiveId(c, "MID");
-  ctx.define(Kind::Material, m.id, c, "MID");
-  m.title = std::move(t);
-  m.where = c.where();
-  m.law = law(c);
-  ctx.model.materials.push_back(std::move(m));
-  ctx.collect(cur);
-}
-}  // namespace
-
-void readMatSpringElastic(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
-  readSpringMaterial(ctx, kw, opts, "*MAT_SPRING_ELASTIC", [](const Card& c) {
-    SpringElasticLaw law{c.real("K")};
-    if (!(law.k > 0)) c.fail("K", "the spring stiffness must be positive");
-    return law;
-  });
-}
-
-void readMatDamperViscous(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
-  readSpringMaterial(ctx, kw, opts, "*MAT_DAMPER_VISCOUS", [](const Card& c) {
-    DamperViscousLaw law{c.real("DC")};
-    if (!(law.dc > 0)) c.fail("DC", "the damping constant must be positive");
-    return law;
-  });
-}
-
-void readMatSpringNonlinear(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
-  readSpringMaterial(ctx, kw, opts, "*MAT_SPRING_NONLINEAR_ELASTIC", [&](const Card& c) {
-    SpringNonlinearLaw law{ctx.curve(c, "LCD", c.integer("LCD"))};
-    if (c.integer("LCR") != 0)
-      ctx.reject(c, "LCR", "rate-dependent spring scaling (LCR) is not supported");
-    return law;
-  });
 }
 
 void readControlShell(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {

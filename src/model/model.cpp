@@ -58,21 +58,8 @@ int32_t Model::curveIndex(int64_t id) const {
 }
 
 const char* materialKeyword(const MaterialLaw& law) {
-  static constexpr const char* kNames[] = {"*MAT_ELASTIC",
-                                           "*MAT_PLASTIC_KINEMATIC",
-                                           "*MAT_PIECEWISE_LINEAR_PLASTICITY",
-                                           "*MAT_RIGID",
-                                           "*MAT_SPRING_ELASTIC",
-                                           "*MAT_DAMPER_VISCOUS",
-                                           "*MAT_SPRING_NONLINEAR_ELASTIC"};
-  static_assert(std::size(kNames) == std::variant_size_v<MaterialLaw>);
-  return kNames[law.index()];
-}
-
-bool isDiscreteLaw(const MaterialLaw& law) {
-  return std::holds_alternative<SpringElasticLaw>(law) ||
-         std::holds_alternative<DamperViscousLaw>(law) ||
-         std::holds_alternative<SpringNonlinearLaw>(law);
+  // The units' keyword names are string literals, so the view is null-terminated.
+  return materials::keywordOf(law).data();
 }
 
 const char* familyName(Family f) {

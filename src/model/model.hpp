@@ -15,6 +15,7 @@
 #include <variant>
 #include <vector>
 
+#include "materials/materials.hpp"
 #include "model/contact.hpp"
 #include "model/rigid.hpp"
 #include "util/source_loc.hpp"
@@ -41,56 +42,15 @@ struct Curve {
   double valueExtrapolated(double t) const;
 };
 
-// ---- materials: a plain struct of parameters per law ------------------------------------
-struct ElasticLaw {  // *MAT_ELASTIC (001)
-  double E = 0, nu = 0;
-};
-struct PlasticKinematicLaw {  // *MAT_PLASTIC_KINEMATIC (003)
-  double E = 0, nu = 0, sigy = 0, etan = 0;
-  double beta = 0;          // 0 kinematic, 1 isotropic hardening, in between mixed
-  double src = 0, srp = 0;  // Cowper-Symonds C and P; 0 = rate independent
-  double fs = 0;            // effective plastic strain at failure (erosion); 0 = none
-};
-struct PiecewiseLinearLaw {  // *MAT_PIECEWISE_LINEAR_PLASTICITY (024)
-  double E = 0, nu = 0, sigy = 0, etan = 0;
-  double fail = 0;       // effective plastic strain at failure (erosion); 0 = none
-  double c = 0, p = 0;   // Cowper-Symonds rate parameters; 0 = rate independent
-  int32_t lcss = kNone;  // curve index: yield stress vs effective plastic strain
-  double tdel = 0;       // minimum time step for automatic element deletion
-};
-// *MAT_RIGID (020): the part moves as one rigid body. E and nu only size the contact
-// stiffness and the time step of nothing (rigid elements have no step). CMO/CON1/CON2 fix
-// global translations and rotations of the body's centre of mass (Keyword Manual, *MAT_020).
-struct RigidLaw {
-  double E = 0, nu = 0;
-  int cmo = 0;   // 0 free, 1 constraints in global directions (CON1 / CON2 codes)
-  int con1 = 0;  // translation code: 0 none, 1 x, 2 y, 3 z, 4 xy, 5 yz, 6 zx, 7 all
-  int con2 = 0;  // rotation code, same digits
-};
-// *MAT_SPRING_ELASTIC (S01): F = K dL.
-struct SpringElasticLaw {
-  double k = 0;
-};
-// *MAT_DAMPER_VISCOUS (S02): F = DC dL/dt.
-struct DamperViscousLaw {
-  double dc = 0;
-};
-// *MAT_SPRING_NONLINEAR_ELASTIC (S04): F = curve(dL).
-struct SpringNonlinearLaw {
-  int32_t curve = kNone;
-};
-using MaterialLaw = std::variant<ElasticLaw, PlasticKinematicLaw, PiecewiseLinearLaw, RigidLaw,
-                                 SpringElasticLaw, DamperViscousLaw, SpringNonlinearLaw>;
+// ---- materials: the deck's parameters of each law, declared by its unit in
+// src/materials/laws/ (materials/registry.hpp lists them) ----------------------------------
+using MaterialLaw = materials::LawParams;
+// Names for the laws other modules treat specially (rigid bodies, discrete elements).
+using RigidLaw = materials::Rigid::Params;
+using PiecewiseLinearLaw = materials::PiecewiseLinear::Params;
 
 // "*MAT_ELASTIC", "*MAT_RIGID", ... for messages and summaries.
 const char* materialKeyword(const MaterialLaw& law);
-
-// For `static_assert(kNoLaw<T>, ...)` in the last branch of a visit over the laws: a law
-// added to a variant without its case there is a compile error, not a silent fallback.
-template <class>
-inline constexpr bool kNoLaw = false;
-// Laws of discrete elements (springs and dampers), as opposed to continuum and rigid laws.
-bool isDiscreteLaw(const MaterialLaw& law);
 
 struct Material {
   int64_t id = 0;

@@ -8,41 +8,12 @@
 #include <numeric>
 #include <stdexcept>
 #include <string>
-#include <variant>
 
 #include "partition/incidence.hpp"
 #include "partition/partition.hpp"
 #include "util/error.hpp"
 
 namespace crumple::partition {
-
-namespace {
-
-// The cost class of each law for the element weights; a law without its class here is a
-// compile error (no silent elastic weight).
-enum class LawCost : uint8_t { Elastic, Plastic, Rigid, Discrete };
-LawCost lawCost(const model::MaterialLaw& law) {
-  return std::visit(
-      [](const auto& l) {
-        using T = std::decay_t<decltype(l)>;
-        if constexpr (std::is_same_v<T, model::ElasticLaw>)
-          return LawCost::Elastic;
-        else if constexpr (std::is_same_v<T, model::PlasticKinematicLaw> ||
-                           std::is_same_v<T, model::PiecewiseLinearLaw>)
-          return LawCost::Plastic;
-        else if constexpr (std::is_same_v<T, model::RigidLaw>)
-          return LawCost::Rigid;
-        else if constexpr (std::is_same_v<T, model::SpringElasticLaw> ||
-                           std::is_same_v<T, model::DamperViscousLaw> ||
-                           std::is_same_v<T, model::SpringNonlinearLaw>)
-          return LawCost::Discrete;
-        else
-          static_assert(model::kNoLaw<T>, "a law needs its cost class for the partition");
-      },
-      law);
-}
-
-}  // namespace
 
 Method parseMethod(const std::string& name) {
   std::string s = name;
@@ -76,9 +47,10 @@ std::vector<int32_t> elementWeights(const model::Model& model, const Options& op
         part.material != model::kNone && std::size_t(part.material) < model.materials.size()
             ? &model.materials[std::size_t(part.material)].law
             : nullptr;
-    const LawCost cost = law ? lawCost(*law) : LawCost::Elastic;
-    if (cost == LawCost::Rigid) return kWeightRigid;
-    const bool plastic = cost == LawCost::Plastic;
+    // Each law declares its cost class (materials/law.hpp).
+    const materials::Cost cost = law ? materials::costOf(*law) : materials::Cost::Elastic;
+    if (cost == materials::Cost::Rigid) return kWeightRigid;
+    const bool plastic = cost == materials::Cost::Plastic;
     switch (part.section_kind) {
       case model::SectionKind::Shell:
         return plastic ? kWeightShellPlastic : kWeightShellElastic;

@@ -340,14 +340,9 @@ void Solver::setErosionFloors() {
   // *CONTROL_TIMESTEP ERODE = 1, and a *MAT_024 part's TDEL; such elements are removed instead
   // of ending the run (beams and springs are not).
   const auto& ctl = model_.controls;
-  auto erodeFloor = [&](const domain::BlockBase& blk) {
-    double floor = ctl.erode_on_dtmin ? ctl.dt_min_ratio * dt_initial_ / ctl.tssfac : 0.0;
-    const int32_t mat = model_.parts[static_cast<std::size_t>(blk.part)].material;
-    if (mat != model::kNone)
-      if (const auto* law = std::get_if<model::PiecewiseLinearLaw>(
-              &model_.materials[static_cast<std::size_t>(mat)].law))
-        floor = std::max(floor, law->tdel / ctl.tssfac);
-    return blk.rigid ? 0.0 : floor;
+  auto erodeFloor = [&](const auto& blk) {
+    const double floor = ctl.erode_on_dtmin ? ctl.dt_min_ratio * dt_initial_ / ctl.tssfac : 0.0;
+    return blk.rigid ? 0.0 : std::max(floor, materials::deletionStepOf(blk.law) / ctl.tssfac);
   };
   for (auto& blk : sd_.solid_blocks) blk.erode_dt = erodeFloor(blk);
   for (auto& blk : sd_.shell_blocks) blk.erode_dt = erodeFloor(blk);

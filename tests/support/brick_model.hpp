@@ -9,7 +9,7 @@
 namespace crumple::testing {
 
 struct BrickOptions {
-  model::MaterialLaw law = model::ElasticLaw{210.0, 0.3};  // steel in mm, ms, kg, GPa
+  model::MaterialLaw law = materials::Elastic::Params{210.0, 0.3};  // steel in mm, ms, kg, GPa
   double rho = 7.85e-6;
   int ihq = 1;  // *CONTROL_HOURGLASS
   double qh = 0.1;

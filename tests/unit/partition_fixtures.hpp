@@ -66,9 +66,10 @@ inline model::Model brickOf(Shape shape, int nx, int ny, int nz, model::Vec3 ori
   mat.id = 1;
   mat.rho = 7.85e-6;
   if (plastic)
-    mat.law = PlasticKinematicLaw{210.0, 0.3, 0.3, 1.0, 0.0, 0.0, 0.0, 0.0};
+    mat.law =
+        crumple::materials::PlasticKinematic::Params{210.0, 0.3, 0.3, 1.0, 0.0, 0.0, 0.0, 0.0};
   else
-    mat.law = ElasticLaw{210.0, 0.3};
+    mat.law = crumple::materials::Elastic::Params{210.0, 0.3};
   m.materials.push_back(mat);
   m.solid_sections.push_back({1, 1, {}});
   Part p;

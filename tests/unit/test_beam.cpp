@@ -51,6 +51,19 @@ m::Law elastic(double E = kE, double nu = kNu) {
   return m::Elastic{m::moduliFromYoung(E, nu)};
 }
 
+// Steel laws from their deck parameters.
+m::PlasticKinematic law003(double sigy, double etan, double beta, double fs = 0.0) {
+  return m::PlasticKinematic::make({kE, kNu, sigy, etan, beta, 0.0, 0.0, fs}, {}, "");
+}
+m::PiecewiseLinear law024(double sigy, double etan) {
+  m::PiecewiseLinear::Params p;
+  p.E = kE;
+  p.nu = kNu;
+  p.sigy = sigy;
+  p.etan = etan;
+  return m::PiecewiseLinear::make(p, {}, "");
+}
+
 // A rectangular (b x h) section for the resultant beam: b along s, h along t.
 d::BeamSection resultantSection(double b, double h, double sa = 0.0) {
   d::BeamSection s;
@@ -422,19 +435,18 @@ TEST(BeamHughesLiu, PlasticMomentOfTheSection) {
   // is sigy sum_i w_i |s_i| of the rule; with 4x4 Gauss (QR 5) that is 4 % above the exact
   // sigy h b^2 / 4 of the rectangle.
   const double b = 0.02, h = 0.03, L = 0.25;
-  m::PiecewiseLinear pl;
-  pl.moduli = m::moduliFromYoung(kE, kNu);
-  pl.sigy = 250e6;
+  const double sigy = 250e6;
+  const m::PiecewiseLinear pl = law024(sigy, 0.0);
   d::BeamSection sec = hughesLiuRect(b, h);
   sec.qr = 5;
-  const double eps_y = pl.sigy / kE;
+  const double eps_y = sigy / kE;
   const TurnResult bend = turnEnds(sec, pl, L, 2, 60.0 * eps_y / (0.5 * b), 400);
   const double g[2] = {0.3399810435848563, 0.8611363115940526};
   const double w[2] = {0.6521451548625461, 0.3478548451374538};
   double rule = 0.0;  // sum over the 4x4 points of (area) |s|
   for (int i = 0; i < 2; ++i) rule += 2.0 * w[i] * 0.5 * b * g[i] * 0.5 * b * h;
-  EXPECT_NEAR(bend.moment.back() / (pl.sigy * rule), 1.0, 1e-9);
-  const double exact = pl.sigy * h * b * b / 4.0;
+  EXPECT_NEAR(bend.moment.back() / (sigy * rule), 1.0, 1e-9);
+  const double exact = sigy * h * b * b / 4.0;
   EXPECT_NEAR(bend.moment.back() / exact, 1.0, 0.05);
   // Elastic at first: the moment follows E I kappa up to first yield of the outer points.
   EXPECT_NEAR(bend.moment[2] / (kE * h * b * b * b / 12.0 * bend.kappa[2]), 1.0, 1e-5);
@@ -445,15 +457,12 @@ TEST(BeamResultant, PlasticLawsRunAsResultantPlasticity) {
   // MAT_003 on ELFORM 2: the end moment stops at the fully plastic moment of the solid
   // section with this A and I (sigy h b^2 / 4 for the rectangle); hardening is not used.
   const double b = 0.02, h = 0.03, L = 0.25;
-  m::PlasticKinematic pk;
-  pk.moduli = m::moduliFromYoung(kE, kNu);
-  pk.sigy = 250e6;
-  pk.etan = 2e9;
-  pk.beta = 1.0;
+  const double sigy = 250e6;
+  const m::PlasticKinematic pk = law003(sigy, 2e9, 1.0);
   const d::BeamSection sec = resultantSection(b, h);
-  const double eps_y = pk.sigy / kE;
+  const double eps_y = sigy / kE;
   const TurnResult bend = turnEnds(sec, pk, L, 2, 20.0 * eps_y / (0.5 * b), 200);
-  const double mp = pk.sigy * h * b * b / 4.0;
+  const double mp = sigy * h * b * b / 4.0;
   EXPECT_NEAR(bend.moment.back() / mp, 1.0, 1e-9);
   EXPECT_NEAR(bend.moment[2] / (kE * sec.itt * bend.kappa[2]), 1.0, 1e-5);
   // Energy: the elastic part plus the plastic dissipation, M_p times the plastic rotation.
@@ -693,19 +702,16 @@ PullResult pullTruss(const m::Law& law, double strain_rate, double to_strain, do
 
 TEST(Truss, PlasticYieldsAtSigyA) {
   // MAT_024 bilinear with ETAN = 0: elastic, then a plateau at sigy on the current area.
-  m::PiecewiseLinear pl;
-  pl.moduli = m::moduliFromYoung(kE, kNu);
-  pl.sigy = 250e6;
-  pl.etan = 0.0;
-  const PullResult res = pullTruss(pl, 1.0, 0.01, 0.01);
-  const double A = 1e-4, eps_y = pl.sigy / kE;
+  const double sigy = 250e6;
+  const PullResult res = pullTruss(law024(sigy, 0.0), 1.0, 0.01, 0.01);
+  const double A = 1e-4, eps_y = sigy / kE;
   for (std::size_t k = 0; k < res.turn; ++k) {
     const double eps = res.strain[k];
     if (eps < 0.9 * eps_y) {
-      EXPECT_NEAR(res.stress[k], kE * eps, 1e-3 * pl.sigy);
+      EXPECT_NEAR(res.stress[k], kE * eps, 1e-3 * sigy);
     } else if (eps > 1.1 * eps_y) {
-      EXPECT_NEAR(res.stress[k], pl.sigy, 1e-6 * pl.sigy);
-      EXPECT_NEAR(res.force[k], pl.sigy * A * std::exp(-eps), 1e-6 * pl.sigy * A);
+      EXPECT_NEAR(res.stress[k], sigy, 1e-6 * sigy);
+      EXPECT_NEAR(res.force[k], sigy * A * std::exp(-eps), 1e-6 * sigy * A);
     }
   }
   EXPECT_GT(res.strain.back(), 0.0099);
@@ -713,13 +719,9 @@ TEST(Truss, PlasticYieldsAtSigyA) {
 
 TEST(Truss, KinematicHardeningHasBauschingerEffect) {
   // MAT_003, BETA = 0: slope ETAN after yield; on reversal, yield again at sigma_max - 2 sigy.
-  m::PlasticKinematic pk;
-  pk.moduli = m::moduliFromYoung(kE, kNu);
-  pk.sigy = 250e6;
-  pk.etan = 2e9;
-  pk.beta = 0.0;
-  const PullResult res = pullTruss(pk, 0.25, 0.01, -0.01);
-  const double eps_y = pk.sigy / kE;
+  const double sigy = 250e6, etan = 2e9;
+  const PullResult res = pullTruss(law003(sigy, etan, 0.0), 0.25, 0.01, -0.01);
+  const double eps_y = sigy / kE;
   double s_max = 0.0, eps_max = 0.0;
   std::size_t k_max = 0;
   for (std::size_t k = 0; k < res.strain.size(); ++k)
@@ -728,34 +730,28 @@ TEST(Truss, KinematicHardeningHasBauschingerEffect) {
       s_max = res.stress[k];
       k_max = k;
     }
-  EXPECT_NEAR(s_max, pk.sigy + pk.etan * (eps_max - eps_y), 2e-3 * pk.sigy);
+  EXPECT_NEAR(s_max, sigy + etan * (eps_max - eps_y), 2e-3 * sigy);
   // Reverse yield: the first point on the way back whose stress leaves the elastic line.
   double reverse_yield = 0.0;
   for (std::size_t k = k_max + 1; k < res.strain.size(); ++k) {
     const double elastic_line = s_max + kE * (res.strain[k] - eps_max);
-    if (std::abs(res.stress[k] - elastic_line) > 1e-3 * pk.sigy) {
+    if (std::abs(res.stress[k] - elastic_line) > 1e-3 * sigy) {
       reverse_yield = res.stress[k - 1];
       break;
     }
   }
-  EXPECT_NEAR(reverse_yield, s_max - 2.0 * pk.sigy, 0.01 * pk.sigy);
-  RecordProperty("reverse_yield_error", fig((reverse_yield - (s_max - 2.0 * pk.sigy)) / pk.sigy));
-  RecordProperty("peak_error", fig((s_max - (pk.sigy + pk.etan * (eps_max - eps_y))) / pk.sigy));
+  EXPECT_NEAR(reverse_yield, s_max - 2.0 * sigy, 0.01 * sigy);
+  RecordProperty("reverse_yield_error", fig((reverse_yield - (s_max - 2.0 * sigy)) / sigy));
+  RecordProperty("peak_error", fig((s_max - (sigy + etan * (eps_max - eps_y))) / sigy));
 }
 
 TEST(Truss, FibreReturnIsOnTheYieldSurface) {
   // The beam-fibre return (axial plus shear) lands on the surface, with plastic strain
   // increments along the normal (MAT_024 with a curve, MAT_003 mixed hardening).
-  m::PlasticKinematic pk;
-  pk.moduli = m::moduliFromYoung(kE, kNu);
-  pk.sigy = 300e6;
-  pk.etan = 1e9;
-  pk.beta = 0.5;
-  m::PiecewiseLinear pl;
-  pl.moduli = pk.moduli;
+  const m::PlasticKinematic pk = law003(300e6, 1e9, 0.5);
+  m::PiecewiseLinear pl = law024(300e6, 0.0);
   pl.curve_eps = {0.0, 0.02, 0.05, 0.2};
   pl.curve_sig = {300e6, 360e6, 380e6, 400e6};
-  pl.sigy = 300e6;
   for (const m::Law& law : {m::Law(pk), m::Law(pl)}) {
     const m::FibreLaw fl = m::fibreLawOf(law);
     m::FibrePoint p;
@@ -785,12 +781,8 @@ TEST(Truss, FibreReturnIsOnTheYieldSurface) {
 TEST(Truss, ErodesAtFailureStrain) {
   // MAT_003 FS: once the point reaches the failure strain the element is removed, its slots
   // zeroed, once.
-  m::PlasticKinematic pk;
-  pk.moduli = m::moduliFromYoung(kE, kNu);
-  pk.sigy = 250e6;
-  pk.etan = 1e9;
-  pk.beta = 1.0;
-  pk.fs = 0.005;
+  const double sigy = 250e6, fs = 0.005;
+  const m::PlasticKinematic pk = law003(sigy, 1e9, 1.0, fs);
   const double L = 0.1;
   Rig r = makeRig(lineAlongX(1, L), truss(1e-4), pk, kRho, {0.0, 1.0, 0.0});
   r.clamped[0] = 1;
@@ -807,7 +799,7 @@ TEST(Truss, ErodesAtFailureStrain) {
   EXPECT_EQ(eroded, 1);
   EXPECT_EQ(r.blk.active[0], 0);
   for (double sl : r.slots) EXPECT_EQ(sl, 0.0);
-  EXPECT_NEAR(strain_at_erosion, pk.fs + pk.sigy / kE, 2e-4);
+  EXPECT_NEAR(strain_at_erosion, fs + sigy / kE, 2e-4);
 }
 
 TEST(Beam, ZeroLengthElementIsReported) {
@@ -852,8 +844,8 @@ struct Discrete {
 Discrete makeDiscrete(d::DiscreteBlock::Kind kind, double k, double m, const Vec& axis, double L0,
                       double scale = 1.0, double offset = 0.0) {
   Discrete s;
-  s.blk.kind = kind;
-  s.blk.k = k;
+  s.blk.law.kind = kind;
+  s.blk.law.k = k;
   s.blk.elem = {0};
   s.blk.elem_id = {1};
   s.blk.conn = {{0, 1}};
@@ -937,12 +929,12 @@ TEST(Discrete, NonlinearSpringFollowsItsCurve) {
   const double S = 2.0, offset = 0.01;
   Discrete s = makeDiscrete(d::DiscreteBlock::Kind::SpringNonlinear, 0.0, 1.0, {0.6, 0.0, -0.8},
                             1.0, S, offset);
-  s.blk.curve_x = {-0.1, 0.0, 0.05, 0.1};
-  s.blk.curve_y = {-50.0, 0.0, 100.0, 120.0};
+  s.blk.law.curve_x = {-0.1, 0.0, 0.05, 0.1};
+  s.blk.law.curve_y = {-50.0, 0.0, 100.0, 120.0};
   el::initializeDiscretes(s.blk, s.x, s.slots.data());
   auto curve = [&](double u) {
-    const auto& X = s.blk.curve_x;
-    const auto& Y = s.blk.curve_y;
+    const auto& X = s.blk.law.curve_x;
+    const auto& Y = s.blk.law.curve_y;
     if (u < X[1]) return Y[0] + (Y[1] - Y[0]) / (X[1] - X[0]) * (u - X[0]);
     if (u < X[2]) return Y[1] + (Y[2] - Y[1]) / (X[2] - X[1]) * (u - X[1]);
     return Y[2] + (Y[3] - Y[2]) / (X[3] - X[2]) * (u - X[2]);

@@ -206,7 +206,7 @@ TEST(DeckFormat, FreeFormatCommentsBlankFieldsAndCase) {
       "e.k", std::string(kCube) + "*MAT_ELASTIC_TITLE\nsteel, with a comma\n1,7.8e-9,2e5,0.3\n");
   const auto m = crumple::model::readModel(q);
   EXPECT_EQ(m.materials.at(0).title, "steel, with a comma");
-  EXPECT_DOUBLE_EQ(std::get<crumple::model::ElasticLaw>(m.materials.at(0).law).E, 2e5);
+  EXPECT_DOUBLE_EQ(std::get<crumple::materials::Elastic::Params>(m.materials.at(0).law).E, 2e5);
 }
 
 TEST(DeckErrors, BadNumberNamesFileLineKeywordCardAndField) {
@@ -242,7 +242,7 @@ TEST(DeckParameters, ValuesReferencesAndExpressions) {
   const auto& mat = m.materials.at(0);
   EXPECT_EQ(mat.id, 1);
   EXPECT_DOUBLE_EQ(mat.rho, 1.2);
-  EXPECT_DOUBLE_EQ(std::get<crumple::model::ElasticLaw>(mat.law).E, 2e5);
+  EXPECT_DOUBLE_EQ(std::get<crumple::materials::Elastic::Params>(mat.law).E, 2e5);
   EXPECT_DOUBLE_EQ(m.nodes.x[m.nodeIndex(9)][0], -2e5);
   EXPECT_DOUBLE_EQ(m.initial_velocity[m.nodeIndex(1)][2], 3.0);  // half = int(1.5) = 1
   const auto q = t.write("u.k", std::string(kCube) + "*MAT_ELASTIC\n1,&rho,1,0.3\n");

@@ -13,11 +13,9 @@
 #include <vector>
 
 #include "materials/materials.hpp"
-#include "model/model.hpp"
 #include "util/error.hpp"
 
 namespace m = crumple::materials;
-namespace model = crumple::model;
 
 namespace {
 
@@ -50,14 +48,10 @@ void step(const m::Law& law, Point& p, const Strain& de, double dt = 0.0) {
   update(law, b);
 }
 
-m::Moduli moduliOf(const m::Law& law) {
-  return std::visit([](const auto& l) { return l.moduli; }, law);
-}
-
 // Uniaxial stress: one axial strain increment, with the (equal) lateral strain increments
 // found by secant iteration so that s_yy = s_zz = 0 at the end of the step.
 void uniaxialStep(const m::Law& law, Point& p, double dex) {
-  const m::Moduli mod = moduliOf(law);
+  const m::Moduli mod = m::moduliOf(law);
   const double nu = (3.0 * mod.bulk - 2.0 * mod.shear) / (2.0 * (3.0 * mod.bulk + mod.shear));
   auto trial = [&](double lat) {
     Point c = p;
@@ -102,29 +96,38 @@ double csFactor(const Strain& de, double dt, double C, double P) {
 
 constexpr double kE = 210000.0, kNu = 0.3, kSigy = 250.0, kEtan = 2100.0;
 
+// Laws are made from the deck's parameters, as the model gives them (make).
+const std::vector<double> kCurveEps{0.0, 0.05, 0.2}, kCurveSig{200.0, 300.0, 360.0};
+m::CurveData curveAt(int32_t i) {
+  if (i != 0) throw crumple::util::InputError("no curve " + std::to_string(i));
+  return {7, kCurveEps, kCurveSig};
+}
+
 m::PlasticKinematic makePK(double beta, double src = 0, double srp = 0, double fs = 0) {
-  m::PlasticKinematic pk;
-  pk.moduli = m::moduliFromYoung(kE, kNu);
-  pk.sigy = kSigy;
-  pk.etan = kEtan;
-  pk.beta = beta;
-  pk.src = src;
-  pk.srp = srp;
-  pk.fs = fs;
-  return pk;
+  return m::PlasticKinematic::make({kE, kNu, kSigy, kEtan, beta, src, srp, fs}, curveAt, "");
+}
+
+m::PiecewiseLinear makePL(double sigy, double etan, double c = 0, double p = 0) {
+  m::PiecewiseLinear::Params pp;
+  pp.E = kE;
+  pp.nu = kNu;
+  pp.sigy = sigy;
+  pp.etan = etan;
+  pp.c = c;
+  pp.p = p;
+  return m::PiecewiseLinear::make(pp, curveAt, "");
 }
 
 // 3-point yield curve (aluminium-like) for MAT_024.
 m::PiecewiseLinear makePLCurve(double c = 0, double p = 0, double fail = 0) {
-  m::PiecewiseLinear pl;
-  pl.moduli = m::moduliFromYoung(70000.0, 0.33);
-  pl.curve_eps = {0.0, 0.05, 0.2};
-  pl.curve_sig = {200.0, 300.0, 360.0};
-  pl.sigy = 200.0;
-  pl.c = c;
-  pl.p = p;
-  pl.fail = fail;
-  return pl;
+  m::PiecewiseLinear::Params pp;
+  pp.E = 70000.0;
+  pp.nu = 0.33;
+  pp.c = c;
+  pp.p = p;
+  pp.fail = fail;
+  pp.lcss = 0;
+  return m::PiecewiseLinear::make(pp, curveAt, "");
 }
 
 // The curve above, written out independently (extrapolated with the last slope).
@@ -250,7 +253,7 @@ TEST(MaterialsPlasticKinematic, IncompressibleFlowAndConsistency) {
     for (double beta : {0.0, 0.3, 1.0}) {
       SCOPED_TRACE(beta);
       const m::Law law = rate ? makePK(beta, C, P) : makePK(beta);
-      const m::Moduli mod = moduliOf(law);
+      const m::Moduli mod = m::moduliOf(law);
       std::mt19937_64 rng(42);
       Point p;
       double vol = 0.0;
@@ -284,8 +287,9 @@ TEST(MaterialsPlasticKinematic, CowperSymondsScalesFirstYield) {
   const double C = 40.4, P = 5.0, dt = 1e-5, d = 0.01;
   const Strain de{d, -0.5 * d, -0.5 * d, 0, 0, 0};  // effective rate d/dt = 1000/s
   const double rf = 1.0 + std::pow(1000.0 / C, 1.0 / P);
-  m::PlasticKinematic pk = makePK(0.0, C, P);
-  pk.etan = 0.0;  // perfectly plastic: the surface stays at rf sigy
+  // Perfectly plastic (ETAN 0): the surface stays at rf sigy.
+  const m::PlasticKinematic pk =
+      m::PlasticKinematic::make({kE, kNu, kSigy, 0.0, 0.0, C, P, 0.0}, curveAt, "");
   Point p;
   step(pk, p, de, dt);
   EXPECT_GT(p.eps_p, 0.0);
@@ -356,10 +360,7 @@ TEST(MaterialsPiecewiseLinear, UniaxialStressReproducesCurve) {
 }
 
 TEST(MaterialsPiecewiseLinear, BilinearMatchesTangentModulus) {
-  m::PiecewiseLinear pl;
-  pl.moduli = m::moduliFromYoung(kE, kNu);
-  pl.sigy = kSigy;
-  pl.etan = kEtan;
+  const m::PiecewiseLinear pl = makePL(kSigy, kEtan);
   Point p;
   double eps = 0.0;
   for (int i = 0; i < 60; ++i) {
@@ -410,11 +411,7 @@ TEST(MaterialsPiecewiseLinear, CowperSymondsScalesFirstYield) {
   EXPECT_GT(p.eps_p, 0.0);
   EXPECT_NEAR(vonMises(p, false), rf * 200.0, 1e-12 * rf * 200.0);
 
-  m::PiecewiseLinear bl;  // bilinear with Etan = 0
-  bl.moduli = pl.moduli;
-  bl.sigy = 200.0;
-  bl.c = C;
-  bl.p = P;
+  const m::PiecewiseLinear bl = makePL(200.0, 0.0, C, P);  // bilinear with Etan = 0
   Point q;
   step(bl, q, de, dt);
   EXPECT_NEAR(vonMises(q, false), rf * 200.0, 1e-12 * rf * 200.0);
@@ -438,12 +435,7 @@ TEST(MaterialsPiecewiseLinear, FailureFlagAtFailureStrain) {
 // The same point gives bitwise identical results alone in a batch of 1 and at positions 0, 5
 // and 12 of a batch of 13 (vectorised body versus scalar remainder).
 TEST(MaterialsBatch, ResultsIndependentOfPositionInBatch) {
-  m::PiecewiseLinear bilinear;
-  bilinear.moduli = m::moduliFromYoung(kE, kNu);
-  bilinear.sigy = kSigy;
-  bilinear.etan = kEtan;
-  bilinear.c = 40.0;
-  bilinear.p = 5.0;
+  const m::PiecewiseLinear bilinear = makePL(kSigy, kEtan, 40.0, 5.0);
   const std::vector<m::Law> laws{m::Elastic{m::moduliFromYoung(kE, kNu)},
                                  makePK(0.3),
                                  makePK(0.7, 40.4, 5.0, 0.01),
@@ -502,79 +494,100 @@ TEST(MaterialsBatch, ResultsIndependentOfPositionInBatch) {
 
 // ---- makeLaw -------------------------------------------------------------------------------
 
-TEST(MaterialsMakeLaw, BuildsEachLawFromTheModel) {
-  model::Model mdl;
-  model::Curve c;
-  c.id = 7;
-  c.x = {0.0, 0.1, 0.5};
-  c.y = {180.0, 260.0, 300.0};
-  mdl.curves.push_back(c);
-
-  model::Material el;
-  el.law = model::ElasticLaw{200.0, 0.25};
-  const m::Law l1 = m::makeLaw(el, mdl);
+TEST(MaterialsMakeLaw, BuildsEachLawFromItsParameters) {
+  const m::Law l1 = m::makeLaw(m::Elastic::Params{200.0, 0.25}, curveAt, "");
   ASSERT_TRUE(std::holds_alternative<m::Elastic>(l1));
   EXPECT_DOUBLE_EQ(std::get<m::Elastic>(l1).moduli.shear, 80.0);
 
-  model::Material pk;
-  pk.law = model::PlasticKinematicLaw{kE, kNu, kSigy, kEtan, 0.5, 40.4, 5.0, 0.2};
-  const m::Law l2 = m::makeLaw(pk, mdl);
+  const m::Law l2 = m::makeLaw(
+      m::PlasticKinematic::Params{kE, kNu, kSigy, kEtan, 0.5, 40.4, 5.0, 0.2}, curveAt, "");
   ASSERT_TRUE(std::holds_alternative<m::PlasticKinematic>(l2));
   const auto& p2 = std::get<m::PlasticKinematic>(l2);
-  EXPECT_EQ(p2.sigy, kSigy);
-  EXPECT_EQ(p2.etan, kEtan);
-  EXPECT_EQ(p2.beta, 0.5);
-  EXPECT_EQ(p2.src, 40.4);
-  EXPECT_EQ(p2.srp, 5.0);
-  EXPECT_EQ(p2.fs, 0.2);
+  const double Ep = kE * kEtan / (kE - kEtan);
+  EXPECT_EQ(p2.hardening.sigy, kSigy);
+  EXPECT_DOUBLE_EQ(p2.hardening.Hi, 0.5 * Ep);
+  EXPECT_DOUBLE_EQ(p2.hardening.Hk, 0.5 * Ep);
+  EXPECT_EQ(p2.hardening.C, 40.4);
+  EXPECT_EQ(p2.hardening.inv_P, 1.0 / 5.0);
+  EXPECT_EQ(p2.failureStrain(), 0.2);
   EXPECT_DOUBLE_EQ(p2.moduli.bulk, kE / (3 * (1 - 2 * kNu)));
 
-  model::Material pl;
-  model::PiecewiseLinearLaw pll;
+  m::PiecewiseLinear::Params pll;
   pll.E = kE;
   pll.nu = kNu;
   pll.sigy = 999.0;  // ignored when LCSS is given
   pll.fail = 0.3;
   pll.c = 10.0;
   pll.p = 2.0;
+  pll.tdel = 1e-7;
   pll.lcss = 0;
-  pl.law = pll;
-  const m::Law l3 = m::makeLaw(pl, mdl);
+  const m::Law l3 = m::makeLaw(pll, curveAt, "");
   ASSERT_TRUE(std::holds_alternative<m::PiecewiseLinear>(l3));
   const auto& p3 = std::get<m::PiecewiseLinear>(l3);
-  EXPECT_EQ(p3.sigy, 180.0);
-  EXPECT_EQ(p3.curve_eps, c.x);
-  EXPECT_EQ(p3.curve_sig, c.y);
-  EXPECT_EQ(p3.fail, 0.3);
-  EXPECT_EQ(p3.c, 10.0);
-  EXPECT_EQ(p3.p, 2.0);
-  EXPECT_DOUBLE_EQ(p3.yieldStress(0.3), 280.0);
+  EXPECT_EQ(p3.yieldStress(0.0), 200.0);
+  EXPECT_EQ(p3.curve_eps, kCurveEps);
+  EXPECT_EQ(p3.curve_sig, kCurveSig);
+  EXPECT_EQ(p3.failureStrain(), 0.3);
+  EXPECT_EQ(m::deletionStepOf(l3), 1e-7);
+  EXPECT_EQ(p3.linear.C, 10.0);
+  EXPECT_EQ(p3.linear.inv_P, 0.5);
+  EXPECT_DOUBLE_EQ(p3.yieldStress(0.3), 400.0);
 
-  pll.lcss = model::kNone;
+  pll.lcss = -1;
   pll.sigy = 300.0;
   pll.etan = 1000.0;
-  pl.law = pll;
-  const m::Law l4 = m::makeLaw(pl, mdl);
-  const auto& p4 = std::get<m::PiecewiseLinear>(l4);
+  const auto p4 = std::get<m::PiecewiseLinear>(m::makeLaw(pll, curveAt, ""));
   EXPECT_TRUE(p4.curve_eps.empty());
-  EXPECT_EQ(p4.sigy, 300.0);
-  EXPECT_EQ(p4.etan, 1000.0);
+  EXPECT_EQ(p4.yieldStress(0.0), 300.0);
+  EXPECT_DOUBLE_EQ(p4.linear.Hi, kE * 1000.0 / (kE - 1000.0));
+
+  // A rigid part's elements see the elastic law of its E and PR.
+  const m::Law l5 = m::makeLaw(m::Rigid::Params{kE, kNu, 0, 0, 0}, curveAt, "");
+  EXPECT_TRUE(std::holds_alternative<m::Elastic>(l5));
 }
 
 TEST(MaterialsMakeLaw, RejectsUnusableParameters) {
-  model::Model mdl;
-  model::Material mat;
-  model::PiecewiseLinearLaw pll;
+  m::PiecewiseLinear::Params pll;
   pll.E = kE;
   pll.nu = kNu;
   pll.sigy = kSigy;
   pll.lcss = 3;  // no such curve
-  mat.law = pll;
-  EXPECT_THROW(m::makeLaw(mat, mdl), crumple::util::InputError);
-  mat.law = model::PlasticKinematicLaw{kE, kNu, kSigy, kE, 0, 0, 0, 0};  // Etan = E
-  EXPECT_THROW(m::makeLaw(mat, mdl), crumple::util::InputError);
-  mat.law = model::PlasticKinematicLaw{kE, kNu, kSigy, kEtan, 1.5, 0, 0, 0};  // BETA > 1
-  EXPECT_THROW(m::makeLaw(mat, mdl), crumple::util::InputError);
-  mat.law = model::ElasticLaw{kE, 0.5};
-  EXPECT_THROW(m::makeLaw(mat, mdl), crumple::util::InputError);
+  EXPECT_THROW(m::makeLaw(pll, curveAt, ""), crumple::util::InputError);
+  // Etan = E; BETA > 1; PR = 0.5.
+  EXPECT_THROW(m::makeLaw(m::PlasticKinematic::Params{kE, kNu, kSigy, kE, 0, 0, 0, 0}, curveAt, ""),
+               crumple::util::InputError);
+  EXPECT_THROW(
+      m::makeLaw(m::PlasticKinematic::Params{kE, kNu, kSigy, kEtan, 1.5, 0, 0, 0}, curveAt, ""),
+      crumple::util::InputError);
+  EXPECT_THROW(m::makeLaw(m::Elastic::Params{kE, 0.5}, curveAt, ""), crumple::util::InputError);
+  // A spring law has no continuum update, a continuum law no discrete force law.
+  EXPECT_THROW(m::makeLaw(m::SpringElastic::Params{1.0}, curveAt, "at: "),
+               crumple::util::InputError);
+  EXPECT_THROW(m::makeDiscreteLaw(m::Elastic::Params{kE, kNu}, curveAt, "at: "),
+               crumple::util::InputError);
+}
+
+// Which element families each law serves (the model refuses a part whose law lacks its
+// family's update, naming the part: test_build.cpp).
+TEST(MaterialsRegistry, FamiliesCostsAndNames) {
+  using F = m::Family;
+  const m::LawParams elastic = m::Elastic::Params{kE, kNu};
+  const m::LawParams spring = m::SpringElastic::Params{1.0};
+  const m::LawParams rigid = m::Rigid::Params{kE, kNu, 0, 0, 0};
+  for (F f : {F::Solid, F::Shell, F::Beam}) {
+    EXPECT_TRUE(m::supports(elastic, f));
+    EXPECT_TRUE(m::supports(rigid, f));
+    EXPECT_FALSE(m::supports(spring, f));
+  }
+  EXPECT_FALSE(m::supports(elastic, F::Discrete));
+  EXPECT_FALSE(m::supports(rigid, F::Discrete));
+  EXPECT_TRUE(m::supports(spring, F::Discrete));
+  EXPECT_EQ(m::costOf(elastic), m::Cost::Elastic);
+  EXPECT_EQ(m::costOf(m::LawParams{m::PiecewiseLinear::Params{}}), m::Cost::Plastic);
+  EXPECT_EQ(m::costOf(rigid), m::Cost::Rigid);
+  EXPECT_EQ(m::costOf(spring), m::Cost::Discrete);
+  EXPECT_EQ(m::keywordOf(m::LawParams{m::PlasticKinematic::Params{}}), "*MAT_PLASTIC_KINEMATIC");
+  EXPECT_FALSE(m::hasDensity(spring));
+  EXPECT_TRUE(m::isRigid(rigid));
+  EXPECT_FALSE(m::isRigid(elastic));
 }

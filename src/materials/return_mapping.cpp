@@ -1,7 +1,8 @@
-// J2 (von Mises) plasticity with radial return: *MAT_PLASTIC_KINEMATIC (003) and
-// *MAT_PIECEWISE_LINEAR_PLASTICITY (024).
+// Three-dimensional stress updates the laws are built from (return_mapping.hpp): Hooke's law
+// and J2 (von Mises) plasticity with radial return, used by *MAT_PLASTIC_KINEMATIC (003) and
+// *MAT_PIECEWISE_LINEAR_PLASTICITY (024) among others.
 //
-// Both laws use the classical elastic-predictor / radial-return algorithm (Wilkins 1964;
+// The plastic updates use the classical elastic-predictor / radial-return algorithm (Wilkins 1964;
 // Krieg & Key 1976; Simo & Hughes, Computational Inelasticity, 1998, Box 3.2 for linear
 // combined isotropic/kinematic hardening; LS-DYNA Theory Manual, material models 3 and 24).
 //
@@ -24,9 +25,9 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <vector>
+#include <span>
 
-#include "materials/materials.hpp"
+#include "materials/return_mapping.hpp"
 #include "materials/soa.hpp"
 
 namespace crumple::materials {
@@ -47,13 +48,20 @@ inline double cowperSymonds(double d0, double d1, double d2, double d3, double d
   return 1.0 + std::pow(rate / C, inv_P);
 }
 
-struct LinearHardening {
-  double G = 0, lam = 0;
-  double sigy = 0;  // initial yield stress
-  double Hi = 0;    // isotropic plastic modulus
-  double Hk = 0;    // kinematic plastic modulus
-  double C = 0, inv_P = 0;
-};
+// Hypoelastic (Hooke's law on the rate of deformation): the kernel has already applied the
+// Jaumann rotation, so the increment is ds = lambda tr(de) I + 2 G de with tensor shear
+// components (2 G de_xy is the shear stress increment for de_xy = D_xy dt).
+void elasticKernel(detail::Soa a, int n, double lam, double G2) {
+  for (int i = 0; i < n; ++i) {
+    const double lt = lam * (a.d0[i] + a.d1[i] + a.d2[i]);
+    a.s0[i] += lt + G2 * a.d0[i];
+    a.s1[i] += lt + G2 * a.d1[i];
+    a.s2[i] += lt + G2 * a.d2[i];
+    a.s3[i] += G2 * a.d3[i];
+    a.s4[i] += G2 * a.d4[i];
+    a.s5[i] += G2 * a.d5[i];
+  }
+}
 
 // Elastic predictor and radial return for linear mixed hardening; exact for linear hardening
 // (the return is along the trial direction, which the back stress update preserves).
@@ -62,13 +70,14 @@ struct LinearHardening {
 // (the selects are if-converted; with -fno-math-errno -fno-trapping-math, which change no
 // result, GCC vectorises this loop).
 template <bool kKinematic, bool kRate>
-void linearHardeningKernel(detail::Soa a, int n, double dt, const LinearHardening& P) {
-  const double G2 = 2.0 * P.G, G3 = 3.0 * P.G;
+void linearHardeningKernel(detail::Soa a, int n, double dt, double G, double lam,
+                           const LinearHardening& P) {
+  const double G2 = 2.0 * G, G3 = 3.0 * G;
   const double inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;
   for (int i = 0; i < n; ++i) {
     // Elastic predictor (same expression as Elastic::update).
     const double tr = a.d0[i] + a.d1[i] + a.d2[i];
-    const double lt = P.lam * tr;
+    const double lt = lam * tr;
     const double t0 = a.s0[i] + (lt + G2 * a.d0[i]);
     const double t1 = a.s1[i] + (lt + G2 * a.d1[i]);
     const double t2 = a.s2[i] + (lt + G2 * a.d2[i]);
@@ -122,29 +131,21 @@ void linearHardeningKernel(detail::Soa a, int n, double dt, const LinearHardenin
 }
 
 template <bool kKinematic, bool kRate>
-void linearHardeningUpdate(PointBatch& b, const LinearHardening& P) {
-  linearHardeningKernel<kKinematic, kRate>(detail::soaOf(b), b.n, b.dt, P);
-}
-
-// Failure by effective plastic strain: the flag is only ever raised; the caller erodes.
-void markFailed(PointBatch& b, double limit) {
-  if (!(limit > 0.0) || b.failed == nullptr) return;
-  const double* __restrict ep = b.eps_p;
-  uint8_t* __restrict failed = b.failed;
-  for (int i = 0; i < b.n; ++i) failed[i] |= static_cast<uint8_t>(ep[i] >= limit ? 1 : 0);
+void linearHardeningUpdate(PointBatch& b, const Moduli& m, const LinearHardening& P) {
+  linearHardeningKernel<kKinematic, kRate>(detail::soaOf(b), b.n, b.dt, m.shear,
+                                           m.bulk - 2.0 * m.shear / 3.0, P);
 }
 
 // ---- piecewise-linear yield curve ---------------------------------------------------------
 // Same segment search and interpolation as model::Curve::valueExtrapolated: segment k holds
 // [x[k], x[k+1]), clamped to the first and last segments (linear extrapolation beyond).
-std::size_t segmentOf(const std::vector<double>& x, double t) {
+std::size_t segmentOf(std::span<const double> x, double t) {
   auto it = std::upper_bound(x.begin(), x.end(), t);
   std::size_t k = it == x.begin() ? 0 : static_cast<std::size_t>(it - x.begin()) - 1;
   return std::min(k, x.size() - 2);
 }
 
-double onSegment(const std::vector<double>& x, const std::vector<double>& y, std::size_t k,
-                 double t) {
+double onSegment(std::span<const double> x, std::span<const double> y, std::size_t k, double t) {
   const double dx = x[k + 1] - x[k];
   if (dx <= 0.0) return y[k + 1];
   return y[k] + (y[k + 1] - y[k]) * (t - x[k]) / dx;
@@ -156,8 +157,8 @@ double onSegment(const std::vector<double>& x, const std::vector<double>& y, std
 // g is piecewise linear and decreasing (for slopes above -3G/rf), so walking the segments
 // from eps_p and solving linearly in the segment where g changes sign is exact (it is the
 // Newton iteration on the piecewise-linear curve, converged in one step per segment crossed).
-double returnToCurve(const std::vector<double>& x, const std::vector<double>& y, double G3,
-                     double rf, double q, double eps) {
+double returnToCurve(std::span<const double> x, std::span<const double> y, double G3, double rf,
+                     double q, double eps) {
   const std::size_t m = x.size();
   if (m == 1) return (q - rf * y[0]) / G3;  // constant flow stress: perfect plasticity
   std::size_t k = segmentOf(x, eps);
@@ -183,14 +184,12 @@ double returnToCurve(const std::vector<double>& x, const std::vector<double>& y,
 // MAT_024 with a yield curve: isotropic hardening only, so the return is radial on dev(t).
 // Elastic points take the same correction code with deps = 0 (exact no-op).
 template <bool kRate>
-void curveHardeningUpdate(PointBatch& b, const PiecewiseLinear& law) {
-  const double G = law.moduli.shear;
-  const double lam = law.moduli.bulk - 2.0 * G / 3.0;
+void curveHardeningUpdate(PointBatch& b, const Moduli& m, const CurveHardening& P) {
+  const double G = m.shear;
+  const double lam = m.bulk - 2.0 * G / 3.0;
   const double G2 = 2.0 * G, G3 = 3.0 * G;
   const double inv_dt = b.dt > 0.0 ? 1.0 / b.dt : 0.0;
-  const double inv_P = kRate ? 1.0 / law.p : 0.0;
-  const std::vector<double>& cx = law.curve_eps;
-  const std::vector<double>& cy = law.curve_sig;
+  const std::span<const double> cx = P.eps, cy = P.sig;
   for (int i = 0; i < b.n; ++i) {
     const double d0 = b.de[0][i], d1 = b.de[1][i], d2 = b.de[2][i];
     const double d3 = b.de[3][i], d4 = b.de[4][i], d5 = b.de[5][i];
@@ -203,13 +202,13 @@ void curveHardeningUpdate(PointBatch& b, const PiecewiseLinear& law) {
     const double t4 = b.s[4][i] + G2 * d4;
     const double t5 = b.s[5][i] + G2 * d5;
     double rf = 1.0;
-    if constexpr (kRate) rf = cowperSymonds(d0, d1, d2, d3, d4, d5, tr, inv_dt, law.c, inv_P);
+    if constexpr (kRate) rf = cowperSymonds(d0, d1, d2, d3, d4, d5, tr, inv_dt, P.C, P.inv_P);
     const double p = (t0 + t1 + t2) * kThird;
     const double x0 = t0 - p, x1 = t1 - p, x2 = t2 - p;
     const double j2 = 0.5 * (x0 * x0 + x1 * x1 + x2 * x2) + (t3 * t3 + t4 * t4 + t5 * t5);
     const double q = std::sqrt(3.0 * j2);
     const double e = b.eps_p[i];
-    const double f = q - rf * law.yieldStress(e);
+    const double f = q - rf * curveFlowStress(P, e);
     const double deps = f > 0.0 ? returnToCurve(cx, cy, G3, rf, q, e) : 0.0;
     const double cs = G3 * deps / (q > 0.0 ? q : 1.0);
     b.s[0][i] = t0 - cs * x0;
@@ -224,55 +223,44 @@ void curveHardeningUpdate(PointBatch& b, const PiecewiseLinear& law) {
 
 }  // namespace
 
-void PlasticKinematic::update(PointBatch& b) const {
-  LinearHardening P;
-  P.G = moduli.shear;
-  P.lam = moduli.bulk - 2.0 * moduli.shear / 3.0;
-  P.sigy = sigy;
-  const double Ep = plasticModulus(youngOf(moduli), etan);
-  P.Hi = beta * Ep;
-  P.Hk = (1.0 - beta) * Ep;
-  if (src > 0.0 && srp > 0.0) {
-    P.C = src;
-    P.inv_P = 1.0 / srp;
-    linearHardeningUpdate<true, true>(b, P);
-  } else {
-    linearHardeningUpdate<true, false>(b, P);
-  }
-  markFailed(b, fs);
+void elasticUpdate(PointBatch& b, const Moduli& m) {
+  const double G2 = 2.0 * m.shear;
+  elasticKernel(detail::soaOf(b), b.n, m.bulk - G2 / 3.0, G2);
 }
 
-double PiecewiseLinear::yieldStress(double eps_p) const {
-  if (curve_eps.empty()) return sigy + plasticModulus(youngOf(moduli), etan) * eps_p;
-  if (curve_eps.size() == 1) return curve_sig.front();
-  return onSegment(curve_eps, curve_sig, segmentOf(curve_eps, eps_p), eps_p);
+void linearHardeningReturn(PointBatch& b, const Moduli& m, const LinearHardening& P,
+                           bool kinematic) {
+  const bool rate = P.C > 0.0;
+  if (kinematic && rate) {
+    linearHardeningUpdate<true, true>(b, m, P);
+  } else if (kinematic) {
+    linearHardeningUpdate<true, false>(b, m, P);
+  } else if (rate) {
+    linearHardeningUpdate<false, true>(b, m, P);
+  } else {
+    linearHardeningUpdate<false, false>(b, m, P);
+  }
 }
 
-void PiecewiseLinear::update(PointBatch& b) const {
-  const bool rate = c > 0.0 && p > 0.0;
-  if (!curve_eps.empty()) {
-    if (rate) {
-      curveHardeningUpdate<true>(b, *this);
-    } else {
-      curveHardeningUpdate<false>(b, *this);
-    }
+double curveFlowStress(const CurveHardening& P, double eps_p) {
+  if (P.eps.size() == 1) return P.sig.front();
+  return onSegment(P.eps, P.sig, segmentOf(P.eps, eps_p), eps_p);
+}
+
+void curveHardeningReturn(PointBatch& b, const Moduli& m, const CurveHardening& P) {
+  if (P.C > 0.0) {
+    curveHardeningUpdate<true>(b, m, P);
   } else {
-    // Bilinear: purely isotropic linear hardening, i.e. MAT_003 with beta = 1 and no back
-    // stress (b.alpha is not required for this law).
-    LinearHardening P;
-    P.G = moduli.shear;
-    P.lam = moduli.bulk - 2.0 * moduli.shear / 3.0;
-    P.sigy = sigy;
-    P.Hi = plasticModulus(youngOf(moduli), etan);
-    if (rate) {
-      P.C = c;
-      P.inv_P = 1.0 / p;
-      linearHardeningUpdate<false, true>(b, P);
-    } else {
-      linearHardeningUpdate<false, false>(b, P);
-    }
+    curveHardeningUpdate<false>(b, m, P);
   }
-  markFailed(b, fail);
+}
+
+// Failure by effective plastic strain: the flag is only ever raised; the caller erodes.
+void markFailed(PointBatch& b, double limit) {
+  if (!(limit > 0.0) || b.failed == nullptr) return;
+  const double* __restrict ep = b.eps_p;
+  uint8_t* __restrict failed = b.failed;
+  for (int i = 0; i < b.n; ++i) failed[i] |= static_cast<uint8_t>(ep[i] >= limit ? 1 : 0);
 }
 
 }  // namespace crumple::materials

@@ -1,0 +1,120 @@
+// What every material law shares, and the shape of a law unit.
+//
+// A law is one unit: one header and one source file in src/materials/laws/ and one line in
+// src/materials/registry.hpp. The unit is a struct (Serac's material pattern: parameters, a
+// state layout and const updates; ../shared/STYLE.md) that declares
+//   kKeywords                  the *MAT_ names it reads (first: the name in messages)
+//   kCost                      its cost class for the partitioner's element weights
+//   kPlastic, kKinematic       its history: effective plastic strain, back stress
+//   kDensity                   false for spring and damper laws (no RO field)
+//   Params                     the deck's parameters, stored in the Model (trivially copyable:
+//                              the Model is sent to the other ranks as bytes); Params::Law
+//                              names the unit
+//   cards()                    its card layout (field names, widths, defaults)
+//   read(LawInput&)            its deck reader: cards -> Params, with the checks of the fields
+//   make(Params, CurveAt)      the law the kernels use (curves resolved)
+// and, for each element family it can be used with, the update that family calls:
+//   update(PointBatch&)                      solids (3-D stress)
+//   updatePlaneStress(PlaneStressPoints&)    shells (plane stress)
+//   fibre()                                  beams and trusses (uniaxial, materials/uniaxial)
+//   discrete()                               springs and dampers (force vs elongation)
+// with failureStrain() (erosion; 0 = none) and deletionStep() (TDEL; 0 = none). A law that
+// lacks the update of a family its part uses is refused when the model is built, naming the
+// part (model/build_mesh.cpp, finishParts); kernels never fall back to another law.
+//
+// Voigt order everywhere: xx, yy, zz, xy, yz, zx, tensor (not engineering) shear components.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace crumple::deck {
+class Card;
+struct KeywordSpec;
+}  // namespace crumple::deck
+
+namespace crumple::materials {
+
+// A batch of n integration points; every pointer addresses n contiguous values.
+struct PointBatch {
+  int n = 0;
+  double dt = 0.0;
+  double* s[6] = {};          // stress, in/out
+  const double* de[6] = {};   // strain increment D*dt, in
+  double* eps_p = nullptr;    // effective plastic strain, in/out (laws with plasticity)
+  double* alpha[6] = {};      // back stress, in/out (laws with kinematic hardening)
+  uint8_t* failed = nullptr;  // out: set to 1 when the point reaches the failure strain
+};
+
+// Elastic moduli every continuum law exposes for wave speeds and hourglass control.
+struct Moduli {
+  double bulk = 0.0;   // K
+  double shear = 0.0;  // G
+};
+
+// Bulk and shear modulus from E and nu.
+Moduli moduliFromYoung(double E, double nu);
+
+// Young's modulus from the bulk and shear moduli the laws store.
+inline double youngOf(const Moduli& m) {
+  return 9.0 * m.bulk * m.shear / (3.0 * m.bulk + m.shear);
+}
+
+// Plastic hardening modulus dsigma/deps_p of a bilinear curve with tangent Etan, so that the
+// uniaxial slope after yield, E Ep / (E + Ep), is Etan. Precondition Etan < E (the readers).
+inline double plasticModulus(double E, double etan) {
+  return E * etan / (E - etan);
+}
+
+// The partitioner's cost classes (docs/parallel.md, "Element weights").
+enum class Cost : uint8_t { Elastic, Plastic, Rigid, Discrete };
+
+// A curve as a law sees it (a view into the Model's curves).
+struct CurveData {
+  int64_t id = 0;
+  std::span<const double> x, y;
+};
+// The curve with a model curve index.
+using CurveAt = std::function<CurveData(int32_t)>;
+
+// What a law's deck reader may ask of the model builder: its cards in order, verdicts on
+// values Crumple cannot honour, and curves. The builder implements it (model/build_mesh.cpp),
+// so a law's reader sees no model internals.
+class LawInput {
+ public:
+  virtual ~LawInput() = default;
+  // The card with this label of the law's cards(); read once, in the order asked.
+  virtual const deck::Card& card(std::string_view label) = 0;
+  // The same for a card the deck may leave out (then all its fields take their defaults).
+  virtual const deck::Card& optionalCard(std::string_view label) = 0;
+  // A value that changes the answer and that Crumple cannot honour: the deck is refused
+  // (run --ignore-unsupported goes on without it).
+  virtual void reject(const deck::Card& c, std::string_view field, const std::string& why) = 0;
+  // A value read but not honoured that does not change the answer: noted in the report.
+  virtual void ignore(const deck::Card& c, std::string_view field, const std::string& why) = 0;
+  // The model index of the curve a field names; an input error when it is not defined.
+  virtual int32_t curve(const deck::Card& c, std::string_view field, int64_t id) = 0;
+  // As curve(), but a curve that is defined by a keyword Crumple does not support refuses the
+  // deck (reject) and gives -1.
+  virtual int32_t curveOrReject(const deck::Card& c, std::string_view field, int64_t id) = 0;
+  // Stores a curve the law defines in its own cards; returns its model curve index.
+  virtual int32_t addCurve(int64_t id, std::vector<double> x, std::vector<double> y) = 0;
+  // The material's id (MID).
+  virtual int64_t materialId() const = 0;
+};
+
+// Reads and checks the fields E and PR of an isotropic law (Card::fail on a bad value).
+void readElastic(const deck::Card& c, double& E, double& nu);
+// SIGY positive and ETAN in [0, E) (Card::fail on a bad value).
+void checkYield(const deck::Card& c, double E, double sigy, double etan);
+// The same checks in make(), for parameters that did not come through a reader (a Model built
+// in code or received as bytes): util::InputError prefixed by `at`. E and nu must give
+// positive K and G; ETAN must lie in [0, E) (Ep = E Etan / (E - Etan) is singular at E).
+void checkModuli(const std::string& at, double E, double nu);
+void checkTangent(const std::string& at, double E, double etan);
+
+}  // namespace crumple::materials

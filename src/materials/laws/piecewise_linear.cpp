@@ -1,0 +1,169 @@
+#include "materials/laws/piecewise_linear.hpp"
+
+#include <cstddef>
+#include <utility>
+
+#include "deck/card.hpp"
+#include "deck/layout.hpp"
+#include "util/error.hpp"
+
+namespace crumple::materials {
+
+const deck::KeywordSpec& PiecewiseLinear::cards() {
+  using deck::I;
+  using deck::R;
+  static const deck::KeywordSpec spec{
+      kKeywords[0],
+      {deck::titleCard(),
+       {"card 1", {I("MID"), R("RO"), R("E"), R("PR"), R("SIGY"), R("ETAN"), R("FAIL"), R("TDEL")}},
+       {"card 2", {R("C"), R("P"), I("LCSS"), I("LCSR"), R("VP")}},
+       {"card 3",
+        {R("EPS1"), R("EPS2"), R("EPS3"), R("EPS4"), R("EPS5"), R("EPS6"), R("EPS7"), R("EPS8")}},
+       {"card 4",
+        {R("ES1"), R("ES2"), R("ES3"), R("ES4"), R("ES5"), R("ES6"), R("ES7"), R("ES8")}}}};
+  return spec;
+}
+
+namespace {
+
+// The EPS1-8 / ES1-8 pairs of cards 3-4 up to the end LS-DYNA reads (Keyword Manual,
+// *MAT_024): the first blank or zero pair after the first, or the first strain that does not
+// increase (trailing zeros of a partly filled card).
+void readTable(const deck::Card& c3, const deck::Card& c4, std::vector<double>& eps,
+               std::vector<double>& es) {
+  for (int i = 1; i <= 8; ++i) {
+    const std::string e = "EPS" + std::to_string(i), s = "ES" + std::to_string(i);
+    const double ev = c3.real(e), sv = c4.real(s);
+    if (i > 1 && c3.blank(e) && c4.blank(s)) break;
+    if (i > 1 && ev == 0.0 && sv == 0.0) break;
+    if (i > 1 && ev <= eps.back()) {
+      c3.real(e);
+      c4.real(s);
+      break;
+    }
+    eps.push_back(ev);
+    es.push_back(sv);
+  }
+}
+
+// Hardening (Keyword Manual, *MAT_024): LCSS, else the EPS/ES pairs of cards 3-4, else SIGY
+// and ETAN.
+void readHardening(LawInput& in, PiecewiseLinear::Params& p, const deck::Card& c,
+                   const deck::Card& c2) {
+  const deck::Card& c3 = in.optionalCard("card 3");
+  const deck::Card& c4 = in.optionalCard("card 4");
+  std::vector<double> eps, es;
+  readTable(c3, c4, eps, es);
+  // The table needs two points; with EPS2 = 0 it has fewer, and SIGY and ETAN give the
+  // hardening (older LSTC decks fill ES1-8 and leave EPS1-8 zero).
+  const bool table = es.size() >= 2;
+  if (!table && es.size() == 1 && es[0] != 0.0) {
+    for (int i = 2; i <= 8; ++i) c4.real("ES" + std::to_string(i));  // covered by the note
+    in.ignore(c4, "ES1",
+              "the EPS/ES table has fewer than two increasing strains (EPS2 = 0): SIGY and ETAN "
+              "define the hardening");
+  }
+  if (const int64_t lcss = c2.integer("LCSS"); lcss != 0) {
+    p.lcss = in.curveOrReject(c2, "LCSS", lcss);
+  } else if (table) {
+    // A curve of its own, id -MID, so that the solver sees one hardening representation.
+    p.lcss = in.addCurve(-in.materialId(), std::move(eps), std::move(es));
+  } else {
+    checkYield(c, p.E, p.sigy, p.etan);
+  }
+}
+
+}  // namespace
+
+PiecewiseLinear::Params PiecewiseLinear::read(LawInput& in) {
+  const deck::Card& c = in.card("card 1");
+  const deck::Card& c2 = in.optionalCard("card 2");
+  Params p;
+  readElastic(c, p.E, p.nu);
+  p.sigy = c.real("SIGY");
+  p.etan = c.real("ETAN");
+  p.fail = c.real("FAIL");
+  if (p.fail < 0) {
+    in.reject(c, "FAIL", "a user failure subroutine (FAIL < 0) is not supported");
+    p.fail = 0;
+  }
+  p.tdel = c.real("TDEL");
+  p.c = c2.real("C");
+  p.p = c2.real("P");
+  if (c2.integer("LCSR") != 0)
+    in.reject(c2, "LCSR", "a strain-rate scaling curve (LCSR) is not supported");
+  readHardening(in, p, c, c2);
+  return p;
+}
+
+PiecewiseLinear PiecewiseLinear::make(const Params& p, const CurveAt& curves,
+                                      const std::string& at) {
+  checkModuli(at, p.E, p.nu);
+  PiecewiseLinear law;
+  law.moduli = moduliFromYoung(p.E, p.nu);
+  law.linear.sigy = p.sigy;
+  if (p.c > 0.0 && p.p > 0.0) {
+    law.linear.C = p.c;
+    law.linear.inv_P = 1.0 / p.p;
+  }
+  law.fail = p.fail;
+  law.tdel = p.tdel;
+  if (p.lcss < 0) {
+    checkTangent(at, p.E, p.etan);
+    law.linear.Hi = plasticModulus(youngOf(law.moduli), p.etan);
+    return law;
+  }
+  // LCSS given: SIGY and ETAN are ignored (Keyword Manual, *MAT_024); the initial yield
+  // stress is the curve's value at zero plastic strain.
+  const CurveData c = curves(p.lcss);
+  const std::string name = "LCSS curve " + std::to_string(c.id);
+  if (c.x.empty() || c.x.size() != c.y.size()) throw util::InputError(at + name + " has no points");
+  for (std::size_t k = 1; k < c.x.size(); ++k)
+    if (!(c.x[k] >= c.x[k - 1]))
+      throw util::InputError(at + name + " must have non-decreasing plastic strains");
+  law.curve_eps.assign(c.x.begin(), c.x.end());
+  law.curve_sig.assign(c.y.begin(), c.y.end());
+  law.linear.sigy = curveFlowStress(law.curve(), 0.0);
+  return law;
+}
+
+double PiecewiseLinear::yieldStress(double eps_p) const {
+  if (curve_eps.empty()) return linear.sigy + linear.Hi * eps_p;
+  return curveFlowStress(curve(), eps_p);
+}
+
+void PiecewiseLinear::update(PointBatch& b) const {
+  if (curve_eps.empty()) {
+    // Bilinear: purely isotropic linear hardening (b.alpha is not required for this law).
+    linearHardeningReturn(b, moduli, linear, false);
+  } else {
+    curveHardeningReturn(b, moduli, curve());
+  }
+  markFailed(b, fail);
+}
+
+void PiecewiseLinear::updatePlaneStress(PlaneStressPoints& b) const {
+  if (curve_eps.empty()) {
+    planeStressLinear(b, moduli, linear, false);
+  } else {
+    planeStressCurve(b, moduli, curve());
+  }
+  markFailed(b, fail);
+}
+
+FibreLaw PiecewiseLinear::fibre() const {
+  FibreLaw f;
+  f.E = youngOf(moduli);
+  f.G = moduli.shear;
+  f.plastic = true;
+  f.sigy = linear.sigy;  // the curve's value at zero plastic strain when there is a curve
+  f.Hi = linear.Hi;
+  f.curve_eps = curve_eps;
+  f.curve_sig = curve_sig;
+  f.C = linear.C;
+  f.inv_P = linear.inv_P;
+  f.fail = fail;
+  return f;
+}
+
+}  // namespace crumple::materials

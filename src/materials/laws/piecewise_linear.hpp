@@ -1,0 +1,58 @@
+// *MAT_PIECEWISE_LINEAR_PLASTICITY (024): von Mises plasticity with isotropic hardening along
+// a yield curve (LCSS, or the EPS1-8 / ES1-8 table, else bilinear from SIGY and ETAN),
+// Cowper-Symonds rate scaling (C, P), erosion at the effective plastic strain FAIL and
+// deletion of elements whose step falls below TDEL (LS-DYNA Keyword Manual vol. II,
+// *MAT_PIECEWISE_LINEAR_PLASTICITY; Theory Manual, material model 24). LCSR (a rate curve),
+// VP = 1 and a table in LCSS are refused.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "materials/law.hpp"
+#include "materials/plane_stress.hpp"
+#include "materials/return_mapping.hpp"
+#include "materials/uniaxial.hpp"
+
+namespace crumple::materials {
+
+struct PiecewiseLinear {
+  static constexpr std::array<std::string_view, 2> kKeywords{"*MAT_PIECEWISE_LINEAR_PLASTICITY",
+                                                             "*MAT_024"};
+  static constexpr Cost kCost = Cost::Plastic;
+  static constexpr bool kPlastic = true;
+  static constexpr bool kKinematic = false;
+  static constexpr bool kDensity = true;
+
+  struct Params {
+    using Law = PiecewiseLinear;
+    double E = 0, nu = 0, sigy = 0, etan = 0;
+    double fail = 0;      // effective plastic strain at failure (erosion); 0 = none
+    double c = 0, p = 0;  // Cowper-Symonds rate parameters; 0 = rate independent
+    int32_t lcss = -1;    // curve index: yield stress vs effective plastic strain; -1 = none
+    double tdel = 0;      // minimum time step for automatic element deletion
+  };
+  static const deck::KeywordSpec& cards();
+  static Params read(LawInput& in);
+  static PiecewiseLinear make(const Params& p, const CurveAt& curves, const std::string& at);
+
+  Moduli moduli;
+  LinearHardening linear;                    // bilinear (no curve): sigy, Hi = Ep, C, inv_P
+  std::vector<double> curve_eps, curve_sig;  // the yield curve; empty: bilinear
+  double fail = 0, tdel = 0;
+  void update(PointBatch& b) const;
+  void updatePlaneStress(PlaneStressPoints& b) const;
+  FibreLaw fibre() const;
+  double failureStrain() const { return fail; }
+  double deletionStep() const { return tdel; }
+  // Static (rate-free) flow stress at an effective plastic strain.
+  double yieldStress(double eps_p) const;
+
+ private:
+  CurveHardening curve() const { return {curve_eps, curve_sig, linear.C, linear.inv_P}; }
+};
+
+}  // namespace crumple::materials

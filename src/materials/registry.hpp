@@ -1,0 +1,23 @@
+// Every material law Crumple knows, one line each. The deck reader's keyword table, the
+// Model's parameter variant (and so its serialisation), the partitioner's weights and the
+// element kernels' dispatch are all generated from this list: adding a law is its unit in
+// src/materials/laws/ (law.hpp says what a unit declares) plus its line here.
+#pragma once
+
+#include "materials/laws/elastic.hpp"
+#include "materials/laws/piecewise_linear.hpp"
+#include "materials/laws/plastic_kinematic.hpp"
+#include "materials/laws/rigid.hpp"
+#include "materials/laws/springs.hpp"
+
+namespace crumple::materials {
+
+template <class... L>
+struct LawList {};
+
+// The order is the index of a law in archives (restart dumps, the model sent to other ranks):
+// append new laws at the end.
+using AllLaws = LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic,
+                        DamperViscous, SpringNonlinear>;
+
+}  // namespace crumple::materials

@@ -1,0 +1,41 @@
+// The three-dimensional stress updates laws are built from: Hooke's law and J2 plasticity by
+// radial return (formulation and references in return_mapping.cpp). A law unit translates its
+// parameters into these (src/materials/laws/) and calls them on a batch of points; they hold
+// no law of their own.
+#pragma once
+
+#include <span>
+
+#include "materials/law.hpp"
+
+namespace crumple::materials {
+
+// Linear mixed hardening: the yield stress rf (sigy + Hi eps_p) with the Cowper-Symonds
+// factor rf = 1 + (rate / C)^inv_P (C == 0: rate independent), and Prager's kinematic
+// hardening with modulus Hk.
+struct LinearHardening {
+  double sigy = 0.0;  // initial yield stress
+  double Hi = 0.0;    // isotropic plastic modulus
+  double Hk = 0.0;    // kinematic plastic modulus
+  double C = 0.0, inv_P = 0.0;
+};
+
+// Isotropic hardening along a piecewise-linear yield curve (stress vs effective plastic
+// strain, linearly extrapolated past its ends), with the same rate factor.
+struct CurveHardening {
+  std::span<const double> eps, sig;
+  double C = 0.0, inv_P = 0.0;
+};
+
+// s += lambda tr(de) I + 2 G de.
+void elasticUpdate(PointBatch& b, const Moduli& m);
+// Elastic predictor and radial return; `kinematic` updates the back stress b.alpha.
+void linearHardeningReturn(PointBatch& b, const Moduli& m, const LinearHardening& P,
+                           bool kinematic);
+void curveHardeningReturn(PointBatch& b, const Moduli& m, const CurveHardening& P);
+// Static flow stress of the curve at an effective plastic strain.
+double curveFlowStress(const CurveHardening& P, double eps_p);
+// Raises b.failed where the effective plastic strain has reached `limit` (> 0).
+void markFailed(PointBatch& b, double limit);
+
+}  // namespace crumple::materials
