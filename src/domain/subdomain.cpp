@@ -13,7 +13,7 @@
 namespace crumple::domain {
 
 void SolidBlock::resize(std::size_t n, bool plastic, bool kinematic, bool stiffness_hourglass,
-                        bool gauss_points) {
+                        bool gauss_points, int history_count) {
   const std::size_t padded = (n + kSolidBatch - 1) / kSolidBatch * kSolidBatch;
   sig.assign(6 * padded, 0.0);
   eps_p.assign(plastic ? padded : 0, 0.0);
@@ -30,6 +30,10 @@ void SolidBlock::resize(std::size_t n, bool plastic, bool kinematic, bool stiffn
   for (auto& s : sig_ip) s.assign(points, 0.0);
   for (auto& s : alpha_ip) s.assign(kinematic ? points : 0, 0.0);
   eps_p_ip.assign(plastic ? points : 0, 0.0);
+  history = history_count;
+  const auto h = static_cast<std::size_t>(history_count);
+  hist.assign(gauss_points ? 0 : h * padded, 0.0);
+  hist_ip.assign(h * points, 0.0);
 }
 
 namespace {
@@ -333,7 +337,8 @@ class SubdomainBuilder {
     const bool kinematic = materials::isKinematic(b.law);
     b.elform = model.solid_sections[static_cast<std::size_t>(part.section)].elform;
     // A fully integrated element has no hourglass modes to control.
-    b.resize(b.size(), plastic, kinematic, b.elform == 1 && b.hourglass.ihq >= 4, b.elform == 2);
+    b.resize(b.size(), plastic, kinematic, b.elform == 1 && b.hourglass.ihq >= 4, b.elform == 2,
+             materials::historyCount(b.law));
     return b;
   }
 

@@ -46,6 +46,10 @@ struct SolidBlock : BlockBase {
   std::vector<double> sig;
   std::vector<double> eps_p;  // effective plastic strain (plastic laws)
   std::vector<double> alpha;
+  // The law's further history variables (materials::historyOf), `history` x kSolidBatch values
+  // per batch; ELFORM 2 keeps them per Gauss point only, in hist_ip.
+  int history = 0;
+  std::vector<double> hist;
   // Hourglass resistance of the stiffness forms, 4 modes x 3 components, stored batch by
   // batch (12 x kSolidBatch contiguous values per batch): one memory stream instead of twelve.
   std::vector<double> hgq;
@@ -70,13 +74,14 @@ struct SolidBlock : BlockBase {
   // q * paddedSize() + e). sig and eps_p above then hold the means over the points.
   std::array<std::vector<double>, 6> sig_ip, alpha_ip;
   std::vector<double> eps_p_ip;
+  std::vector<double> hist_ip;  // variable k of point q of element e at (q history + k) padded + e
 
   // Elements plus padding: a whole number of batches.
   std::size_t paddedSize() const {
     return (elem.size() + kSolidBatch - 1) / kSolidBatch * kSolidBatch;
   }
   void resize(std::size_t n, bool plastic, bool kinematic, bool stiffness_hourglass,
-              bool gauss_points = false);
+              bool gauss_points = false, int history_count = 0);
 };
 
 // Corner slots this rank sends to, and receives from, one neighbour each cycle. Both sides

@@ -122,6 +122,10 @@ inline void updateStress(const Law& law, const SolidParams& p, const domain::Sol
   if constexpr (Law::kKinematic)
     for (int k = 0; k < 6; ++k)
       for (int l = 0; l < kBatch; ++l) w.alpha[k][l] = alpha_batch[k * kBatch + l];
+  constexpr int H = materials::historyOf<Law>();
+  const double* hist_batch = H > 0 ? blk.hist.data() + first * H : nullptr;
+  for (int k = 0; k < H; ++k)
+    for (int l = 0; l < kBatch; ++l) w.hist[k][l] = hist_batch[k * kBatch + l];
   for (int l = 0; l < kBatch; ++l) {
     const double wxy = sp.spin_xy[l] = 0.5 * (L[0][1][l] - L[1][0][l]) * dt;
     const double wyz = sp.spin_yz[l] = 0.5 * (L[1][2][l] - L[2][1][l]) * dt;
@@ -287,6 +291,11 @@ inline void storeSolidBatch(domain::SolidBlock& blk, std::size_t first, int n, d
   if constexpr (Law::kKinematic)
     for (int k = 0; k < 6; ++k)
       for (int l = 0; l < kBatch; ++l) alpha_batch[k * kBatch + l] = w.alpha[k][l];
+  constexpr int H = materials::historyOf<Law>();
+  double* hist_batch = H > 0 ? blk.hist.data() + first * H : nullptr;
+  for (int k = 0; k < H; ++k)
+    for (int l = 0; l < kBatch; ++l)
+      hist_batch[k * kBatch + l] = alive[l] ? w.hist[k][l] : hist_batch[k * kBatch + l];
   for (int l = 0; l < kBatch; ++l) {
     blk.vol[first + l] = g.vol[l];
     blk.e_int[first + l] += alive[l] ? de_int[l] : 0.0;

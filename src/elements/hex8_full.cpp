@@ -142,6 +142,10 @@ inline void gaussPointStresses(const Law& law, domain::SolidBlock& blk, std::siz
     if constexpr (Law::kKinematic)
       for (int k = 0; k < 6; ++k)
         for (int l = 0; l < kBatch; ++l) w.alpha[k][l] = blk.alpha_ip[k][at + l];
+    constexpr int H = materials::historyOf<Law>();
+    for (int k = 0; k < H; ++k)
+      for (int l = 0; l < kBatch; ++l)
+        w.hist[k][l] = blk.hist_ip[std::size_t(q * H + k) * padded + first + l];
     pointRates<Law>(dt, grad, trace_mean, w);
     detail::updateMaterial(law, w, dt);
     for (int l = 0; l < kBatch; ++l) {
@@ -161,6 +165,9 @@ inline void gaussPointStresses(const Law& law, domain::SolidBlock& blk, std::siz
     if constexpr (Law::kKinematic)
       for (int k = 0; k < 6; ++k)
         for (int l = 0; l < kBatch; ++l) blk.alpha_ip[k][at + l] = w.alpha[k][l];
+    for (int k = 0; k < H; ++k)
+      for (int l = 0; l < kBatch; ++l)
+        blk.hist_ip[std::size_t(q * H + k) * padded + first + l] = w.hist[k][l];
   }
 }
 

@@ -85,6 +85,7 @@ struct BatchScratch {
   NodalBatch x, v, xm, b, f;
   double s[6][kBatch], s_old[6][kBatch], de[6][kBatch], alpha[6][kBatch];
   double eps_p[kBatch];
+  double hist[materials::kMaxHistory][kBatch];
   uint8_t failed[kBatch];
 };
 
@@ -104,6 +105,7 @@ inline void updateMaterial(const Law& law, BatchScratch& w, double dt) {
     pb.alpha[k] = Law::kKinematic ? w.alpha[k] : nullptr;
   }
   pb.eps_p = Law::kPlastic ? w.eps_p : nullptr;
+  for (int k = 0; k < materials::historyOf<Law>(); ++k) pb.h[k] = w.hist[k];
   pb.failed = w.failed;
   law.update(pb);
 }

@@ -790,6 +790,9 @@ template <class Law>
 shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVector& x,
                  const domain::NodeVector& v, const domain::NodeVector& w, double dt, double* slots,
                  std::size_t range_first, std::size_t range_last) {
+  // Shell blocks store no law history besides eps_p and alpha: a law with more needs its
+  // storage here (blocks.hpp, resizeShellBlock) before it can offer a plane-stress update.
+  static_assert(materials::historyOf<Law>() == 0, "shell blocks do not store law history yet");
   constexpr int B = kShellBatch;
   const std::size_t ne = range_last;
   const std::size_t batch0 = range_first / B;

@@ -6,6 +6,8 @@
 //   kKeywords                  the *MAT_ names it reads (first: the name in messages)
 //   kCost                      its cost class for the partitioner's element weights
 //   kPlastic, kKinematic       its history: effective plastic strain, back stress
+//   kHistory (optional)        further history variables per point (0 when not declared;
+//                              at most kMaxHistory), stored by the blocks and dumps
 //   kDensity                   false for spring and damper laws (no RO field)
 //   Params                     the deck's parameters, stored in the Model (trivially copyable:
 //                              the Model is sent to the other ranks as bytes); Params::Law
@@ -39,15 +41,30 @@ struct KeywordSpec;
 
 namespace crumple::materials {
 
+// History variables a law may keep per point besides eps_p and alpha.
+inline constexpr int kMaxHistory = 4;
+
+// The number of history variables of a law (its kHistory, else 0).
+template <class L>
+constexpr int historyOf() {
+  if constexpr (requires { L::kHistory; }) {
+    static_assert(L::kHistory >= 0 && L::kHistory <= kMaxHistory, "kHistory out of range");
+    return L::kHistory;
+  } else {
+    return 0;
+  }
+}
+
 // A batch of n integration points; every pointer addresses n contiguous values.
 struct PointBatch {
   int n = 0;
   double dt = 0.0;
-  double* s[6] = {};          // stress, in/out
-  const double* de[6] = {};   // strain increment D*dt, in
-  double* eps_p = nullptr;    // effective plastic strain, in/out (laws with plasticity)
-  double* alpha[6] = {};      // back stress, in/out (laws with kinematic hardening)
-  uint8_t* failed = nullptr;  // out: set to 1 when the point reaches the failure strain
+  double* s[6] = {};            // stress, in/out
+  const double* de[6] = {};     // strain increment D*dt, in
+  double* eps_p = nullptr;      // effective plastic strain, in/out (laws with plasticity)
+  double* alpha[6] = {};        // back stress, in/out (laws with kinematic hardening)
+  uint8_t* failed = nullptr;    // out: set to 1 when the point reaches the failure strain
+  double* h[kMaxHistory] = {};  // the law's history variables h[0..kHistory), in/out
 };
 
 // Elastic moduli every continuum law exposes for wave speeds and hourglass control.

@@ -113,6 +113,9 @@ inline double failureStrainOf(const Law& law) {
 inline bool isPlastic(const Law& law) {
   return std::visit([](const auto& l) { return std::decay_t<decltype(l)>::kPlastic; }, law);
 }
+inline int historyCount(const Law& law) {
+  return std::visit([](const auto& l) { return historyOf<std::decay_t<decltype(l)>>(); }, law);
+}
 inline bool isKinematic(const Law& law) {
   return std::visit([](const auto& l) { return std::decay_t<decltype(l)>::kKinematic; }, law);
 }

@@ -28,6 +28,8 @@ void visitSolid(B& b, std::size_t e, F&& f) {
     for (int k = 0; k < 6; ++k) f(b.alpha[b.blocked(6, k, e)]);
   if (!b.hgq.empty())
     for (int c = 0; c < 12; ++c) f(b.hgq[b.blocked(12, c, e)]);
+  if (!b.hist.empty())
+    for (int k = 0; k < b.history; ++k) f(b.hist[b.blocked(b.history, k, e)]);
   f(b.vol[e]);
   f(b.e_int[e]);
   f(b.e_hg[e]);
@@ -41,6 +43,8 @@ void visitSolid(B& b, std::size_t e, F&& f) {
   for (auto& s : b.sig_ip) points(s);
   for (auto& s : b.alpha_ip) points(s);
   points(b.eps_p_ip);
+  for (std::size_t q = 0; q < 8 * std::size_t(b.history) && !b.hist_ip.empty(); ++q)
+    f(b.hist_ip[q * padded + e]);
 }
 
 template <class B, class F>
