@@ -10,6 +10,8 @@
 // the manual).
 #include "elements/discrete.hpp"
 
+#include "util/curve.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -36,15 +38,7 @@ double offsetOf(const domain::DiscreteBlock& b, std::size_t e) {
   return b.offset.empty() ? 0.0 : b.offset[e];
 }
 
-// Segment k of the curve holds [x[k], x[k+1]), clamped to the end segments, so that the
-// value beyond the ends follows the end slopes (as model::Curve::valueExtrapolated).
-std::size_t segmentOf(const std::vector<double>& x, double t) {
-  const auto it = std::upper_bound(x.begin(), x.end(), t);
-  const std::size_t k = it == x.begin() ? 0 : static_cast<std::size_t>(it - x.begin()) - 1;
-  return std::min(k, x.size() - 2);
-}
-
-// Curve value and slope at t.
+// Curve value and slope at t (util/curve.hpp segments: the end slopes continue past the ends).
 void curveAt(const std::vector<double>& x, const std::vector<double>& y, double t, double& value,
              double& slope) {
   if (x.empty()) {
@@ -56,7 +50,7 @@ void curveAt(const std::vector<double>& x, const std::vector<double>& y, double 
     slope = 0.0;
     return;
   }
-  const std::size_t k = segmentOf(x, t);
+  const std::size_t k = util::segmentOf(x, t);
   const double dx = x[k + 1] - x[k];
   slope = dx > 0.0 ? (y[k + 1] - y[k]) / dx : 0.0;
   value = dx > 0.0 ? y[k] + slope * (t - x[k]) : y[k + 1];

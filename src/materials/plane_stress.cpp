@@ -29,6 +29,8 @@
 // (plastic incompressibility).
 #include "materials/plane_stress.hpp"
 
+#include "util/curve.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -350,9 +352,7 @@ void curveAt(std::span<const double> x, std::span<const double> y, double eps, d
     slope = 0.0;
     return;
   }
-  auto it = std::upper_bound(x.begin(), x.end(), eps);
-  std::size_t k = it == x.begin() ? 0 : static_cast<std::size_t>(it - x.begin()) - 1;
-  k = std::min(k, x.size() - 2);
+  const std::size_t k = util::segmentOf(x, eps);
   const double dx = x[k + 1] - x[k];
   if (dx <= 0.0) {
     h = y[k + 1];

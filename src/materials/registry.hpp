@@ -8,6 +8,7 @@
 #include "materials/laws/piecewise_linear.hpp"
 #include "materials/laws/plastic_kinematic.hpp"
 #include "materials/laws/rigid.hpp"
+#include "materials/laws/soil_foam.hpp"
 #include "materials/laws/springs.hpp"
 
 namespace crumple::materials {
@@ -18,6 +19,6 @@ struct LawList {};
 // The order is the index of a law in archives (restart dumps, the model sent to other ranks):
 // append new laws at the end.
 using AllLaws = LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic,
-                        DamperViscous, SpringNonlinear>;
+                        DamperViscous, SpringNonlinear, SoilAndFoam>;
 
 }  // namespace crumple::materials

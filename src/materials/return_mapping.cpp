@@ -29,6 +29,7 @@
 
 #include "materials/return_mapping.hpp"
 #include "materials/soa.hpp"
+#include "util/curve.hpp"
 
 namespace crumple::materials {
 
@@ -137,19 +138,9 @@ void linearHardeningUpdate(PointBatch& b, const Moduli& m, const LinearHardening
 }
 
 // ---- piecewise-linear yield curve ---------------------------------------------------------
-// Same segment search and interpolation as model::Curve::valueExtrapolated: segment k holds
-// [x[k], x[k+1]), clamped to the first and last segments (linear extrapolation beyond).
-std::size_t segmentOf(std::span<const double> x, double t) {
-  auto it = std::upper_bound(x.begin(), x.end(), t);
-  std::size_t k = it == x.begin() ? 0 : static_cast<std::size_t>(it - x.begin()) - 1;
-  return std::min(k, x.size() - 2);
-}
-
-double onSegment(std::span<const double> x, std::span<const double> y, std::size_t k, double t) {
-  const double dx = x[k + 1] - x[k];
-  if (dx <= 0.0) return y[k + 1];
-  return y[k] + (y[k + 1] - y[k]) * (t - x[k]) / dx;
-}
+// The segment search and interpolation of util/curve.hpp, as model::Curve::valueExtrapolated.
+using util::onSegment;
+using util::segmentOf;
 
 // Effective plastic strain increment that returns a trial stress of von Mises norm q > the
 // current flow stress to the piecewise-linear curve h scaled by rf:

@@ -1,6 +1,8 @@
 // Truss and beam-fibre stress updates (see uniaxial.hpp for the formulation).
 #include "materials/uniaxial.hpp"
 
+#include "util/curve.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -9,14 +11,6 @@
 namespace crumple::materials {
 
 namespace {
-
-// Segment k of a curve holds [x[k], x[k+1]), clamped to the end segments (linear
-// extrapolation beyond), as model::Curve::valueExtrapolated.
-std::size_t segmentOf(std::span<const double> x, double t) {
-  const auto it = std::upper_bound(x.begin(), x.end(), t);
-  const std::size_t k = it == x.begin() ? 0 : static_cast<std::size_t>(it - x.begin()) - 1;
-  return std::min(k, x.size() - 2);
-}
 
 // Static flow stress and its slope dsigma_y / deps_p at eps_p.
 void flowStressAndSlope(const FibreLaw& law, double eps_p, double& y, double& h) {
@@ -30,7 +24,7 @@ void flowStressAndSlope(const FibreLaw& law, double eps_p, double& y, double& h)
     h = 0.0;
     return;
   }
-  const std::size_t k = segmentOf(law.curve_eps, eps_p);
+  const std::size_t k = util::segmentOf(law.curve_eps, eps_p);
   const double dx = law.curve_eps[k + 1] - law.curve_eps[k];
   // A zero-length segment is a step up in the curve: the stress stands on the riser.
   h = dx > 0.0 ? (law.curve_sig[k + 1] - law.curve_sig[k]) / dx : 0.0;

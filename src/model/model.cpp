@@ -1,37 +1,24 @@
 #include "model/model.hpp"
 
+#include "util/curve.hpp"
+
 #include <algorithm>
 #include <iterator>
 #include <string>
 
 namespace crumple::model {
 
-namespace {
-// Index of the segment [x[i], x[i+1]] that holds t, for x ascending with at least 2 points.
-std::size_t segmentOf(const std::vector<double>& x, double t) {
-  auto it = std::upper_bound(x.begin(), x.end(), t);
-  std::size_t i = it == x.begin() ? 0 : static_cast<std::size_t>(it - x.begin()) - 1;
-  return std::min(i, x.size() - 2);
-}
-double interpolate(const std::vector<double>& x, const std::vector<double>& y, std::size_t i,
-                   double t) {
-  const double dx = x[i + 1] - x[i];
-  if (dx <= 0.0) return y[i + 1];
-  return y[i] + (y[i + 1] - y[i]) * (t - x[i]) / dx;
-}
-}  // namespace
-
 double Curve::value(double t) const {
   if (x.empty()) return 0.0;
   if (x.size() == 1 || t <= x.front()) return y.front();
   if (t >= x.back()) return y.back();
-  return interpolate(x, y, segmentOf(x, t), t);
+  return util::onSegment(x, y, util::segmentOf(x, t), t);
 }
 
 double Curve::valueExtrapolated(double t) const {
   if (x.empty()) return 0.0;
   if (x.size() == 1) return y.front();
-  return interpolate(x, y, segmentOf(x, t), t);
+  return util::onSegment(x, y, util::segmentOf(x, t), t);
 }
 
 namespace {

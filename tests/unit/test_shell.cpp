@@ -147,7 +147,11 @@ void psStep(const mat::Law& law, PsPoint& p, double dxx, double dyy, double dxy,
   b.de_zz = &p.de_zz;
   b.eps_p = &p.eps_p;
   b.failed = &p.failed;
-  std::visit([&](const auto& l) { l.updatePlaneStress(b); }, law);
+  std::visit(
+      [&](const auto& l) {
+        if constexpr (mat::ShellLaw<std::decay_t<decltype(l)>>) l.updatePlaneStress(b);
+      },
+      law);
 }
 
 // Uniaxial stress along x: de_yy found by secant iteration so that s_yy = 0 after the step.

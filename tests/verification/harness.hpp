@@ -61,6 +61,11 @@ class Simulation {
   std::unique_ptr<solver::Solver> solver;
 };
 
+// *CONTROL_TERMINATION at time t.
+inline std::string termination(double t) {
+  return fmt::format("*CONTROL_TERMINATION\n{:10.6g}\n", t);
+}
+
 // A brick of nx x ny x nz hexes on [0,lx]x[0,ly]x[0,lz], part 1, node (i,j,k) has id
 // 1 + i + (nx+1) j + (nx+1)(ny+1) k. `extra` holds the material, controls and loads.
 inline std::string brickDeck(int nx, int ny, int nz, double lx, double ly, double lz,

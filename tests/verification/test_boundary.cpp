@@ -11,13 +11,10 @@ namespace {
 using crumple::testing::brickDeck;
 using crumple::testing::brickNodeSet;
 using crumple::testing::Simulation;
+using crumple::testing::termination;
 
 // Steel in mm, ms, kg, GPa.
 const std::string kSteel = "*MAT_ELASTIC\n         1   7.85e-6     210.0       0.3\n";
-
-std::string termination(double t) {
-  return fmt::format("*CONTROL_TERMINATION\n{:10.6g}\n", t);
-}
 
 // A free brick under gravity: no internal forces arise, every node falls as -g t^2 / 2 and
 // central differences integrate a constant acceleration exactly.

@@ -14,14 +14,12 @@
 namespace {
 
 using crumple::testing::Simulation;
+using crumple::testing::termination;
 using Vec3 = std::array<double, 3>;
 
 // Steel in mm, ms, kg, GPa.
 const std::string kRigidSteel = "*MAT_RIGID\n1,7.85e-6,210.0,0.3\n";
 
-std::string termination(double t) {
-  return fmt::format("*CONTROL_TERMINATION\n{}\n", t);
-}
 std::string constantCurve(int id, double value = 1.0) {
   return fmt::format("*DEFINE_CURVE\n{}\n0.0,{}\n1.0e6,{}\n", id, value, value);
 }

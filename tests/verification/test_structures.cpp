@@ -15,6 +15,7 @@
 namespace {
 
 using crumple::testing::Simulation;
+using crumple::testing::termination;
 
 // Steel strip in mm, ms, kg, GPa (kN). nu = 0, so that a strip and a beam of the same section
 // have the same bending stiffness E I whatever the width (no anticlastic plate effect).
@@ -32,10 +33,6 @@ double cantileverPeriod() {
 // the first mode, so an initial velocity in this shape excites almost only mode 1.
 double staticShape(double xi) {
   return 0.5 * xi * xi * (3.0 - xi);
-}
-
-std::string termination(double t) {
-  return fmt::format("*CONTROL_TERMINATION\n{:10.6g}\n", t);
 }
 
 // A cantilever strip of nx x ny Belytschko-Tsay shells in the x-y plane, clamped at x = 0

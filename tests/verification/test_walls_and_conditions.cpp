@@ -14,6 +14,7 @@ namespace {
 using crumple::testing::brickDeck;
 using crumple::testing::brickNodeSet;
 using crumple::testing::Simulation;
+using crumple::testing::termination;
 
 using Vec = std::array<double, 3>;
 
@@ -22,10 +23,6 @@ const std::string kSteel = "*MAT_ELASTIC\n         1   7.85e-6     210.0       0
 const std::string kConstantCurve =
     "*DEFINE_CURVE\n         1\n                 0.0                 1.0\n"
     "             10000.0                 1.0\n";
-
-std::string termination(double t) {
-  return fmt::format("*CONTROL_TERMINATION\n{:10.6g}\n", t);
-}
 
 Vec cross(const Vec& a, const Vec& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
