@@ -69,7 +69,7 @@ void Hex8Elastic(benchmark::State& s) {
   runKernel(s, materials::Elastic::Params{210.0, 0.3}, 4);
 }
 void Hex8PlasticHourglassStiffness(benchmark::State& s) {
-  model::PiecewiseLinearLaw law;
+  materials::PiecewiseLinear::Params law;
   law.E = 210.0;
   law.nu = 0.3;
   law.sigy = 0.001;  // yields at once under the imposed strain rate

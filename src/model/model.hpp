@@ -45,9 +45,8 @@ struct Curve {
 // ---- materials: the deck's parameters of each law, declared by its unit in
 // src/materials/laws/ (materials/registry.hpp lists them) ----------------------------------
 using MaterialLaw = materials::LawParams;
-// Names for the laws other modules treat specially (rigid bodies, discrete elements).
+// The law rigid bodies are built from (model/build_rigid.cpp).
 using RigidLaw = materials::Rigid::Params;
-using PiecewiseLinearLaw = materials::PiecewiseLinear::Params;
 
 // "*MAT_ELASTIC", "*MAT_RIGID", ... for messages and summaries.
 const char* materialKeyword(const MaterialLaw& law);

@@ -253,7 +253,7 @@ TEST(BuildModel, PiecewiseLinearPointsBecomeACurve) {
   const Model m = readModel(
       t.write("d.k", kMesh + "*MAT_PIECEWISE_LINEAR_PLASTICITY\n2,7.8e-9,2e5,0.3,250\n0,0,0\n"
                              "0,0.1,0.5\n250,300,400\n*PART\np2\n2,1,2\n"));
-  const auto& law = std::get<crumple::model::PiecewiseLinearLaw>(m.materials.at(1).law);
+  const auto& law = std::get<crumple::materials::PiecewiseLinear::Params>(m.materials.at(1).law);
   ASSERT_NE(law.lcss, crumple::model::kNone);
   const auto& c = m.curves.at(law.lcss);
   EXPECT_EQ(c.id, -2);
@@ -546,7 +546,7 @@ TEST(BuildRealDeckRules, Mat024TableEndsAtTheFirstNonIncreasingStrain) {
                         "*MAT_024\n2,7.8e-9,2e5,0.3,250\n\n0,0.1,0.2,0,0,0,0,0\n"
                         "250,300,330,400,0,0,0,0\n*PART\np2\n2,1,2\n"
                         "*ELEMENT_SOLID\n11,2,1,2,3,4,5,6,7,8\n");
-  const auto& law = std::get<crumple::model::PiecewiseLinearLaw>(
+  const auto& law = std::get<crumple::materials::PiecewiseLinear::Params>(
       m.materials.at(std::size_t(m.parts[std::size_t(m.partIndex(2))].material)).law);
   const auto& c = m.curves.at(std::size_t(law.lcss));
   EXPECT_EQ(c.x, (std::vector<double>{0, 0.1, 0.2}));
@@ -557,7 +557,7 @@ TEST(BuildRealDeckRules, Mat024TableEndsAtTheFirstNonIncreasingStrain) {
                           "121,215,257,287,301,320,346,378\n*PART\np2\n2,1,2\n"
                           "*ELEMENT_SOLID\n11,2,1,2,3,4,5,6,7,8\n",
                           "old.k");
-  const auto& bilinear = std::get<crumple::model::PiecewiseLinearLaw>(
+  const auto& bilinear = std::get<crumple::materials::PiecewiseLinear::Params>(
       old.materials.at(std::size_t(old.parts[std::size_t(old.partIndex(2))].material)).law);
   EXPECT_EQ(bilinear.lcss, crumple::model::kNone);
   EXPECT_EQ(bilinear.sigy, 121.0);

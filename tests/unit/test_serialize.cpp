@@ -34,8 +34,9 @@ TEST(Serialize, ModelRoundTripKeepsEveryField) {
     EXPECT_EQ(r.materials[i].law.index(), m.materials[i].law.index());
     EXPECT_EQ(r.materials[i].rho, m.materials[i].rho);
   }
-  const auto& law = std::get<crumple::model::PiecewiseLinearLaw>(r.materials[0].law);
-  EXPECT_EQ(law.fail, std::get<crumple::model::PiecewiseLinearLaw>(m.materials[0].law).fail);
+  const auto& law = std::get<crumple::materials::PiecewiseLinear::Params>(r.materials[0].law);
+  EXPECT_EQ(law.fail,
+            std::get<crumple::materials::PiecewiseLinear::Params>(m.materials[0].law).fail);
   EXPECT_EQ(r.curves.size(), m.curves.size());
   EXPECT_EQ(r.curves[0].y, m.curves[0].y);
   EXPECT_EQ(r.node_sets, m.node_sets);
