@@ -51,6 +51,8 @@ inline constexpr int kShellBatch = 16;
 
 // Belytschko-Tsay shells (ELFORM 2; ELFORM 4 / degenerate quads as C0 triangles).
 struct ShellBlock : BlockBase {
+  static constexpr model::Family kFamily = model::Family::Shell;
+  static constexpr int kSlotsPerElement = 8;  // force and moment slot per corner
   materials::Law law;
   double rho0 = 0.0;
   int elform = 2;
@@ -129,6 +131,8 @@ struct BeamSection {
 };
 
 struct BeamBlock : BlockBase {
+  static constexpr model::Family kFamily = model::Family::Beam;
+  static constexpr int kSlotsPerElement = 4;  // force and moment slot per end
   materials::Law law;
   double rho0 = 0.0;
   BeamSection section;
@@ -159,6 +163,8 @@ struct BeamBlock : BlockBase {
 
 // Discrete springs and dampers (*ELEMENT_DISCRETE, *SECTION_DISCRETE).
 struct DiscreteBlock : BlockBase {
+  static constexpr model::Family kFamily = model::Family::Discrete;
+  static constexpr int kSlotsPerElement = 2;  // force slot per end
   using Kind = materials::DiscreteLaw::Kind;
   materials::DiscreteLaw law;
   std::vector<std::array<int32_t, 2>> conn;

@@ -104,21 +104,8 @@ struct Corner {
   }
 };
 
-// Slots per element of a family, and the corners of global element g: shells and beams have
-// a force corner and a moment corner at each node (blocks.hpp, "Slot layout").
-int slotsPerElement(model::Family f) {
-  switch (f) {
-    case model::Family::Solid:
-    case model::Family::Shell:
-      return 8;
-    case model::Family::Beam:
-      return 4;
-    case model::Family::Discrete:
-      return 2;
-  }
-  return 0;
-}
-
+// The corners of global element g: shells and beams have a force corner and a moment corner
+// at each node (blocks.hpp, "Slot layout").
 int elementCorners(const model::Model& model, std::size_t g, Corner out[8]) {
   int32_t en[8];
   const int k = model.elementNodes(g, en);
@@ -308,7 +295,7 @@ class SubdomainBuilder {
   template <class Block>
   void addBlock(Block b, model::Family family, std::vector<Block>& blocks) {
     const std::size_t offset = model.familyOffset(family);
-    const int per = slotsPerElement(family);
+    const int per = Block::kSlotsPerElement;
     b.slot_offset = slot;
     Corner cs[8];
     for (std::size_t k = 0; k < b.size(); ++k) {

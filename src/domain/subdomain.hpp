@@ -30,6 +30,8 @@ inline constexpr int kSolidBatch = 16;
 // Elements of one part: one element type x one material x one section. State is a structure
 // of arrays owned by the block; element e of the block is global (model) element elem[e].
 struct SolidBlock : BlockBase {
+  static constexpr model::Family kFamily = model::Family::Solid;
+  static constexpr int kSlotsPerElement = 8;  // force slot per corner
   materials::Law law;
   double rho0 = 0.0;
   HourglassParams hourglass;
@@ -140,6 +142,19 @@ struct Subdomain {
     visit(shell_blocks, model::Family::Shell);
     visit(beam_blocks, model::Family::Beam);
     visit(discrete_blocks, model::Family::Discrete);
+  }
+  // Every block of every family, in family order (solids, shells, beams, discretes).
+  template <class F>
+  void forEachBlock(F&& visit) {
+    forEachBlockList([&](auto& blocks, model::Family) {
+      for (auto& b : blocks) visit(b);
+    });
+  }
+  template <class F>
+  void forEachBlock(F&& visit) const {
+    forEachBlockList([&](const auto& blocks, model::Family) {
+      for (const auto& b : blocks) visit(b);
+    });
   }
   std::size_t num_elements = 0;  // held here
   // Global index of the first element of each family (Model::familyOffset).

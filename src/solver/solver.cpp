@@ -1,5 +1,7 @@
 #include "solver/solver.hpp"
 
+#include "elements/family.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -95,17 +97,11 @@ void keepMin(double dt, int64_t elem, double& dt_min, int64_t& dt_elem) {
     dt_elem = elem;
   }
 }
-// Slots per element of each block kind (blocks.hpp, "Slot layout").
-template <class Block>
-constexpr std::size_t kSlotsPer = 8;
-template <>
-constexpr std::size_t kSlotsPer<domain::BeamBlock> = 4;
-template <>
-constexpr std::size_t kSlotsPer<domain::DiscreteBlock> = 2;
 template <class Block>
 void zeroSlots(const Block& b, std::vector<double>& slots) {
+  const std::size_t end = b.slot_offset + std::size_t(Block::kSlotsPerElement) * b.size();
   std::fill(slots.begin() + std::ptrdiff_t(3 * b.slot_offset),
-            slots.begin() + std::ptrdiff_t(3 * (b.slot_offset + kSlotsPer<Block> * b.size())), 0.0);
+            slots.begin() + std::ptrdiff_t(3 * end), 0.0);
 }
 }  // namespace
 
@@ -124,12 +120,9 @@ void Solver::initialize() {
   if (model_.controls.dt2ms != 0.0) scaleMasses(steps);
   keepMin(steps.other, steps.other_elem, steps.dt_min, steps.dt_elem);
   // Rigid elements give mass only: their slots stay zero from here on.
-  for (const auto& blk : sd_.solid_blocks)
+  sd_.forEachBlock([&](const auto& blk) {
     if (blk.rigid) zeroSlots(blk, sd_.slots);
-  for (const auto& blk : sd_.shell_blocks)
-    if (blk.rigid) zeroSlots(blk, sd_.slots);
-  for (const auto& blk : sd_.beam_blocks)
-    if (blk.rigid) zeroSlots(blk, sd_.slots);
+  });
   sumMasses(physical_mass);
 
   for (std::size_t n = 0; n < sd_.numNodes(); ++n)
@@ -423,38 +416,18 @@ void Solver::computeElementGroup(Group group, ElementPass& pass) {
     }
     eroded_ += st.eroded;
   };
-  for (auto& blk : sd_.solid_blocks) {
+  const elements::KernelInputs in{sd_.x, sd_.v, sd_.w, dt_, bv_, sd_.slots.data()};
+  sd_.forEachBlock([&](auto& blk) {
+    using Block = std::decay_t<decltype(blk)>;
     const auto [first, last] = range(blk);
-    if (first >= last || blk.rigid) continue;
-    merge(blk.elform == 2 ? elements::computeFullSolidForces(blk, sd_.x, sd_.v, dt_, bv_,
-                                                             sd_.slots.data(), first, last)
-                          : elements::computeSolidForces(blk, sd_.x, sd_.v, dt_, bv_,
-                                                         sd_.slots.data(), first, last),
-          model::Family::Solid);
-  }
-  for (auto& blk : sd_.shell_blocks) {
-    const auto [first, last] = range(blk);
-    if (first >= last || blk.rigid) continue;
-    merge(
-        elements::computeShellForces(blk, sd_.x, sd_.v, sd_.w, dt_, sd_.slots.data(), first, last),
-        model::Family::Shell);
-  }
-  for (auto& blk : sd_.beam_blocks) {
-    const auto [first, last] = range(blk);
-    if (first >= last || blk.rigid) continue;
-    merge(elements::computeBeamForces(blk, sd_.x, sd_.v, sd_.w, dt_, sd_.slots.data(), first, last),
-          model::Family::Beam);
-  }
-  for (auto& blk : sd_.discrete_blocks) {
-    const auto [first, last] = range(blk);
-    if (first >= last) continue;
-    merge(elements::computeDiscreteForces(blk, sd_.x, sd_.v, dt_, sd_.slots.data(), first, last),
-          model::Family::Discrete);
+    if (first >= last || blk.rigid) return;
+    merge(elements::TraitsOf<Block>::forces(blk, in, first, last), Block::kFamily);
     // A spring's step depends on its (tangent) stiffness and its nodes' masses.
-    for (std::size_t e = first; e < last; ++e)
-      keepMin(elements::discreteStableStep(blk, sd_.mass, e),
-              sd_.globalElement(model::Family::Discrete, blk.elem[e]), pass.dt_min, pass.dt_elem);
-  }
+    if constexpr (Block::kFamily == model::Family::Discrete)
+      for (std::size_t e = first; e < last; ++e)
+        keepMin(elements::discreteStableStep(blk, sd_.mass, e),
+                sd_.globalElement(model::Family::Discrete, blk.elem[e]), pass.dt_min, pass.dt_elem);
+  });
 }
 
 void Solver::checkElementGeometry(const ElementPass& pass) const {
@@ -612,7 +585,7 @@ void Solver::checkFiniteVelocities() const {
 int64_t Solver::nonFiniteElement() const {
   int64_t found = -1;
   sd_.forEachBlockList([&](const auto& blocks, model::Family family) {
-    constexpr std::size_t per = kSlotsPer<typename std::decay_t<decltype(blocks)>::value_type>;
+    constexpr std::size_t per = std::decay_t<decltype(blocks)>::value_type::kSlotsPerElement;
     for (const auto& blk : blocks)
       for (std::size_t e = 0; e < blk.size(); ++e) {
         const double* slot = sd_.slots.data() + 3 * (blk.slot_offset + per * e);
