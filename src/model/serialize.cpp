@@ -1,6 +1,7 @@
 #include "model/serialize.hpp"
 
 #include "util/archive.hpp"
+#include "util/fields.hpp"
 
 namespace crumple::model {
 
@@ -10,9 +11,11 @@ using util::ArchiveReader;
 using util::ArchiveWriter;
 
 // Every field of every Model type, once for writing and once for reading; the two visit
-// functions below must list the same fields in the same order.
+// functions below must list the same fields in the same order. util::fieldCount at the top of
+// each list makes a member added to a struct but not to its list a build error.
 template <class A, class L>
 void loc(A& a, L& l) {
+  util::fieldCount<2>(l);
   a(l.file);
   a(l.line);
 }
@@ -21,6 +24,8 @@ template <class A, class M>
 void fields(A& a, M& m) {
   a(m.title);
   a(m.deck_path);
+  util::fieldCount<2>(m.nodes);
+  util::fieldCount<3>(m.solids);  // shells, beams and discretes add to this base (no check)
   a(m.nodes.id);
   a(m.nodes.x);
   a(m.solids.id);
@@ -42,6 +47,7 @@ void fields(A& a, M& m) {
   a.count(
       m.parts.size(),
       [&](auto& p) {
+        util::fieldCount<9>(p);
         a(p.id);
         a(p.title);
         a(p.section_kind);
@@ -56,6 +62,7 @@ void fields(A& a, M& m) {
   a.count(
       m.solid_sections.size(),
       [&](auto& s) {
+        util::fieldCount<3>(s);
         a(s.id);
         a(s.elform);
         loc(a, s.where);
@@ -64,6 +71,7 @@ void fields(A& a, M& m) {
   a.count(
       m.shell_sections.size(),
       [&](auto& s) {
+        util::fieldCount<7>(s);
         a(s.id);
         a(s.elform);
         a(s.shrf);
@@ -76,6 +84,7 @@ void fields(A& a, M& m) {
   a.count(
       m.beam_sections.size(),
       [&](auto& s) {
+        util::fieldCount<15>(s);
         a(s.id);
         a(s.elform);
         a(s.shrf);
@@ -96,6 +105,7 @@ void fields(A& a, M& m) {
   a.count(
       m.discrete_sections.size(),
       [&](auto& s) {
+        util::fieldCount<3>(s);
         a(s.id);
         a(s.dro);
         loc(a, s.where);
@@ -104,6 +114,7 @@ void fields(A& a, M& m) {
   a.count(
       m.materials.size(),
       [&](auto& mat) {
+        util::fieldCount<5>(mat);
         a(mat.id);
         a(mat.title);
         a(mat.rho);
@@ -115,6 +126,7 @@ void fields(A& a, M& m) {
   a.count(
       m.curves.size(),
       [&](auto& c) {
+        util::fieldCount<3>(c);
         a(c.id);
         a(c.x);
         a(c.y);
@@ -131,6 +143,7 @@ void fields(A& a, M& m) {
   a.count(
       m.rigid_walls.size(),
       [&](auto& w) {
+        util::fieldCount<17>(w);
         a(w.id);
         a(w.nodes);
         a(w.tail);
@@ -156,6 +169,7 @@ void fields(A& a, M& m) {
   a.count(
       m.rigid.bodies.size(),
       [&](auto& b) {
+        util::fieldCount<14>(b);
         a(b.id);
         a(b.nodal);
         a(b.parts);
@@ -175,6 +189,7 @@ void fields(A& a, M& m) {
   a.count(
       m.rigid.welds.size(),
       [&](auto& w) {
+        util::fieldCount<9>(w);
         a(w.id);
         a(w.nodes);
         a(w.sn);
@@ -189,6 +204,7 @@ void fields(A& a, M& m) {
   a.count(
       m.rigid.node_sets.size(),
       [&](auto& t) {
+        util::fieldCount<5>(t);
         a(t.id);
         a(t.nodes);
         a(t.dofs);
@@ -199,6 +215,7 @@ void fields(A& a, M& m) {
   a.count(
       m.rigid.joints.size(),
       [&](auto& j) {
+        util::fieldCount<6>(j);
         a(j.id);
         a(j.revolute);
         a(j.pairs);
@@ -208,6 +225,7 @@ void fields(A& a, M& m) {
       },
       m.rigid.joints);
   auto surface = [&](auto& sf) {
+    util::fieldCount<7>(sf);
     a(sf.nodes);
     a(sf.segments);
     a(sf.segment_element);
@@ -219,6 +237,7 @@ void fields(A& a, M& m) {
   a.count(
       m.contacts.size(),
       [&](auto& c) {
+        util::fieldCount<22>(c);
         a(c.id);
         a(c.title);
         a(c.keyword);
@@ -248,6 +267,7 @@ void fields(A& a, M& m) {
   a.count(
       m.unsupported.size(),
       [&](auto& u) {
+        util::fieldCount<6>(u);
         a(u.keyword);
         a(u.reason);
         a(u.count);
@@ -259,6 +279,7 @@ void fields(A& a, M& m) {
   a.count(
       m.ignored.size(),
       [&](auto& f) {
+        util::fieldCount<4>(f);
         a(f.keyword);
         a(f.field);
         a(f.reason);
