@@ -134,29 +134,31 @@ void Contact::addPass(int32_t iface, const model::ContactSurface& nodes,
   passes_.push_back(std::move(p));
 }
 
+namespace {
+// A contact node as its owner sends it at a sort: its position and velocity, and its position
+// at the last contact pass (for the crossing rule). Indices stay integers on the way.
+struct OwnedNode {
+  int32_t owner = 0;
+  int32_t node = 0;  // contact node index
+  Vec3 x{}, v{}, x_prev{};
+};
+}  // namespace
+
 void Contact::gatherNodes() {
-  // All contact nodes, from their owners: at set-up and at every bucket sort (positions,
-  // velocities, and the owner's positions of the previous pass for the crossing rule).
-  const std::size_t ncn = cn_model_.size();
-  constexpr std::size_t kWidth = 11;
-  std::vector<double> mine;
-  for (std::size_t i = 0; i < ncn; ++i) {
+  // All contact nodes, from their owners: at set-up and at every bucket sort.
+  std::vector<OwnedNode> mine;
+  for (std::size_t i = 0; i < cn_model_.size(); ++i) {
     if (!cn_owned_[i]) continue;
     const auto l = std::size_t(cn_local_[i]);
-    mine.push_back(double(comm_.rank()));
-    mine.push_back(double(i));
-    for (int c = 0; c < 3; ++c) mine.push_back(sd_.x[3 * l + std::size_t(c)]);
-    for (int c = 0; c < 3; ++c) mine.push_back(sd_.v[3 * l + std::size_t(c)]);
-    for (int c = 0; c < 3; ++c) mine.push_back(x_owned_prev_[3 * i + std::size_t(c)]);
+    mine.push_back({comm_.rank(), int32_t(i), at(sd_.x, l), at(sd_.v, l), at(x_owned_prev_, i)});
   }
-  const auto all = comm_.allGather(mine);
-  for (std::size_t k = 0; k + kWidth <= all.size(); k += kWidth) {
-    const auto i = std::size_t(all[k + 1]);
-    owner_[i] = int32_t(all[k]);
-    for (int c = 0; c < 3; ++c) {
-      x_[3 * i + std::size_t(c)] = all[k + 2 + std::size_t(c)];
-      v_[3 * i + std::size_t(c)] = all[k + 5 + std::size_t(c)];
-      x_prev_[3 * i + std::size_t(c)] = all[k + 8 + std::size_t(c)];
+  for (const OwnedNode& n : comm_.allGather(mine)) {
+    const auto i = std::size_t(n.node);
+    owner_[i] = n.owner;
+    for (std::size_t c = 0; c < 3; ++c) {
+      x_[3 * i + c] = n.x[c];
+      v_[3 * i + c] = n.v[c];
+      x_prev_[3 * i + c] = n.x_prev[c];
     }
   }
 }
@@ -179,14 +181,14 @@ void Contact::gatherNeeded() {
 
 void Contact::gatherMasses() {
   // Nodal masses (with mass scaling) for the soft stiffness and the damping.
-  std::vector<double> mine;
+  struct NodeMass {
+    int64_t node = 0;  // contact node index (64 bits: no padding travels)
+    double mass = 0.0;
+  };
+  std::vector<NodeMass> mine;
   for (std::size_t i = 0; i < cn_model_.size(); ++i)
-    if (cn_owned_[i]) {
-      mine.push_back(double(i));
-      mine.push_back(sd_.mass[std::size_t(cn_local_[i])]);
-    }
-  const auto all = comm_.allGather(mine);
-  for (std::size_t k = 0; k + 2 <= all.size(); k += 2) mass_[std::size_t(all[k])] = all[k + 1];
+    if (cn_owned_[i]) mine.push_back({int64_t(i), sd_.mass[std::size_t(cn_local_[i])]});
+  for (const NodeMass& n : comm_.allGather(mine)) mass_[std::size_t(n.node)] = n.mass;
 }
 
 void Contact::buildRoutes() {
@@ -700,16 +702,15 @@ std::vector<char> Contact::saveState() const {
   // Positions of the last contact pass of every node, from the owners (collective).
   std::vector<double> x = x_;
   if (comm_.distributed()) {
-    std::vector<double> mine;
+    struct OwnedPosition {
+      int64_t node = 0;  // contact node index
+      Vec3 x{};
+    };
+    std::vector<OwnedPosition> mine;
     for (std::size_t i = 0; i < cn_model_.size(); ++i)
-      if (cn_owned_[i]) {
-        mine.push_back(double(i));
-        for (int c = 0; c < 3; ++c) mine.push_back(x_owned_prev_[3 * i + std::size_t(c)]);
-      }
-    const auto all = comm_.allGather(mine);
-    for (std::size_t k = 0; k + 4 <= all.size(); k += 4)
-      for (int c = 0; c < 3; ++c)
-        x[3 * std::size_t(all[k]) + std::size_t(c)] = all[k + 1 + std::size_t(c)];
+      if (cn_owned_[i]) mine.push_back({int64_t(i), at(x_owned_prev_, i)});
+    for (const OwnedPosition& p : comm_.allGather(mine))
+      for (std::size_t c = 0; c < 3; ++c) x[3 * std::size_t(p.node) + c] = p.x[c];
   }
   if (!comm_.isRoot()) return {};
   util::ArchiveWriter w;
