@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <cstring>
 #include <numeric>
 
 #include "comm/mpi_check.hpp"
@@ -119,39 +118,6 @@ void Communicator::broadcast(std::vector<char>& bytes) const {
     const int len = static_cast<int>(std::min(kChunk, n - off));
     check(MPI_Bcast(bytes.data() + off, len, MPI_CHAR, 0, MPI_COMM_WORLD), "Bcast");
   }
-}
-
-void Communicator::exchangeBegin(const std::vector<Message>& sends,
-                                 const std::vector<Message>& recvs) {
-  if (!mpi_) return;
-  util::ScopedTimer t(seconds_);
-  auto post = [&](MPI_Request req) {
-    const auto* p = reinterpret_cast<const std::byte*>(&req);
-    requests_.insert(requests_.end(), p, p + sizeof(MPI_Request));
-  };
-  for (const auto& m : recvs) {
-    MPI_Request req;
-    check(
-        MPI_Irecv(m.data, static_cast<int>(m.count), MPI_DOUBLE, m.peer, 11, MPI_COMM_WORLD, &req),
-        "Irecv");
-    post(req);
-  }
-  for (const auto& m : sends) {
-    MPI_Request req;
-    check(
-        MPI_Isend(m.data, static_cast<int>(m.count), MPI_DOUBLE, m.peer, 11, MPI_COMM_WORLD, &req),
-        "Isend");
-    post(req);
-  }
-}
-
-void Communicator::exchangeEnd() {
-  if (!mpi_ || requests_.empty()) return;
-  util::ScopedTimer t(seconds_);
-  std::vector<MPI_Request> reqs(requests_.size() / sizeof(MPI_Request));
-  std::memcpy(reqs.data(), requests_.data(), requests_.size());
-  check(MPI_Waitall(static_cast<int>(reqs.size()), reqs.data(), MPI_STATUSES_IGNORE), "Waitall");
-  requests_.clear();
 }
 
 void Communicator::barrier() const {

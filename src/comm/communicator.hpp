@@ -12,13 +12,6 @@
 
 namespace crumple::comm {
 
-// One message to or from a neighbour rank in a point-to-point exchange.
-struct Message {
-  int peer = 0;
-  double* data = nullptr;
-  std::size_t count = 0;  // doubles
-};
-
 class Communicator {
  public:
   int rank() const { return rank_; }
@@ -55,10 +48,6 @@ class Communicator {
   std::vector<char> gatherToRoot(const std::vector<char>& local) const;
   // The root's bytes on every rank.
   void broadcast(std::vector<char>& bytes) const;
-  // Point-to-point exchange: posts every receive and send, then waits for all (the
-  // non-blocking halves let the caller overlap work between begin and end).
-  void exchangeBegin(const std::vector<Message>& sends, const std::vector<Message>& recvs);
-  void exchangeEnd();
   void barrier() const;
   // Ends every rank at once after an error only this rank saw (no collective possible).
   [[noreturn]] void abort(int code) const;
@@ -78,7 +67,6 @@ class Communicator {
   int size_ = 1;
   bool mpi_ = false;
   mutable double seconds_ = 0.0;
-  std::vector<std::byte> requests_;  // MPI_Request handles, kept opaque outside communicator.cpp
 };
 
 // The communicator of this process.
