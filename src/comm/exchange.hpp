@@ -2,7 +2,8 @@
 // Scatterer: the plan (which entries go to which peer, which entries each peer fills) is made
 // once, and every use packs, sends, receives and unpacks along it. The exchange owns its
 // buffers and its requests, so callers hand over arrays, not messages, and several exchanges
-// may be in flight at once.
+// may be in flight at once (begun in the same order on every rank: messages between two ranks
+// match in the order they were posted).
 //
 // An entry is `components` doubles in each of `fields` arrays (positions and velocities of a
 // node travel together: 2 fields of 3). Field f of entry i is field[f][components * i + c].
