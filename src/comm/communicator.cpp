@@ -2,39 +2,38 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <cstdlib>
-#include <cstring>
-#include <stdexcept>
+#include <numeric>
 
+#include "comm/mpi_check.hpp"
 #include "util/timer.hpp"
 
 namespace crumple::comm {
 
-namespace {
-
-void check(int code, const char* what) {
-  if (code != MPI_SUCCESS) throw std::runtime_error(std::string("MPI failure in ") + what);
-}
-
-template <class T>
-std::vector<T> gatherAll(const std::vector<T>& local, MPI_Datatype type, int size, double& t) {
-  util::ScopedTimer timer(t);
-  int n = static_cast<int>(local.size());
-  std::vector<int> counts(static_cast<std::size_t>(size)), displs(static_cast<std::size_t>(size));
+std::vector<int> Communicator::itemCounts(std::size_t local) const {
+  util::ScopedTimer timer(seconds_);
+  const int n = static_cast<int>(local);
+  std::vector<int> counts(static_cast<std::size_t>(size_));
   check(MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD), "Allgather");
-  int total = 0;
-  for (int r = 0; r < size; ++r) {
-    displs[static_cast<std::size_t>(r)] = total;
-    total += counts[static_cast<std::size_t>(r)];
-  }
-  std::vector<T> out(static_cast<std::size_t>(total));
-  check(MPI_Allgatherv(local.data(), n, type, out.data(), counts.data(), displs.data(), type,
-                       MPI_COMM_WORLD),
-        "Allgatherv");
-  return out;
+  return counts;
 }
 
-}  // namespace
+void Communicator::gatherItems(const void* local, std::size_t size, const std::vector<int>& counts,
+                               void* out) const {
+  util::ScopedTimer timer(seconds_);
+  std::vector<int> displs(counts.size(), 0);
+  std::partial_sum(counts.begin(), counts.end() - 1, displs.begin() + 1);
+  // One datatype of `size` bytes: counts stay in items, so an int reaches 2^31 items, not
+  // 2^31 bytes.
+  MPI_Datatype item;
+  check(MPI_Type_contiguous(static_cast<int>(size), MPI_BYTE, &item), "Type_contiguous");
+  check(MPI_Type_commit(&item), "Type_commit");
+  check(MPI_Allgatherv(local, counts[static_cast<std::size_t>(rank_)], item, out, counts.data(),
+                       displs.data(), item, MPI_COMM_WORLD),
+        "Allgatherv");
+  MPI_Type_free(&item);
+}
 
 namespace {
 // One value reduced over all ranks (min, max and sum of one value are exact and
@@ -68,7 +67,7 @@ std::vector<double> Communicator::sumOrdered(const std::vector<double>& local) c
   if (!mpi_) return local;
   // Gather every rank's partials and add them in rank order: MPI_SUM may associate in any
   // order, which would make diagnostics differ from run to run.
-  const auto all = gatherAll(local, MPI_DOUBLE, size_, seconds_);
+  const auto all = allGather(local);
   std::vector<double> out(local.size(), 0.0);
   for (int r = 0; r < size_; ++r)
     for (std::size_t i = 0; i < local.size(); ++i) out[i] += all[r * local.size() + i];
@@ -81,16 +80,6 @@ bool Communicator::anyAll(bool local) const {
 
 uint64_t Communicator::orAll(uint64_t local) const {
   return mpi_ ? allReduce(local, MPI_UINT64_T, MPI_BOR, seconds_) : local;
-}
-
-std::vector<double> Communicator::allGather(const std::vector<double>& local) const {
-  if (!mpi_) return local;
-  return gatherAll(local, MPI_DOUBLE, size_, seconds_);
-}
-
-std::vector<int64_t> Communicator::allGather(const std::vector<int64_t>& local) const {
-  if (!mpi_) return local;
-  return gatherAll(local, MPI_INT64_T, size_, seconds_);
 }
 
 std::vector<char> Communicator::gatherToRoot(const std::vector<char>& local) const {
@@ -129,39 +118,6 @@ void Communicator::broadcast(std::vector<char>& bytes) const {
     const int len = static_cast<int>(std::min(kChunk, n - off));
     check(MPI_Bcast(bytes.data() + off, len, MPI_CHAR, 0, MPI_COMM_WORLD), "Bcast");
   }
-}
-
-void Communicator::exchangeBegin(const std::vector<Message>& sends,
-                                 const std::vector<Message>& recvs) {
-  if (!mpi_) return;
-  util::ScopedTimer t(seconds_);
-  auto post = [&](MPI_Request req) {
-    const auto* p = reinterpret_cast<const std::byte*>(&req);
-    requests_.insert(requests_.end(), p, p + sizeof(MPI_Request));
-  };
-  for (const auto& m : recvs) {
-    MPI_Request req;
-    check(
-        MPI_Irecv(m.data, static_cast<int>(m.count), MPI_DOUBLE, m.peer, 11, MPI_COMM_WORLD, &req),
-        "Irecv");
-    post(req);
-  }
-  for (const auto& m : sends) {
-    MPI_Request req;
-    check(
-        MPI_Isend(m.data, static_cast<int>(m.count), MPI_DOUBLE, m.peer, 11, MPI_COMM_WORLD, &req),
-        "Isend");
-    post(req);
-  }
-}
-
-void Communicator::exchangeEnd() {
-  if (!mpi_ || requests_.empty()) return;
-  util::ScopedTimer t(seconds_);
-  std::vector<MPI_Request> reqs(requests_.size() / sizeof(MPI_Request));
-  std::memcpy(reqs.data(), requests_.data(), requests_.size());
-  check(MPI_Waitall(static_cast<int>(reqs.size()), reqs.data(), MPI_STATUSES_IGNORE), "Waitall");
-  requests_.clear();
 }
 
 void Communicator::barrier() const {

@@ -5,17 +5,12 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <numeric>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace crumple::comm {
-
-// One message to or from a neighbour rank in a point-to-point exchange.
-struct Message {
-  int peer = 0;
-  double* data = nullptr;
-  std::size_t count = 0;  // doubles
-};
 
 class Communicator {
  public:
@@ -37,17 +32,22 @@ class Communicator {
   // Bitwise OR over all ranks: several yes/no requests (signals, sense switches, a dump due by
   // the root's wall clock) agreed in one collective, so every rank acts at the same cycle.
   uint64_t orAll(uint64_t local) const;
-  // Every rank's vector, concatenated in rank order, on every rank.
-  std::vector<double> allGather(const std::vector<double>& local) const;
-  std::vector<int64_t> allGather(const std::vector<int64_t>& local) const;
+  // Every rank's vector, concatenated in rank order, on every rank. Items travel as their
+  // bytes (every rank runs this binary on the same kind of machine), so a struct of ids and
+  // values keeps its ids integers instead of sending them as doubles.
+  template <class T>
+  std::vector<T> allGather(const std::vector<T>& local) const {
+    static_assert(std::is_trivially_copyable_v<T>, "items travel as their bytes");
+    if (!mpi_) return local;
+    const std::vector<int> counts = itemCounts(local.size());
+    std::vector<T> out(std::accumulate(counts.begin(), counts.end(), std::size_t(0)));
+    gatherItems(local.data(), sizeof(T), counts, out.data());
+    return out;
+  }
   // Every rank's bytes, concatenated in rank order, on the root only (empty elsewhere).
   std::vector<char> gatherToRoot(const std::vector<char>& local) const;
   // The root's bytes on every rank.
   void broadcast(std::vector<char>& bytes) const;
-  // Point-to-point exchange: posts every receive and send, then waits for all (the
-  // non-blocking halves let the caller overlap work between begin and end).
-  void exchangeBegin(const std::vector<Message>& sends, const std::vector<Message>& recvs);
-  void exchangeEnd();
   void barrier() const;
   // Ends every rank at once after an error only this rank saw (no collective possible).
   [[noreturn]] void abort(int code) const;
@@ -58,11 +58,15 @@ class Communicator {
  private:
   friend void initialize(int* argc, char*** argv);
   friend void finalize();
+  friend class Exchange;  // point-to-point messages (exchange.hpp) count in seconds()
+  // allGather's two steps: every rank's item count, then every rank's items of `size` bytes.
+  std::vector<int> itemCounts(std::size_t local) const;
+  void gatherItems(const void* local, std::size_t size, const std::vector<int>& counts,
+                   void* out) const;
   int rank_ = 0;
   int size_ = 1;
   bool mpi_ = false;
   mutable double seconds_ = 0.0;
-  std::vector<std::byte> requests_;  // MPI_Request handles, kept opaque outside communicator.cpp
 };
 
 // The communicator of this process.

@@ -73,25 +73,25 @@ bool CheckPartition::maybeRebalance(const std::vector<int32_t>& check_node,
                                     const std::vector<double>& x, double threshold) {
   if (!comm_.distributed()) return false;
   // The tests each rank did since the last look.
-  const auto loads = comm_.allGather(std::vector<double>{double(tests_since_balance_)});
+  const auto loads = comm_.allGather(std::vector<int64_t>{tests_since_balance_});
   tests_since_balance_ = 0;
   double mx = 0.0, sum = 0.0;
-  for (double l : loads) {
-    mx = std::max(mx, l);
-    sum += l;
+  for (const int64_t l : loads) {
+    mx = std::max(mx, double(l));
+    sum += double(l);
   }
   const double mean = sum / double(loads.size());
   const bool unbalanced = mean > 0.0 && !(mx <= threshold * mean);
   if (unbalanced) {
     // Every rank's measured costs, one weight per check on top of one.
-    std::vector<double> costs;
-    for (int32_t c : mine_) {
-      costs.push_back(double(c));
-      costs.push_back(check_cost_[std::size_t(c)]);
-    }
-    const auto all = comm_.allGather(costs);
+    struct Cost {
+      int64_t check = 0;  // 64 bits: no padding travels
+      double tests = 0.0;
+    };
+    std::vector<Cost> costs;
+    for (int32_t c : mine_) costs.push_back({c, check_cost_[std::size_t(c)]});
     std::vector<double> weight(check_node.size(), 1.0);
-    for (std::size_t k = 0; k + 2 <= all.size(); k += 2) weight[std::size_t(all[k])] += all[k + 1];
+    for (const Cost& c : comm_.allGather(costs)) weight[std::size_t(c.check)] += c.tests;
     cut(check_node, x, weight);
   }
   std::fill(check_cost_.begin(), check_cost_.end(), 0.0);

@@ -134,29 +134,31 @@ void Contact::addPass(int32_t iface, const model::ContactSurface& nodes,
   passes_.push_back(std::move(p));
 }
 
+namespace {
+// A contact node as its owner sends it at a sort: its position and velocity, and its position
+// at the last contact pass (for the crossing rule). Indices stay integers on the way.
+struct OwnedNode {
+  int32_t owner = 0;
+  int32_t node = 0;  // contact node index
+  Vec3 x{}, v{}, x_prev{};
+};
+}  // namespace
+
 void Contact::gatherNodes() {
-  // All contact nodes, from their owners: at set-up and at every bucket sort (positions,
-  // velocities, and the owner's positions of the previous pass for the crossing rule).
-  const std::size_t ncn = cn_model_.size();
-  constexpr std::size_t kWidth = 11;
-  std::vector<double> mine;
-  for (std::size_t i = 0; i < ncn; ++i) {
+  // All contact nodes, from their owners: at set-up and at every bucket sort.
+  std::vector<OwnedNode> mine;
+  for (std::size_t i = 0; i < cn_model_.size(); ++i) {
     if (!cn_owned_[i]) continue;
     const auto l = std::size_t(cn_local_[i]);
-    mine.push_back(double(comm_.rank()));
-    mine.push_back(double(i));
-    for (int c = 0; c < 3; ++c) mine.push_back(sd_.x[3 * l + std::size_t(c)]);
-    for (int c = 0; c < 3; ++c) mine.push_back(sd_.v[3 * l + std::size_t(c)]);
-    for (int c = 0; c < 3; ++c) mine.push_back(x_owned_prev_[3 * i + std::size_t(c)]);
+    mine.push_back({comm_.rank(), int32_t(i), at(sd_.x, l), at(sd_.v, l), at(x_owned_prev_, i)});
   }
-  const auto all = comm_.allGather(mine);
-  for (std::size_t k = 0; k + kWidth <= all.size(); k += kWidth) {
-    const auto i = std::size_t(all[k + 1]);
-    owner_[i] = int32_t(all[k]);
-    for (int c = 0; c < 3; ++c) {
-      x_[3 * i + std::size_t(c)] = all[k + 2 + std::size_t(c)];
-      v_[3 * i + std::size_t(c)] = all[k + 5 + std::size_t(c)];
-      x_prev_[3 * i + std::size_t(c)] = all[k + 8 + std::size_t(c)];
+  for (const OwnedNode& n : comm_.allGather(mine)) {
+    const auto i = std::size_t(n.node);
+    owner_[i] = n.owner;
+    for (std::size_t c = 0; c < 3; ++c) {
+      x_[3 * i + c] = n.x[c];
+      v_[3 * i + c] = n.v[c];
+      x_prev_[3 * i + c] = n.x_prev[c];
     }
   }
 }
@@ -172,45 +174,21 @@ void Contact::gatherNeeded() {
       v_[3 * std::size_t(i) + std::size_t(c)] = sd_.v[3 * l + std::size_t(c)];
     }
   }
-  if (!comm_.distributed()) return;
-  std::vector<comm::Message> sends, recvs;
-  for (auto& r : send_routes_) {
-    r.buffer.resize(6 * r.nodes.size());
-    for (std::size_t k = 0; k < r.nodes.size(); ++k) {
-      const auto l = std::size_t(cn_local_[std::size_t(r.nodes[k])]);
-      for (int c = 0; c < 3; ++c) {
-        r.buffer[6 * k + std::size_t(c)] = sd_.x[3 * l + std::size_t(c)];
-        r.buffer[6 * k + 3 + std::size_t(c)] = sd_.v[3 * l + std::size_t(c)];
-      }
-    }
-    sends.push_back({r.peer, r.buffer.data(), r.buffer.size()});
-  }
-  for (auto& r : recv_routes_) {
-    r.buffer.resize(6 * r.nodes.size());
-    recvs.push_back({r.peer, r.buffer.data(), r.buffer.size()});
-  }
-  comm_.exchangeBegin(sends, recvs);
-  comm_.exchangeEnd();
-  for (const auto& r : recv_routes_)
-    for (std::size_t k = 0; k < r.nodes.size(); ++k) {
-      const auto i = std::size_t(r.nodes[k]);
-      for (int c = 0; c < 3; ++c) {
-        x_[3 * i + std::size_t(c)] = r.buffer[6 * k + std::size_t(c)];
-        v_[3 * i + std::size_t(c)] = r.buffer[6 * k + 3 + std::size_t(c)];
-      }
-    }
+  // Positions and velocities together, one message per owner.
+  needed_.begin({sd_.x, sd_.v});
+  needed_.end({x_, v_});
 }
 
 void Contact::gatherMasses() {
   // Nodal masses (with mass scaling) for the soft stiffness and the damping.
-  std::vector<double> mine;
+  struct NodeMass {
+    int64_t node = 0;  // contact node index (64 bits: no padding travels)
+    double mass = 0.0;
+  };
+  std::vector<NodeMass> mine;
   for (std::size_t i = 0; i < cn_model_.size(); ++i)
-    if (cn_owned_[i]) {
-      mine.push_back(double(i));
-      mine.push_back(sd_.mass[std::size_t(cn_local_[i])]);
-    }
-  const auto all = comm_.allGather(mine);
-  for (std::size_t k = 0; k + 2 <= all.size(); k += 2) mass_[std::size_t(all[k])] = all[k + 1];
+    if (cn_owned_[i]) mine.push_back({int64_t(i), sd_.mass[std::size_t(cn_local_[i])]});
+  for (const NodeMass& n : comm_.allGather(mine)) mass_[std::size_t(n.node)] = n.mass;
 }
 
 void Contact::buildRoutes() {
@@ -228,34 +206,33 @@ void Contact::buildRoutes() {
       for (int32_t a : p.seg[std::size_t(tie_seg_[check])]) need[std::size_t(a)] = 1;
   }
   needed_local_.clear();
-  std::vector<double> requests;  // (requesting rank, node) of the nodes held elsewhere
+  struct Request {
+    int32_t rank = 0;  // the rank that reads the node
+    int32_t node = 0;  // contact node index
+  };
+  std::vector<Request> requests;  // the nodes held elsewhere
   for (std::size_t i = 0; i < need.size(); ++i) {
     if (!need[i]) continue;
-    if (cn_local_[i] >= 0) {
+    if (cn_local_[i] >= 0)
       needed_local_.push_back(int32_t(i));
-    } else {
-      requests.push_back(double(comm_.rank()));
-      requests.push_back(double(i));
-    }
+    else
+      requests.push_back({comm_.rank(), int32_t(i)});
   }
-  send_routes_.clear();
-  recv_routes_.clear();
-  if (!comm_.distributed()) return;
+  if (!comm_.distributed()) {
+    needed_ = comm::Exchange();
+    return;
+  }
   // Every rank learns what every other needs (at sorts only): each owner serves its nodes, in
   // ascending node order on both sides, so the messages carry values only.
-  const auto all = comm_.allGather(requests);
-  std::vector<std::vector<int32_t>> to(std::size_t(comm_.size())), from(to.size());
-  for (std::size_t k = 0; k + 2 <= all.size(); k += 2) {
-    const auto who = std::size_t(all[k]);
-    const auto i = std::size_t(all[k + 1]);
-    const auto owner = std::size_t(owner_[i]);
-    if (owner == std::size_t(comm_.rank())) to[who].push_back(int32_t(i));
-    if (who == std::size_t(comm_.rank())) from[owner].push_back(int32_t(i));
+  std::vector<comm::Exchange::Peer> peers(std::size_t(comm_.size()));
+  for (std::size_t r = 0; r < peers.size(); ++r) peers[r].rank = int(r);
+  for (const auto& [who, node] : comm_.allGather(requests)) {
+    const auto owner = owner_[std::size_t(node)];
+    // The owner packs from its own arrays; the reader unpacks into x_ and v_.
+    if (owner == comm_.rank()) peers[std::size_t(who)].send.push_back(cn_local_[std::size_t(node)]);
+    if (who == comm_.rank()) peers[std::size_t(owner)].recv.push_back(node);
   }
-  for (std::size_t r = 0; r < to.size(); ++r) {
-    if (!to[r].empty()) send_routes_.push_back({int(r), std::move(to[r]), {}});
-    if (!from[r].empty()) recv_routes_.push_back({int(r), std::move(from[r]), {}});
-  }
+  needed_ = comm::Exchange(comm_, std::move(peers), 3, 2);
 }
 
 void Contact::sortAll() {
@@ -725,16 +702,15 @@ std::vector<char> Contact::saveState() const {
   // Positions of the last contact pass of every node, from the owners (collective).
   std::vector<double> x = x_;
   if (comm_.distributed()) {
-    std::vector<double> mine;
+    struct OwnedPosition {
+      int64_t node = 0;  // contact node index
+      Vec3 x{};
+    };
+    std::vector<OwnedPosition> mine;
     for (std::size_t i = 0; i < cn_model_.size(); ++i)
-      if (cn_owned_[i]) {
-        mine.push_back(double(i));
-        for (int c = 0; c < 3; ++c) mine.push_back(x_owned_prev_[3 * i + std::size_t(c)]);
-      }
-    const auto all = comm_.allGather(mine);
-    for (std::size_t k = 0; k + 4 <= all.size(); k += 4)
-      for (int c = 0; c < 3; ++c)
-        x[3 * std::size_t(all[k]) + std::size_t(c)] = all[k + 1 + std::size_t(c)];
+      if (cn_owned_[i]) mine.push_back({int64_t(i), at(x_owned_prev_, i)});
+    for (const OwnedPosition& p : comm_.allGather(mine))
+      for (std::size_t c = 0; c < 3; ++c) x[3 * std::size_t(p.node) + c] = p.x[c];
   }
   if (!comm_.isRoot()) return {};
   util::ArchiveWriter w;

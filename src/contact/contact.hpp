@@ -5,10 +5,11 @@
 // and the reaction goes to the segment's nodes by its shape functions.
 //
 // Parallel design (docs/parallel.md, "Contact"). Every contact node's position and velocity
-// is gathered to every rank each cycle (7 doubles per node). The checks (a node against the
-// other side) are split among ranks by recursive coordinate bisection of the nodes' current
-// positions: the contact partition, separate from the element partition and re-cut, with the
-// measured cost of every check as its weight, when the busiest rank does more than
+// is gathered to every rank at a bucket sort; between sorts a rank receives, through a
+// comm::Exchange, only the nodes its checks read. The checks (a node against the other side)
+// are split among ranks by recursive coordinate bisection of the nodes' current positions: the
+// contact partition, separate from the element partition and re-cut, with the measured cost of
+// every check as its weight, when the busiest rank does more than
 // ContactControls::rebalance_threshold times the mean. The forces found travel back to every
 // rank as records, sorted by check index and added in that order: the same bits whatever the
 // number of ranks and threads.
@@ -22,6 +23,7 @@
 #include <vector>
 
 #include "comm/communicator.hpp"
+#include "comm/exchange.hpp"
 #include "contact/balance.hpp"
 #include "contact/pass.hpp"
 #include "contact/penalty.hpp"
@@ -172,12 +174,9 @@ class Contact {
   std::vector<int32_t> owner_;         // rank owning each contact node
   std::vector<double> x_owned_prev_;   // owned nodes: position at the last contact pass
   std::vector<int32_t> needed_local_;  // nodes read between sorts that this rank holds
-  struct Route {
-    int peer = 0;
-    std::vector<int32_t> nodes;  // ascending contact node indices
-    std::vector<double> buffer;  // 6 per node: x, v
-  };
-  std::vector<Route> send_routes_, recv_routes_;
+  // Between sorts, the needed nodes held elsewhere from their owners: positions and
+  // velocities (2 fields of 3), in ascending contact node order on both sides.
+  comm::Exchange needed_;
   std::vector<double> x_sorted_;     // positions at the last bucket sort
   std::vector<double> x_prev_;       // positions of the last cycle
   std::vector<int32_t> last_seg_;    // per check: the segment in contact last cycle, or -1

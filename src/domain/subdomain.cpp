@@ -487,7 +487,6 @@ class SubdomainBuilder {
       PeerExchange p;
       p.rank = q;
       for (const auto& [key, s_local] : sq) p.send_slots.push_back(s_local);
-      p.send_buffer.assign(3 * p.send_slots.size(), 0.0);
       p.recv_first = slot;
       p.recv_count = rq.size();
       for (auto& [key, c] : rq) {

@@ -86,14 +86,14 @@ struct SolidBlock : BlockBase {
               bool gauss_points = false, int history_count = 0);
 };
 
-// Corner slots this rank sends to, and receives from, one neighbour each cycle. Both sides
-// list the slots in ascending (global source, corner) order, so the message needs no ids.
+// Corner slots this rank sends to, and receives from, one neighbour each cycle (the solver's
+// comm::Exchange carries them). Both sides list the slots in ascending (global source, corner)
+// order, so the message needs no ids.
 struct PeerExchange {
   int rank = 0;
   std::vector<int32_t> send_slots;  // local slots whose node the peer also holds
   std::size_t recv_first = 0;       // first ghost slot filled by this peer
   std::size_t recv_count = 0;
-  std::vector<double> send_buffer;  // 3 doubles per send slot
 };
 
 // A node gathers, in ascending order of (source, corner), the slots of every element and

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 #include "elements/beam.hpp"
 #include "elements/discrete.hpp"
@@ -22,10 +23,26 @@ namespace {
 // reductions do not depend on the number of threads.
 constexpr std::size_t kNodeChunk = 4096;
 
+// The subdomain's neighbour plan as the exchange's: a neighbour's corners fill a contiguous
+// range of ghost slots.
+std::vector<comm::Exchange::Peer> sharedSlotPeers(const domain::Subdomain& sd) {
+  std::vector<comm::Exchange::Peer> peers;
+  for (const auto& p : sd.peers) {
+    comm::Exchange::Peer q{p.rank, p.send_slots, std::vector<int32_t>(p.recv_count)};
+    std::iota(q.recv.begin(), q.recv.end(), static_cast<int32_t>(p.recv_first));
+    peers.push_back(std::move(q));
+  }
+  return peers;
+}
+
 }  // namespace
 
 Solver::Solver(const model::Model& model, domain::Subdomain& sd, comm::Communicator& comm)
-    : model_(model), sd_(sd), comm_(comm), boundary_(model, sd) {
+    : model_(model),
+      sd_(sd),
+      comm_(comm),
+      shared_slots_(comm, sharedSlotPeers(sd), 3),
+      boundary_(model, sd) {
   bv_.q1 = model.controls.q_quadratic;
   bv_.q2 = model.controls.q_linear;
   end_time_ = model.controls.end_time;
@@ -49,20 +66,11 @@ void Solver::gather(const domain::GatherPlan& plan, std::vector<double>& out,
 }
 
 void Solver::beginSharedExchange() {
-  if (sd_.peers.empty()) return;
-  std::vector<comm::Message> sends, recvs;
-  for (auto& p : sd_.peers) {
-    for (std::size_t k = 0; k < p.send_slots.size(); ++k)
-      for (int c = 0; c < 3; ++c)
-        p.send_buffer[3 * k + c] = sd_.slots[3 * static_cast<std::size_t>(p.send_slots[k]) + c];
-    sends.push_back({p.rank, p.send_buffer.data(), p.send_buffer.size()});
-    recvs.push_back({p.rank, sd_.slots.data() + 3 * p.recv_first, 3 * p.recv_count});
-  }
-  comm_.exchangeBegin(sends, recvs);
+  shared_slots_.begin({sd_.slots});
 }
 
 void Solver::endSharedExchange() {
-  if (!sd_.peers.empty()) comm_.exchangeEnd();
+  shared_slots_.end({sd_.slots});
 }
 
 void Solver::exchangeSharedSlots() {

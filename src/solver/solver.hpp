@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "comm/communicator.hpp"
+#include "comm/exchange.hpp"
 #include "constraints/boundary.hpp"
 #include "constraints/rigid.hpp"
 #include "contact/contact.hpp"
@@ -183,6 +184,7 @@ class Solver {
   const model::Model& model_;
   domain::Subdomain& sd_;
   comm::Communicator& comm_;
+  comm::Exchange shared_slots_;  // corner slots at shared nodes, to and from the neighbours
   constraints::Boundary boundary_;
   elements::BulkViscosity bv_;
   std::unique_ptr<constraints::RigidBodies> rigid_;  // built in initialize(), after the masses
