@@ -26,6 +26,7 @@
 #include "materials/materials.hpp"
 #include "materials/uniaxial.hpp"
 #include "model/model.hpp"
+#include "rate_law.hpp"
 
 namespace d = crumple::domain;
 namespace el = crumple::elements;
@@ -776,6 +777,40 @@ TEST(Truss, FibreReturnIsOnTheYieldSurface) {
     }
     EXPECT_GT(p.eps_p, 0.01);
   }
+}
+
+// Rate-dependent yield curves in a truss fibre (tests/support/rate_law.hpp): pulled at a
+// constant strain rate below, between and above a table's rates (and with LCSR), the axial
+// stress after every plastic step is the yield stress at that rate and the plastic strain.
+TEST(Truss, RateDependentYieldStaysOnTheCurveAtTheRate) {
+  namespace rl = crumple::testing::rate_law;
+  using Yield = double (*)(double, double);
+  const Yield lcsr_curve = [](double e, double r) {
+    return rl::lcsrFactor(r) * rl::lcsrStatic(true, e);
+  };
+  const Yield lcsr_bilinear = [](double e, double r) {
+    return rl::lcsrFactor(r) * rl::lcsrStatic(false, e);
+  };
+  const std::vector<std::pair<m::Law, Yield>> laws = {{rl::tableLaw(0), rl::tableYield},
+                                                      {rl::tableLaw(1), rl::logTableYield},
+                                                      {rl::lcsrLaw(true), lcsr_curve},
+                                                      {rl::lcsrLaw(false), lcsr_bilinear}};
+  for (const auto& [law, yield] : laws) {
+    const m::FibreLaw fl = m::fibreLawOf(law);
+    for (const double rate : {0.5, 40.0, 1000.0}) {
+      m::FibrePoint p;
+      const double de = 2e-4, dt = de / rate;
+      for (int n = 0; n < 500; ++n) {
+        m::updateFibre(fl, p, de, 0.0, 0.0, dt);
+        if (p.eps_p == 0.0) continue;
+        const double expected = yield(p.eps_p, rate);  // a truss: the rate is de / dt
+        ASSERT_NEAR(p.sig, expected, 1e-6 * expected) << rate << " " << n;
+      }
+      EXPECT_GT(p.eps_p, 0.09) << rate;
+    }
+  }
+  // The static flow stress of a table is its first curve's.
+  EXPECT_DOUBLE_EQ(m::flowStress(m::fibreLawOf(rl::tableLaw(0)), 0.1), rl::hA(0.1));
 }
 
 TEST(Truss, ErodesAtFailureStrain) {

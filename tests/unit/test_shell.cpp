@@ -24,6 +24,7 @@
 #include "elements/shell.hpp"
 #include "materials/materials.hpp"
 #include "materials/plane_stress.hpp"
+#include "rate_law.hpp"
 
 namespace {
 
@@ -154,11 +155,13 @@ void psStep(const mat::Law& law, PsPoint& p, double dxx, double dyy, double dxy,
       law);
 }
 
-// Uniaxial stress along x: de_yy found by secant iteration so that s_yy = 0 after the step.
-void uniaxialStep(const mat::Law& law, PsPoint& p, double dex) {
+// Uniaxial stress along x over dt: de_yy found by secant iteration so that s_yy = 0 after the
+// step; `dey_used` (if given) receives it.
+void uniaxialStep(const mat::Law& law, PsPoint& p, double dex, double dt = 1.0,
+                  double* dey_used = nullptr) {
   auto syy = [&](double dey) {
     PsPoint q = p;
-    psStep(law, q, dex, dey, 0.0);
+    psStep(law, q, dex, dey, 0.0, dt);
     return q.s[1];
   };
   double a = -kNu * dex, b = -0.5 * dex;
@@ -170,7 +173,8 @@ void uniaxialStep(const mat::Law& law, PsPoint& p, double dex) {
     b = c;
     fb = syy(b);
   }
-  psStep(law, p, dex, b, 0.0);
+  psStep(law, p, dex, b, 0.0, dt);
+  if (dey_used != nullptr) *dey_used = b;
 }
 
 double vonMises(const double s[3]) {
@@ -231,6 +235,43 @@ TEST(ShellPlaneStress, UniaxialFollowsTheYieldCurve) {
     }
   }
   EXPECT_GT(p.eps_p, 0.05);
+}
+
+// Rate-dependent yield curves (a rate table, linear and in ln(rate), and LCSR on a curve and on
+// SIGY/ETAN; tests/support/rate_law.hpp): in uniaxial stress at a constant strain rate below,
+// between and above the table's rates, the stress after every plastic step is the yield stress
+// at the step's effective strain rate (the shell's measure: the in-plane increment with an
+// incompressible thickness strain) and the new plastic strain.
+TEST(ShellPlaneStress, RateDependentYieldStaysOnTheCurveAtTheRate) {
+  namespace rl = crumple::testing::rate_law;
+  using Yield = double (*)(double, double);
+  const Yield lcsr_curve = [](double e, double r) {
+    return rl::lcsrFactor(r) * rl::lcsrStatic(true, e);
+  };
+  const Yield lcsr_bilinear = [](double e, double r) {
+    return rl::lcsrFactor(r) * rl::lcsrStatic(false, e);
+  };
+  const std::vector<std::pair<mat::Law, Yield>> laws = {{rl::tableLaw(0), rl::tableYield},
+                                                        {rl::tableLaw(1), rl::logTableYield},
+                                                        {rl::lcsrLaw(true), lcsr_curve},
+                                                        {rl::lcsrLaw(false), lcsr_bilinear}};
+  for (const auto& [law, yield] : laws) {
+    for (const double rate : {0.5, 40.0, 1000.0}) {
+      PsPoint p;
+      const double dex = 2e-4, dt = dex / rate;
+      for (int n = 0; n < 500; ++n) {
+        double dey = 0.0;
+        uniaxialStep(law, p, dex, dt, &dey);
+        if (p.eps_p == 0.0) continue;
+        const double dz = dex + dey;
+        const double r = std::sqrt(2.0 / 3.0 * (dex * dex + dey * dey + dz * dz)) / dt;
+        const double expected = yield(p.eps_p, r);
+        ASSERT_NEAR(p.s[0], expected, 1e-6 * expected) << rate << " " << n;
+        ASSERT_NEAR(p.s[1], 0.0, 1e-9 * expected);
+      }
+      EXPECT_GT(p.eps_p, 0.09) << rate;
+    }
+  }
 }
 
 // Equibiaxial stretch: s_xx = s_yy = s (von Mises stress s); elastic s = E / (1 - nu) eps, then
