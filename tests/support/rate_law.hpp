@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "materials/materials.hpp"
@@ -113,6 +114,20 @@ inline m::PiecewiseLinear lcsrLaw(bool curve) {
 // The static yield stress of lcsrLaw(curve) at a plastic strain.
 inline double lcsrStatic(bool curve, double e) {
   return curve ? hA(e) : 250.0 + kE * 2100.0 / (kE - 2100.0) * e;
+}
+
+// Every rate-dependent law above with the yield stress (plastic strain, strain rate) it must
+// give: the table in rates and in ln(rate), LCSR on the curve and on SIGY/ETAN.
+using Yield = double (*)(double, double);
+inline std::vector<std::pair<m::Law, Yield>> allLaws() {
+  const Yield lcsr_curve = [](double e, double r) { return lcsrFactor(r) * lcsrStatic(true, e); };
+  const Yield lcsr_bilinear = [](double e, double r) {
+    return lcsrFactor(r) * lcsrStatic(false, e);
+  };
+  return {{tableLaw(0), tableYield},
+          {tableLaw(1), logTableYield},
+          {lcsrLaw(true), lcsr_curve},
+          {lcsrLaw(false), lcsr_bilinear}};
 }
 
 }  // namespace rate_law

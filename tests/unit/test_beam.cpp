@@ -784,29 +784,23 @@ TEST(Truss, FibreReturnIsOnTheYieldSurface) {
 // stress after every plastic step is the yield stress at that rate and the plastic strain.
 TEST(Truss, RateDependentYieldStaysOnTheCurveAtTheRate) {
   namespace rl = crumple::testing::rate_law;
-  using Yield = double (*)(double, double);
-  const Yield lcsr_curve = [](double e, double r) {
-    return rl::lcsrFactor(r) * rl::lcsrStatic(true, e);
-  };
-  const Yield lcsr_bilinear = [](double e, double r) {
-    return rl::lcsrFactor(r) * rl::lcsrStatic(false, e);
-  };
-  const std::vector<std::pair<m::Law, Yield>> laws = {{rl::tableLaw(0), rl::tableYield},
-                                                      {rl::tableLaw(1), rl::logTableYield},
-                                                      {rl::lcsrLaw(true), lcsr_curve},
-                                                      {rl::lcsrLaw(false), lcsr_bilinear}};
+  const auto laws = rl::allLaws();
   for (const auto& [law, yield] : laws) {
     const m::FibreLaw fl = m::fibreLawOf(law);
     for (const double rate : {0.5, 40.0, 1000.0}) {
       m::FibrePoint p;
       const double de = 2e-4, dt = de / rate;
       for (int n = 0; n < 500; ++n) {
+        const double before = p.eps_p;
         m::updateFibre(fl, p, de, 0.0, 0.0, dt);
-        if (p.eps_p == 0.0) continue;
         const double expected = yield(p.eps_p, rate);  // a truss: the rate is de / dt
+        if (p.eps_p == before) {
+          ASSERT_LE(p.sig, expected * (1.0 + 1e-12)) << rate << " " << n;
+          continue;
+        }
         ASSERT_NEAR(p.sig, expected, 1e-6 * expected) << rate << " " << n;
       }
-      EXPECT_GT(p.eps_p, 0.09) << rate;
+      EXPECT_GT(p.eps_p, 0.06) << rate;  // LCSR at 1000 /s: 2 % elastic strain
     }
   }
   // The static flow stress of a table is its first curve's.

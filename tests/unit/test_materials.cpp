@@ -506,7 +506,10 @@ namespace rl = crumple::testing::rate_law;
 
 // Uniaxial stress at a constant strain rate (axial increments 2e-4 to 10 % strain): after
 // every plastic step the von Mises stress is the expected yield stress at the step's
-// effective strain rate and the new plastic strain; returns the last (rate, eps_p).
+// effective strain rate and the new plastic strain, after an elastic step at most that (with
+// the yield stress rising with the total rate, uniaxial stress may also be met elastically, at
+// the higher rate of elastic lateral contraction); returns the last plastic step's rate and
+// plastic strain.
 template <class Yield>
 std::pair<double, double> pullAtRate(const m::Law& law, double rate, Yield yield) {
   Point p;
@@ -514,10 +517,14 @@ std::pair<double, double> pullAtRate(const m::Law& law, double rate, Yield yield
   double r = 0.0;
   for (int k = 0; k < 500; ++k) {
     Strain de{};
+    const double before = p.eps_p;
     uniaxialStep(law, p, dex, dt, &de);
-    if (p.eps_p == 0.0) continue;
+    const double expected = yield(p.eps_p, effectiveRate(de, dt));
+    if (p.eps_p == before) {
+      EXPECT_LE(vonMises(p, false), expected * (1.0 + 1e-12)) << k;
+      continue;
+    }
     r = effectiveRate(de, dt);
-    const double expected = yield(p.eps_p, r);
     EXPECT_NEAR(vonMises(p, false), expected, 1e-6 * expected) << k;
     EXPECT_NEAR(p.s[0], expected, 1e-6 * expected) << k;  // uniaxial: s_xx is the von Mises stress
   }
@@ -553,9 +560,9 @@ TEST(MaterialsPiecewiseLinear, LcsrScalesTheYieldStress) {
       const auto [r, eps_p] = pullAtRate(law, rate, [&](double e, double rr) {
         return rl::lcsrFactor(rr) * rl::lcsrStatic(curve, e);
       });
-      EXPECT_GT(eps_p, 0.09);
+      EXPECT_GT(eps_p, 0.08);
       // 200 /s is past the curve's last rate (100 /s): the factor follows its end slope.
-      EXPECT_NEAR(r, rate, 5e-3 * rate);
+      EXPECT_NEAR(r, rate, 1e-2 * rate);
     }
   }
 }

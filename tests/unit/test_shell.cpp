@@ -155,13 +155,11 @@ void psStep(const mat::Law& law, PsPoint& p, double dxx, double dyy, double dxy,
       law);
 }
 
-// Uniaxial stress along x over dt: de_yy found by secant iteration so that s_yy = 0 after the
-// step; `dey_used` (if given) receives it.
-void uniaxialStep(const mat::Law& law, PsPoint& p, double dex, double dt = 1.0,
-                  double* dey_used = nullptr) {
+// Uniaxial stress along x: de_yy found by secant iteration so that s_yy = 0 after the step.
+void uniaxialStep(const mat::Law& law, PsPoint& p, double dex) {
   auto syy = [&](double dey) {
     PsPoint q = p;
-    psStep(law, q, dex, dey, 0.0, dt);
+    psStep(law, q, dex, dey, 0.0);
     return q.s[1];
   };
   double a = -kNu * dex, b = -0.5 * dex;
@@ -173,8 +171,25 @@ void uniaxialStep(const mat::Law& law, PsPoint& p, double dex, double dt = 1.0,
     b = c;
     fb = syy(b);
   }
-  psStep(law, p, dex, b, 0.0, dt);
-  if (dey_used != nullptr) *dey_used = b;
+  psStep(law, p, dex, b, 0.0);
+}
+
+// Uniaxial stress as uniaxialStep, with de_yy found by bisection between -dex and 0 (s_yy
+// rises with de_yy): with a rate-dependent yield stress s_yy(de_yy) has a kink where the step
+// turns elastic, which can stall the secant iteration.
+double uniaxialStepBisected(const mat::Law& law, PsPoint& p, double dex, double dt) {
+  auto syy = [&](double dey) {
+    PsPoint q = p;
+    psStep(law, q, dex, dey, 0.0, dt);
+    return q.s[1];
+  };
+  double lo = -dex, hi = 0.0;
+  for (int it = 0; it < 200 && hi - lo > 1e-16 * dex; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (syy(mid) > 0.0 ? hi : lo) = mid;
+  }
+  psStep(law, p, dex, lo, 0.0, dt);
+  return lo;
 }
 
 double vonMises(const double s[3]) {
@@ -241,35 +256,30 @@ TEST(ShellPlaneStress, UniaxialFollowsTheYieldCurve) {
 // SIGY/ETAN; tests/support/rate_law.hpp): in uniaxial stress at a constant strain rate below,
 // between and above the table's rates, the stress after every plastic step is the yield stress
 // at the step's effective strain rate (the shell's measure: the in-plane increment with an
-// incompressible thickness strain) and the new plastic strain.
+// incompressible thickness strain) and the new plastic strain, and after an elastic step it is
+// at most that. (With the yield stress rising with the total rate, a step may also find the
+// elastic answer of uniaxial stress: de_yy = -nu de_xx gives a higher rate than plastic flow.)
 TEST(ShellPlaneStress, RateDependentYieldStaysOnTheCurveAtTheRate) {
   namespace rl = crumple::testing::rate_law;
-  using Yield = double (*)(double, double);
-  const Yield lcsr_curve = [](double e, double r) {
-    return rl::lcsrFactor(r) * rl::lcsrStatic(true, e);
-  };
-  const Yield lcsr_bilinear = [](double e, double r) {
-    return rl::lcsrFactor(r) * rl::lcsrStatic(false, e);
-  };
-  const std::vector<std::pair<mat::Law, Yield>> laws = {{rl::tableLaw(0), rl::tableYield},
-                                                        {rl::tableLaw(1), rl::logTableYield},
-                                                        {rl::lcsrLaw(true), lcsr_curve},
-                                                        {rl::lcsrLaw(false), lcsr_bilinear}};
+  const auto laws = rl::allLaws();
   for (const auto& [law, yield] : laws) {
     for (const double rate : {0.5, 40.0, 1000.0}) {
       PsPoint p;
       const double dex = 2e-4, dt = dex / rate;
       for (int n = 0; n < 500; ++n) {
-        double dey = 0.0;
-        uniaxialStep(law, p, dex, dt, &dey);
-        if (p.eps_p == 0.0) continue;
+        const double before = p.eps_p;
+        const double dey = uniaxialStepBisected(law, p, dex, dt);
         const double dz = dex + dey;
         const double r = std::sqrt(2.0 / 3.0 * (dex * dex + dey * dey + dz * dz)) / dt;
         const double expected = yield(p.eps_p, r);
+        ASSERT_NEAR(p.s[1], 0.0, 1e-6 * expected);
+        if (p.eps_p == before) {
+          ASSERT_LE(p.s[0], expected * (1.0 + 1e-12)) << rate << " " << n;
+          continue;
+        }
         ASSERT_NEAR(p.s[0], expected, 1e-6 * expected) << rate << " " << n;
-        ASSERT_NEAR(p.s[1], 0.0, 1e-9 * expected);
       }
-      EXPECT_GT(p.eps_p, 0.09) << rate;
+      EXPECT_GT(p.eps_p, 0.06) << rate;  // LCSR at 1000 /s: 2 % elastic strain
     }
   }
 }
