@@ -14,7 +14,7 @@
 //                              names the unit
 //   cards()                    its card layout (field names, widths, defaults)
 //   read(LawInput&)            its deck reader: cards -> Params, with the checks of the fields
-//   make(Params, CurveAt)      the law the kernels use (curves resolved)
+//   make(Params, CurveAt)      the law the kernels use (curves and tables resolved)
 // and, for each element family it can be used with, the update that family calls:
 //   update(PointBatch&)                      solids (3-D stress)
 //   updatePlaneStress(PlaneStressPoints&)    shells (plane stress)
