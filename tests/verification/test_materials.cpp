@@ -181,6 +181,7 @@ TEST(VerificationMaterials, RateTablePullAtTwoRates) {
     const double below = rate < 10.0 ? curve1(last_eps_p) : curve10(last_eps_p);
     const double above = rate < 10.0 ? curve10(last_eps_p) : curve100(last_eps_p);
     EXPECT_GT(std::min(y - below, above - y), 0.015 * y) << rate;
-    RecordProperty(rate < 10.0 ? "worst_error_3_per_s" : "worst_error_40_per_s", worst);
+    RecordProperty(rate < 10.0 ? "worst_error_3_per_s" : "worst_error_40_per_s",
+                   fmt::format("{:.3g}", worst));
   }
 }
