@@ -142,6 +142,38 @@ materials::Law plastic024() {
 void ShellPlastic024Crash(benchmark::State& s) {
   runShell(s, bilinear024(0.3, 1.0), 1, 300);
 }
+// *MAT_024 with a yield curve (LCSS), and with LCSS naming a rate table of three such curves
+// at 0.1, 1 and 10 per time unit (the plate's strain rates lie near 1, between the last two):
+// the cost of the table is the rate, a lookup of the two neighbouring curves and their blend at
+// each point of the return (materials/rate.hpp). Crash-like, as ShellPlastic024Crash.
+const std::vector<double> kEpsA{0.0, 0.05, 0.2}, kSigA{0.3, 0.4, 0.46};
+const std::vector<double> kEpsB{0.0, 0.1}, kSigB{0.33, 0.45};
+const std::vector<double> kEpsC{0.0, 0.02, 0.3}, kSigC{0.36, 0.4, 0.52};
+const std::vector<double> kRates{0.1, 1.0, 10.0};
+const std::vector<int32_t> kTableCurves{0, 1, 2};
+
+materials::Law curve024(bool table) {
+  materials::PiecewiseLinear::Params p;
+  p.E = 210.0;
+  p.nu = 0.3;
+  (table ? p.table : p.lcss) = 0;
+  const materials::CurveAt curves(
+      [](int32_t i) -> materials::CurveData {
+        if (i == 1) return {2, kEpsB, kSigB};
+        if (i == 2) return {3, kEpsC, kSigC};
+        return {1, kEpsA, kSigA};
+      },
+      [](int32_t) -> materials::TableData {
+        return {5, kRates, kTableCurves};
+      });
+  return materials::makeLaw(p, curves, "");
+}
+void ShellPlastic024CurveCrash(benchmark::State& s) {
+  runShell(s, curve024(false), 1, 300);
+}
+void ShellPlastic024RateTableCrash(benchmark::State& s) {
+  runShell(s, curve024(true), 1, 300);
+}
 void ShellElastic(benchmark::State& s) {
   runShell(s, materials::Elastic{materials::moduliFromYoung(210.0, 0.3)}, 1);
 }
@@ -165,6 +197,8 @@ void shellArgs(benchmark::internal::Benchmark* b) {
 BENCHMARK(ShellPlastic024Viscous)->Apply(shellArgs);
 BENCHMARK(ShellPlastic024Stiffness)->Apply(shellArgs);
 BENCHMARK(ShellPlastic024Crash)->Apply(shellArgs);
+BENCHMARK(ShellPlastic024CurveCrash)->Apply(shellArgs);
+BENCHMARK(ShellPlastic024RateTableCrash)->Apply(shellArgs);
 BENCHMARK(ShellElastic)->Apply(shellArgs);
 // A fixed amount of work, for instruction counts under callgrind:
 //   valgrind --tool=callgrind --toggle-collect='*shellBlockForces*' crumple_bench

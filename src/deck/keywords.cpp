@@ -272,6 +272,12 @@ std::vector<KeywordSpec> makeTables() {
                  {I("LCID"), I("SIDR"), R("SFA", 1, Z), R("SFO", 1, Z), R("OFFA"), R("OFFO"),
                   I("DATTYP"), I("LCINT")}},
                 {"point card", {R("A1", 0, 0, 20), R("O1", 0, 0, 20)}}}});
+  // Keyword Manual vol. I, *DEFINE_TABLE: one VALUE (E20.0) per card, with the LCID of its curve
+  // (0: the next *DEFINE_CURVE after the table).
+  t.push_back({"*DEFINE_TABLE",
+               {titleCard(),
+                {"card 1", {I("TBID"), R("SFA", 1, Z), R("OFFA")}},
+                {"value card", {R("VALUE", 0, 0, 20), I("LCID")}}}});
   t.push_back(
       {"*DEFINE_BOX",
        {titleCard(),

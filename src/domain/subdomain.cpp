@@ -146,9 +146,18 @@ std::string materialAt(const model::Material& mat) {
          ": ";
 }
 
+// The model's table with a model table index, as the law units see it.
+materials::TableData tableOf(const model::Model& model, int32_t index) {
+  if (index < 0 || static_cast<std::size_t>(index) >= model.tables.size())
+    throw util::InputError("table index " + std::to_string(index) + " does not name a table");
+  const model::Table& t = model.tables[static_cast<std::size_t>(index)];
+  return {t.id, t.values, t.curves};
+}
+
 materials::Law lawOf(const model::Model& model, const model::Material& mat) {
-  return materials::makeLaw(
-      mat.law, [&](int32_t i) { return curveOf(model, i); }, materialAt(mat));
+  const materials::CurveAt curves([&](int32_t i) { return curveOf(model, i); },
+                                  [&](int32_t i) { return tableOf(model, i); });
+  return materials::makeLaw(mat.law, curves, materialAt(mat));
 }
 
 bool isRigid(const model::Model& model, const model::Part& part) {

@@ -14,7 +14,7 @@
 //                              names the unit
 //   cards()                    its card layout (field names, widths, defaults)
 //   read(LawInput&)            its deck reader: cards -> Params, with the checks of the fields
-//   make(Params, CurveAt)      the law the kernels use (curves resolved)
+//   make(Params, CurveAt)      the law the kernels use (curves and tables resolved)
 // and, for each element family it can be used with, the update that family calls:
 //   update(PointBatch&)                      solids (3-D stress)
 //   updatePlaneStress(PlaneStressPoints&)    shells (plane stress)
@@ -32,6 +32,8 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace crumple::deck {
@@ -95,8 +97,35 @@ struct CurveData {
   int64_t id = 0;
   std::span<const double> x, y;
 };
-// The curve with a model curve index.
-using CurveAt = std::function<CurveData(int32_t)>;
+// A *DEFINE_TABLE as a law sees it: one curve (model curve index) per value, the values
+// increasing (a view into the Model's tables).
+struct TableData {
+  int64_t id = 0;
+  std::span<const double> values;
+  std::span<const int32_t> curves;
+};
+// The Model's curves and tables as make() sees them: curves(i) is the curve with model curve
+// index i, curves.table(i) the table with model table index i. Built from a callable for
+// curves alone (a law without tables, the tests), or from both.
+class CurveAt {
+ public:
+  using Curves = std::function<CurveData(int32_t)>;
+  using Tables = std::function<TableData(int32_t)>;
+  CurveAt() = default;
+  // Implicit, so that a callable for curves alone converts as it did before tables.
+  template <class F, class = std::enable_if_t<std::is_convertible_v<F, Curves> &&
+                                              !std::is_same_v<std::decay_t<F>, CurveAt>>>
+  CurveAt(F curves) : curves_(std::move(curves)) {}  // NOLINT(google-explicit-constructor)
+  CurveAt(Curves curves, Tables tables) : curves_(std::move(curves)), tables_(std::move(tables)) {}
+  CurveData operator()(int32_t i) const { return curves_(i); }
+  // A table; throws std::logic_error when built without tables (a coding error: a reader
+  // gives a table index only where the model has tables).
+  TableData table(int32_t i) const;
+
+ private:
+  Curves curves_;
+  Tables tables_;
+};
 
 // What a law's deck reader may ask of the model builder: its cards in order, verdicts on
 // values Crumple cannot honour, and curves. The builder implements it (model/build_mesh.cpp),
@@ -118,6 +147,9 @@ class LawInput {
   // As curve(), but a curve that is defined by a keyword Crumple does not support refuses the
   // deck (reject) and gives -1.
   virtual int32_t curveOrReject(const deck::Card& c, std::string_view field, int64_t id) = 0;
+  // The model index of the *DEFINE_TABLE with this id, or -1 when no table has it (the id may
+  // name a curve). A table is read and checked where it is defined (model/build_sets.cpp).
+  virtual int32_t table(const deck::Card& c, std::string_view field, int64_t id) = 0;
   // Stores a curve the law defines in its own cards; returns its model curve index.
   virtual int32_t addCurve(int64_t id, std::vector<double> x, std::vector<double> y) = 0;
   // The material's id (MID).

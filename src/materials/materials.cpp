@@ -35,6 +35,11 @@ void checkTangent(const std::string& at, double E, double etan) {
   if (!(etan >= 0.0 && etan < E)) throw util::InputError(at + "ETAN must lie in [0, E)");
 }
 
+TableData CurveAt::table(int32_t i) const {
+  if (!tables_) throw std::logic_error("a law asked for a table of a model without tables");
+  return tables_(i);
+}
+
 namespace {
 
 template <class U>

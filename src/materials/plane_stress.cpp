@@ -102,15 +102,31 @@ ElasticConstants elasticConstantsOf(const Moduli& m) {
   return c;
 }
 
-// Cowper-Symonds factor 1 + (rate / C)^(1/P) with the effective strain rate of the in-plane
-// increment completed by an incompressible thickness strain, -(de_xx + de_yy): the strain of
-// fully developed plastic flow, where the rate matters (the thickness strain is only known
-// after the return).
-inline double cowperSymonds(double d0, double d1, double d2, double inv_dt, double C,
-                            double inv_P) {
+// How the yield stress depends on the strain rate (as in return_mapping.cpp).
+enum class Rate : uint8_t { None, CowperSymonds, Curve, Table };
+
+// The effective strain rate of the in-plane increment completed by an incompressible thickness
+// strain, -(de_xx + de_yy): the strain of fully developed plastic flow, where the rate matters
+// (the thickness strain is only known after the return). Every rate form uses it (VP = 0).
+inline double effectiveRate(double d0, double d1, double d2, double inv_dt) {
   const double dz = d0 + d1;
   const double ee = d0 * d0 + d1 * d1 + dz * dz + 2.0 * d2 * d2;
-  return 1.0 + std::pow(std::sqrt(kTwoThirds * ee) * inv_dt / C, inv_P);
+  return std::sqrt(kTwoThirds * ee) * inv_dt;
+}
+
+// Cowper-Symonds factor 1 + (rate / C)^(1/P).
+inline double cowperSymonds(double d0, double d1, double d2, double inv_dt, double C,
+                            double inv_P) {
+  return 1.0 + std::pow(effectiveRate(d0, d1, d2, inv_dt) / C, inv_P);
+}
+
+// The factor rf on the yield stress of a point (1 for Rate::None and Rate::Table).
+template <Rate kRate, class P>
+inline double rateFactor(const P& law, double d0, double d1, double d2, double inv_dt) {
+  if constexpr (kRate == Rate::CowperSymonds)
+    return cowperSymonds(d0, d1, d2, inv_dt, law.C, law.inv_P);
+  if constexpr (kRate == Rate::Curve) return law.lcsr(effectiveRate(d0, d1, d2, inv_dt));
+  return 1.0;
 }
 
 // First Newton iterate: the exact root when the trial relative stress has one mode only
@@ -185,7 +201,7 @@ inline double halleyStep(double c1, double c2, double sy, double k, double m1, d
   return dg - 2.0 * p * dp / (2.0 * dp * dp - p * ddp);
 }
 
-template <bool kKinematic, bool kRate>
+template <bool kKinematic, Rate kRate>
 [[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] void linearPlaneStress(
     Views a, int n, double dt, const ElasticConstants c, const LinearHardening P) {
   const double m1 = c.m1 + kTwoThirds * P.Hk, m2 = c.G2 + kTwoThirds * P.Hk;
@@ -229,8 +245,7 @@ template <bool kKinematic, bool kRate>
       const double c2 = 0.5 * x2 * x2 + 2.0 * xy * xy;
       w.c1[i] = c1;
       w.c2[i] = c2;
-      double rf = 1.0;
-      if constexpr (kRate) rf = cowperSymonds(d0[i], d1[i], d2[i], inv_dt, P.C, P.inv_P);
+      const double rf = rateFactor<kRate>(P, d0[i], d1[i], d2[i], inv_dt);
       const double sy = rf * (P.sigy + P.Hi * ep[i]);
       const double k = kTwoThirds * rf * P.Hi;
       w.sy[i] = sy;
@@ -332,12 +347,15 @@ void markFailed(PlaneStressPoints& b, double limit) {
 
 namespace {
 
+// Cowper-Symonds (C > 0) before an LCSR curve: the law units give only one of them.
 template <bool kKinematic>
 void linearUpdate(PlaneStressPoints& b, const ElasticConstants& c, const LinearHardening& P) {
   if (P.C > 0.0) {
-    linearPlaneStress<kKinematic, true>(viewsOf(b), b.n, b.dt, c, P);
+    linearPlaneStress<kKinematic, Rate::CowperSymonds>(viewsOf(b), b.n, b.dt, c, P);
+  } else if (!P.lcsr.empty()) {
+    linearPlaneStress<kKinematic, Rate::Curve>(viewsOf(b), b.n, b.dt, c, P);
   } else {
-    linearPlaneStress<kKinematic, false>(viewsOf(b), b.n, b.dt, c, P);
+    linearPlaneStress<kKinematic, Rate::None>(viewsOf(b), b.n, b.dt, c, P);
   }
 }
 
@@ -345,8 +363,8 @@ void linearUpdate(PlaneStressPoints& b, const ElasticConstants& c, const LinearH
 // Flow stress and slope of the curve at eps, with the segment convention of
 // model::Curve::valueExtrapolated: segment k holds [x[k], x[k+1]), clamped to the end segments
 // (linear extrapolation beyond them); a single point is a constant flow stress.
-void curveAt(std::span<const double> x, std::span<const double> y, double eps, double& h,
-             double& slope) {
+template <class Y>
+void curveAt(std::span<const double> x, const Y& y, double eps, double& h, double& slope) {
   if (x.size() == 1) {
     h = y[0];
     slope = 0.0;
@@ -363,10 +381,48 @@ void curveAt(std::span<const double> x, std::span<const double> y, double eps, d
   h = y[k] + (y[k + 1] - y[k]) * (eps - x[k]) / dx;
 }
 
-// The same return as linearPlaneStress (no back stress) with the curve's flow stress and
-// slope looked up at the current iterate; one point at a time (the segment search does not
-// vectorise).
-template <bool kRate>
+// The plastic multiplier of the same return as linearPlaneStress (no back stress) onto the
+// curve (x, y) scaled by rf, with the curve's flow stress and slope looked up at the current
+// iterate, from the trial state (c1, c2, q_trial) at plastic strain e; 0 for an elastic step.
+template <class Y>
+double curveMultiplier(std::span<const double> x, const Y& y, double rf, double e, double c1,
+                       double c2, double m1, double m2) {
+  double h, slope;
+  curveAt(x, y, e, h, slope);
+  const double q_trial = std::sqrt(1.5 * (c1 + c2));
+  double dg = 0.0;
+  if (!(q_trial > rf * h)) return dg;
+  dg = firstGuess(q_trial, rf * h, rf * slope, c1, c2, m1, m2);
+  double lo = 0.0;
+  double hi = rf * h > 0.0 ? 2.0 * (q_trial / (rf * h) - 1.0) / std::min(m1, m2)
+                           : std::numeric_limits<double>::max();
+  for (int it = 0; it < kPlaneStressMaxIterations; ++it) {
+    double i1, i2;
+    inverseFactors(m1, m2, dg, i1, i2);
+    const double u1 = c1 * i1 * i1, u2 = c2 * i2 * i2;
+    const double q2 = 1.5 * (u1 + u2);
+    const double q = std::sqrt(q2);
+    curveAt(x, y, e + kTwoThirds * dg * q, h, slope);
+    const double g = q - rf * h;
+    if (g > 0.0) {
+      lo = dg;
+    } else {
+      hi = dg;
+    }
+    double next = dg - g * q / newtonDenominator(u1 * m1 * i1 + u2 * m2 * i2, q2, rf * slope, dg);
+    next = (next >= lo && next <= hi) ? next : 0.5 * (lo + hi);
+    const bool converged =
+        !(std::abs(next - dg) > kNewtonTolerance * next) || !(std::abs(g) > kResidualFloor * q);
+    dg = next;
+    if (converged) break;
+  }
+  return dg;
+}
+
+// MAT_024 with a yield curve, one point at a time (the segment search does not vectorise).
+// With a rate table the curve is the table's at the point's strain rate (rate.hpp), on which
+// the return is exact.
+template <Rate kRate>
 void curvePlaneStress(PlaneStressPoints& b, const Moduli& moduli, const CurveHardening& law) {
   const ElasticConstants c = elasticConstantsOf(moduli);
   const double m1 = c.m1, m2 = c.G2;
@@ -379,38 +435,14 @@ void curvePlaneStress(PlaneStressPoints& b, const Moduli& moduli, const CurveHar
     const double t2 = b.s[2][i] + c.G2 * d2;
     const double x1 = t0 + t1, x2 = t0 - t1;
     const double c1 = x1 * x1 * (1.0 / 6.0), c2 = 0.5 * x2 * x2 + 2.0 * t2 * t2;
-    const double rf = kRate ? cowperSymonds(d0, d1, d2, inv_dt, law.C, law.inv_P) : 1.0;
     const double e = b.eps_p[i];
-    double h, slope;
-    curveAt(law.eps, law.sig, e, h, slope);
-    const double q_trial = std::sqrt(1.5 * (c1 + c2));
-    double dg = 0.0;
-    if (q_trial > rf * h) {
-      dg = firstGuess(q_trial, rf * h, rf * slope, c1, c2, m1, m2);
-      double lo = 0.0;
-      double hi = rf * h > 0.0 ? 2.0 * (q_trial / (rf * h) - 1.0) / std::min(m1, m2)
-                               : std::numeric_limits<double>::max();
-      for (int it = 0; it < kPlaneStressMaxIterations; ++it) {
-        double i1, i2;
-        inverseFactors(m1, m2, dg, i1, i2);
-        const double u1 = c1 * i1 * i1, u2 = c2 * i2 * i2;
-        const double q2 = 1.5 * (u1 + u2);
-        const double q = std::sqrt(q2);
-        curveAt(law.eps, law.sig, e + kTwoThirds * dg * q, h, slope);
-        const double g = q - rf * h;
-        if (g > 0.0) {
-          lo = dg;
-        } else {
-          hi = dg;
-        }
-        double next =
-            dg - g * q / newtonDenominator(u1 * m1 * i1 + u2 * m2 * i2, q2, rf * slope, dg);
-        next = (next >= lo && next <= hi) ? next : 0.5 * (lo + hi);
-        const bool converged =
-            !(std::abs(next - dg) > kNewtonTolerance * next) || !(std::abs(g) > kResidualFloor * q);
-        dg = next;
-        if (converged) break;
-      }
+    double dg;
+    if constexpr (kRate == Rate::Table) {
+      const CurveBlend y = law.table.at(effectiveRate(d0, d1, d2, inv_dt));
+      dg = curveMultiplier(law.table.eps, y, 1.0, e, c1, c2, m1, m2);
+    } else {
+      const double rf = rateFactor<kRate>(law, d0, d1, d2, inv_dt);
+      dg = curveMultiplier(law.eps, law.sig, rf, e, c1, c2, m1, m2);
     }
     double i1, i2;
     inverseFactors(m1, m2, dg, i1, i2);
@@ -445,10 +477,14 @@ void planeStressLinear(PlaneStressPoints& b, const Moduli& m, const LinearHarden
 }
 
 void planeStressCurve(PlaneStressPoints& b, const Moduli& m, const CurveHardening& P) {
-  if (P.C > 0.0) {
-    curvePlaneStress<true>(b, m, P);
+  if (!P.table.empty()) {
+    curvePlaneStress<Rate::Table>(b, m, P);
+  } else if (P.C > 0.0) {
+    curvePlaneStress<Rate::CowperSymonds>(b, m, P);
+  } else if (!P.lcsr.empty()) {
+    curvePlaneStress<Rate::Curve>(b, m, P);
   } else {
-    curvePlaneStress<false>(b, m, P);
+    curvePlaneStress<Rate::None>(b, m, P);
   }
 }
 

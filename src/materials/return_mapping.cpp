@@ -37,16 +37,37 @@ namespace {
 
 constexpr double kThird = 1.0 / 3.0;
 
-// Cowper-Symonds dynamic factor 1 + (rate / C)^(1/P), with the effective total strain rate
-// sqrt(2/3 dev(de):dev(de)) / dt (LS-DYNA keyword manual, MAT_003 and MAT_024).
-inline double cowperSymonds(double d0, double d1, double d2, double d3, double d4, double d5,
-                            double tr, double inv_dt, double C, double inv_P) {
+// How the yield stress depends on the strain rate: not at all, the Cowper-Symonds factor, the
+// factor of an LCSR curve, or the curve of a rate table at the rate (rate.hpp).
+enum class Rate : uint8_t { None, CowperSymonds, Curve, Table };
+
+// The effective strain rate of the step, sqrt(2/3 dev(de):dev(de)) / dt (LS-DYNA keyword
+// manual, MAT_003 and MAT_024), the rate of every rate form (VP = 0).
+inline double effectiveRate(double d0, double d1, double d2, double d3, double d4, double d5,
+                            double tr, double inv_dt) {
   const double e0 = d0 - tr * kThird;
   const double e1 = d1 - tr * kThird;
   const double e2 = d2 - tr * kThird;
   const double ee = e0 * e0 + e1 * e1 + e2 * e2 + 2.0 * (d3 * d3 + d4 * d4 + d5 * d5);
-  const double rate = std::sqrt(2.0 / 3.0 * ee) * inv_dt;
+  return std::sqrt(2.0 / 3.0 * ee) * inv_dt;
+}
+
+// Cowper-Symonds dynamic factor 1 + (rate / C)^(1/P).
+inline double cowperSymonds(double d0, double d1, double d2, double d3, double d4, double d5,
+                            double tr, double inv_dt, double C, double inv_P) {
+  const double rate = effectiveRate(d0, d1, d2, d3, d4, d5, tr, inv_dt);
   return 1.0 + std::pow(rate / C, inv_P);
+}
+
+// The factor rf on the yield stress of a point (1 for Rate::None and Rate::Table).
+template <Rate kRate, class P>
+inline double rateFactor(const P& law, double d0, double d1, double d2, double d3, double d4,
+                         double d5, double tr, double inv_dt) {
+  if constexpr (kRate == Rate::CowperSymonds)
+    return cowperSymonds(d0, d1, d2, d3, d4, d5, tr, inv_dt, law.C, law.inv_P);
+  if constexpr (kRate == Rate::Curve)
+    return law.lcsr(effectiveRate(d0, d1, d2, d3, d4, d5, tr, inv_dt));
+  return 1.0;
 }
 
 // Hypoelastic (Hooke's law on the rate of deformation): the kernel has already applied the
@@ -70,7 +91,7 @@ void elasticKernel(detail::Soa a, int n, double lam, double G2) {
 // corrections then subtract exact zeros, so elastic points keep the trial stress bit for bit
 // (the selects are if-converted; with -fno-math-errno -fno-trapping-math, which change no
 // result, GCC vectorises this loop).
-template <bool kKinematic, bool kRate>
+template <bool kKinematic, Rate kRate>
 void linearHardeningKernel(detail::Soa a, int n, double dt, double G, double lam,
                            const LinearHardening& P) {
   const double G2 = 2.0 * G, G3 = 3.0 * G;
@@ -85,11 +106,8 @@ void linearHardeningKernel(detail::Soa a, int n, double dt, double G, double lam
     const double t3 = a.s3[i] + G2 * a.d3[i];
     const double t4 = a.s4[i] + G2 * a.d4[i];
     const double t5 = a.s5[i] + G2 * a.d5[i];
-    double rf = 1.0;
-    if constexpr (kRate) {
-      rf = cowperSymonds(a.d0[i], a.d1[i], a.d2[i], a.d3[i], a.d4[i], a.d5[i], tr, inv_dt, P.C,
-                         P.inv_P);
-    }
+    const double rf =
+        rateFactor<kRate>(P, a.d0[i], a.d1[i], a.d2[i], a.d3[i], a.d4[i], a.d5[i], tr, inv_dt);
     // Relative deviatoric stress and its von Mises norm.
     const double p = (t0 + t1 + t2) * kThird;
     double x0 = t0 - p, x1 = t1 - p, x2 = t2 - p, x3 = t3, x4 = t4, x5 = t5;
@@ -131,7 +149,7 @@ void linearHardeningKernel(detail::Soa a, int n, double dt, double G, double lam
   }
 }
 
-template <bool kKinematic, bool kRate>
+template <bool kKinematic, Rate kRate>
 void linearHardeningUpdate(PointBatch& b, const Moduli& m, const LinearHardening& P) {
   linearHardeningKernel<kKinematic, kRate>(detail::soaOf(b), b.n, b.dt, m.shear,
                                            m.bulk - 2.0 * m.shear / 3.0, P);
@@ -148,8 +166,9 @@ using util::segmentOf;
 // g is piecewise linear and decreasing (for slopes above -3G/rf), so walking the segments
 // from eps_p and solving linearly in the segment where g changes sign is exact (it is the
 // Newton iteration on the piecewise-linear curve, converged in one step per segment crossed).
-double returnToCurve(std::span<const double> x, std::span<const double> y, double G3, double rf,
-                     double q, double eps) {
+template <class Y>
+double returnToCurve(std::span<const double> x, const Y& y, double G3, double rf, double q,
+                     double eps) {
   const std::size_t m = x.size();
   if (m == 1) return (q - rf * y[0]) / G3;  // constant flow stress: perfect plasticity
   std::size_t k = segmentOf(x, eps);
@@ -172,9 +191,26 @@ double returnToCurve(std::span<const double> x, std::span<const double> y, doubl
   }
 }
 
+// Static flow stress of the curve (x, y) at an effective plastic strain.
+template <class Y>
+double flowStressOn(std::span<const double> x, const Y& y, double eps_p) {
+  if (x.size() == 1) return y[0];
+  return onSegment(x, y, segmentOf(x, eps_p), eps_p);
+}
+
+// The effective plastic strain increment of a trial stress of norm q at plastic strain e on
+// the curve (x, y) scaled by rf: 0 inside the yield surface, else the exact return.
+template <class Y>
+double curveIncrement(std::span<const double> x, const Y& y, double G3, double rf, double q,
+                      double e) {
+  const double f = q - rf * flowStressOn(x, y, e);
+  return f > 0.0 ? returnToCurve(x, y, G3, rf, q, e) : 0.0;
+}
+
 // MAT_024 with a yield curve: isotropic hardening only, so the return is radial on dev(t).
-// Elastic points take the same correction code with deps = 0 (exact no-op).
-template <bool kRate>
+// Elastic points take the same correction code with deps = 0 (exact no-op). With a rate table
+// the curve is the table's at the point's strain rate (rate.hpp), on which the return is exact.
+template <Rate kRate>
 void curveHardeningUpdate(PointBatch& b, const Moduli& m, const CurveHardening& P) {
   const double G = m.shear;
   const double lam = m.bulk - 2.0 * G / 3.0;
@@ -192,15 +228,19 @@ void curveHardeningUpdate(PointBatch& b, const Moduli& m, const CurveHardening& 
     const double t3 = b.s[3][i] + G2 * d3;
     const double t4 = b.s[4][i] + G2 * d4;
     const double t5 = b.s[5][i] + G2 * d5;
-    double rf = 1.0;
-    if constexpr (kRate) rf = cowperSymonds(d0, d1, d2, d3, d4, d5, tr, inv_dt, P.C, P.inv_P);
     const double p = (t0 + t1 + t2) * kThird;
     const double x0 = t0 - p, x1 = t1 - p, x2 = t2 - p;
     const double j2 = 0.5 * (x0 * x0 + x1 * x1 + x2 * x2) + (t3 * t3 + t4 * t4 + t5 * t5);
     const double q = std::sqrt(3.0 * j2);
     const double e = b.eps_p[i];
-    const double f = q - rf * curveFlowStress(P, e);
-    const double deps = f > 0.0 ? returnToCurve(cx, cy, G3, rf, q, e) : 0.0;
+    double deps;
+    if constexpr (kRate == Rate::Table) {
+      const CurveBlend y = P.table.at(effectiveRate(d0, d1, d2, d3, d4, d5, tr, inv_dt));
+      deps = curveIncrement(P.table.eps, y, G3, 1.0, q, e);
+    } else {
+      const double rf = rateFactor<kRate>(P, d0, d1, d2, d3, d4, d5, tr, inv_dt);
+      deps = curveIncrement(cx, cy, G3, rf, q, e);
+    }
     const double cs = G3 * deps / (q > 0.0 ? q : 1.0);
     b.s[0][i] = t0 - cs * x0;
     b.s[1][i] = t1 - cs * x1;
@@ -219,30 +259,42 @@ void elasticUpdate(PointBatch& b, const Moduli& m) {
   elasticKernel(detail::soaOf(b), b.n, m.bulk - G2 / 3.0, G2);
 }
 
+namespace {
+// Cowper-Symonds (C > 0) before an LCSR curve: the law units give only one of them.
+template <bool kKinematic>
+void linearHardeningRate(PointBatch& b, const Moduli& m, const LinearHardening& P) {
+  if (P.C > 0.0) {
+    linearHardeningUpdate<kKinematic, Rate::CowperSymonds>(b, m, P);
+  } else if (!P.lcsr.empty()) {
+    linearHardeningUpdate<kKinematic, Rate::Curve>(b, m, P);
+  } else {
+    linearHardeningUpdate<kKinematic, Rate::None>(b, m, P);
+  }
+}
+}  // namespace
+
 void linearHardeningReturn(PointBatch& b, const Moduli& m, const LinearHardening& P,
                            bool kinematic) {
-  const bool rate = P.C > 0.0;
-  if (kinematic && rate) {
-    linearHardeningUpdate<true, true>(b, m, P);
-  } else if (kinematic) {
-    linearHardeningUpdate<true, false>(b, m, P);
-  } else if (rate) {
-    linearHardeningUpdate<false, true>(b, m, P);
+  if (kinematic) {
+    linearHardeningRate<true>(b, m, P);
   } else {
-    linearHardeningUpdate<false, false>(b, m, P);
+    linearHardeningRate<false>(b, m, P);
   }
 }
 
 double curveFlowStress(const CurveHardening& P, double eps_p) {
-  if (P.eps.size() == 1) return P.sig.front();
-  return onSegment(P.eps, P.sig, segmentOf(P.eps, eps_p), eps_p);
+  return flowStressOn(P.eps, P.sig, eps_p);
 }
 
 void curveHardeningReturn(PointBatch& b, const Moduli& m, const CurveHardening& P) {
-  if (P.C > 0.0) {
-    curveHardeningUpdate<true>(b, m, P);
+  if (!P.table.empty()) {
+    curveHardeningUpdate<Rate::Table>(b, m, P);
+  } else if (P.C > 0.0) {
+    curveHardeningUpdate<Rate::CowperSymonds>(b, m, P);
+  } else if (!P.lcsr.empty()) {
+    curveHardeningUpdate<Rate::Curve>(b, m, P);
   } else {
-    curveHardeningUpdate<false>(b, m, P);
+    curveHardeningUpdate<Rate::None>(b, m, P);
   }
 }
 

@@ -7,24 +7,29 @@
 #include <span>
 
 #include "materials/law.hpp"
+#include "materials/rate.hpp"
 
 namespace crumple::materials {
 
 // Linear mixed hardening: the yield stress rf (sigy + Hi eps_p) with the Cowper-Symonds
-// factor rf = 1 + (rate / C)^inv_P (C == 0: rate independent), and Prager's kinematic
-// hardening with modulus Hk.
+// factor rf = 1 + (rate / C)^inv_P (C == 0: rate independent), else the factor of an LCSR
+// curve (rate.hpp; empty: none), and Prager's kinematic hardening with modulus Hk.
 struct LinearHardening {
   double sigy = 0.0;  // initial yield stress
   double Hi = 0.0;    // isotropic plastic modulus
   double Hk = 0.0;    // kinematic plastic modulus
   double C = 0.0, inv_P = 0.0;
+  RateCurve lcsr;
 };
 
 // Isotropic hardening along a piecewise-linear yield curve (stress vs effective plastic
-// strain, linearly extrapolated past its ends), with the same rate factor.
+// strain, linearly extrapolated past its ends), with the same rate factors; or, when `table`
+// is not empty, along the curve of a rate table at the point's strain rate (eps, sig unused).
 struct CurveHardening {
   std::span<const double> eps, sig;
   double C = 0.0, inv_P = 0.0;
+  RateCurve lcsr;
+  RateTable table;
 };
 
 // s += lambda tr(de) I + 2 G de.

@@ -7,28 +7,47 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <span>
 
 namespace crumple::materials {
 
 namespace {
 
-// Static flow stress and its slope dsigma_y / deps_p at eps_p.
+// Flow stress and its slope dsigma_y / deps_p at eps_p of the yield curve (x, cy).
+template <class Y>
+void curveStressAndSlope(std::span<const double> x, const Y& cy, double eps_p, double& y,
+                         double& h) {
+  if (x.size() == 1) {
+    y = cy[0];
+    h = 0.0;
+    return;
+  }
+  const std::size_t k = util::segmentOf(x, eps_p);
+  const double dx = x[k + 1] - x[k];
+  // A zero-length segment is a step up in the curve: the stress stands on the riser.
+  h = dx > 0.0 ? (cy[k + 1] - cy[k]) / dx : 0.0;
+  y = dx > 0.0 ? cy[k] + h * (eps_p - x[k]) : cy[k + 1];
+}
+
+// Static flow stress and its slope dsigma_y / deps_p at eps_p (a rate table: its first curve).
 void flowStressAndSlope(const FibreLaw& law, double eps_p, double& y, double& h) {
+  if (!law.table.empty()) {
+    curveStressAndSlope(law.table.eps, law.table.at(0.0), eps_p, y, h);
+    return;
+  }
   if (law.curve_eps.empty()) {
     y = law.sigy + law.Hi * eps_p;
     h = law.Hi;
     return;
   }
-  if (law.curve_eps.size() == 1) {
-    y = law.curve_sig[0];
-    h = 0.0;
-    return;
-  }
-  const std::size_t k = util::segmentOf(law.curve_eps, eps_p);
-  const double dx = law.curve_eps[k + 1] - law.curve_eps[k];
-  // A zero-length segment is a step up in the curve: the stress stands on the riser.
-  h = dx > 0.0 ? (law.curve_sig[k + 1] - law.curve_sig[k]) / dx : 0.0;
-  y = dx > 0.0 ? law.curve_sig[k] + h * (eps_p - law.curve_eps[k]) : law.curve_sig[k + 1];
+  curveStressAndSlope(law.curve_eps, law.curve_sig, eps_p, y, h);
+}
+
+// The effective strain rate of the step for plastically incompressible flow,
+// sqrt(2/3 e:e) / dt = sqrt(de^2 + (dgs^2 + dgt^2) / 3) / dt (0 without a step), the rate of
+// every rate form (VP = 0).
+double fibreRate(double de, double dgs, double dgt, double dt) {
+  return dt > 0.0 ? std::sqrt(de * de + (dgs * dgs + dgt * dgt) / 3.0) / dt : 0.0;
 }
 
 }  // namespace
@@ -49,18 +68,28 @@ bool updateFibre(const FibreLaw& law, FibrePoint& p, double de, double dgs, doub
   p.tau_t = tt_tr;
   if (!law.plastic) return false;
 
-  // Cowper-Symonds factor on the yield stress, with the effective strain rate of this state
-  // for plastically incompressible flow: sqrt(2/3 e:e) = sqrt(de^2 + (dgs^2 + dgt^2) / 3).
+  // Rate effects at the fibre's strain rate: the Cowper-Symonds or LCSR factor on the yield
+  // stress, or the yield curve of the rate table at that rate (with rf = 1).
   double rf = 1.0;
   if (law.C > 0.0 && dt > 0.0) {
-    const double rate = std::sqrt(de * de + (dgs * dgs + dgt * dgt) / 3.0) / dt;
-    rf = 1.0 + std::pow(rate / law.C, law.inv_P);
+    rf = 1.0 + std::pow(fibreRate(de, dgs, dgt, dt) / law.C, law.inv_P);
+  } else if (!law.lcsr.empty()) {
+    rf = law.lcsr(fibreRate(de, dgs, dgt, dt));
   }
+  const bool tabled = !law.table.empty();
+  const CurveBlend blend = tabled ? law.table.at(fibreRate(de, dgs, dgt, dt)) : CurveBlend{};
+  auto flow = [&](double eps_p, double& y, double& h) {
+    if (tabled) {
+      curveStressAndSlope(law.table.eps, blend, eps_p, y, h);
+    } else {
+      flowStressAndSlope(law, eps_p, y, h);
+    }
+  };
   const double x = s_tr - p.alpha, ys = ts_tr - p.alpha_s, yt = tt_tr - p.alpha_t;
   const double xx = x * x, yy = ys * ys + yt * yt;
   const double q_tr = std::sqrt(xx + 3.0 * yy);
   double y0 = 0.0, h0 = 0.0;
-  flowStressAndSlope(law, p.eps_p, y0, h0);
+  flow(p.eps_p, y0, h0);
   const double f = q_tr - rf * y0;
   if (f > 0.0) {
     // g(d) = q(n+1)(d) - rf sigma_y(eps_p + d) = 0 for the plastic strain increment d, with
@@ -70,7 +99,7 @@ bool updateFibre(const FibreLaw& law, FibrePoint& p, double de, double dgs, doub
     const double tiny = 1e-300;
     auto eval = [&](double d, double& g, double& dg, double& yield) {
       double y = 0.0, h = 0.0;
-      flowStressAndSlope(law, p.eps_p + d, y, h);
+      flow(p.eps_p + d, y, h);
       yield = std::max(rf * y, tiny);  // a curve softened to zero carries no stress
       const double hr = rf * h;
       const double yv = d / yield;

@@ -25,6 +25,7 @@
 #include <span>
 
 #include "materials/law.hpp"
+#include "materials/rate.hpp"
 
 namespace crumple::materials {
 
@@ -46,15 +47,22 @@ struct FibreLaw {
   // otherwise. Views into the block's law, which outlives the FibreLaw.
   std::span<const double> curve_eps, curve_sig;
   double C = 0.0, inv_P = 0.0;  // Cowper-Symonds 1 + (rate / C)^(1/P); C == 0: rate independent
-  double fail = 0.0;            // effective plastic strain at failure; 0: none
+  // MAT_024 LCSR (a factor on the yield stress) or a rate table in LCSS (the yield curve at the
+  // fibre's strain rate; curve_eps and curve_sig are then empty): rate.hpp. Views into the
+  // block's law.
+  RateCurve lcsr;
+  RateTable table;
+  double fail = 0.0;  // effective plastic strain at failure; 0: none
 };
 
-// Static yield stress at an effective plastic strain (Hi and the curve; no rate factor).
+// Static yield stress at an effective plastic strain (Hi and the curve; no rate factor; with a
+// rate table, the curve of its first rate).
 double flowStress(const FibreLaw& law, double eps_p);
 
 // Advances p over one step by the axial strain increment de and the engineering shear strain
 // increments dgs, dgt (gamma_rs, gamma_rt); dt sets the strain rate of the Cowper-Symonds
-// factor. Returns true when the point has reached the failure strain.
+// factor, the LCSR factor or the rate table's curve. Returns true when the point has reached
+// the failure strain.
 bool updateFibre(const FibreLaw& law, FibrePoint& p, double de, double dgs, double dgt, double dt);
 
 }  // namespace crumple::materials

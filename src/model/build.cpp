@@ -180,7 +180,17 @@ int32_t Context::curve(const deck::Card& card, std::string_view field, int64_t i
   if (id == 0) card.fail(field, "a curve id is required");
   const int32_t i = model.curveIndex(id);
   if (i != kNone) return i;
-  // A curve of a kind Crumple does not read (*DEFINE_CURVE_SMOOTH, *DEFINE_TABLE): a missing
+  // A table where a curve is expected: LS-DYNA takes one only in some fields (those that ask
+  // for a table, as *MAT_024 LCSS), so Crumple refuses it as a missing feature.
+  if (const int32_t t = model.tableIndex(id); t != kNone) {
+    reject(card, field,
+           "curve " + std::to_string(id) + " is a *DEFINE_TABLE (" +
+               model.tables[static_cast<std::size_t>(t)].where.str() +
+               "), which is not supported here",
+           "*DEFINE_TABLE");
+    throw SkipRecord{};
+  }
+  // A curve of a kind Crumple does not read (*DEFINE_CURVE_SMOOTH, *DEFINE_TABLE_2D): a missing
   // feature, not an input error; `check` lists it and skips the record.
   if (!isUnsupported(Kind::Curve, id)) card.fail(field, undefinedMessage(Kind::Curve, id));
   reject(card, field, undefinedMessage(Kind::Curve, id), unsupportedFeature(Kind::Curve, id));
@@ -261,14 +271,7 @@ const std::vector<Meaning>& meanings() {
   static const std::vector<Meaning> m = withLaws({
       {"*TITLE", 0, readTitle, {}},
       {"*DEFINE_CURVE", 0, readCurve, {"TITLE"}, U::Definition, Kind::Curve},
-      {"*DEFINE_TABLE",
-       0,
-       [](Context& c, const deck::Keyword& k, const KeywordOptions&) {
-         readUnsupportedDefinition(c, k, Kind::Curve);
-       },
-       {},
-       U::Definition,
-       Kind::Curve},
+      {"*DEFINE_TABLE", 0, readTable, {"TITLE"}, U::Definition, Kind::Curve},
       {"*DEFINE_BOX", 0, readBox, {"TITLE"}, U::Definition, Kind::Box},
       {"*DEFINE_VECTOR", 0, readVector, {"TITLE"}, U::Definition, Kind::Vector},
       {"*DEFINE_COORDINATE_SYSTEM",
@@ -461,10 +464,6 @@ struct Planned {
 
 }  // namespace
 
-namespace {
-
-// The id a definition keyword defines: the first field of its first card after the title
-// line of _TITLE; 0 when there is none or it is not a number (nothing can refer to it).
 int64_t definedId(const Context& ctx, const deck::Keyword& kw) {
   std::string_view name = kw.name;
   const bool title = name.size() > 6 && name.substr(name.size() - 6) == "_TITLE";
@@ -485,8 +484,6 @@ int64_t definedId(const Context& ctx, const deck::Keyword& kw) {
     return 0;
   }
 }
-
-}  // namespace
 
 void readUnsupportedDefinition(Context& ctx, const deck::Keyword& kw, Kind kind) {
   std::string_view name = kw.name;
@@ -530,6 +527,7 @@ void finishPhase(Context& ctx, int phase) {
     case 0:
       finishNodes(ctx);
       finishCurves(ctx);
+      finishTables(ctx);
       break;
     case 1:
       finishDefinitions(ctx);

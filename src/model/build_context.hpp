@@ -222,6 +222,9 @@ void readHourglass(Context&, const deck::Keyword&, const KeywordOptions&);
 // Definitions Crumple does not support (*MAT_RIGID, *SECTION_SHELL, *DEFINE_TABLE, ...):
 // reported, and their id remembered so that a use of it can say what it is.
 void readUnsupportedDefinition(Context&, const deck::Keyword&, Kind kind);
+// The id a definition keyword defines: the first field of its first card after the title
+// line of _TITLE; 0 when there is none or it is not a number (nothing can refer to it).
+int64_t definedId(const Context& ctx, const deck::Keyword& kw);
 void finishNodes(Context&);
 void finishDefinitions(Context&);
 void finishParts(Context&);
@@ -275,6 +278,10 @@ void readNodeSetGeneral(Context&, const deck::Keyword&, const KeywordOptions&);
 void readPartSetList(Context&, const deck::Keyword&, const KeywordOptions&);
 void readSegmentSet(Context&, const deck::Keyword&, const KeywordOptions&);
 void finishCurves(Context&);
+void readTable(Context&, const deck::Keyword&, const KeywordOptions&);
+// Resolves the tables' curves (after finishCurves): a curve that is not defined makes the
+// table unusable, an error where it is used.
+void finishTables(Context&);
 
 // build_conditions.cpp
 void readSpc(Context&, const deck::Keyword&, const KeywordOptions&);

@@ -38,6 +38,9 @@ class LawCards final : public materials::LawInput {
     }
     return ctx_.curve(c, field, id);
   }
+  int32_t table(const Card&, std::string_view, int64_t id) override {
+    return ctx_.model.tableIndex(id);
+  }
   int32_t addCurve(int64_t id, std::vector<double> x, std::vector<double> y) override {
     Curve curve;
     curve.id = id;

@@ -1,4 +1,4 @@
-// Meaning of the definitions other keywords refer to: *DEFINE_CURVE, *DEFINE_BOX,
+// Meaning of the definitions other keywords refer to: *DEFINE_CURVE, *DEFINE_TABLE, *DEFINE_BOX,
 // *DEFINE_COORDINATE_SYSTEM, *SET_NODE_LIST, *SET_NODE_GENERAL, *SET_PART_LIST,
 // *SET_SEGMENT (LS-DYNA Keyword Manual Vol. I).
 #include <algorithm>
@@ -125,6 +125,80 @@ void finishCurves(Context& ctx) {
   auto& curves = ctx.model.curves;
   std::stable_sort(curves.begin(), curves.end(),
                    [](const Curve& a, const Curve& b) { return a.id < b.id; });
+  ctx.model.finalize();
+}
+
+namespace {
+
+// The LCID of the curve keyword `k` places after the table `kw` (k = 1: the next keyword), or
+// 0 when that keyword is not a *DEFINE_CURVE.
+int64_t followingCurve(const Context& ctx, const deck::Keyword& kw, std::size_t k) {
+  const auto& all = ctx.deck.keywords;
+  const auto at = static_cast<std::size_t>(&kw - all.data()) + k;
+  if (at >= all.size()) return 0;
+  const deck::Keyword& next = all[at];
+  if (next.name != "*DEFINE_CURVE" && next.name != "*DEFINE_CURVE_TITLE") return 0;
+  return definedId(ctx, next);
+}
+
+}  // namespace
+
+// Keyword Manual vol. I, *DEFINE_TABLE: TBID, SFA (0 means 1) and OFFA, then one value per
+// card, scaled after offsetting as a curve's abscissae are (SFA (VALUE + OFFA)); a value's
+// curve is the one its LCID names, else the next *DEFINE_CURVE following the table (the
+// curves follow the table in the order of its values). Tables and curves share their ids.
+void readTable(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*DEFINE_TABLE");
+  CardCursor cur(kw, ctx.deck);
+  if (opts.has("TITLE")) cur.read(spec.card("title card"));
+  const Card& c = cur.read(spec.card("card 1"));
+  Table t;
+  t.id = c.integer("TBID");
+  if (t.id <= 0) c.fail("TBID", "the table id must be a positive integer");
+  ctx.define(Kind::Curve, t.id, c, "TBID");
+  t.where = ctx.deck.loc(kw);
+  const double sfa = c.real("SFA"), offa = c.real("OFFA");
+  std::size_t following = 0;  // curves taken from the keywords after the table
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& v = cur.read(spec.card("value card"));
+    const double value = sfa * (v.real("VALUE") + offa);
+    if (!t.values.empty() && !(value > t.values.back()))
+      v.fail("VALUE", "the values must increase (each is a strain rate with its own curve)");
+    int64_t lcid = v.integer("LCID");
+    if (lcid == 0 && (lcid = followingCurve(ctx, kw, ++following)) == 0)
+      v.fail("VALUE",
+             "no *DEFINE_CURVE follows the table for this value (without LCID, the curves follow "
+             "the table, one per value, in order)");
+    t.values.push_back(value);
+    t.curve_ids.push_back(lcid);
+  }
+  if (t.values.empty()) c.fail("TBID", "the table has no values");
+  ctx.model.tables.push_back(std::move(t));
+  ctx.collect(cur);
+}
+
+void finishTables(Context& ctx) {
+  auto& tables = ctx.model.tables;
+  std::stable_sort(tables.begin(), tables.end(),
+                   [](const Table& a, const Table& b) { return a.id < b.id; });
+  std::vector<Table> usable;
+  for (Table& t : tables) {
+    std::string problem;
+    for (std::size_t k = 0; k < t.curve_ids.size() && problem.empty(); ++k) {
+      const int32_t i = ctx.model.curveIndex(t.curve_ids[k]);
+      if (i == kNone)
+        problem = t.where.str() + ": *DEFINE_TABLE " + std::to_string(t.id) + ": value " +
+                  std::to_string(k + 1) + ": " + ctx.undefinedMessage(Kind::Curve, t.curve_ids[k]);
+      t.curves.push_back(i);
+    }
+    // LS-DYNA needs only the tables something uses: the error is on use.
+    if (problem.empty()) {
+      usable.push_back(std::move(t));
+    } else {
+      ctx.defineBroken(Kind::Curve, t.id, problem);
+    }
+  }
+  tables = std::move(usable);
   ctx.model.finalize();
 }
 

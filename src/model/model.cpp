@@ -43,6 +43,9 @@ int32_t Model::partIndex(int64_t id) const {
 int32_t Model::curveIndex(int64_t id) const {
   return find(curve_index_, id);
 }
+int32_t Model::tableIndex(int64_t id) const {
+  return find(table_index_, id);
+}
 
 const char* materialKeyword(const MaterialLaw& law) {
   // The units' keyword names are string literals, so the view is null-terminated.
@@ -159,6 +162,9 @@ void Model::finalize() {
   ids.clear();
   for (const auto& c : curves) ids.push_back(c.id);
   fill(curve_index_, ids);
+  ids.clear();
+  for (const auto& t : tables) ids.push_back(t.id);
+  fill(table_index_, ids);
 }
 
 }  // namespace crumple::model

@@ -42,6 +42,17 @@ struct Curve {
   double valueExtrapolated(double t) const;
 };
 
+// *DEFINE_TABLE: one curve per value (for *MAT_024 LCSS, one yield curve per strain rate),
+// the values SFA (VALUE + OFFA) strictly increasing. Each value's curve is the one its LCID
+// names, else the next *DEFINE_CURVE after the table (Keyword Manual vol. I, *DEFINE_TABLE).
+struct Table {
+  int64_t id = 0;
+  std::vector<double> values;
+  std::vector<int64_t> curve_ids;  // the curves' LCIDs
+  std::vector<int32_t> curves;     // their indices into Model::curves
+  util::SourceLoc where;
+};
+
 // ---- materials: the deck's parameters of each law, declared by its unit in
 // src/materials/laws/ (materials/registry.hpp lists them) ----------------------------------
 using MaterialLaw = materials::LawParams;
@@ -309,6 +320,7 @@ struct Model {
   std::vector<Material> materials;
   std::vector<Hourglass> hourglass;
   std::vector<Curve> curves;
+  std::vector<Table> tables;  // ascending id
 
   // Sets keep their members as model indices.
   std::map<int64_t, std::vector<int32_t>> node_sets;
@@ -351,6 +363,7 @@ struct Model {
   int32_t nodeIndex(int64_t id) const;
   int32_t partIndex(int64_t id) const;
   int32_t curveIndex(int64_t id) const;
+  int32_t tableIndex(int64_t id) const;
 
   // Filled by finalize(): id -> index maps. Called by the builder once everything is read.
   void finalize();
@@ -362,7 +375,7 @@ struct Model {
   void releaseMesh();
 
  private:
-  std::unordered_map<int64_t, int32_t> node_index_, part_index_, curve_index_;
+  std::unordered_map<int64_t, int32_t> node_index_, part_index_, curve_index_, table_index_;
 };
 
 }  // namespace crumple::model

@@ -132,6 +132,16 @@ void fields(A& a, M& m) {
         a(c.y);
       },
       m.curves);
+  a.count(
+      m.tables.size(),
+      [&](auto& t) {
+        a(t.id);
+        a(t.values);
+        a(t.curve_ids);
+        a(t.curves);
+        loc(a, t.where);
+      },
+      m.tables);
   a(m.node_sets);
   a(m.part_sets);
   a(m.segment_sets);

@@ -17,9 +17,10 @@ inline std::size_t segmentOf(std::span<const double> x, double t) {
   return std::min(k, x.size() - 2);
 }
 
-// The value at t of segment k; a zero-length segment (a step) gives its upper value.
-inline double onSegment(std::span<const double> x, std::span<const double> y, std::size_t k,
-                        double t) {
+// The value at t of segment k; a zero-length segment (a step) gives its upper value. Y is any
+// indexable sequence of ordinates (a span, or a blend of two curves on the same abscissae).
+template <class Y = std::span<const double>>
+inline double onSegment(std::span<const double> x, const Y& y, std::size_t k, double t) {
   const double dx = x[k + 1] - x[k];
   if (dx <= 0.0) return y[k + 1];
   return y[k] + (y[k + 1] - y[k]) * (t - x[k]) / dx;

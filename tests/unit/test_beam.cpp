@@ -26,6 +26,7 @@
 #include "materials/materials.hpp"
 #include "materials/uniaxial.hpp"
 #include "model/model.hpp"
+#include "rate_law.hpp"
 
 namespace d = crumple::domain;
 namespace el = crumple::elements;
@@ -776,6 +777,34 @@ TEST(Truss, FibreReturnIsOnTheYieldSurface) {
     }
     EXPECT_GT(p.eps_p, 0.01);
   }
+}
+
+// Rate-dependent yield curves in a truss fibre (tests/support/rate_law.hpp): pulled at a
+// constant strain rate below, between and above a table's rates (and with LCSR), the axial
+// stress after every plastic step is the yield stress at that rate and the plastic strain.
+TEST(Truss, RateDependentYieldStaysOnTheCurveAtTheRate) {
+  namespace rl = crumple::testing::rate_law;
+  const auto laws = rl::allLaws();
+  for (const auto& [law, yield] : laws) {
+    const m::FibreLaw fl = m::fibreLawOf(law);
+    for (const double rate : {0.5, 40.0, 1000.0}) {
+      m::FibrePoint p;
+      const double de = 2e-4, dt = de / rate;
+      for (int n = 0; n < 500; ++n) {
+        const double before = p.eps_p;
+        m::updateFibre(fl, p, de, 0.0, 0.0, dt);
+        const double expected = yield(p.eps_p, rate);  // a truss: the rate is de / dt
+        if (p.eps_p == before) {
+          ASSERT_LE(p.sig, expected * (1.0 + 1e-12)) << rate << " " << n;
+          continue;
+        }
+        ASSERT_NEAR(p.sig, expected, 1e-6 * expected) << rate << " " << n;
+      }
+      EXPECT_GT(p.eps_p, 0.06) << rate;  // LCSR at 1000 /s: 2 % elastic strain
+    }
+  }
+  // The static flow stress of a table is its first curve's.
+  EXPECT_DOUBLE_EQ(m::flowStress(m::fibreLawOf(rl::tableLaw(0)), 0.1), rl::hA(0.1));
 }
 
 TEST(Truss, ErodesAtFailureStrain) {

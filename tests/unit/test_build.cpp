@@ -13,6 +13,7 @@
 #include <string>
 
 #include "model/build.hpp"
+#include "model/serialize.hpp"
 #include "temp_dir.hpp"
 #include "util/error.hpp"
 
@@ -316,28 +317,142 @@ TEST(BuildErrors, ExactMessages) {
                 "or _DISCRETE)");
 }
 
-TEST(BuildErrors, TableHardeningAndRigidPart) {
+TEST(BuildErrors, RigidPart) {
   TempDir t;
   const auto p = t.write("r.k", kMesh +
                                     "*MAT_RIGID\n2,7.8e-9,2e5,0.3\n"
                                     "*PART\nrigid\n2,1,2\n"
-                                    "*ELEMENT_SOLID\n3,2,1,2,3,4,5,6,7,8\n"
-                                    "*DEFINE_TABLE\n5\n"
-                                    "*MAT_024\n3,1,1,0.3,1\n0,0,5\n"
-                                    "*PART\ntable\n3,1,3\n*ELEMENT_SOLID\n4,3,1,2,3,4,5,6,7,8\n");
-  EXPECT_EQ(errorOf([&] { readModel(p); }),
-            p.string() +
-                ":36: *MAT_024 card 2 field 3 (LCSS): curve 5 is defined by *DEFINE_TABLE (" +
-                p.string() + ":32), which is not supported yet (the part is used by " +
-                "*ELEMENT_SOLID at " + p.string() + ":41)");
-  crumple::model::ReadOptions lenient;
-  lenient.allow_unsupported = true;
-  const Model m = readModel(p, lenient);
-  EXPECT_EQ(m.solids.size(), 4u);
+                                    "*ELEMENT_SOLID\n3,2,1,2,3,4,5,6,7,8\n");
+  const Model m = readModel(p);
+  EXPECT_EQ(m.solids.size(), 3u);
   // *MAT_RIGID is read: the part is a rigid body with the card's constants.
   const auto& rigid = m.materials[std::size_t(m.parts[m.partIndex(2)].material)];
   ASSERT_TRUE(std::holds_alternative<crumple::model::RigidLaw>(rigid.law));
   EXPECT_DOUBLE_EQ(std::get<crumple::model::RigidLaw>(rigid.law).E, 2e5);
+}
+
+// ---- *DEFINE_TABLE and *MAT_024 rate dependence -------------------------------------------
+
+namespace {
+
+// Two yield curves (ids 11, 12) after a table of rates; `table` is the *DEFINE_TABLE keyword
+// with its cards, `mat` the *MAT_024 card 2. Part 3 (solid 4) uses the material.
+std::string rateDeck(const std::string& table, const std::string& card2,
+                     const std::string& curves =
+                         "*DEFINE_CURVE\n11\n0,200\n0.1,300\n"
+                         "*DEFINE_CURVE\n12\n0,260\n0.2,400\n") {
+  return kMesh + table + curves + "*MAT_024\n3,7.8e-9,2e5,0.3,1\n" + card2 +
+         "*PART\ntable\n3,1,3\n*ELEMENT_SOLID\n4,3,1,2,3,4,5,6,7,8\n";
+}
+
+const crumple::materials::PiecewiseLinear::Params& mat024(const Model& m) {
+  return std::get<crumple::materials::PiecewiseLinear::Params>(
+      m.materials.at(std::size_t(m.parts[std::size_t(m.partIndex(3))].material)).law);
+}
+
+}  // namespace
+
+TEST(BuildTables, Mat024LcssNamesARateTable) {
+  TempDir t;
+  // SFA 10, OFFA 1: the values are 10 (v + 1); the curves follow the table in order.
+  const Model m =
+      readModel(t.write("t.k", rateDeck("*DEFINE_TABLE\n5,10,1\n-1.0\n9.0\n", "0.04,5,5,0,0\n")));
+  ASSERT_EQ(m.tables.size(), 1u);
+  const auto& table = m.tables[0];
+  EXPECT_EQ(table.id, 5);
+  EXPECT_EQ(table.values, (std::vector<double>{0.0, 100.0}));
+  EXPECT_EQ(table.curve_ids, (std::vector<int64_t>{11, 12}));
+  EXPECT_EQ(table.curves, (std::vector<int32_t>{m.curveIndex(11), m.curveIndex(12)}));
+  EXPECT_EQ(table.where.line, 25);
+  EXPECT_EQ(m.tableIndex(5), 0);
+  const auto& law = mat024(m);
+  EXPECT_EQ(law.table, 0);
+  EXPECT_EQ(law.lcss, crumple::model::kNone);
+  // The table gives the rate dependence: C and P are not used, and said so.
+  EXPECT_EQ(law.c, 0.0);
+  EXPECT_EQ(law.p, 0.0);
+  ASSERT_FALSE(m.ignored.empty());
+  EXPECT_EQ(m.ignored.back().field, "C");
+  // The model travels to the other ranks with its tables.
+  const Model r = crumple::model::deserialize(crumple::model::serialize(m));
+  ASSERT_EQ(r.tables.size(), 1u);
+  EXPECT_EQ(r.tables[0].values, table.values);
+  EXPECT_EQ(r.tables[0].curves, table.curves);
+  EXPECT_EQ(r.tables[0].curve_ids, table.curve_ids);
+  EXPECT_EQ(r.tables[0].where.str(), table.where.str());
+  EXPECT_EQ(r.tableIndex(5), 0);
+}
+
+TEST(BuildTables, ValueCardsMayNameTheirCurves) {
+  TempDir t;
+  // LCID given: the curves may be anywhere (here the second value's curve comes first).
+  const Model m = readModel(
+      t.write("t.k", rateDeck("*DEFINE_TABLE_TITLE\nrates\n5\n-4.6,12\n2.3,11\n", "0,0,5\n")));
+  ASSERT_EQ(m.tables.size(), 1u);
+  EXPECT_EQ(m.tables[0].values, (std::vector<double>{-4.6, 2.3}));
+  EXPECT_EQ(m.tables[0].curve_ids, (std::vector<int64_t>{12, 11}));
+  EXPECT_EQ(mat024(m).table, 0);
+}
+
+TEST(BuildTables, BadTablesNameFileLineAndField) {
+  TempDir t;
+  // Rates that do not increase: the second value card (line 28).
+  const auto p = t.write("dec.k", rateDeck("*DEFINE_TABLE\n5\n100.0\n10.0\n", "0,0,5\n"));
+  EXPECT_EQ(errorOf([&] { readModel(p); }),
+            p.string() +
+                ":28: *DEFINE_TABLE value card field 1 (VALUE): the values must increase (each "
+                "is a strain rate with its own curve)");
+  // Three values, two curves after the table: the third value has none.
+  const auto q = t.write("miss.k", rateDeck("*DEFINE_TABLE\n5\n0.0\n1.0\n10.0\n", "0,0,5\n"));
+  EXPECT_EQ(errorOf([&] { readModel(q); }),
+            q.string() +
+                ":29: *DEFINE_TABLE value card field 1 (VALUE): no *DEFINE_CURVE follows the "
+                "table for this value (without LCID, the curves follow the table, one per value, "
+                "in order)");
+  // An LCID that names no curve: the table cannot be used, an error where it is used.
+  const auto r = t.write("lcid.k", rateDeck("*DEFINE_TABLE\n5\n0.0,11\n1.0,99\n", "0,0,5\n"));
+  EXPECT_EQ(
+      errorOf([&] { readModel(r); })
+          .rfind(r.string() + ":39: *MAT_024 card 2 field 3 (LCSS): curve 5 cannot be used: " +
+                     r.string() + ":25: *DEFINE_TABLE 5: value 2: curve 99 is not defined",
+                 0),
+      0u);
+  // A table where a curve is expected (LCSR) is refused as a missing feature.
+  const auto s = t.write("lcsr.k", rateDeck("*DEFINE_TABLE\n5\n0.0\n1.0\n", "0,0,11,5\n"));
+  EXPECT_EQ(
+      errorOf([&] { readModel(s); })
+          .rfind(s.string() + ":39: *MAT_024 card 2 field 4 (LCSR): curve 5 is a *DEFINE_TABLE (" +
+                     s.string() + ":25), which is not supported here",
+                 0),
+      0u);
+  // A table and a curve may not share an id.
+  const auto d = t.write("dup.k", rateDeck("*DEFINE_TABLE\n11\n0.0\n1.0\n", "0,0,11\n"));
+  EXPECT_NE(errorOf([&] { readModel(d); }).find("curve 11 is already defined at"),
+            std::string::npos);
+}
+
+TEST(BuildTables, Mat024LcsrAndVp) {
+  TempDir t;
+  // LCSR scales the yield stress; C and P are then not used.
+  const Model m = readModel(t.write("lcsr.k", rateDeck("", "40,5,11,12\n",
+                                                       "*DEFINE_CURVE\n11\n0,200\n0.1,300\n"
+                                                       "*DEFINE_CURVE\n12\n0,1\n100,1.5\n")));
+  const auto& law = mat024(m);
+  EXPECT_EQ(law.lcss, m.curveIndex(11));
+  EXPECT_EQ(law.lcsr, m.curveIndex(12));
+  EXPECT_EQ(law.table, crumple::model::kNone);
+  EXPECT_EQ(law.c, 0.0);
+  ASSERT_FALSE(m.ignored.empty());
+  EXPECT_EQ(m.ignored.back().field, "C");
+  // VP = 1 (viscoplastic) with a rate table is refused, naming the field.
+  const auto p = t.write("vp.k", rateDeck("*DEFINE_TABLE\n5\n0.0\n1.0\n", "0,0,5,0,1\n"));
+  EXPECT_EQ(
+      errorOf([&] { readModel(p); })
+          .rfind(p.string() +
+                     ":39: *MAT_024 card 2 field 5 (VP): only VP = 0 (the yield stress at the "
+                     "total effective strain rate) is supported with LCSR or a table in LCSS",
+                 0),
+      0u);
 }
 
 TEST(BuildUnsupported, CountsFirstLocationsReasonsAndIgnoredFields) {

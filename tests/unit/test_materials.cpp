@@ -9,10 +9,12 @@
 #include <cstdint>
 #include <cstring>
 #include <random>
+#include <utility>
 #include <variant>
 #include <vector>
 
 #include "materials/materials.hpp"
+#include "rate_law.hpp"
 #include "util/error.hpp"
 
 namespace m = crumple::materials;
@@ -48,14 +50,16 @@ void step(const m::Law& law, Point& p, const Strain& de, double dt = 0.0) {
   update(law, b);
 }
 
-// Uniaxial stress: one axial strain increment, with the (equal) lateral strain increments
-// found by secant iteration so that s_yy = s_zz = 0 at the end of the step.
-void uniaxialStep(const m::Law& law, Point& p, double dex) {
+// Uniaxial stress: one axial strain increment over dt, with the (equal) lateral strain
+// increments found by secant iteration so that s_yy = s_zz = 0 at the end of the step; `used`
+// (if given) receives the increment of the step.
+void uniaxialStep(const m::Law& law, Point& p, double dex, double dt = 0.0,
+                  Strain* used = nullptr) {
   const m::Moduli mod = m::moduliOf(law);
   const double nu = (3.0 * mod.bulk - 2.0 * mod.shear) / (2.0 * (3.0 * mod.bulk + mod.shear));
   auto trial = [&](double lat) {
     Point c = p;
-    step(law, c, Strain{dex, lat, lat, 0, 0, 0});
+    step(law, c, Strain{dex, lat, lat, 0, 0, 0}, dt);
     return c;
   };
   double x0 = -nu * dex, x1 = -0.5 * dex;
@@ -72,6 +76,7 @@ void uniaxialStep(const m::Law& law, Point& p, double dex) {
   ASSERT_LE(std::abs(c1.s[1]), 1e-9 * std::max(1.0, std::abs(c1.s[0])));
   ASSERT_EQ(c1.s[1], c1.s[2]);  // symmetric lateral response
   p = c1;
+  if (used != nullptr) *used = Strain{dex, x1, x1, 0, 0, 0};
 }
 
 // von Mises norm of dev(s) - alpha.
@@ -84,14 +89,18 @@ double vonMises(const Point& p, bool kinematic) {
   return std::sqrt(3.0 * j2);
 }
 
-// Cowper-Symonds factor computed independently from the strain increment.
-double csFactor(const Strain& de, double dt, double C, double P) {
+// The effective strain rate sqrt(2/3 dev(de):dev(de)) / dt, computed independently.
+double effectiveRate(const Strain& de, double dt) {
   const double tr = de[0] + de[1] + de[2];
   double ee = 0.0;
   for (int k = 0; k < 3; ++k) ee += (de[k] - tr / 3.0) * (de[k] - tr / 3.0);
   for (int k = 3; k < 6; ++k) ee += 2.0 * de[k] * de[k];
-  const double rate = std::sqrt(2.0 / 3.0 * ee) / dt;
-  return 1.0 + std::pow(rate / C, 1.0 / P);
+  return std::sqrt(2.0 / 3.0 * ee) / dt;
+}
+
+// Cowper-Symonds factor computed independently from the strain increment.
+double csFactor(const Strain& de, double dt, double C, double P) {
+  return 1.0 + std::pow(effectiveRate(de, dt) / C, 1.0 / P);
 }
 
 constexpr double kE = 210000.0, kNu = 0.3, kSigy = 250.0, kEtan = 2100.0;
@@ -490,6 +499,98 @@ TEST(MaterialsBatch, ResultsIndependentOfPositionInBatch) {
       }
     }
   }
+}
+
+// ---- rate dependence: LCSR and rate tables (tests/support/rate_law.hpp) ----------------------
+namespace rl = crumple::testing::rate_law;
+
+// Uniaxial stress at a constant strain rate (axial increments 2e-4 to 10 % strain): after
+// every plastic step the von Mises stress is the expected yield stress at the step's
+// effective strain rate and the new plastic strain, after an elastic step at most that (with
+// the yield stress rising with the total rate, uniaxial stress may also be met elastically, at
+// the higher rate of elastic lateral contraction); returns the last plastic step's rate and
+// plastic strain.
+template <class Yield>
+std::pair<double, double> pullAtRate(const m::Law& law, double rate, Yield yield) {
+  Point p;
+  const double dex = 2e-4, dt = dex / rate;
+  double r = 0.0;
+  for (int k = 0; k < 500; ++k) {
+    Strain de{};
+    const double before = p.eps_p;
+    uniaxialStep(law, p, dex, dt, &de);
+    const double expected = yield(p.eps_p, effectiveRate(de, dt));
+    if (p.eps_p == before) {
+      EXPECT_LE(vonMises(p, false), expected * (1.0 + 1e-12)) << k;
+      continue;
+    }
+    r = effectiveRate(de, dt);
+    EXPECT_NEAR(vonMises(p, false), expected, 1e-6 * expected) << k;
+    EXPECT_NEAR(p.s[0], expected, 1e-6 * expected) << k;  // uniaxial: s_xx is the von Mises stress
+  }
+  return {r, p.eps_p};
+}
+
+TEST(MaterialsPiecewiseLinear, RateTableUniaxialStressOnTheInterpolatedCurve) {
+  const m::Law law = rl::tableLaw();
+  // Below the first rate (the 1 /s curve), between 10 and 100 /s, above the last (100 /s).
+  for (const double rate : {0.5, 40.0, 1000.0}) {
+    const auto [r, eps_p] = pullAtRate(law, rate, rl::tableYield);
+    // In plastic flow the step's rate is the axial rate (incompressible increments).
+    EXPECT_NEAR(r, rate, 5e-3 * rate) << rate;
+    EXPECT_GT(eps_p, 0.09) << rate;  // past the breakpoints of every curve but C's last
+  }
+  // Between 10 and 100 /s the stress lies strictly between the two curves.
+  const auto [r, eps_p] = pullAtRate(law, 40.0, rl::tableYield);
+  EXPECT_GT(rl::tableYield(eps_p, r), rl::hB(eps_p) + 1.0);
+  EXPECT_LT(rl::tableYield(eps_p, r), rl::hC(eps_p) - 1.0);
+}
+
+TEST(MaterialsPiecewiseLinear, LogRateTableInterpolatesInLnRate) {
+  // First value negative: the values are ln(rate); 31.6 /s lies halfway (in ln) between 1 and
+  // 1000 /s.
+  const m::Law law = rl::tableLaw(1);
+  for (const double rate : {1e-4, 31.6, 1e4}) pullAtRate(law, rate, rl::logTableYield);
+}
+
+TEST(MaterialsPiecewiseLinear, LcsrScalesTheYieldStress) {
+  for (const bool curve : {true, false}) {
+    const m::Law law = rl::lcsrLaw(curve);
+    for (const double rate : {20.0, 200.0}) {
+      const auto [r, eps_p] = pullAtRate(law, rate, [&](double e, double rr) {
+        return rl::lcsrFactor(rr) * rl::lcsrStatic(curve, e);
+      });
+      EXPECT_GT(eps_p, 0.08);
+      // 200 /s is past the curve's last rate (100 /s): the factor follows its end slope.
+      EXPECT_NEAR(r, rate, 1e-2 * rate);
+    }
+  }
+}
+
+// The shared checks of make(): a table that cannot be used is an input error naming it.
+TEST(MaterialsPiecewiseLinear, RateTableChecks) {
+  m::PiecewiseLinear::Params p;
+  p.E = rl::kE;
+  p.nu = rl::kNu;
+  p.table = 0;
+  const std::vector<double> down{10.0, 1.0, 100.0};
+  const m::CurveAt bad(rl::rateCurves(), [&](int32_t) -> m::TableData {
+    return {5, down, rl::kTableCurves};
+  });
+  EXPECT_THROW(m::PiecewiseLinear::make(p, bad, "at: "), crumple::util::InputError);
+  // An LCSR curve whose factor reaches zero.
+  p.table = -1;
+  p.lcsr = 0;
+  p.sigy = 250;
+  const std::vector<double> zero{0.0, 1.0}, rates{0.0, 10.0};
+  const m::CurveAt zf([&](int32_t) -> m::CurveData { return {9, rates, zero}; });
+  EXPECT_THROW(m::PiecewiseLinear::make(p, zf, "at: "), crumple::util::InputError);
+  // A table's first curve is its static curve; the initial yield stress is its first point.
+  const m::PiecewiseLinear t = rl::tableLaw();
+  EXPECT_EQ(t.yieldStress(0.0), 200.0);
+  EXPECT_DOUBLE_EQ(t.yieldStress(0.1), rl::hA(0.1));
+  // The merged grid: the plastic strains of all three curves.
+  EXPECT_EQ(t.table.eps, (std::vector<double>{0.0, 0.02, 0.05, 0.1, 0.2, 0.3}));
 }
 
 // ---- makeLaw -------------------------------------------------------------------------------

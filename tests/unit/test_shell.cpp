@@ -24,6 +24,7 @@
 #include "elements/shell.hpp"
 #include "materials/materials.hpp"
 #include "materials/plane_stress.hpp"
+#include "rate_law.hpp"
 
 namespace {
 
@@ -173,6 +174,24 @@ void uniaxialStep(const mat::Law& law, PsPoint& p, double dex) {
   psStep(law, p, dex, b, 0.0);
 }
 
+// Uniaxial stress as uniaxialStep, with de_yy found by bisection between -dex and 0 (s_yy
+// rises with de_yy): with a rate-dependent yield stress s_yy(de_yy) has a kink where the step
+// turns elastic, which can stall the secant iteration.
+double uniaxialStepBisected(const mat::Law& law, PsPoint& p, double dex, double dt) {
+  auto syy = [&](double dey) {
+    PsPoint q = p;
+    psStep(law, q, dex, dey, 0.0, dt);
+    return q.s[1];
+  };
+  double lo = -dex, hi = 0.0;
+  for (int it = 0; it < 200 && hi - lo > 1e-16 * dex; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (syy(mid) > 0.0 ? hi : lo) = mid;
+  }
+  psStep(law, p, dex, lo, 0.0, dt);
+  return lo;
+}
+
 double vonMises(const double s[3]) {
   return std::sqrt(s[0] * s[0] - s[0] * s[1] + s[1] * s[1] + 3.0 * s[2] * s[2]);
 }
@@ -231,6 +250,38 @@ TEST(ShellPlaneStress, UniaxialFollowsTheYieldCurve) {
     }
   }
   EXPECT_GT(p.eps_p, 0.05);
+}
+
+// Rate-dependent yield curves (a rate table, linear and in ln(rate), and LCSR on a curve and on
+// SIGY/ETAN; tests/support/rate_law.hpp): in uniaxial stress at a constant strain rate below,
+// between and above the table's rates, the stress after every plastic step is the yield stress
+// at the step's effective strain rate (the shell's measure: the in-plane increment with an
+// incompressible thickness strain) and the new plastic strain, and after an elastic step it is
+// at most that. (With the yield stress rising with the total rate, a step may also find the
+// elastic answer of uniaxial stress: de_yy = -nu de_xx gives a higher rate than plastic flow.)
+TEST(ShellPlaneStress, RateDependentYieldStaysOnTheCurveAtTheRate) {
+  namespace rl = crumple::testing::rate_law;
+  const auto laws = rl::allLaws();
+  for (const auto& [law, yield] : laws) {
+    for (const double rate : {0.5, 40.0, 1000.0}) {
+      PsPoint p;
+      const double dex = 2e-4, dt = dex / rate;
+      for (int n = 0; n < 500; ++n) {
+        const double before = p.eps_p;
+        const double dey = uniaxialStepBisected(law, p, dex, dt);
+        const double dz = dex + dey;
+        const double r = std::sqrt(2.0 / 3.0 * (dex * dex + dey * dey + dz * dz)) / dt;
+        const double expected = yield(p.eps_p, r);
+        ASSERT_NEAR(p.s[1], 0.0, 1e-6 * expected);
+        if (p.eps_p == before) {
+          ASSERT_LE(p.s[0], expected * (1.0 + 1e-12)) << rate << " " << n;
+          continue;
+        }
+        ASSERT_NEAR(p.s[0], expected, 1e-6 * expected) << rate << " " << n;
+      }
+      EXPECT_GT(p.eps_p, 0.06) << rate;  // LCSR at 1000 /s: 2 % elastic strain
+    }
+  }
 }
 
 // Equibiaxial stretch: s_xx = s_yy = s (von Mises stress s); elastic s = E / (1 - nu) eps, then

@@ -2,6 +2,7 @@
 // stress against the law's analytic answer.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -83,4 +84,104 @@ TEST(VerificationMaterials, SoilAndFoamHydrostaticCycle) {
   const auto& blk = sim->sd.solid_blocks.at(0);
   EXPECT_NEAR(-blk.sigAt(0, 0), 15.0, 0.05);
   EXPECT_NEAR(blk.sigAt(3, 0), 0.0, 1e-12);
+}
+
+namespace {
+
+// A unit cube stretched along x at the constant velocity v and narrowed along y and z at v / 2
+// (its faces x = 1, y = 1, z = 1 prescribed, x = 0, y = 0, z = 0 on rollers) to 10 % strain:
+// every degree of freedom is prescribed, so the deformation is homogeneous and known, with no
+// inertia, and nearly isochoric, as plastic flow is.
+std::string isochoricPull(const std::string& material, double v) {
+  const double t_end = 0.1 / v;
+  std::string s = material + termination(t_end);
+  for (int d = 0; d < 3; ++d) {
+    const double vd = d == 0 ? v : -0.5 * v;
+    s += fmt::format("*DEFINE_CURVE\n{:10d}\n{:20.12g}{:20.12g}\n{:20.12g}{:20.12g}\n", 90 + d, 0.0,
+                     vd, 2.0 * t_end, vd);
+    s += brickNodeSet(1 + d, 1, 1, 1, [d](int i, int j, int k) {
+      return (d == 0 ? i : d == 1 ? j : k) == 1;
+    });
+    s += fmt::format("*BOUNDARY_PRESCRIBED_MOTION_SET\n{:10d}{:10d}{:10d}{:10d}{:10.1f}\n", 1 + d,
+                     d + 1, 0, 90 + d, 1.0);
+    s += brickNodeSet(4 + d, 1, 1, 1, [d](int i, int j, int k) {
+      return (d == 0 ? i : d == 1 ? j : k) == 0;
+    });
+    s += fmt::format("*BOUNDARY_SPC_SET\n{:10d}{:10d}{:10d}{:10d}{:10d}\n", 4 + d, 0,
+                     d == 0 ? 1 : 0, d == 1 ? 1 : 0, d == 2 ? 1 : 0);
+  }
+  return brickDeck(1, 1, 1, 1.0, 1.0, 1.0, s);
+}
+
+// *MAT_024 (mm, s, t, MPa) with LCSS naming a *DEFINE_TABLE of three yield curves at 1, 10 and
+// 100 /s, each curve following the table.
+const std::string kRateTable024 =
+    "*MAT_024\n1,2e-5,70000,0.33\n0,0,5\n"
+    "*DEFINE_TABLE\n5\n1.0\n10.0\n100.0\n"
+    "*DEFINE_CURVE\n101\n0,200\n0.05,300\n0.2,360\n"
+    "*DEFINE_CURVE\n102\n0,250\n0.1,400\n"
+    "*DEFINE_CURVE\n103\n0,320\n0.02,380\n0.3,500\n";
+
+// The table's curves written out (extrapolated with their last slopes).
+double curve1(double e) {
+  return e < 0.05 ? 200.0 + 2000.0 * e : 300.0 + 400.0 * (e - 0.05);
+}
+double curve10(double e) {
+  return 250.0 + 1500.0 * e;
+}
+double curve100(double e) {
+  return e < 0.02 ? 320.0 + 3000.0 * e : 380.0 + 120.0 / 0.28 * (e - 0.02);
+}
+
+// The table's yield stress at plastic strain e and strain rate r: linear in r between the
+// neighbouring rates' curves (Keyword Manual vol. II, *MAT_024 LCSS).
+double tableYield(double e, double r) {
+  if (r <= 1.0) return curve1(e);
+  if (r >= 100.0) return curve100(e);
+  return r < 10.0 ? curve1(e) + (r - 1.0) / 9.0 * (curve10(e) - curve1(e))
+                  : curve10(e) + (r - 10.0) / 90.0 * (curve100(e) - curve10(e));
+}
+
+}  // namespace
+
+// *MAT_024 with a rate table in whole runs: a hex stretched at 3 /s (between the 1 and 10 /s
+// curves) and at 40 /s (between 10 and 100 /s) to 10 % strain. Once plastic, its von Mises
+// stress is the table's yield stress at its effective strain rate, sqrt(2/3 dev(D):dev(D)) of
+// the prescribed motion (D_xx = v / L_x, D_yy = D_zz = -v / (2 L_y)), and its plastic strain.
+TEST(VerificationMaterials, RateTablePullAtTwoRates) {
+  for (const double rate : {3.0, 40.0}) {
+    auto sim = Simulation::fromText("rate_table_pull", isochoricPull(kRateTable024, rate));
+    double worst = 0.0, last_eps_p = 0.0;
+    int checked = 0;
+    sim->run([&](const auto&) {
+      const auto& blk = sim->sd.solid_blocks.at(0);
+      const double eps_p = blk.eps_p.at(0);
+      if (eps_p < 1e-3) return;
+      // Nodes 2 = (1,0,0), 3 = (0,1,0), 1 = (0,0,0); v = rate (L0 = 1).
+      const double lx = sim->x(2, 0) - sim->x(1, 0), ly = sim->x(3, 1) - sim->x(1, 1);
+      const double dx = rate / lx, dy = -0.5 * rate / ly, tr = (dx + 2.0 * dy) / 3.0;
+      const double r = std::sqrt(2.0 / 3.0 * ((dx - tr) * (dx - tr) + 2.0 * (dy - tr) * (dy - tr)));
+      double sig[6];
+      for (int k = 0; k < 6; ++k) sig[k] = blk.sigAt(k, 0);
+      const double p = (sig[0] + sig[1] + sig[2]) / 3.0;
+      const double q = std::sqrt(1.5 * ((sig[0] - p) * (sig[0] - p) + (sig[1] - p) * (sig[1] - p) +
+                                        (sig[2] - p) * (sig[2] - p)) +
+                                 3.0 * (sig[3] * sig[3] + sig[4] * sig[4] + sig[5] * sig[5]));
+      const double expected = tableYield(eps_p, r);
+      worst = std::max(worst, std::abs(q - expected) / expected);
+      last_eps_p = eps_p;
+      ++checked;
+    });
+    EXPECT_GT(checked, 100) << rate;
+    EXPECT_GT(last_eps_p, 0.08) << rate;
+    EXPECT_LT(worst, 1e-3) << rate;
+    // The check tells the interpolated curve from the neighbouring rates' curves: they lie
+    // more than the tolerance away from it at the end.
+    const double y = tableYield(last_eps_p, rate / 1.1);
+    const double below = rate < 10.0 ? curve1(last_eps_p) : curve10(last_eps_p);
+    const double above = rate < 10.0 ? curve10(last_eps_p) : curve100(last_eps_p);
+    EXPECT_GT(std::min(y - below, above - y), 0.015 * y) << rate;
+    RecordProperty(rate < 10.0 ? "worst_error_3_per_s" : "worst_error_40_per_s",
+                   fmt::format("{:.3g}", worst));
+  }
 }

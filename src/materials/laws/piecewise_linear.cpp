@@ -1,6 +1,7 @@
 #include "materials/laws/piecewise_linear.hpp"
 
 #include <cstddef>
+#include <span>
 #include <utility>
 
 #include "deck/card.hpp"
@@ -46,8 +47,8 @@ void readTable(const deck::Card& c3, const deck::Card& c4, std::vector<double>& 
   }
 }
 
-// Hardening (Keyword Manual, *MAT_024): LCSS, else the EPS/ES pairs of cards 3-4, else SIGY
-// and ETAN.
+// Hardening (Keyword Manual, *MAT_024): LCSS (a curve, or a *DEFINE_TABLE of one curve per
+// strain rate), else the EPS/ES pairs of cards 3-4, else SIGY and ETAN.
 void readHardening(LawInput& in, PiecewiseLinear::Params& p, const deck::Card& c,
                    const deck::Card& c2) {
   const deck::Card& c3 = in.optionalCard("card 3");
@@ -64,13 +65,38 @@ void readHardening(LawInput& in, PiecewiseLinear::Params& p, const deck::Card& c
               "define the hardening");
   }
   if (const int64_t lcss = c2.integer("LCSS"); lcss != 0) {
-    p.lcss = in.curveOrReject(c2, "LCSS", lcss);
+    p.table = in.table(c2, "LCSS", lcss);
+    if (p.table < 0) p.lcss = in.curveOrReject(c2, "LCSS", lcss);
   } else if (table) {
     // A curve of its own, id -MID, so that the solver sees one hardening representation.
     p.lcss = in.addCurve(-in.materialId(), std::move(eps), std::move(es));
   } else {
     checkYield(c, p.E, p.sigy, p.etan);
   }
+}
+
+// Rate dependence (Keyword Manual, *MAT_024, LCSS and LCSR): a table in LCSS gives it, and C,
+// P and LCSR are then ignored; else an LCSR curve scales the yield stress, in place of the
+// Cowper-Symonds factor of C and P. With either, only VP = 0 (the yield stress at the total
+// effective strain rate) is supported: VP = 1 (viscoplastic: the rate is the plastic strain
+// rate, in the consistency condition) and VP = 3 (filtered rates) change the answer.
+void readRate(LawInput& in, PiecewiseLinear::Params& p, const deck::Card& c2) {
+  const int64_t lcsr = c2.integer("LCSR");
+  const bool cowper = p.c != 0.0 || p.p != 0.0;
+  if (p.table >= 0) {
+    if (cowper) in.ignore(c2, "C", "LCSS names a rate table, which gives the rate dependence");
+    if (lcsr != 0)
+      in.ignore(c2, "LCSR", "LCSS names a rate table, which gives the rate dependence");
+  } else if (lcsr != 0) {
+    p.lcsr = in.curve(c2, "LCSR", lcsr);
+    if (cowper) in.ignore(c2, "C", "LCSR gives the rate dependence: C and P are not used");
+  }
+  if (p.table < 0 && p.lcsr < 0) return;
+  p.c = p.p = 0.0;
+  if (c2.real("VP") != 0.0)
+    in.reject(c2, "VP",
+              "only VP = 0 (the yield stress at the total effective strain rate) is supported "
+              "with LCSR or a table in LCSS");
 }
 
 }  // namespace
@@ -90,32 +116,28 @@ PiecewiseLinear::Params PiecewiseLinear::read(LawInput& in) {
   p.tdel = c.real("TDEL");
   p.c = c2.real("C");
   p.p = c2.real("P");
-  if (c2.integer("LCSR") != 0)
-    in.reject(c2, "LCSR", "a strain-rate scaling curve (LCSR) is not supported");
   readHardening(in, p, c, c2);
+  readRate(in, p, c2);
   return p;
 }
 
-PiecewiseLinear PiecewiseLinear::make(const Params& p, const CurveAt& curves,
-                                      const std::string& at) {
-  checkModuli(at, p.E, p.nu);
-  PiecewiseLinear law;
-  law.moduli = moduliFromYoung(p.E, p.nu);
-  law.linear.sigy = p.sigy;
-  if (p.c > 0.0 && p.p > 0.0) {
-    law.linear.C = p.c;
-    law.linear.inv_P = 1.0 / p.p;
+namespace {
+
+// The LCSR curve: strain rates (non-decreasing, as every curve) and positive factors.
+void makeRateCurve(PiecewiseLinear& law, const CurveData& c, const std::string& at) {
+  const std::string name = "LCSR curve " + std::to_string(c.id);
+  if (c.x.empty() || c.x.size() != c.y.size()) throw util::InputError(at + name + " has no points");
+  for (std::size_t k = 0; k < c.y.size(); ++k) {
+    if (k > 0 && !(c.x[k] >= c.x[k - 1]))
+      throw util::InputError(at + name + " must have non-decreasing strain rates");
+    if (!(c.y[k] > 0.0)) throw util::InputError(at + name + " must have positive scale factors");
   }
-  law.fail = p.fail;
-  law.tdel = p.tdel;
-  if (p.lcss < 0) {
-    checkTangent(at, p.E, p.etan);
-    law.linear.Hi = plasticModulus(youngOf(law.moduli), p.etan);
-    return law;
-  }
-  // LCSS given: SIGY and ETAN are ignored (Keyword Manual, *MAT_024); the initial yield
-  // stress is the curve's value at zero plastic strain.
-  const CurveData c = curves(p.lcss);
+  law.lcsr_rate.assign(c.x.begin(), c.x.end());
+  law.lcsr_factor.assign(c.y.begin(), c.y.end());
+}
+
+// The yield curve of LCSS: non-decreasing plastic strains.
+void makeCurve(PiecewiseLinear& law, const CurveData& c, const std::string& at) {
   const std::string name = "LCSS curve " + std::to_string(c.id);
   if (c.x.empty() || c.x.size() != c.y.size()) throw util::InputError(at + name + " has no points");
   for (std::size_t k = 1; k < c.x.size(); ++k)
@@ -123,19 +145,54 @@ PiecewiseLinear PiecewiseLinear::make(const Params& p, const CurveAt& curves,
       throw util::InputError(at + name + " must have non-decreasing plastic strains");
   law.curve_eps.assign(c.x.begin(), c.x.end());
   law.curve_sig.assign(c.y.begin(), c.y.end());
-  law.linear.sigy = curveFlowStress(law.curve(), 0.0);
+}
+
+}  // namespace
+
+PiecewiseLinear PiecewiseLinear::make(const Params& p, const CurveAt& curves,
+                                      const std::string& at) {
+  checkModuli(at, p.E, p.nu);
+  PiecewiseLinear law;
+  law.moduli = moduliFromYoung(p.E, p.nu);
+  law.linear.sigy = p.sigy;
+  // One rate form (Keyword Manual, *MAT_024): a table, else LCSR, else C and P.
+  if (p.table >= 0) {
+    law.table = makeRateTable(curves, p.table, at);
+  } else if (p.lcsr >= 0) {
+    makeRateCurve(law, curves(p.lcsr), at);
+  } else if (p.c > 0.0 && p.p > 0.0) {
+    law.linear.C = p.c;
+    law.linear.inv_P = 1.0 / p.p;
+  }
+  law.fail = p.fail;
+  law.tdel = p.tdel;
+  if (p.table < 0 && p.lcss < 0) {
+    checkTangent(at, p.E, p.etan);
+    law.linear.Hi = plasticModulus(youngOf(law.moduli), p.etan);
+    return law;
+  }
+  // LCSS given: SIGY and ETAN are ignored (Keyword Manual, *MAT_024); the initial yield
+  // stress is the curve's value at zero plastic strain (a table's: its first curve's).
+  if (p.table < 0) makeCurve(law, curves(p.lcss), at);
+  law.linear.sigy = law.yieldStress(0.0);
   return law;
 }
 
 double PiecewiseLinear::yieldStress(double eps_p) const {
+  if (!table.rates.empty()) {
+    CurveHardening first;  // the table's first (lowest-rate) curve
+    first.eps = table.eps;
+    first.sig = std::span<const double>(table.sig).first(table.eps.size());
+    return curveFlowStress(first, eps_p);
+  }
   if (curve_eps.empty()) return linear.sigy + linear.Hi * eps_p;
   return curveFlowStress(curve(), eps_p);
 }
 
 void PiecewiseLinear::update(PointBatch& b) const {
-  if (curve_eps.empty()) {
+  if (!hasCurve()) {
     // Bilinear: purely isotropic linear hardening (b.alpha is not required for this law).
-    linearHardeningReturn(b, moduli, linear, false);
+    linearHardeningReturn(b, moduli, bilinear(), false);
   } else {
     curveHardeningReturn(b, moduli, curve());
   }
@@ -143,8 +200,8 @@ void PiecewiseLinear::update(PointBatch& b) const {
 }
 
 void PiecewiseLinear::updatePlaneStress(PlaneStressPoints& b) const {
-  if (curve_eps.empty()) {
-    planeStressLinear(b, moduli, linear, false);
+  if (!hasCurve()) {
+    planeStressLinear(b, moduli, bilinear(), false);
   } else {
     planeStressCurve(b, moduli, curve());
   }
@@ -162,6 +219,8 @@ FibreLaw PiecewiseLinear::fibre() const {
   f.curve_sig = curve_sig;
   f.C = linear.C;
   f.inv_P = linear.inv_P;
+  f.lcsr = rateCurve();
+  f.table = table.view();
   f.fail = fail;
   return f;
 }

@@ -1,9 +1,11 @@
 // *MAT_PIECEWISE_LINEAR_PLASTICITY (024): von Mises plasticity with isotropic hardening along
-// a yield curve (LCSS, or the EPS1-8 / ES1-8 table, else bilinear from SIGY and ETAN),
-// Cowper-Symonds rate scaling (C, P), erosion at the effective plastic strain FAIL and
-// deletion of elements whose step falls below TDEL (LS-DYNA Keyword Manual vol. II,
-// *MAT_PIECEWISE_LINEAR_PLASTICITY; Theory Manual, material model 24). LCSR (a rate curve),
-// VP = 1 and a table in LCSS are refused.
+// a yield curve (LCSS, or the EPS1-8 / ES1-8 table, else bilinear from SIGY and ETAN), rate
+// dependence by Cowper-Symonds scaling (C, P), by an LCSR curve scaling the yield stress, or by
+// a *DEFINE_TABLE in LCSS giving one yield curve per strain rate (materials/rate.hpp), erosion
+// at the effective plastic strain FAIL and deletion of elements whose step falls below TDEL
+// (LS-DYNA Keyword Manual vol. II, *MAT_PIECEWISE_LINEAR_PLASTICITY; Theory Manual, material
+// model 24). The rate is the total effective strain rate (VP = 0); VP = 1 (viscoplastic) with
+// LCSR or a table is refused.
 #pragma once
 
 #include <array>
@@ -14,6 +16,7 @@
 
 #include "materials/law.hpp"
 #include "materials/plane_stress.hpp"
+#include "materials/rate.hpp"
 #include "materials/return_mapping.hpp"
 #include "materials/uniaxial.hpp"
 
@@ -34,25 +37,38 @@ struct PiecewiseLinear {
     double c = 0, p = 0;  // Cowper-Symonds rate parameters; 0 = rate independent
     int32_t lcss = -1;    // curve index: yield stress vs effective plastic strain; -1 = none
     double tdel = 0;      // minimum time step for automatic element deletion
+    int32_t lcsr = -1;    // curve index: yield stress factor vs effective strain rate; -1 = none
+    int32_t table = -1;   // LCSS naming a *DEFINE_TABLE: model table index; -1 = none
   };
   static const deck::KeywordSpec& cards();
   static Params read(LawInput& in);
   static PiecewiseLinear make(const Params& p, const CurveAt& curves, const std::string& at);
 
   Moduli moduli;
-  LinearHardening linear;                    // bilinear (no curve): sigy, Hi = Ep, C, inv_P
-  std::vector<double> curve_eps, curve_sig;  // the yield curve; empty: bilinear
+  LinearHardening linear;                      // bilinear (no curve): sigy, Hi = Ep, C, inv_P
+  std::vector<double> curve_eps, curve_sig;    // the yield curve; empty: bilinear or a table
+  std::vector<double> lcsr_rate, lcsr_factor;  // the LCSR curve; empty: none
+  RateTableData table;                         // the LCSS table; empty: none
   double fail = 0, tdel = 0;
   void update(PointBatch& b) const;
   void updatePlaneStress(PlaneStressPoints& b) const;
   FibreLaw fibre() const;
   double failureStrain() const { return fail; }
   double deletionStep() const { return tdel; }
-  // Static (rate-free) flow stress at an effective plastic strain.
+  // Static (rate-free) flow stress at an effective plastic strain (a table: its first curve).
   double yieldStress(double eps_p) const;
 
  private:
-  CurveHardening curve() const { return {curve_eps, curve_sig, linear.C, linear.inv_P}; }
+  RateCurve rateCurve() const { return {lcsr_rate, lcsr_factor}; }
+  CurveHardening curve() const {
+    return {curve_eps, curve_sig, linear.C, linear.inv_P, rateCurve(), table.view()};
+  }
+  LinearHardening bilinear() const {
+    LinearHardening h = linear;
+    h.lcsr = rateCurve();
+    return h;
+  }
+  bool hasCurve() const { return !curve_eps.empty() || !table.rates.empty(); }
 };
 
 }  // namespace crumple::materials
