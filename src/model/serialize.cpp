@@ -135,6 +135,7 @@ void fields(A& a, M& m) {
   a.count(
       m.tables.size(),
       [&](auto& t) {
+        util::fieldCount<5>(t);
         a(t.id);
         a(t.values);
         a(t.curve_ids);
