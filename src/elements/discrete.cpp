@@ -45,15 +45,7 @@ void curveAt(const std::vector<double>& x, const std::vector<double>& y, double 
     value = slope = 0.0;
     return;
   }
-  if (x.size() == 1) {
-    value = y[0];
-    slope = 0.0;
-    return;
-  }
-  const std::size_t k = util::segmentOf(x, t);
-  const double dx = x[k + 1] - x[k];
-  slope = dx > 0.0 ? (y[k + 1] - y[k]) / dx : 0.0;
-  value = dx > 0.0 ? y[k] + slope * (t - x[k]) : y[k + 1];
+  util::valueAndSlope(x, y, t, value, slope);
 }
 
 // Spring force at elongation delta (springs only).

@@ -13,20 +13,12 @@ namespace crumple::materials {
 
 namespace {
 
-// Flow stress and its slope dsigma_y / deps_p at eps_p of the yield curve (x, cy).
+// Flow stress and its slope dsigma_y / deps_p at eps_p of the yield curve (x, cy); on a step
+// up in the curve the stress stands on the riser.
 template <class Y>
 void curveStressAndSlope(std::span<const double> x, const Y& cy, double eps_p, double& y,
                          double& h) {
-  if (x.size() == 1) {
-    y = cy[0];
-    h = 0.0;
-    return;
-  }
-  const std::size_t k = util::segmentOf(x, eps_p);
-  const double dx = x[k + 1] - x[k];
-  // A zero-length segment is a step up in the curve: the stress stands on the riser.
-  h = dx > 0.0 ? (cy[k + 1] - cy[k]) / dx : 0.0;
-  y = dx > 0.0 ? cy[k] + h * (eps_p - x[k]) : cy[k + 1];
+  util::valueAndSlope(x, cy, eps_p, y, h);
 }
 
 // Static flow stress and its slope dsigma_y / deps_p at eps_p (a rate table: its first curve).

@@ -26,4 +26,21 @@ inline double onSegment(std::span<const double> x, const Y& y, std::size_t k, do
   return y[k] + (y[k + 1] - y[k]) * (t - x[k]) / dx;
 }
 
+// Value and slope at t of a curve with at least one point (one point: a constant), the end
+// slopes continued past the ends; on a zero-length segment (a step) the value is the step's
+// upper value and the slope 0.
+template <class Y = std::span<const double>>
+inline void valueAndSlope(std::span<const double> x, const Y& y, double t, double& value,
+                          double& slope) {
+  if (x.size() == 1) {
+    value = y[0];
+    slope = 0.0;
+    return;
+  }
+  const std::size_t k = segmentOf(x, t);
+  const double dx = x[k + 1] - x[k];
+  slope = dx > 0.0 ? (y[k + 1] - y[k]) / dx : 0.0;
+  value = dx > 0.0 ? y[k] + slope * (t - x[k]) : y[k + 1];
+}
+
 }  // namespace crumple::util
