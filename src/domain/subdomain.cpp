@@ -159,15 +159,29 @@ std::string materialAt(const model::Material& mat) {
          ": ";
 }
 
-materials::Law lawOf(const model::Model& model, const model::Material& mat) {
+// The kernel law of a part's block; solids get the part's equation of state (*PART EOSID).
+materials::Law lawOf(const model::Model& model, const model::Part& part, bool solid) {
+  const auto& mat = model.materials[static_cast<std::size_t>(part.material)];
+  const materials::Eos* eos = solid && part.eos != model::kNone
+                                  ? &model.eos[static_cast<std::size_t>(part.eos)].eos
+                                  : nullptr;
   return materials::makeLaw(
-      mat.law, [&](int32_t i) { return curveOf(model, i); }, materialAt(mat));
+      mat.law, [&](int32_t i) { return curveOf(model, i); }, materialAt(mat), eos);
 }
 
 bool isRigid(const model::Model& model, const model::Part& part) {
   return part.material != model::kNone &&
          std::holds_alternative<model::RigidLaw>(
              model.materials[static_cast<std::size_t>(part.material)].law);
+}
+
+// A shell or beam part whose elements give mass only: rigid (their body moves them) or of a
+// law whose shells and beams are bypassed (*MAT_NULL).
+bool massOnly(const model::Model& model, const model::Part& part) {
+  return isRigid(model, part) ||
+         (part.material != model::kNone &&
+          materials::massOnlyStructures(
+              model.materials[static_cast<std::size_t>(part.material)].law));
 }
 
 // Fills the part of a block every family shares; `conn` gets the local nodes of element k.
@@ -329,7 +343,7 @@ class SubdomainBuilder {
     const auto& mat = model.materials[static_cast<std::size_t>(part.material)];
     SolidBlock b;
     fillBase(b, model, part_index, elems, shared_count, kSolidBatch, model.solids, local_of);
-    b.law = lawOf(model, mat);
+    b.law = lawOf(model, part, true);
     b.rho0 = mat.rho;
     b.rigid = isRigid(model, part);
     b.hourglass = hourglassOf(model, part);
@@ -349,9 +363,9 @@ class SubdomainBuilder {
     const auto& sec = model.shell_sections[static_cast<std::size_t>(part.section)];
     ShellBlock b;
     fillBase(b, model, part_index, elems, shared_count, kShellBatch, model.shells, local_of);
-    b.law = lawOf(model, mat);
+    b.law = lawOf(model, part, false);
     b.rho0 = mat.rho;
-    b.rigid = isRigid(model, part);
+    b.rigid = massOnly(model, part);
     b.elform = sec.elform == 10 ? 2 : sec.elform;
     b.nip = sec.nip;
     b.lobatto = model.controls.shell_lobatto;
@@ -377,9 +391,9 @@ class SubdomainBuilder {
     const auto& sec = model.beam_sections[static_cast<std::size_t>(part.section)];
     BeamBlock b;
     fillBase(b, model, part_index, elems, shared_count, 1, model.beams, local_of);
-    b.law = lawOf(model, mat);
+    b.law = lawOf(model, part, false);
     b.rho0 = mat.rho;
-    b.rigid = isRigid(model, part);
+    b.rigid = massOnly(model, part);
     b.section.elform = sec.elform;
     b.section.cst = sec.cst;
     b.section.ts1 = sec.ts1;

@@ -48,6 +48,7 @@ void fields(A& a, M& m) {
         a(p.section);
         a(p.material);
         a(p.hourglass);
+        a(p.eos);
         a(p.contact_ssf);
         a(p.contact_thickness);
         loc(a, p.where);
@@ -111,6 +112,15 @@ void fields(A& a, M& m) {
         loc(a, mat.where);
       },
       m.materials);
+  a.count(
+      m.eos.size(),
+      [&](auto& e) {
+        a(e.id);
+        a(e.title);
+        a(e.eos);
+        loc(a, e.where);
+      },
+      m.eos);
   a(m.hourglass);
   a.count(
       m.curves.size(),
