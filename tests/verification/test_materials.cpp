@@ -209,7 +209,8 @@ TEST(VerificationMaterials, NullShellsCarryContactOnly) {
   const double total0 = free->momentum(2);
   free->run();
   const double cube = cubeMomentumZ(*free);
-  EXPECT_GT(cube, 0.5 * p0) << "the contact did not slow the cube";  // p0 < 0
+  // The heavy nodes under it throw the cube back (p0 < 0): about 2/3 of its momentum.
+  EXPECT_GT(cube, -0.4 * p0) << "the contact did not turn the cube";
   EXPECT_NEAR(free->momentum(2), total0, 1e-9 * std::abs(total0));
   EXPECT_EQ(free->v(1001, 2), 0.0);  // plate corner, far from the cube
   EXPECT_EQ(free->x(1001, 2), 0.0);
