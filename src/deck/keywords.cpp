@@ -138,6 +138,18 @@ std::vector<KeywordSpec> makeTables() {
                 {"card 1",
                  {I("HGID"), I("IHQ", 1, Z), R("QM", 0.1, Z), I("IBQ"), R("Q1", 1.5, Z),
                   R("Q2", 0.06, Z), R("QB"), R("QW")}}}});
+  // *EOS_LINEAR_POLYNOMIAL (*EOS_001) and *EOS_GRUNEISEN (*EOS_004): Keyword Manual vol. II,
+  // "*EOS". V0, the initial relative volume, is 1 when blank or 0.
+  t.push_back(
+      {"*EOS_LINEAR_POLYNOMIAL",
+       {titleCard(),
+        {"card 1", {I("EOSID"), R("C0"), R("C1"), R("C2"), R("C3"), R("C4"), R("C5"), R("C6")}},
+        {"card 2", {R("E0"), R("V0", 1, Z)}}}});
+  t.push_back(
+      {"*EOS_GRUNEISEN",
+       {titleCard(),
+        {"card 1", {I("EOSID"), R("C"), R("S1"), R("S2"), R("S3"), R("GAMAO"), R("A"), R("E0")}},
+        {"card 2", {R("V0", 1, Z)}}}});
   // ---- controls -------------------------------------------------------------------------------
   t.push_back(
       {"*CONTROL_TERMINATION",

@@ -37,7 +37,9 @@ struct BlockBase {
   std::size_t slot_offset = 0;   // first slot of the block
   // *MAT_RIGID part: the elements give the rigid body their mass and inertia and compute no
   // force; their kernels run only at initialisation (the state arrays are allocated by the
-  // solver, which calls the kernels' resize functions).
+  // solver, which calls the kernels' resize functions). Shells and beams of a law declaring
+  // kMassOnlyStructures (*MAT_NULL: LS-DYNA bypasses them in the element processing) are
+  // flagged the same: mass and inertia only, no force and no time step.
   bool rigid = false;
   // Solids and shells: an element whose stable step (before TSSFAC) falls below this is eroded
   // like a failed one (*CONTROL_TIMESTEP ERODE = 1 with DTMIN, *MAT_024 TDEL); 0 = never. Set

@@ -154,16 +154,30 @@ materials::TableData tableOf(const model::Model& model, int32_t index) {
   return {t.id, t.values, t.curves};
 }
 
-materials::Law lawOf(const model::Model& model, const model::Material& mat) {
+// The kernel law of a part's block; solids get the part's equation of state (*PART EOSID).
+materials::Law lawOf(const model::Model& model, const model::Part& part, bool solid) {
+  const auto& mat = model.materials[static_cast<std::size_t>(part.material)];
+  const materials::Eos* eos = solid && part.eos != model::kNone
+                                  ? &model.eos[static_cast<std::size_t>(part.eos)].eos
+                                  : nullptr;
   const materials::CurveAt curves([&](int32_t i) { return curveOf(model, i); },
                                   [&](int32_t i) { return tableOf(model, i); });
-  return materials::makeLaw(mat.law, curves, materialAt(mat));
+  return materials::makeLaw(mat.law, curves, materialAt(mat), eos);
 }
 
 bool isRigid(const model::Model& model, const model::Part& part) {
   return part.material != model::kNone &&
          std::holds_alternative<model::RigidLaw>(
              model.materials[static_cast<std::size_t>(part.material)].law);
+}
+
+// A shell or beam part whose elements give mass only: rigid (their body moves them) or of a
+// law whose shells and beams are bypassed (*MAT_NULL).
+bool massOnly(const model::Model& model, const model::Part& part) {
+  return isRigid(model, part) ||
+         (part.material != model::kNone &&
+          materials::massOnlyStructures(
+              model.materials[static_cast<std::size_t>(part.material)].law));
 }
 
 // Fills the part of a block every family shares; `conn` gets the local nodes of element k.
@@ -325,7 +339,7 @@ class SubdomainBuilder {
     const auto& mat = model.materials[static_cast<std::size_t>(part.material)];
     SolidBlock b;
     fillBase(b, model, part_index, elems, shared_count, kSolidBatch, model.solids, local_of);
-    b.law = lawOf(model, mat);
+    b.law = lawOf(model, part, true);
     b.rho0 = mat.rho;
     b.rigid = isRigid(model, part);
     b.hourglass = hourglassOf(model, part);
@@ -345,9 +359,9 @@ class SubdomainBuilder {
     const auto& sec = model.shell_sections[static_cast<std::size_t>(part.section)];
     ShellBlock b;
     fillBase(b, model, part_index, elems, shared_count, kShellBatch, model.shells, local_of);
-    b.law = lawOf(model, mat);
+    b.law = lawOf(model, part, false);
     b.rho0 = mat.rho;
-    b.rigid = isRigid(model, part);
+    b.rigid = massOnly(model, part);
     b.elform = sec.elform == 10 ? 2 : sec.elform;
     b.nip = sec.nip;
     b.lobatto = model.controls.shell_lobatto;
@@ -373,9 +387,9 @@ class SubdomainBuilder {
     const auto& sec = model.beam_sections[static_cast<std::size_t>(part.section)];
     BeamBlock b;
     fillBase(b, model, part_index, elems, shared_count, 1, model.beams, local_of);
-    b.law = lawOf(model, mat);
+    b.law = lawOf(model, part, false);
     b.rho0 = mat.rho;
-    b.rigid = isRigid(model, part);
+    b.rigid = massOnly(model, part);
     b.section.elform = sec.elform;
     b.section.cst = sec.cst;
     b.section.ts1 = sec.ts1;

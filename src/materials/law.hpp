@@ -9,6 +9,11 @@
 //   kHistory (optional)        further history variables per point (0 when not declared;
 //                              at most kMaxHistory), stored by the blocks and dumps
 //   kDensity                   false for spring and damper laws (no RO field)
+//   kEos (optional)            its solids take the part's equation of state (*PART EOSID,
+//                              required): make() then has a fourth parameter, the Eos
+//                              (materials/eos.hpp); a part of another law with one is refused
+//   kMassOnlyStructures (opt.) its shells and beams are bypassed: mass and inertia only, no
+//                              force and no time step (LS-DYNA's null shells and beams)
 //   Params                     the deck's parameters, stored in the Model (trivially copyable:
 //                              the Model is sent to the other ranks as bytes); Params::Law
 //                              names the unit

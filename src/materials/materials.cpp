@@ -54,6 +54,9 @@ constexpr bool kContinuum = requires(const Made<U>& m) {
 template <class U>
 constexpr bool supportsFamily(Family f) {
   if constexpr (requires { U::kRigid; }) return f != Family::Discrete;
+  // Bypassed shells and beams need no update (their blocks give mass only).
+  if constexpr (requires { U::kMassOnlyStructures; })
+    if (f == Family::Shell || f == Family::Beam) return true;
   if constexpr (std::is_same_v<Made<U>, DiscreteLaw>) return f == Family::Discrete;
   using M = Made<U>;
   switch (f) {
@@ -99,16 +102,43 @@ bool isRigid(const LawParams& p) {
       p);
 }
 
-Law makeLaw(const LawParams& p, const CurveAt& curves, const std::string& at) {
+bool usesEos(const LawParams& p) {
+  return std::visit(
+      [](const auto& l) {
+        return requires {
+          UnitOf<std::decay_t<decltype(l)>>::kEos;
+        };
+      },
+      p);
+}
+
+bool massOnlyStructures(const LawParams& p) {
+  return std::visit(
+      [](const auto& l) {
+        return requires {
+          UnitOf<std::decay_t<decltype(l)>>::kMassOnlyStructures;
+        };
+      },
+      p);
+}
+
+Law makeLaw(const LawParams& p, const CurveAt& curves, const std::string& at, const Eos* eos) {
   return std::visit(
       [&](const auto& params) -> Law {
         using U = UnitOf<std::decay_t<decltype(params)>>;
-        if constexpr (kContinuum<U>)
-          return U::make(params, curves, at);
-        else
+        if constexpr (!kContinuum<U>) {
           throw util::InputError(at +
                                  "is a spring or damper material: only discrete elements "
                                  "(*ELEMENT_DISCRETE) can use it");
+        } else if constexpr (requires { U::kEos; }) {
+          return U::make(params, curves, at, eos);
+        } else {
+          if (eos)
+            throw util::InputError(at +
+                                   "has its own pressure response: it cannot use an equation "
+                                   "of state (*PART EOSID)");
+          return U::make(params, curves, at);
+        }
       },
       p);
 }

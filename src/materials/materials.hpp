@@ -11,6 +11,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "materials/eos.hpp"
 #include "materials/registry.hpp"
 
 namespace crumple::materials {
@@ -93,10 +94,17 @@ Cost costOf(const LawParams& p);
 // False for spring and damper laws, which have no density field.
 bool hasDensity(const LawParams& p);
 bool isRigid(const LawParams& p);
+// Whether the law's solids take the part's equation of state (its unit declares kEos).
+bool usesEos(const LawParams& p);
+// Whether the law's shells and beams give mass only (its unit declares kMassOnlyStructures).
+bool massOnlyStructures(const LawParams& p);
 
 // The kernel law of a continuum part; `at` prefixes messages ("deck.k:12: *MAT_ELASTIC 3: ").
-// Throws util::InputError when the parameters are unusable or the law has no continuum update.
-Law makeLaw(const LawParams& p, const CurveAt& curves, const std::string& at);
+// `eos` is the part's equation of state, given to a law that declares kEos (solid blocks).
+// Throws util::InputError when the parameters are unusable, the law has no continuum update or
+// an equation of state is given to a law that has its own pressure response.
+Law makeLaw(const LawParams& p, const CurveAt& curves, const std::string& at,
+            const Eos* eos = nullptr);
 // The law of a discrete part; throws util::InputError for a law that is not a spring or damper.
 DiscreteLaw makeDiscreteLaw(const LawParams& p, const CurveAt& curves, const std::string& at);
 

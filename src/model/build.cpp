@@ -39,6 +39,8 @@ std::string_view kindName(Kind kind) {
       return "coordinate system";
     case Kind::Vector:
       return "vector";
+    case Kind::Eos:
+      return "equation of state";
   }
   return "entity";
 }
@@ -302,6 +304,18 @@ const std::vector<Meaning>& meanings() {
       {"*SECTION_BEAM", 1, readSectionBeam, {"TITLE"}, U::Definition, Kind::Section},
       {"*SECTION_DISCRETE", 1, readSectionDiscrete, {"TITLE"}, U::Definition, Kind::Section},
       {"*HOURGLASS", 1, readHourglass, {"TITLE"}, U::Definition, Kind::Hourglass},
+      {"*EOS",
+       1,
+       [](Context& c, const deck::Keyword& k, const KeywordOptions&) {
+         readUnsupportedDefinition(c, k, Kind::Eos);
+       },
+       {},
+       U::Definition,
+       Kind::Eos},
+      {"*EOS_LINEAR_POLYNOMIAL", 1, readEosLinearPolynomial, {"TITLE"}, U::Definition, Kind::Eos},
+      {"*EOS_001", 1, readEosLinearPolynomial, {"TITLE"}, U::Definition, Kind::Eos},
+      {"*EOS_GRUNEISEN", 1, readEosGruneisen, {"TITLE"}, U::Definition, Kind::Eos},
+      {"*EOS_004", 1, readEosGruneisen, {"TITLE"}, U::Definition, Kind::Eos},
       {"*PART", 2, readParts, {"INERTIA", "CONTACT"}, U::Reject},
       {"*ELEMENT_SOLID", 3, readSolids, {}, U::Reject},
       {"*ELEMENT_SHELL", 3, readShells, {"THICKNESS"}, U::Reject},
@@ -422,7 +436,6 @@ Unsupported unsupportedReason(std::string_view name) {
       {"*DEFINE_", {"definition not supported (an error where it is used)", false}},
       {"*SET_", {"set type not supported (an error where it is used)", false}},
       {"*INTEGRATION_", {"integration rule not supported (an error where it is used)", false}},
-      {"*EOS_", {"equation of state not supported (an error where it is used)", false}},
   };
   for (const auto& [prefix, reason] : reasons)
     if (name.substr(0, prefix.size()) == prefix) return reason;

@@ -24,8 +24,14 @@ using util::sub;
 // Bulk modulus of the part's material (rigid parts give theirs for contact only).
 double bulkModulus(const Model& m, int32_t part) {
   // A part without a usable material exists only in a deck `crumple check` reads on past.
-  const int32_t mat = m.parts[std::size_t(part)].material;
+  const Part& p = m.parts[std::size_t(part)];
+  const int32_t mat = p.material;
   if (mat == kNone) return 0.0;
+  // Solids whose pressure comes from an equation of state: its bulk modulus at the initial
+  // state, the one that sets their wave speed (*MAT_NULL: YM and PR serve shells and beams).
+  if (p.eos != kNone && p.section_kind == SectionKind::Solid)
+    return materials::eosBulkModulus(m.eos[std::size_t(p.eos)].eos,
+                                     m.materials[std::size_t(mat)].rho);
   const auto& law = m.materials[static_cast<std::size_t>(mat)].law;
   return std::visit(
       [](const auto& l) -> double {

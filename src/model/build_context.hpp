@@ -40,6 +40,7 @@ enum class Kind : uint8_t {
   Box,
   CoordinateSystem,
   Vector,
+  Eos,
 };
 std::string_view kindName(Kind kind);  // "material", "node set", ...
 
@@ -155,7 +156,7 @@ class Context {
   const std::vector<int32_t>& partNodes(int32_t part);
 
   // ---- build state -------------------------------------------------------------------------
-  std::unordered_map<int64_t, int32_t> material_index, section_index, hourglass_index;
+  std::unordered_map<int64_t, int32_t> material_index, section_index, hourglass_index, eos_index;
   std::map<int64_t, Box> boxes;
   std::map<int64_t, Frame> frames;
   std::map<int64_t, Vec3> vectors;  // *DEFINE_VECTOR: unit direction tail -> head
@@ -246,6 +247,13 @@ struct LawReader {
   Handler read;
 };
 const std::vector<LawReader>& lawReaders();
+
+// build_eos.cpp: *EOS_LINEAR_POLYNOMIAL and *EOS_GRUNEISEN
+void readEosLinearPolynomial(Context&, const deck::Keyword&, const KeywordOptions&);
+void readEosGruneisen(Context&, const deck::Keyword&, const KeywordOptions&);
+// The equation of state a part names and its law (solids only): the law must take one exactly
+// when its unit declares kEos (InputError naming the part's EOSID or MID field otherwise).
+void checkPartEos(Context& ctx, const Part& p);
 
 // build_contact.cpp
 void readContact(Context&, const deck::Keyword&, const KeywordOptions&);

@@ -281,11 +281,7 @@ void readParts(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts
       else if (problem.empty())
         problem.message = c.context("HGID") + ": " + ctx.undefinedMessage(Kind::Hourglass, hg);
     }
-    if (const int64_t eos = c.integer("EOSID"); eos != 0)
-      ctx.ignore(kw.name, "EOSID",
-                 "equation of state " + std::to_string(eos) +
-                     " is not used: the supported materials have their own pressure response",
-                 c.where());
+    if (c.integer("EOSID") != 0) p.eos = resolve("EOSID", Kind::Eos, ctx.eos_index);
     if (opts.has("CONTACT")) {
       // _CONTACT (Keyword Manual, *PART_CONTACT): SSF scales the penalty stiffness of the
       // part's segments and OPTT replaces its shells' contact thickness; part-based friction
@@ -320,8 +316,10 @@ void finishParts(Context& ctx) {
   }
   parts = std::move(sorted);
   ctx.part_problem = std::move(problems);
-  // A part's elements need their law's update for their family (materials/law.hpp).
-  for (const Part& p : parts) {
+  // A part's elements need their law's update for their family (materials/law.hpp), and the
+  // law takes the part's equation of state exactly when it declares kEos.
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const Part& p = parts[i];
     if (p.section == kNone || p.material == kNone) continue;
     const Material& m = ctx.model.materials[static_cast<std::size_t>(p.material)];
     if (!materials::supports(m.law, lawFamily(p.section_kind)))
@@ -329,6 +327,8 @@ void finishParts(Context& ctx) {
                " has " + sectionName(p.section_kind) + " section but material " +
                std::to_string(m.id) + " (" + materialKeyword(m.law) + ") has no " +
                updateName(p.section_kind));
+    else if (ctx.part_problem[i].empty())  // an unusable EOSID is that part's problem
+      checkPartEos(ctx, p);
   }
   ctx.model.finalize();
 }
@@ -417,6 +417,7 @@ void finishDefinitions(Context& ctx) {
   sections(ctx.model.beam_sections, SectionKind::Beam);
   sections(ctx.model.discrete_sections, SectionKind::Discrete);
   sortById(ctx.model.hourglass, ctx.hourglass_index);
+  sortById(ctx.model.eos, ctx.eos_index);
 }
 
 }  // namespace crumple::model::build

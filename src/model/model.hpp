@@ -70,6 +70,15 @@ struct Material {
   util::SourceLoc where;
 };
 
+// *EOS_LINEAR_POLYNOMIAL, *EOS_GRUNEISEN: the pressure of the solids of the parts that name it
+// (*PART EOSID) and whose law takes one (materials/eos.hpp).
+struct EquationOfState {
+  int64_t id = 0;
+  std::string title;
+  materials::Eos eos;
+  util::SourceLoc where;
+};
+
 // ---- sections, hourglass, parts -----------------------------------------------------------
 struct SectionSolid {
   int64_t id = 0;
@@ -126,6 +135,7 @@ struct Part {
   int32_t section = kNone;         // index into the Model's sections of that kind
   int32_t material = kNone;        // index into Model::materials
   int32_t hourglass = kNone;       // index into Model::hourglass; kNone = *CONTROL_HOURGLASS
+  int32_t eos = kNone;             // index into Model::eos; kNone = none (EOSID 0)
   double contact_ssf = 1.0;        // *PART_CONTACT SSF: penalty scale of the part's segments
   double contact_thickness = 0.0;  // *PART_CONTACT OPTT: shell contact thickness; 0 = the shell's
   util::SourceLoc where;
@@ -318,6 +328,7 @@ struct Model {
   std::vector<SectionBeam> beam_sections;
   std::vector<SectionDiscrete> discrete_sections;
   std::vector<Material> materials;
+  std::vector<EquationOfState> eos;  // ascending id
   std::vector<Hourglass> hourglass;
   std::vector<Curve> curves;
   std::vector<Table> tables;  // ascending id

@@ -47,13 +47,14 @@ void fields(A& a, M& m) {
   a.count(
       m.parts.size(),
       [&](auto& p) {
-        util::fieldCount<9>(p);
+        util::fieldCount<10>(p);
         a(p.id);
         a(p.title);
         a(p.section_kind);
         a(p.section);
         a(p.material);
         a(p.hourglass);
+        a(p.eos);
         a(p.contact_ssf);
         a(p.contact_thickness);
         loc(a, p.where);
@@ -122,6 +123,16 @@ void fields(A& a, M& m) {
         loc(a, mat.where);
       },
       m.materials);
+  a.count(
+      m.eos.size(),
+      [&](auto& e) {
+        util::fieldCount<4>(e);
+        a(e.id);
+        a(e.title);
+        a(e.eos);
+        loc(a, e.where);
+      },
+      m.eos);
   a(m.hourglass);
   a.count(
       m.curves.size(),

@@ -9,6 +9,8 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "comm/communicator.hpp"
 #include "domain/subdomain.hpp"
@@ -108,6 +110,34 @@ std::string brickNodeSet(int set_id, int nx, int ny, int nz, Pred pred) {
         }
   if (col) s += "\n";
   return s;
+}
+
+// A wall force history (time, normal force) of a body striking a wall: how long the force
+// stays above 5% of `reference` and its mean over the middle 60% of the expected contact
+// `duration` (the front is smeared over a few elements, so the plateau is measured away from
+// its ends). `samples` counts the values averaged.
+struct WallPlateau {
+  double mean = 0.0, duration = 0.0;
+  int samples = 0;
+};
+inline WallPlateau wallPlateau(const std::vector<std::pair<double, double>>& force,
+                               double reference, double duration) {
+  double t_first = -1.0, t_last = -1.0;
+  for (const auto& [t, f] : force)
+    if (f > 0.05 * reference) {
+      if (t_first < 0) t_first = t;
+      t_last = t;
+    }
+  WallPlateau w;
+  double sum = 0.0;
+  for (const auto& [t, f] : force)
+    if (t > t_first + 0.2 * duration && t < t_first + 0.8 * duration) {
+      sum += f;
+      ++w.samples;
+    }
+  w.mean = w.samples > 0 ? sum / w.samples : 0.0;
+  w.duration = t_last - t_first;
+  return w;
 }
 
 inline std::filesystem::path sourceDir() {

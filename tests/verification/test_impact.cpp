@@ -39,23 +39,11 @@ TEST_P(VerificationImpactElform, ElasticBarOnRigidWall) {
 
   double peak = 0.0;
   for (const auto& [t, f] : force) peak = std::max(peak, f);
-  double t_first = -1.0, t_last = -1.0;
-  for (const auto& [t, f] : force)
-    if (f > 0.05 * peak) {
-      if (t_first < 0) t_first = t;
-      t_last = t;
-    }
-  double sum = 0.0;
-  int count = 0;
-  for (const auto& [t, f] : force)
-    if (t > t_first + 0.2 * duration && t < t_first + 0.8 * duration) {
-      sum += f;
-      ++count;
-    }
-  ASSERT_GT(count, 10);
-  const double plateau = sum / count / area;
+  const auto wall = crumple::testing::wallPlateau(force, peak, duration);
+  ASSERT_GT(wall.samples, 10);
+  const double plateau = wall.mean / area;
   EXPECT_NEAR(plateau, stress, 0.03 * stress) << "wall stress";
-  EXPECT_NEAR(t_last - t_first, duration, 0.03 * duration) << "contact duration";
+  EXPECT_NEAR(wall.duration, duration, 0.03 * duration) << "contact duration";
 
   double mass = 0.0;
   for (double m : sim.sd.mass) mass += m;

@@ -185,3 +185,135 @@ TEST(VerificationMaterials, RateTablePullAtTwoRates) {
                    fmt::format("{:.3g}", worst));
   }
 }
+
+// *MAT_NULL with *EOS_LINEAR_POLYNOMIAL (water: RO 1e-6 kg/mm^3, C1 = K = 2.2 GPa) in a column
+// 100 mm long, laterally held (uniaxial strain), striking a stonewall at v0 = 10 m/s. Acoustic
+// theory: the wall pressure is rho c v0 with c = sqrt(C1 / rho) while the column touches, for
+// 2 L / c, and the column leaves at v0 (mu = v0 / c = 0.7%: the linear range). 3% on pressure
+// and duration, 5% on the rebound, as for the elastic bar (test_impact.cpp).
+TEST(VerificationMaterials, NullWaterColumnOnStonewall) {
+  const double rho = 1.0e-6, K = 2.2, v0 = 10.0, L = 100.0;
+  const double c = std::sqrt(K / rho), pressure = rho * c * v0, duration = 2.0 * L / c;
+  std::string extra =
+      "*MAT_NULL\n         1    1.0e-6\n"
+      "*EOS_LINEAR_POLYNOMIAL\n         1       0.0       2.2\n\n" +
+      termination(0.2) +
+      "*INITIAL_VELOCITY\n         0\n       0.0       0.0     -10.0\n"
+      "*RIGIDWALL_PLANAR\n         0\n"
+      "       0.0       0.0       0.0       0.0       0.0       1.0\n" +
+      brickNodeSet(1, 1, 1, 100, [](int, int, int) { return true; }) +
+      "*BOUNDARY_SPC_SET\n         1         0         1         1         0\n";
+  std::string deck = brickDeck(1, 1, 100, 1.0, 1.0, L, extra);
+  const std::string part = "*PART\nbrick\n         1         1         1\n";
+  ASSERT_NE(deck.find(part), std::string::npos);
+  deck.replace(deck.find(part), part.size(),
+               "*PART\nwater\n         1         1         1         1\n");
+  auto sim = Simulation::fromText("null_water_column", deck);
+  std::vector<std::pair<double, double>> force;
+  sim->run([&](const auto& s) {
+    force.emplace_back(s.time(), s.boundary().walls().at(0).normal_force);
+  });
+  const auto wall = crumple::testing::wallPlateau(force, pressure, duration);
+  ASSERT_GT(wall.samples, 10);
+  EXPECT_NEAR(wall.mean, pressure, 0.03 * pressure) << "wall pressure";  // area 1 mm^2
+  EXPECT_NEAR(wall.duration, duration, 0.03 * duration) << "contact duration";
+  double mass = 0.0;
+  for (double m : sim->sd.mass) mass += m;
+  EXPECT_NEAR(sim->momentum(2) / mass, v0, 0.05 * v0) << "rebound speed";
+  EXPECT_NEAR(sim->solver->energies().ratio, 1.0, 0.01);
+}
+
+namespace {
+
+// An elastic steel cube (10 mm, 2 x 2 x 2 hexes, part 1) falling at 5 m/s onto a plate of null
+// shells (*MAT_NULL, part 2: 30 mm square of 1 mm quads, 0.5 mm thick, YM 210 GPa, PR 0.3)
+// 1 mm below it; node-to-surface contact of the cube's nodes on the shells. `held`: the plate's
+// nodes are fixed (a rigid surface covered by null shells; steel density, so the shells' own
+// step would be four times shorter than the cube's), else free and heavy (RO 0.01).
+std::string nullPlateDeck(bool held) {
+  const double ro = held ? 7.8e-6 : 1.0e-2;
+  std::string s = "*KEYWORD\n*TITLE\ncube on null shells\n" + termination(0.6) +
+                  "*PART\ncube\n         1         1         1\n"
+                  "*PART\nnull plate\n         2         2         2\n"
+                  "*SECTION_SOLID\n         1         1\n"
+                  "*SECTION_SHELL\n         2         2\n       0.5       0.5       0.5       0.5\n"
+                  "*MAT_ELASTIC\n         1    7.8e-6     210.0       0.3\n" +
+                  fmt::format(
+                      "*MAT_NULL\n         2{:10.4g}       0.0       0.0       0.0       0.0"
+                      "     210.0       0.3\n",
+                      ro) +
+                  "*CONTACT_NODES_TO_SURFACE\n         1         2         3         3\n"
+                  "*NODE\n";
+  // Cube nodes 1..27 on [0,10]^2 x [1,11]; plate nodes 1001.. on [-10,20]^2 at z = 0.
+  for (int k = 0; k <= 2; ++k)
+    for (int j = 0; j <= 2; ++j)
+      for (int i = 0; i <= 2; ++i)
+        s += fmt::format("{:8d}{:16.9g}{:16.9g}{:16.9g}\n", 1 + i + 3 * j + 9 * k, 5.0 * i, 5.0 * j,
+                         1.0 + 5.0 * k);
+  for (int j = 0; j <= 30; ++j)
+    for (int i = 0; i <= 30; ++i)
+      s += fmt::format("{:8d}{:16.9g}{:16.9g}{:16.9g}\n", 1001 + i + 31 * j, -10.0 + i, -10.0 + j,
+                       0.0);
+  s += "*ELEMENT_SOLID\n";
+  int e = 1;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) {
+        auto n = [&](int a, int b, int c) { return 1 + (i + a) + 3 * (j + b) + 9 * (k + c); };
+        s += fmt::format("{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}\n", e++, 1, n(0, 0, 0),
+                         n(1, 0, 0), n(1, 1, 0), n(0, 1, 0), n(0, 0, 1), n(1, 0, 1), n(1, 1, 1),
+                         n(0, 1, 1));
+      }
+  s += "*ELEMENT_SHELL\n";
+  for (int j = 0; j < 30; ++j)
+    for (int i = 0; i < 30; ++i) {
+      const int n = 1001 + i + 31 * j;
+      s += fmt::format("{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}\n", 100 + i + 30 * j, 2, n, n + 1, n + 32,
+                       n + 31);
+    }
+  s += "*INITIAL_VELOCITY_NODE\n";
+  for (int n = 1; n <= 27; ++n) s += fmt::format("{:10d}       0.0       0.0      -5.0\n", n);
+  if (held) {
+    s += "*SET_NODE_LIST_GENERATE\n         1\n      1001      1961\n";
+    s += "*BOUNDARY_SPC_SET\n         1         0         1         1         1\n";
+  }
+  return s + "*END\n";
+}
+
+double cubeMomentumZ(const Simulation& sim) {
+  double p = 0.0;
+  for (int64_t n = 1; n <= 27; ++n) p += sim.sd.mass[sim.local(n)] * sim.v(n, 2);
+  return p;
+}
+
+}  // namespace
+
+// Null shells carry contact and nothing else (LS-DYNA bypasses them in the element
+// processing): on a held plate the cube rebounds as from a rigid surface; on a free plate the
+// shells push back only through their nodes' inertia, the plate's far nodes never move and
+// momentum is conserved; they never store energy and never set the time step, though their
+// own (1 mm quads of YM 210 GPa) would be five times shorter than the cube's.
+TEST(VerificationMaterials, NullShellsCarryContactOnly) {
+  auto held = Simulation::fromText("null_plate_held", nullPlateDeck(true));
+  EXPECT_EQ(held->solver->initialDtElement().find("shell"), std::string::npos)
+      << held->solver->initialDtElement();
+  const double p0 = cubeMomentumZ(*held);
+  held->run();
+  EXPECT_GT(cubeMomentumZ(*held), -0.8 * p0) << "rebound from the held null shells";
+  const auto& shells = held->sd.shell_blocks.at(0);
+  for (std::size_t e = 0; e < shells.size(); ++e) {
+    EXPECT_EQ(shells.e_int[e], 0.0);
+    EXPECT_EQ(shells.sigAt(0, 0, e), 0.0);
+  }
+
+  auto free = Simulation::fromText("null_plate_free", nullPlateDeck(false));
+  const double total0 = free->momentum(2);
+  free->run();
+  const double cube = cubeMomentumZ(*free);
+  // The heavy nodes under it throw the cube back (p0 < 0): about 2/3 of its momentum.
+  EXPECT_GT(cube, -0.4 * p0) << "the contact did not turn the cube";
+  EXPECT_NEAR(free->momentum(2), total0, 1e-9 * std::abs(total0));
+  EXPECT_EQ(free->v(1001, 2), 0.0);  // plate corner, far from the cube
+  EXPECT_EQ(free->x(1001, 2), 0.0);
+  EXPECT_LT(free->v(1001 + 15 + 31 * 15, 2), 0.0);  // under the cube's centre: pushed down
+}
