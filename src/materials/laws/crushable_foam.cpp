@@ -115,8 +115,8 @@ void CrushableFoam::update(PointBatch& b) const {
     // Elastic trial (the stress arrives rotated to the end of the step).
     Voigt trial;
     for (int k = 0; k < 6; ++k) trial[k] = b.s[k][i] + G2 * b.de[k][i] + (k < 3 ? lambda * tr : 0);
-    // Principal stresses confined to [-Y(gamma_max), TSC] on their axes (Theory Manual, model
-    // 63; OpenRadioss sigeps163.F90 caps them the same way).
+    // Principal stresses confined to [-Y(gamma_max), TSC] on their axes, as OpenRadioss
+    // sigeps163.F90 caps them (compressive at -Y, tensile at TSC).
     const Voigt s = clampPrincipal(trial, -yieldStress(gamma_max), tsc);
     for (int k = 0; k < 6; ++k) b.s[k][i] = s[k];
     b.h[0][i] = ln_v;

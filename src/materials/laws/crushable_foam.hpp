@@ -1,6 +1,7 @@
 // *MAT_CRUSHABLE_FOAM (063), MODEL 0: the crushable-foam model of LS-DYNA (Keyword Manual vol.
-// II, *MAT_CRUSHABLE_FOAM; Theory Manual, "Material Model 63: Crushable Foam"). Solids only,
-// as in LS-DYNA. docs/theory.md gives the sources and the choices made where they differ.
+// II, *MAT_CRUSHABLE_FOAM, fields and remarks; the update as OpenRadioss' port of the family,
+// sigeps163.F90, does it). Solids only, as in LS-DYNA. docs/theory.md gives the sources and the
+// choices made where they differ.
 //
 // The stress is updated elastically (isotropic, Young's modulus Ee and Poisson's ratio PR),
 // then each principal stress of the trial is confined to [-Y, TSC]: compression beyond the
