@@ -4,6 +4,7 @@
 // src/materials/laws/ (law.hpp says what a unit declares) plus its line here.
 #pragma once
 
+#include "materials/laws/crushable_foam.hpp"
 #include "materials/laws/elastic.hpp"
 #include "materials/laws/null.hpp"
 #include "materials/laws/piecewise_linear.hpp"
@@ -20,6 +21,6 @@ struct LawList {};
 // The order is the index of a law in archives (restart dumps, the model sent to other ranks):
 // append new laws at the end.
 using AllLaws = LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic,
-                        DamperViscous, SpringNonlinear, SoilAndFoam, MatNull>;
+                        DamperViscous, SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam>;
 
 }  // namespace crumple::materials
