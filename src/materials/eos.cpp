@@ -64,4 +64,20 @@ void checkEos(const std::string& at, const Eos& eos, double rho0) {
                            "wave speed for the time step");
 }
 
+EosStep eosEnergyStep(const Eos& eos, double rho0, double pc, double e_old, double v_mid,
+                      double v_new, double w_dev, double p_old, double tr) {
+  // E_new = E_old + V_mid [w_dev - (p_old + p_new) tr / 2] with p_new = a + b E_new.
+  const EosAffine f = eosAt(eos, rho0, v_new);
+  const double known = e_old + v_mid * (w_dev - 0.5 * (p_old + f.a) * tr);
+  EosStep s;
+  s.e = known / (1.0 + 0.5 * v_mid * f.b * tr);
+  s.p = f.a + f.b * s.e;
+  if (s.p < pc) {
+    // Cut off in tension: the work of the step is done at the cutoff pressure.
+    s.p = pc;
+    s.e = e_old + v_mid * (w_dev - 0.5 * (p_old + pc) * tr);
+  }
+  return s;
+}
+
 }  // namespace crumple::materials

@@ -48,6 +48,20 @@ EosAffine eosAt(const Eos& eos, double rho0, double v);
 // time step and of the hourglass and contact stiffnesses.
 double eosBulkModulus(const Eos& eos, double rho0);
 
+// The pressure and the energy per unit reference volume at the end of a step of a law whose
+// solids take the part's equation of state (*MAT_NULL, *MAT_JOHNSON_COOK): E_old at the start,
+// relative volumes V_mid (mid-step) and V_new, the deviatoric work w_dev = (s'_old + s'_new) / 2
+// : de, the pressure p_old of the start and the volumetric strain increment tr(de).
+//   E_new = E_old + V_mid [w_dev - (p_old + p_new) tr / 2],  p_new = a + b E_new
+// is one linear equation in E_new, solved exactly (the time-centred energy update of the Theory
+// Manual, "Equation of State Models", and of DYNA3D: Whirley & Engelmann, UCRL-MA-107254,
+// 1993). Where p_new falls below the cutoff pc (<= 0) it is pc, and the work is done at pc.
+struct EosStep {
+  double p = 0.0, e = 0.0;
+};
+EosStep eosEnergyStep(const Eos& eos, double rho0, double pc, double e_old, double v_mid,
+                      double v_new, double w_dev, double p_old, double tr);
+
 // "*EOS_LINEAR_POLYNOMIAL" or "*EOS_GRUNEISEN", for messages.
 std::string_view eosKeyword(const Eos& eos);
 

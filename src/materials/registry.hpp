@@ -6,6 +6,7 @@
 
 #include "materials/laws/crushable_foam.hpp"
 #include "materials/laws/elastic.hpp"
+#include "materials/laws/johnson_cook.hpp"
 #include "materials/laws/null.hpp"
 #include "materials/laws/piecewise_linear.hpp"
 #include "materials/laws/plastic_kinematic.hpp"
@@ -20,7 +21,8 @@ struct LawList {};
 
 // The order is the index of a law in archives (restart dumps, the model sent to other ranks):
 // append new laws at the end.
-using AllLaws = LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic,
-                        DamperViscous, SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam>;
+using AllLaws =
+    LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic, DamperViscous,
+            SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam, JohnsonCook>;
 
 }  // namespace crumple::materials

@@ -282,6 +282,11 @@ void linearHardeningReturn(PointBatch& b, const Moduli& m, const LinearHardening
   }
 }
 
+double effectiveStrainRate(const double de[6], double dt) {
+  const double tr = de[0] + de[1] + de[2];
+  return effectiveRate(de[0], de[1], de[2], de[3], de[4], de[5], tr, dt > 0.0 ? 1.0 / dt : 0.0);
+}
+
 double curveFlowStress(const CurveHardening& P, double eps_p) {
   return flowStressOn(P.eps, P.sig, eps_p);
 }

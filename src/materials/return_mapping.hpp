@@ -40,6 +40,9 @@ void linearHardeningReturn(PointBatch& b, const Moduli& m, const LinearHardening
 void curveHardeningReturn(PointBatch& b, const Moduli& m, const CurveHardening& P);
 // Static flow stress of the curve at an effective plastic strain.
 double curveFlowStress(const CurveHardening& P, double eps_p);
+// The effective strain rate sqrt(2/3 dev(de):dev(de)) / dt of a step (0 when dt is 0), the rate
+// of the rate forms here (VP = 0), for the laws that measure it themselves.
+double effectiveStrainRate(const double de[6], double dt);
 // Raises b.failed where the effective plastic strain has reached `limit` (> 0).
 void markFailed(PointBatch& b, double limit);
 

@@ -64,18 +64,7 @@ MatNull MatNull::make(const Params& p, const CurveAt&, const std::string& at, co
 
 MatNull::State MatNull::pressureAndEnergy(double e_old, double v_mid, double v_new, double w_dev,
                                           double p_old, double tr) const {
-  // E_new = E_old + V_mid [w_dev - (p_old + p_new) tr / 2] with p_new = a + b E_new.
-  const EosAffine f = eosAt(eos, rho0, v_new);
-  const double known = e_old + v_mid * (w_dev - 0.5 * (p_old + f.a) * tr);
-  State s;
-  s.e = known / (1.0 + 0.5 * v_mid * f.b * tr);
-  s.p = f.a + f.b * s.e;
-  if (s.p < pc) {
-    // Cut off in tension: the work of the step is done at the cutoff pressure.
-    s.p = pc;
-    s.e = e_old + v_mid * (w_dev - 0.5 * (p_old + pc) * tr);
-  }
-  return s;
+  return eosEnergyStep(eos, rho0, pc, e_old, v_mid, v_new, w_dev, p_old, tr);
 }
 
 void MatNull::update(PointBatch& b) const {

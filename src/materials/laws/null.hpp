@@ -65,9 +65,7 @@ struct MatNull {
   // The new pressure and energy per unit reference volume of one point over a step: E_old at
   // the start, relative volumes V_mid (mid-step) and V_new, deviatoric work w_dev and the
   // pressure p_old of the start, volumetric strain increment tr(de).
-  struct State {
-    double p = 0, e = 0;
-  };
+  using State = EosStep;
   State pressureAndEnergy(double e_old, double v_mid, double v_new, double w_dev, double p_old,
                           double tr) const;
 };

@@ -1,0 +1,230 @@
+#include "materials/laws/johnson_cook.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "deck/card.hpp"
+#include "deck/layout.hpp"
+#include "materials/return_mapping.hpp"
+#include "util/error.hpp"
+
+namespace crumple::materials {
+
+const deck::KeywordSpec& JohnsonCook::cards() {
+  using deck::I;
+  using deck::R;
+  static const deck::KeywordSpec spec{
+      kKeywords[0],
+      {deck::titleCard(),
+       {"card 1", {I("MID"), R("RO"), R("G"), R("E"), R("PR"), R("DTF"), R("VP"), R("RATEOP")}},
+       {"card 2", {R("A"), R("B"), R("N"), R("C"), R("M"), R("TM"), R("TR"), R("EPSO")}},
+       {"card 3", {R("CP"), R("PC"), R("SPALL"), R("IT"), R("D1"), R("D2"), R("D3"), R("D4")}},
+       {"card 4", {R("D5"), R("C2/P"), R("EROD"), R("EFMIN"), R("NUMINT")}}}};
+  return spec;
+}
+
+namespace {
+
+// Fields of the Keyword Manual that only shells use, or that select formulations Crumple does
+// not have: noted when set to no effect, refused when they would change the answer.
+void readOptions(LawInput& in, const deck::Card& c1, const deck::Card& c3, const deck::Card& c4) {
+  for (const char* f : {"E", "PR", "DTF"})
+    if (c1.real(f) != 0.0) in.ignore(c1, f, "used by shells only; solids are supported");
+  if (c1.real("VP") != 0.0)
+    in.reject(c1, "VP", "only VP = 0 (rate effects scale the yield stress) is supported");
+  if (c1.real("RATEOP") != 0.0)
+    in.reject(c1, "RATEOP", "only RATEOP = 0 (the log-linear Johnson-Cook rate term) is supported");
+  if (c3.real("SPALL") != 1.0)
+    in.reject(c3, "SPALL",
+              "only SPALL = 1 (the tensile pressure limit p >= PC) is supported; 0 (= 2, maximum "
+              "principal stress) and 3 (hydrostatic tension) are not");
+  if (c3.real("IT") != 0.0) in.ignore(c3, "IT", "the plastic strain iteration of shells");
+  if (c4.real("C2/P") != 0.0) in.ignore(c4, "C2/P", "a parameter of RATEOP = 1 or 3");
+  if (c4.real("EROD") != 0.0)
+    in.reject(c4, "EROD", "only EROD = 0 (the element erodes when D reaches 1) is supported");
+  if (c4.real("NUMINT") != 0.0) in.ignore(c4, "NUMINT", "used by shells only");
+}
+
+// The checks of the fields the law uses (Card::fail names file, line and field).
+void checkFields(const JohnsonCook::Params& p, const deck::Card& c1, const deck::Card& c2,
+                 const deck::Card& c3, const deck::Card& c4) {
+  if (!(p.G > 0.0)) c1.fail("G", "the shear modulus must be positive");
+  if (p.a < 0.0) c2.fail("A", "the yield stress must not be negative");
+  if (p.b < 0.0) c2.fail("B", "the hardening modulus must not be negative");
+  if (!(p.a > 0.0 || p.b > 0.0)) c2.fail("A", "A or B must be positive");
+  if (p.n < 0.0) c2.fail("N", "the hardening exponent must not be negative");
+  if (p.c < 0.0) c2.fail("C", "the rate coefficient must not be negative");
+  if (p.m < 0.0 || (p.cp > 0.0 && !(p.m > 0.0)))
+    c2.fail("M", "the thermal softening exponent must be positive when CP heats the material");
+  if (!(p.tm > p.tr)) c2.fail("TM", "the melt temperature must exceed the room temperature TR");
+  if (!(p.epso > 0.0) && (p.c != 0.0 || p.d[3] != 0.0))
+    c2.fail("EPSO", "the reference strain rate must be positive when C or D4 is used");
+  if (p.cp < 0.0) c3.fail("CP", "the specific heat must not be negative (0: no heating)");
+  if (p.pc > 0.0) c3.fail("PC", "the pressure cutoff is a tension limit: zero or negative");
+  if (p.efmin < 0.0)
+    c4.fail("EFMIN", "the lower bound of the fracture strain must not be negative");
+}
+
+}  // namespace
+
+JohnsonCook::Params JohnsonCook::read(LawInput& in) {
+  const deck::Card& c1 = in.card("card 1");
+  const deck::Card& c2 = in.card("card 2");
+  const deck::Card& c3 = in.card("card 3");
+  const deck::Card& c4 = in.optionalCard("card 4");
+  Params p;
+  p.rho = c1.real("RO");
+  p.G = c1.real("G");
+  p.a = c2.real("A");
+  p.b = c2.real("B");
+  p.n = c2.real("N");
+  p.c = c2.real("C");
+  p.m = c2.real("M");
+  p.tm = c2.real("TM");
+  p.tr = c2.real("TR");
+  p.epso = c2.real("EPSO");
+  p.cp = c3.real("CP");
+  p.pc = c3.real("PC");
+  static constexpr const char* kD[4] = {"D1", "D2", "D3", "D4"};
+  for (int i = 0; i < 4; ++i) p.d[static_cast<std::size_t>(i)] = c3.real(kD[i]);
+  p.d[4] = c4.real("D5");
+  p.efmin = c4.real("EFMIN");
+  checkFields(p, c1, c2, c3, c4);
+  readOptions(in, c1, c3, c4);
+  if (!(p.epso > 0.0)) p.epso = 1.0;  // unused (C = D4 = 0): any positive rate
+  return p;
+}
+
+JohnsonCook JohnsonCook::make(const Params& p, const CurveAt&, const std::string& at,
+                              const Eos* eos) {
+  if (!(p.rho > 0.0)) throw util::InputError(at + "RO must be positive");
+  if (!(p.G > 0.0)) throw util::InputError(at + "G must be positive");
+  if (!(p.tm > p.tr)) throw util::InputError(at + "TM must exceed TR");
+  if (p.cp < 0.0 || !(p.epso > 0.0) || p.m < 0.0 || (p.cp > 0.0 && !(p.m > 0.0)))
+    throw util::InputError(at + "EPSO must be positive, CP >= 0 and M > 0 when CP > 0");
+  if (p.pc > 0.0) throw util::InputError(at + "PC must be zero or negative");
+  if (!eos) throw util::InputError(at + "needs an equation of state (*PART EOSID) on its solids");
+  checkEos(at, *eos, p.rho);
+  JohnsonCook law;
+  law.par = p;
+  law.eos = *eos;
+  law.moduli = Moduli{eosBulkModulus(*eos, p.rho), p.G};
+  return law;
+}
+
+double JohnsonCook::hardening(double eps_p) const {
+  return par.a + par.b * std::pow(eps_p, par.n);
+}
+
+double JohnsonCook::hardeningSlope(double eps_p) const {
+  // d/deps (B eps^N) = B N eps^(N-1); infinite at 0 for N < 1, where Newton is not evaluated.
+  return eps_p > 0.0 && par.b > 0.0 && par.n > 0.0 ? par.b * par.n * std::pow(eps_p, par.n - 1.0)
+                                                   : 0.0;
+}
+
+double JohnsonCook::rateFactor(double rate) const {
+  return 1.0 + par.c * std::log(std::max(rate / par.epso, 1.0));
+}
+
+double JohnsonCook::thermalFactor(double dT) const {
+  // At room temperature (always so with CP = 0) no softening, whatever M (0^0 would be 1).
+  const double t = dT / (par.tm - par.tr);
+  if (!(t > 0.0)) return 1.0;
+  return t >= 1.0 ? 0.0 : 1.0 - std::pow(t, par.m);
+}
+
+double JohnsonCook::returnIncrement(double q, double eps_p, double scale) const {
+  // g(x) = q - 3 G x - scale k(eps_p + x) decreases from g(0) > 0 to g(hi) <= 0 at
+  // hi = g(0) / 3G (k does not decrease): Newton from hi, kept inside the bracket [lo, hi] by
+  // bisection, converges to the root to round-off whatever the sign of k'' (N < 1 or > 1).
+  const double G3 = 3.0 * par.G;
+  double lo = 0.0, hi = (q - scale * hardening(eps_p)) / G3;
+  double x = hi;
+  for (int it = 0; it < 200; ++it) {
+    const double g = q - G3 * x - scale * hardening(eps_p + x);
+    if (g == 0.0) return x;
+    (g > 0.0 ? lo : hi) = x;
+    double next = x + g / (G3 + scale * hardeningSlope(eps_p + x));
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (next == x || hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * hi) return next;
+    x = next;
+  }
+  return x;
+}
+
+double JohnsonCook::fractureStrain(double triax, double rate, double dT) const {
+  if (!hasDamage()) return 0.0;
+  const double t = dT / (par.tm - par.tr);
+  const double f = (par.d[0] + par.d[1] * std::exp(par.d[2] * triax)) *
+                   (1.0 + par.d[3] * std::log(std::max(rate / par.epso, 1.0))) *
+                   (1.0 + par.d[4] * t);
+  return std::max(par.efmin, f);
+}
+
+namespace {
+
+// The deviatoric stress (tensor shear) of a stress and its pressure (positive in compression).
+double deviator(const double s[6], double dev[6]) {
+  const double p = -(s[0] + s[1] + s[2]) / 3.0;
+  for (int k = 0; k < 6; ++k) dev[k] = k < 3 ? s[k] + p : s[k];
+  return p;
+}
+
+// The von Mises stress sqrt(3/2 s:s) of a deviator (tensor shear components counted twice).
+double vonMises(const double s[6]) {
+  const double ss =
+      s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + 2.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+  return std::sqrt(1.5 * ss);
+}
+
+}  // namespace
+
+void JohnsonCook::update(PointBatch& b) const {
+  const double G2 = 2.0 * par.G;
+  for (int i = 0; i < b.n; ++i) {
+    double d[6], s_old[6], dev_old[6], dev[6];
+    for (int k = 0; k < 6; ++k) {
+      d[k] = b.de[k][i];
+      s_old[k] = b.s[k][i];
+    }
+    const double tr = d[0] + d[1] + d[2];
+    const double p_old = deviator(s_old, dev_old);
+    // Elastic predictor of the deviator, then the radial return to the Johnson-Cook surface.
+    for (int k = 0; k < 6; ++k) dev[k] = dev_old[k] + G2 * (k < 3 ? d[k] - tr / 3.0 : d[k]);
+    const double q = vonMises(dev);
+    const double rate = effectiveStrainRate(d, b.dt);
+    const double dT = b.h[3][i], e = b.eps_p[i];
+    const double scale = rateFactor(rate) * thermalFactor(dT);
+    const double x = q > scale * hardening(e) ? returnIncrement(q, e, scale) : 0.0;
+    const double shrink = x > 0.0 ? 3.0 * par.G * x / q : 0.0;
+    double w_dev = 0.0;  // (s'_old + s'_new) / 2 : de, as *MAT_NULL
+    for (int k = 0; k < 6; ++k) {
+      dev[k] -= shrink * dev[k];
+      w_dev += (k < 3 ? 0.5 : 1.0) * (dev_old[k] + dev[k]) * d[k];
+    }
+    // Pressure and energy from the EOS, cut off at PC (SPALL = 1), as *MAT_NULL.
+    const double x_old = b.h[0][i], x_new = x_old + tr;
+    const EosStep st =
+        eosEnergyStep(eos, par.rho, par.pc, eos.e0 + b.h[1][i], eos.v0 * std::exp(x_old + 0.5 * tr),
+                      eos.v0 * std::exp(x_new), w_dev, p_old, tr);
+    for (int k = 0; k < 6; ++k) b.s[k][i] = k < 3 ? dev[k] - st.p : dev[k];
+    b.h[0][i] = x_new;
+    b.h[1][i] = st.e - eos.e0;
+    b.eps_p[i] = e + x;
+    if (x > 0.0) heatAndDamage(b, i, Increment{e, x, scale, rate, dT, st.p});
+  }
+}
+
+void JohnsonCook::heatAndDamage(PointBatch& b, int i, const Increment& in) const {
+  // Adiabatic heating by the plastic work of the step at the new flow stress (CP = 0: none).
+  const double sigma_y = in.scale * hardening(in.eps_p + in.x);
+  if (par.cp > 0.0) b.h[3][i] = in.dT + sigma_y * in.x / (par.rho * par.cp);
+  // Damage at the new state's triaxiality sigma_m / sigma_eff = -p / sigma_y.
+  if (!hasDamage()) return;
+  const double ef = fractureStrain(sigma_y > 0.0 ? -in.p / sigma_y : 0.0, in.rate, in.dT);
+  b.h[2][i] += ef > 0.0 ? in.x / ef : std::numeric_limits<double>::infinity();
+  if (b.failed && b.h[2][i] >= 1.0) b.failed[i] = 1;
+}
+
+}  // namespace crumple::materials

@@ -1,0 +1,98 @@
+// *MAT_JOHNSON_COOK (015): strain-, rate- and temperature-sensitive von Mises plasticity with
+// the Johnson-Cook cumulative damage model (LS-DYNA Keyword Manual vol. II, *MAT_JOHNSON_COOK;
+// Theory Manual, "Material Model 15: Johnson and Cook Plasticity Model"; G. R. Johnson and W. H.
+// Cook, "A constitutive model and data for metals subjected to large strains, high strain
+// rates and high temperatures", Proc. 7th Int. Symp. on Ballistics, The Hague, 1983, 541-547;
+// and "Fracture characteristics of three metals subjected to various strains, strain rates,
+// temperatures and pressures", Eng. Fract. Mech. 21(1), 1985, 31-48). Solids only.
+//
+// Flow stress (Johnson & Cook 1983, eq. 1):
+//   sigma_y = (A + B eps_p^N) (1 + C ln eps_dot*) (1 - T*^M),
+//   eps_dot* = max(eps_dot / EPSO, 1)   (EPSO: the quasi-static threshold rate of the manual;
+//                                        eps_dot the total effective strain rate, VP = 0),
+//   T* = (T - TR) / (TM - TR)           (T* >= 1: melted, no deviatoric strength).
+// The temperature rises adiabatically with the plastic work, dT = sigma_y deps_p / (RO CP)
+// (CP = 0, as real decks without thermal data give it with M = 0: no heating, T = TR);
+// the flow stress of a step uses the temperature of its start (the heat of the step softens
+// the next one). The deviator is returned radially with the hardening solved by safeguarded
+// Newton iteration to round-off (the Theory Manual's one-step linearisation is not used), so
+// the stress lands on the surface. The pressure comes from the part's equation of state
+// (*PART EOSID, required on solids as the Keyword Manual says) with the energy update of
+// *MAT_NULL (eos.hpp, eosEnergyStep) and is cut off at PC (SPALL = 1, "tensile pressure
+// limit": p >= PC; the other spall models are refused).
+//
+// Damage (Johnson & Cook 1985, eqs. 2-3): D = sum deps_p / eps_f with
+//   eps_f = max(EFMIN, [D1 + D2 exp(D3 sigma*)] [1 + D4 ln eps_dot*] [1 + D5 T*]),
+//   sigma* = sigma_m / sigma_eff   (mean stress over von Mises stress, positive in tension:
+//                                   the convention of the published, negative, D3 values);
+// the point fails (the element erodes) when D >= 1. D1 = D2 = 0 and EFMIN = 0: no damage.
+// History (kHistory = 4): h[0] = ln(V / V0), h[1] = E - E0 (the EOS's state, as *MAT_NULL),
+// h[2] = D, h[3] = T - TR; all start at zero.
+#pragma once
+
+#include <array>
+#include <string>
+#include <string_view>
+
+#include "materials/eos.hpp"
+#include "materials/law.hpp"
+
+namespace crumple::materials {
+
+struct JohnsonCook {
+  static constexpr std::array<std::string_view, 2> kKeywords{"*MAT_JOHNSON_COOK", "*MAT_015"};
+  static constexpr Cost kCost = Cost::Plastic;
+  static constexpr bool kPlastic = true;
+  static constexpr bool kKinematic = false;
+  static constexpr bool kDensity = true;
+  static constexpr int kHistory = 4;  // ln(V / V0), E - E0, D, T - TR
+  // Its solids take the part's equation of state (required); law.hpp.
+  static constexpr bool kEos = true;
+
+  struct Params {
+    using Law = JohnsonCook;
+    double rho = 0, G = 0;
+    double a = 0, b = 0, n = 0, c = 0, m = 0, tm = 0, tr = 0, epso = 0;
+    double cp = 0, pc = 0;
+    std::array<double, 5> d{};  // D1..D5
+    double efmin = 0;
+  };
+  static const deck::KeywordSpec& cards();
+  static Params read(LawInput& in);
+  // `eos`: the part's equation of state (required).
+  static JohnsonCook make(const Params& p, const CurveAt& curves, const std::string& at,
+                          const Eos* eos = nullptr);
+
+  Moduli moduli;  // K: the EOS's bulk modulus at the initial state; G
+  Params par;
+  Eos eos;
+  void update(PointBatch& b) const;
+  double failureStrain() const { return 0.0; }
+  double deletionStep() const { return 0.0; }
+
+  // The strain-hardening term A + B eps_p^N and its slope.
+  double hardening(double eps_p) const;
+  double hardeningSlope(double eps_p) const;
+  // The rate factor 1 + C ln eps_dot* and the thermal factor 1 - T*^M at an effective strain
+  // rate and a temperature rise T - TR.
+  double rateFactor(double rate) const;
+  double thermalFactor(double dT) const;
+  // The effective plastic strain increment that returns a trial von Mises stress q above the
+  // flow stress scale * hardening(eps_p) to the surface: q - 3 G x = scale hardening(eps_p + x).
+  double returnIncrement(double q, double eps_p, double scale) const;
+  // The fracture strain eps_f at triaxiality sigma* = sigma_m / sigma_eff, rate and T - TR;
+  // 0 when the law has no damage (D1 = D2 = 0, EFMIN = 0).
+  double fractureStrain(double triax, double rate, double dT) const;
+  bool hasDamage() const { return par.d[0] != 0.0 || par.d[1] != 0.0 || par.efmin > 0.0; }
+
+ private:
+  // A point's plastic step: plastic strain at its start, increment x, the flow stress's rate
+  // and thermal scale, the strain rate, T - TR at its start and the new pressure.
+  struct Increment {
+    double eps_p, x, scale, rate, dT, p;
+  };
+  // The heating and damage of point i's plastic increment.
+  void heatAndDamage(PointBatch& b, int i, const Increment& in) const;
+};
+
+}  // namespace crumple::materials

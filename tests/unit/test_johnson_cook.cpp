@@ -1,0 +1,320 @@
+// *MAT_JOHNSON_COOK (015) at a material point against the formulas of Johnson & Cook (1983,
+// flow stress; 1985, fracture strain) worked by hand: the hardening in uniaxial stress, the
+// rate factor, the adiabatic softening, damage and failure in uniaxial tension, the result of
+// a point independent of its place in a batch; and the deck reader's refusals.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "materials/materials.hpp"
+#include "model/build.hpp"
+#include "temp_dir.hpp"
+
+namespace m = crumple::materials;
+
+namespace {
+
+// Steel-like constants in mm, s, tonne, MPa (A, B, N, C, M of 4340 steel, Johnson & Cook 1983
+// table 1; D1-D5 of 4340 steel, Johnson & Cook 1985 table 3). CP 4.77e8 mm^2/(s^2 K).
+constexpr double kG = 80000.0, kK = 160000.0, kRho = 7.83e-9;
+constexpr double kA = 792.0, kB = 510.0, kN = 0.26, kC = 0.014, kM = 1.03;
+constexpr double kTm = 1793.0, kTr = 294.0, kCp = 4.77e8;
+
+m::JohnsonCook::Params params(double cp = kCp, std::array<double, 5> d = {}) {
+  m::JohnsonCook::Params p;
+  p.rho = kRho;
+  p.G = kG;
+  p.a = kA;
+  p.b = kB;
+  p.n = kN;
+  p.c = kC;
+  p.m = kM;
+  p.tm = kTm;
+  p.tr = kTr;
+  p.epso = 1.0;
+  p.cp = cp;
+  p.pc = -1e30;
+  p.d = d;
+  return p;
+}
+
+m::JohnsonCook makeJc(const m::JohnsonCook::Params& p) {
+  m::Eos eos;  // linear polynomial p = K mu
+  eos.c[1] = kK;
+  return std::get<m::JohnsonCook>(m::makeLaw(p, {}, "", &eos));
+}
+
+using Strain = std::array<double, 6>;
+
+// One point with its history (ln V, E - E0, D, T - TR).
+struct Point {
+  Strain s{};
+  double eps_p = 0.0;
+  std::array<double, 4> h{};
+  uint8_t failed = 0;
+
+  void step(const m::JohnsonCook& law, const Strain& d, double dt) {
+    m::PointBatch b;
+    b.n = 1;
+    b.dt = dt;
+    for (int k = 0; k < 6; ++k) {
+      b.s[k] = &s[k];
+      b.de[k] = &d[k];
+    }
+    b.eps_p = &eps_p;
+    for (int k = 0; k < 4; ++k) b.h[k] = &h[static_cast<std::size_t>(k)];
+    b.failed = &failed;
+    law.update(b);
+  }
+  // A step of axial strain dx with the lateral strain that leaves the lateral stress zero
+  // (uniaxial stress), found by the secant method on copies of the point.
+  void uniaxialStep(const m::JohnsonCook& law, double dx, double dt) {
+    auto lateral = [&](double dl) {
+      Point p = *this;
+      p.step(law, {dx, dl, dl, 0, 0, 0}, dt);
+      return p;
+    };
+    double a = -0.5 * dx, b = -0.3 * dx;
+    double fa = lateral(a).s[1], fb = lateral(b).s[1];
+    for (int it = 0; it < 60 && fb != fa && std::abs(fb) > 1e-11; ++it) {
+      const double c = b - fb * (b - a) / (fb - fa);
+      a = b;
+      fa = fb;
+      b = c;
+      fb = lateral(b).s[1];
+    }
+    *this = lateral(b);
+  }
+  double mises() const {
+    const double p = (s[0] + s[1] + s[2]) / 3.0;
+    const double a = s[0] - p, b = s[1] - p, c = s[2] - p;
+    return std::sqrt(1.5 * (a * a + b * b + c * c) +
+                     3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+  }
+};
+
+}  // namespace
+
+// Quasi-static uniaxial stress without heating (CP huge): the axial stress follows A + B eps^N
+// to round-off once yielded (the Newton return lands on the surface); lateral stress zero.
+TEST(JohnsonCook, QuasiStaticUniaxialStressFollowsHardening) {
+  const auto law = makeJc(params(1e30));
+  EXPECT_NEAR(law.hardening(0.1), 792.0 + 510.0 * std::pow(0.1, 0.26), 1e-12);
+  EXPECT_NEAR(law.hardening(0.1), 1072.2658, 1e-4);  // 510 * 0.1^0.26 = 280.2658
+  Point pt;
+  const double dt = 1.0;  // rate 1e-3 / s: below EPSO, no rate factor
+  for (int i = 0; i < 120; ++i) pt.uniaxialStep(law, 1e-3, dt);
+  EXPECT_GT(pt.eps_p, 0.1);
+  EXPECT_NEAR(pt.s[1], 0.0, 1e-9);
+  EXPECT_NEAR(pt.s[0], law.hardening(pt.eps_p), 1e-9 * pt.s[0]);
+  // Axial strain 0.12 = elastic sigma / E + plastic (E = 9 K G / (3 K + G) = 205714);
+  // the EOS is p = K (1/V - 1), not K ln V: 1e-3 of the plastic strain.
+  const double E = 9.0 * kK * kG / (3.0 * kK + kG);
+  EXPECT_NEAR(pt.eps_p, 0.12 - pt.s[0] / E, 1e-3 * pt.eps_p);
+  EXPECT_LT(pt.h[3], 1e-15);  // no heating
+}
+
+// The Newton return lands on the surface to round-off for concave (N < 1), linear and convex
+// (N > 1) hardening, from the virgin state (infinite slope at 0 for N < 1) and for steps of
+// very different size: sqrt(3) tau = A + B eps_p^N to 1e-13.
+TEST(JohnsonCook, ReturnLandsOnTheSurfaceForAnyExponent) {
+  for (double n : {0.05, 0.26, 1.0, 2.5}) {
+    SCOPED_TRACE(n);
+    auto p = params(1e30);
+    p.n = n;
+    const auto law = makeJc(p);
+    Point pt;
+    for (double dxy : {2e-2, 1e-5, 1e-3, 5e-2}) {
+      pt.step(law, {0, 0, 0, dxy, 0, 0}, 1.0);
+      EXPECT_GT(pt.eps_p, 0.0);
+      EXPECT_NEAR(pt.mises(), law.hardening(pt.eps_p), 1e-13 * pt.mises());
+    }
+  }
+}
+
+// The rate factor 1 + C ln(eps_dot / EPSO) at 1000 / s in pure shear: sqrt(3) tau on the
+// surface is 1 + 0.014 ln 1000 = 1.0967086 times the static flow stress.
+TEST(JohnsonCook, RateFactorAtAGivenStrainRate) {
+  const auto law = makeJc(params(1e30));
+  EXPECT_NEAR(law.rateFactor(1000.0), 1.0967086, 1e-7);
+  EXPECT_EQ(law.rateFactor(0.5), 1.0);  // below EPSO: quasi-static
+  Point pt;
+  // Tensor shear d_xy; the effective strain rate sqrt(2/3 * 2 d_xy^2) / dt = 2 d_xy / (sqrt 3 dt).
+  const double dxy = 5e-4, dt = 2.0 * dxy / (std::sqrt(3.0) * 1000.0);
+  for (int i = 0; i < 60; ++i) pt.step(law, {0, 0, 0, dxy, 0, 0}, dt);
+  EXPECT_GT(pt.eps_p, 0.02);
+  EXPECT_NEAR(std::sqrt(3.0) * pt.s[3], 1.0967086 * law.hardening(pt.eps_p), 1e-6 * pt.s[3]);
+  EXPECT_NEAR(pt.mises(), law.rateFactor(1000.0) * law.hardening(pt.eps_p), 1e-13 * pt.mises());
+}
+
+// Adiabatic heating: T - TR grows by sigma_y deps / (RO CP) per step (summed here from the
+// point's own stress and plastic strain), and the flow stress of a step is scaled by
+// 1 - T*^M at the temperature of its start.
+TEST(JohnsonCook, AdiabaticTemperatureRiseSoftens) {
+  const auto law = makeJc(params());
+  const auto cold = makeJc(params(1e30));
+  Point pt, ref;
+  const double dxy = 2e-3, dt = 1.0;  // quasi-static
+  double heat = 0.0, t_start = 0.0;
+  for (int i = 0; i < 300; ++i) {
+    t_start = pt.h[3];
+    const double e0 = pt.eps_p;
+    pt.step(law, {0, 0, 0, dxy, 0, 0}, dt);
+    ref.step(cold, {0, 0, 0, dxy, 0, 0}, dt);
+    heat += pt.mises() * (pt.eps_p - e0) / (kRho * kCp);
+  }
+  // Plastic work ~ 1100 MPa x 0.68 over RO CP = 3.735 MPa / K: about 200 K.
+  EXPECT_GT(pt.h[3], 190.0);
+  EXPECT_NEAR(pt.h[3], heat, 1e-9 * heat);
+  const double tstar = t_start / (kTm - kTr);
+  EXPECT_NEAR(pt.mises(), law.hardening(pt.eps_p) * (1.0 - std::pow(tstar, kM)),
+              1e-13 * pt.mises());
+  // T* ~ 0.13: the heated point flows 12% below the isothermal one.
+  EXPECT_LT(pt.mises(), 0.88 * ref.mises());
+  // Measured: T - TR = 200.2 K, T* = 0.1331, heated / isothermal 0.8748; the factor itself,
+  // 1 - T*^M, less the little extra hardening of the heated point's larger plastic strain.
+  EXPECT_NEAR(pt.mises() / ref.mises(), 1.0 - std::pow(tstar, kM), 2e-3);
+  // CP = 0 with M = 0 (decks without thermal data): no heating and no softening.
+  auto p = params(0.0);
+  p.m = 0.0;
+  const auto athermal = makeJc(p);
+  Point a;
+  for (int i = 0; i < 50; ++i) a.step(athermal, {0, 0, 0, dxy, 0, 0}, dt);
+  EXPECT_EQ(a.h[3], 0.0);
+  EXPECT_NEAR(a.mises(), athermal.hardening(a.eps_p), 1e-13 * a.mises());
+}
+
+// Damage in quasi-static uniaxial tension (sigma* = 1/3, no heating): D = eps_p / eps_f with
+// eps_f = D1 + D2 exp(D3 / 3) = 0.05 + 3.44 exp(-0.70667) = 1.746903 (4340 steel), and the
+// point fails in the step in which eps_p reaches eps_f, not before.
+TEST(JohnsonCook, DamageReachesOneAtTheFractureStrainInTension) {
+  const auto law = makeJc(params(1e30, {0.05, 3.44, -2.12, 0.002, 0.61}));
+  const double ef = 0.05 + 3.44 * std::exp(-2.12 / 3.0);
+  EXPECT_NEAR(ef, 1.746903, 1e-6);
+  EXPECT_NEAR(law.fractureStrain(1.0 / 3.0, 0.0, 0.0), ef, 1e-14);
+  Point pt;
+  const double dx = 4e-3;
+  int steps = 0;
+  while (!pt.failed && steps < 1000) {
+    const double before = pt.eps_p;
+    pt.uniaxialStep(law, dx, 1.0);
+    ++steps;
+    EXPECT_NEAR(pt.h[2], pt.eps_p / ef, 1e-8) << steps;
+    if (pt.failed) {
+      EXPECT_LT(before, ef);
+      EXPECT_GE(pt.eps_p, ef * (1.0 - 1e-8));
+    }
+  }
+  EXPECT_EQ(pt.failed, 1);
+  EXPECT_GE(pt.h[2], 1.0);
+}
+
+// The fracture strain's rate and temperature terms and the EFMIN floor (Johnson & Cook 1985,
+// eq. 2): at sigma* = 0, 100 / s, T* = 0.2: (0.05 + 3.44)(1 + 0.002 ln 100)(1 + 0.61 x 0.2).
+TEST(JohnsonCook, FractureStrainTerms) {
+  auto p = params(kCp, {0.05, 3.44, -2.12, 0.002, 0.61});
+  const auto law = makeJc(p);
+  const double dT = 0.2 * (kTm - kTr);
+  EXPECT_NEAR(law.fractureStrain(0.0, 100.0, dT), 3.49 * (1.0 + 0.002 * std::log(100.0)) * 1.122,
+              1e-12);
+  p.efmin = 4.0;
+  EXPECT_EQ(makeJc(p).fractureStrain(0.0, 100.0, dT), 4.0);
+  EXPECT_EQ(makeJc(params()).fractureStrain(0.0, 100.0, dT), 0.0);  // no damage model
+}
+
+// A point's result does not depend on its position in the batch (as for the other laws,
+// test_materials.cpp MaterialsBatch.ResultsIndependentOfPositionInBatch), history included.
+TEST(JohnsonCook, ResultsIndependentOfPositionInBatch) {
+  const auto law = makeJc(params(kCp, {0.05, 0.2, -2.12, 0.002, 0.61}));
+  for (int pos : {0, 5, 12}) {
+    SCOPED_TRACE(pos);
+    const int N = 13;
+    std::mt19937_64 rng(99);
+    std::vector<double> s(6 * N), de(6 * N), ep(N, 0.0), h(4 * N, 0.0);
+    std::vector<uint8_t> failed(N, 0);
+    for (double& v : s) v = std::uniform_real_distribution<double>(-300.0, 300.0)(rng);
+    Point lone;
+    for (int k = 0; k < 6; ++k) lone.s[static_cast<std::size_t>(k)] = s[k * N + pos];
+    m::PointBatch big;
+    big.n = N;
+    for (int k = 0; k < 6; ++k) {
+      big.s[k] = &s[k * N];
+      big.de[k] = &de[k * N];
+    }
+    for (int k = 0; k < 4; ++k) big.h[k] = &h[k * N];
+    big.eps_p = ep.data();
+    big.failed = failed.data();
+    for (int st = 0; st < 60; ++st) {
+      big.dt = 1e-6 * (1 + st % 3);
+      for (double& v : de) v = std::uniform_real_distribution<double>(-4e-3, 4e-3)(rng);
+      Strain d;
+      for (int k = 0; k < 6; ++k) d[static_cast<std::size_t>(k)] = de[k * N + pos];
+      law.update(big);
+      lone.step(law, d, big.dt);
+    }
+    for (int k = 0; k < 6; ++k)
+      EXPECT_EQ(std::memcmp(&s[k * N + pos], &lone.s[static_cast<std::size_t>(k)], 8), 0) << k;
+    for (int k = 0; k < 4; ++k)
+      EXPECT_EQ(std::memcmp(&h[k * N + pos], &lone.h[static_cast<std::size_t>(k)], 8), 0) << k;
+    EXPECT_EQ(std::memcmp(&ep[pos], &lone.eps_p, 8), 0);
+    EXPECT_EQ(failed[pos], lone.failed);
+    EXPECT_GT(lone.eps_p, 0.0);
+    EXPECT_GT(lone.h[2], 0.0);
+    EXPECT_GT(lone.h[3], 0.0);
+  }
+}
+
+namespace {
+
+const std::string kHex =
+    "*KEYWORD\n*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,0,0,1\n6,1,0,1\n7,1,1,1\n8,0,1,1\n"
+    "*SECTION_SOLID\n1,1\n*ELEMENT_SOLID\n1,1,1,2,3,4,5,6,7,8\n";
+const std::string kJc =
+    "*MAT_JOHNSON_COOK\n1,7.83e-9,80000.0\n792.0,510.0,0.26,0.014,1.03,1793.0,294.0,1.0\n";
+
+}  // namespace
+
+// The reader: cards into Params; a solid part without EOSID, the spall models other than
+// SPALL = 1, VP = 1 and bad values refused, naming file, line and field.
+TEST(JohnsonCook, DeckReadingAndRefusals) {
+  crumple::testing::TempDir t;
+  const std::string eos = "*EOS_LINEAR_POLYNOMIAL\n7,0.0,160000.0\n";
+  const auto ok = t.write("ok.k", kHex + kJc + "4.77e8,-2000.0,1.0,0,0.05,3.44,-2.12,0.002\n" +
+                                      "0.61,0,0,0.01\n" + eos + "*PART\nbar\n1,1,1,7\n*END\n");
+  const auto model = crumple::model::readModel(ok);
+  const auto& p = std::get<m::JohnsonCook::Params>(model.materials.at(0).law);
+  EXPECT_EQ(p.b, 510.0);
+  EXPECT_EQ(p.tm, 1793.0);
+  EXPECT_EQ(p.pc, -2000.0);
+  EXPECT_EQ(p.d[2], -2.12);
+  EXPECT_EQ(p.d[4], 0.61);
+  EXPECT_EQ(p.efmin, 0.01);
+  EXPECT_TRUE(m::usesEos(model.materials.at(0).law));
+
+  auto error = [&](const std::string& name, const std::string& cards, const std::string& part) {
+    const auto f = t.write(name, kHex + kJc + cards + part + "*END\n");
+    return crumple::testing::errorOf([&] { crumple::model::readModel(f); });
+  };
+  const std::string part7 = eos + "*PART\nbar\n1,1,1,7\n";
+  EXPECT_NE(error("n.k", "4.77e8,-2000.0,1.0\n", "*PART\nbar\n1,1,1\n")
+                .find("(EOSID): part 1 has solid elements and material 1 (*MAT_JOHNSON_COOK)"),
+            std::string::npos);
+  EXPECT_NE(error("s.k", "4.77e8,-2000.0,2.0\n", part7)
+                .find(":18: *MAT_JOHNSON_COOK card 3 field 3 (SPALL): only SPALL = 1"),
+            std::string::npos);
+  EXPECT_NE(error("c.k", "-1.0,-2000.0,1.0\n", part7).find("(CP): the specific heat"),
+            std::string::npos);
+  EXPECT_NE(error("p.k", "4.77e8,5.0,1.0\n", part7).find("(PC): the pressure cutoff"),
+            std::string::npos);
+  const auto vp = t.write("v.k", kHex + "*MAT_JOHNSON_COOK\n1,7.83e-9,80000.0,0,0,0,1\n" +
+                                     "792.0,510.0,0.26,0.014,1.03,1793.0,294.0,1.0\n" +
+                                     "4.77e8,-2000.0,1.0\n" + part7 + "*END\n");
+  EXPECT_NE(
+      crumple::testing::errorOf([&] { crumple::model::readModel(vp); }).find("(VP): only VP = 0"),
+      std::string::npos);
+}
