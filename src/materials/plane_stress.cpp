@@ -30,6 +30,7 @@
 #include "materials/plane_stress.hpp"
 
 #include "util/curve.hpp"
+#include "util/target_clones.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -156,8 +157,7 @@ inline double newtonDenominator(double S, double q2, double H, double dg) {
 }
 
 // ---- elastic --------------------------------------------------------------------------------
-[[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] void elasticPlaneStress(
-    Views a, int n, const ElasticConstants c) {
+CRUMPLE_TARGET_CLONES void elasticPlaneStress(Views a, int n, const ElasticConstants c) {
   const double zz = -c.nu / (1.0 - c.nu);
   for (int i = 0; i < n; ++i) {
     const double d0 = a.d0[i], d1 = a.d1[i];
@@ -202,8 +202,8 @@ inline double halleyStep(double c1, double c2, double sy, double k, double m1, d
 }
 
 template <bool kKinematic, Rate kRate>
-[[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] void linearPlaneStress(
-    Views a, int n, double dt, const ElasticConstants c, const LinearHardening P) {
+CRUMPLE_TARGET_CLONES void linearPlaneStress(Views a, int n, double dt, const ElasticConstants c,
+                                             const LinearHardening P) {
   const double m1 = c.m1 + kTwoThirds * P.Hk, m2 = c.G2 + kTwoThirds * P.Hk;
   const double inv_m_min = 1.0 / std::min(m1, m2);
   const double inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;

@@ -57,8 +57,7 @@ const char* updateName(SectionKind k) {
   static constexpr const char* kNames[] = {
       "update for solid elements", "plane-stress update for shell elements",
       "uniaxial (fibre) update for beam elements",
-      "force law for discrete elements (springs and dampers need *MAT_SPRING_ELASTIC, "
-      "*MAT_DAMPER_VISCOUS or *MAT_SPRING_NONLINEAR_ELASTIC)"};
+      "force law for discrete elements (they need a *MAT_S01, S02 or S04 law)"};
   return kNames[static_cast<int>(k)];
 }
 
