@@ -91,15 +91,27 @@ class Members {
 
 }  // namespace
 
+namespace {
+// The head shared by *DEFINE_CURVE and *DEFINE_TABLE (which share their ids): the _TITLE line,
+// card 1 and its positive id in `field`, recorded as a curve definition.
+const Card& curveHead(Context& ctx, CardCursor& cur, const deck::KeywordSpec& spec,
+                      const KeywordOptions& opts, std::string_view field, int64_t& id) {
+  if (opts.has("TITLE")) cur.read(spec.card("title card"));
+  const Card& c = cur.read(spec.card("card 1"));
+  id = c.integer(field);
+  if (id <= 0)
+    c.fail(field, "the " + std::string(field == "LCID" ? "curve" : "table") +
+                      " id must be a positive integer");
+  ctx.define(Kind::Curve, id, c, field);
+  return c;
+}
+}  // namespace
+
 void readCurve(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const auto& spec = keywordSpec("*DEFINE_CURVE");
   CardCursor cur(kw, ctx.deck);
-  if (opts.has("TITLE")) cur.read(spec.card("title card"));
-  const Card& c = cur.read(spec.card("card 1"));
   Curve curve;
-  curve.id = c.integer("LCID");
-  if (curve.id <= 0) c.fail("LCID", "the curve id must be a positive integer");
-  ctx.define(Kind::Curve, curve.id, c, "LCID");
+  const Card& c = curveHead(ctx, cur, spec, opts, "LCID", curve.id);
   // SIDR 1 and 2 apply the curve in a dynamic-relaxation phase, which Crumple does not have.
   if (const int64_t sidr = c.integer("SIDR"); sidr != 0)
     ctx.reject(c, "SIDR", "SIDR " + std::to_string(sidr) + ": dynamic relaxation is not supported",
@@ -150,12 +162,8 @@ int64_t followingCurve(const Context& ctx, const deck::Keyword& kw, std::size_t 
 void readTable(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const auto& spec = keywordSpec("*DEFINE_TABLE");
   CardCursor cur(kw, ctx.deck);
-  if (opts.has("TITLE")) cur.read(spec.card("title card"));
-  const Card& c = cur.read(spec.card("card 1"));
   Table t;
-  t.id = c.integer("TBID");
-  if (t.id <= 0) c.fail("TBID", "the table id must be a positive integer");
-  ctx.define(Kind::Curve, t.id, c, "TBID");
+  const Card& c = curveHead(ctx, cur, spec, opts, "TBID", t.id);
   t.where = ctx.deck.loc(kw);
   const double sfa = c.real("SFA"), offa = c.real("OFFA");
   std::size_t following = 0;  // curves taken from the keywords after the table
