@@ -334,7 +334,7 @@ void Run::start() {
   if (restart_) restoreDump();
   progress_.emplace(stdout, show_ && isatty(STDOUT_FILENO), s.endTime());
   // The state at the dump was written by the dumped run.
-  if (!restart_) writer_->write(s);
+  if (!restart_) writeResults();
   started_ = true;
   info_.setup_s = util::secondsSince(wall0_);
 }
@@ -367,7 +367,7 @@ void Run::cycleLoop() {
   while (!s.finished()) {
     s.step();
     control.checkEnergyBand(s);
-    writer_->write(s);
+    writeResults();
     // The energy sums cost a pass over every node and element: refresh them sparingly.
     if (s.cycle() % 64 == 0) {
       const double ratio = s.energies().ratio;
@@ -383,6 +383,21 @@ void Run::cycleLoop() {
   }
 }
 
+void Run::writeResults(bool last) {
+  writer_->write(*solver_, last);
+  const std::string notes = writer_->takeNotes();
+  if (notes.empty()) return;
+  log_.say(notes);
+  // Once on the terminal, the first time: the analyst watching the run learns it at once.
+  if (!energy_warned_ && root_)
+    std::fprintf(stderr,
+                 "crumple: warning: the energy ratio left [%g, %g] at time %.6g (energy audit in "
+                 "run.log)\n",
+                 output::EnergyAudit::kLow, output::EnergyAudit::kHigh,
+                 writer_->energyAudit().summary().first_outside_time);
+  energy_warned_ = true;
+}
+
 void Run::stop(const Requests& request) {
   info_.termination = "signal";
   status_ = request.exitStatus();
@@ -396,7 +411,7 @@ void Run::end() {
   // restart deck with a later ENDTIM extends the run from it.
   const bool dumping = model_.controls.d3dump_cycles > 0 || opt_.checkpoint_every > 0.0;
   if (dumping && info_.termination == "normal") writeDump("end of run");
-  writer_->write(s, true);
+  writeResults(true);
   const double ratio = s.energies().ratio;
   if (show_) progress_->finish(s.cycle(), s.time(), s.dt(), ratio);
 }
@@ -410,7 +425,7 @@ void Run::endWithError(const util::NumericalError& e) {
   log_.say(fmt::format("error termination: {}\n", e.what()));
   if (!writer_) return;
   try {
-    writer_->write(*solver_, true);
+    writeResults(true);
   } catch (const std::exception& e2) {
     log_.say(fmt::format("could not write the last state: {}\n", e2.what()));
   }
@@ -438,6 +453,7 @@ int Run::finish() {
       "{:.6g} rigidwall {:.6g} external work {:.6g} ratio {:.6f}\n",
       info_.termination, s.time(), s.cycle(), e.kinetic, e.internal, e.hourglass, e.rigidwall,
       e.external_work, e.ratio));
+  if (writer_) log_.say(writer_->energyAudit().verdict());
   if (const auto er = s.eroded(); er.elements > 0)
     log_.say(
         fmt::format("eroded: {} element(s), mass {:.6g}, internal energy {:.6g}, hourglass energy "

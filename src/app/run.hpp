@@ -71,6 +71,8 @@ class Run {
   void start();
   void restoreDump();
   void cycleLoop();
+  // Writes the histories due now and puts what the energy audit found into run.log.
+  void writeResults(bool last = false);
   void stop(const Requests& request);
   void end();
   void endWithError(const util::NumericalError& e);
@@ -101,6 +103,7 @@ class Run {
   RunLog log_;
   output::RunInfo info_;
   std::unique_ptr<output::ResultsWriter> writer_;
+  bool energy_warned_ = false;  // the energy band warning went to stderr
   output::DumpRegistry dumps_;
   std::optional<output::Progress> progress_;
   bool started_ = false;  // the first state is written: from here on, results are kept

@@ -24,7 +24,7 @@
 
 namespace crumple::output {
 
-inline constexpr uint32_t kDumpVersion = 1;
+inline constexpr uint32_t kDumpVersion = 2;
 
 // One part of the state. `save` is collective (every rank calls every section's save, in
 // registration order) and returns the section's bytes on rank 0 (what other ranks return is

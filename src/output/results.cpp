@@ -47,6 +47,17 @@ const std::vector<std::string> kRwforcColumns = {"time", "wall", "fn", "fx", "fy
 // side 1 = SURFA (slave), 2 = SURFB (master); energy is the interface's contact energy.
 const std::vector<std::string> kRcforcColumns = {"time", "contact", "side",   "fx",
                                                  "fy",   "fz",      "energy", "pairs"};
+// The glstat sample the energy audit takes: the global terms and each interface's energy.
+EnergySample energySample(const solver::Solver& s, const solver::Energies& e) {
+  EnergySample out{s.time(), s.cycle(), e, {}, {}};
+  if (const auto* c = s.contact())
+    for (const auto& f : c->interfaceForces()) {
+      out.contact_id.push_back(f.id);
+      out.contact_energy.push_back(f.energy);
+    }
+  return out;
+}
+
 }  // namespace
 
 ResultsWriter::ResultsWriter(std::filesystem::path dir, const model::Model& model,
@@ -96,6 +107,7 @@ std::vector<char> ResultsWriter::saveState() const {
   }
   w.put(plot_count_);
   w.put(last_plot_time_);
+  audit_.save(w);
   std::vector<double> times;
   std::vector<std::string> names;
   for (const auto& [t, name] : pvd_.states()) {
@@ -132,6 +144,7 @@ void ResultsWriter::loadState(const std::vector<char>& bytes, double time) {
   }
   r.get(plot_count_);
   r.get(last_plot_time_);
+  audit_.load(r);
   std::vector<double> times;
   std::vector<std::string> names;
   r.get(times);
@@ -187,6 +200,7 @@ void ResultsWriter::write(const solver::Solver& s, bool last) {
       glstat_csv_.row({t, double(s.cycle()), s.dt(), e.kinetic, e.internal, e.hourglass, e.contact,
                        e.external_work, e.total, e.ratio, e.rigidwall, s.addedMass()});
     if (root) glstat_csv_.flush();
+    if (root) notes_ += audit_.observe(energySample(s, e));
     glstat_.advance(t);
   }
   if (matsum_.due(t, last)) {
@@ -476,6 +490,15 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
                  {"rigidwall", e.rigidwall},
                  {"total", e.total},
                  {"ratio", e.ratio}};
+  const auto& audit = audit_.summary();
+  j["energy_audit"] = {{"band", {EnergyAudit::kLow, EnergyAudit::kHigh}},
+                       {"min_ratio", audit.min_ratio},
+                       {"max_ratio", audit.max_ratio},
+                       {"samples", audit.samples},
+                       {"samples_outside", audit.samples_outside},
+                       {"first_outside_time", audit.first_outside_time >= 0.0
+                                                  ? nlohmann::json(audit.first_outside_time)
+                                                  : nlohmann::json()}};
   j["mass"] = {{"physical", s.totalMass()}, {"added", s.addedMass()}};
   j["eroded_elements"] = eroded;
   // What erosion took out of the model: the elements' physical mass (their nodes keep theirs,

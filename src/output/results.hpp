@@ -5,9 +5,11 @@
 #include <array>
 #include <filesystem>
 #include <string>
+#include <utility>
 
 #include "comm/communicator.hpp"
 #include "model/model.hpp"
+#include "output/energy_audit.hpp"
 #include "output/files.hpp"
 #include "output/vtk.hpp"
 #include "solver/solver.hpp"
@@ -50,6 +52,9 @@ class ResultsWriter {
   // SHA-256 of x then v of every node in ascending global id (collective; valid on rank 0).
   std::string stateDigestGlobal(const solver::Solver& s) const;
   double seconds() const { return seconds_; }
+  // What the energy audit found since the last call (rank 0; empty on the others), for run.log.
+  std::string takeNotes() { return std::exchange(notes_, std::string()); }
+  const EnergyAudit& energyAudit() const { return audit_; }
 
  private:
   struct Schedule {
@@ -77,6 +82,8 @@ class ResultsWriter {
   int plot_count_ = 0;
   double last_plot_time_ = -1.0;
   double seconds_ = 0.0;
+  EnergyAudit audit_;
+  std::string notes_;
 };
 
 }  // namespace crumple::output

@@ -210,7 +210,24 @@ class ErrorTermination(clitest.TempDirTest):
         out = os.path.join(self.tmp, "wide")
         p = crumple("run", deck, "-o", out, "-q", "--energy-band", "0.5,1.5")
         self.assertEqual(p.returncode, 0, describe(p))
-        self.assertEqual(read_summary(out)["termination"], "normal")
+        s = read_summary(out)
+        self.assertEqual(s["termination"], "normal")
+        # Below 0.98 from about 7.7 ms to 19 ms (LS-DYNA-style load work on a coarse step): the
+        # energy audit lists each sample there with the change of every term, run.log closes
+        # with the verdict, summary.json counts them, and the terminal is told once.
+        audit = s["energy_audit"]
+        self.assertEqual(audit["band"], [0.98, 1.02])
+        self.assertGreater(audit["samples_outside"], 5)
+        self.assertLess(audit["min_ratio"], 0.98)
+        self.assertGreater(audit["first_outside_time"], 0.0)
+        with open(os.path.join(out, "run.log"), encoding="utf-8") as f:
+            log = f.read()
+        lines = [l for l in log.splitlines() if l.startswith("energy audit: ratio")]
+        self.assertEqual(len(lines), audit["samples_outside"], log)
+        self.assertIn("external work +", lines[0])
+        self.assertIn("largest change of a stored term:", lines[0])
+        self.assertIn("warning: energy ratio left [0.98, 1.02]", log)
+        self.assertEqual(p.stderr.count("the energy ratio left [0.98, 1.02]"), 1, p.stderr)
         p = crumple("run", deck, "-o", os.path.join(self.tmp, "bad"), "-q", "--energy-band", "1.1,0.9")
         self.assertEqual(p.returncode, 1, describe(p))
         self.assertIn("--energy-band LO,HI: needs 0 < LO < 1 < HI", p.stderr)
