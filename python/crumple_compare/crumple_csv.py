@@ -4,6 +4,8 @@ LS-DYNA curves they correspond to (mapping.py)."""
 import csv
 import os
 
+import numpy as np
+
 from . import mapping
 from .curves import build
 from .errors import CompareError
@@ -59,13 +61,10 @@ def _rcforc(path):
                      lambda i, q: f"sleout.contact{i[0]}.energy" if i[1] == 1 else None)
     energy.pop(None, None)
     data.update(energy)
-    if energy:  # the sum over the interfaces at each output time: sleout's total energy
-        totals = {}
-        for ts, ys in energy.values():
-            for t, y in zip(ts, ys):
-                totals[t] = totals.get(t, 0.0) + y
-        times = sorted(totals)
-        data["sleout.total"] = (times, [totals[t] for t in times])
+    if energy:  # the sum over the interfaces (each time once): sleout's total energy
+        curves = build(energy, lambda k: path).values()
+        times = np.unique(np.concatenate([c.t for c in curves]))
+        data["sleout.total"] = (times, sum(np.interp(times, c.t, c.y) for c in curves))
     return data
 
 

@@ -24,8 +24,18 @@ _PAIR_EQ = re.compile(r"([A-Za-z][A-Za-z0-9_\-#\.]*)\s*=\s*(" + NUM + r")")
 FILES = ("glstat", "matsum", "nodout", "rcforc", "rwforc", "secforc", "sleout")
 
 
+_ID_ROW = re.compile(r"^\s*(\d+)(?=[\s+-])(.*)$")
+
+
 def numbers(text):
     return [float(x) for x in _NUM_RE.findall(text)]
+
+
+def id_row(line):
+    """(id, numbers) of a row that starts with an integer id, which the first number may touch
+    when it is negative ('  1100002-4.08233E-11 ...'); None for any other line."""
+    m = _ID_ROW.match(line)
+    return (m.group(1), numbers(m.group(2))) if m else None
 
 
 def _lines(path):
@@ -117,10 +127,10 @@ def read_nodout(path):
             continue
         if columns is None or not line.strip() or "{" in line:
             continue
-        head = line.split()[0]
-        if not head.isdigit():
+        row = id_row(line)
+        if row is None:
             continue
-        values = numbers(line[line.index(head) + len(head):])
+        head, values = row
         if len(values) != len(columns):
             raise CompareError(f"node {head}: {len(values)} numbers, the header has "
                                f"{len(columns)}", path, no)
@@ -171,13 +181,13 @@ def read_sleout(path):
         if label in _SLEOUT_SUMMARY:
             out.add("sleout." + _SLEOUT_SUMMARY[label], t, numbers(text.split("=")[1])[0], no)
             continue
-        fields = line.split()
-        if fields and fields[0].isdigit() and "cycle" not in line:
-            values = numbers(line[line.index(fields[0]) + len(fields[0]):])
+        row = id_row(line)
+        if row is not None and "cycle" not in line:
+            ident, values = row
             if len(values) < 2:
-                raise CompareError(f"interface {fields[0]}: expected slave and master "
-                                   "energies", path, no)
-            base = f"sleout.contact{fields[0]}."
+                raise CompareError(f"interface {ident}: expected slave and master energies",
+                                   path, no)
+            base = f"sleout.contact{ident}."
             out.add(base + "slave", t, values[0], no)
             out.add(base + "master", t, values[1], no)
             out.add(base + "energy", t, values[0] + values[1], no)
@@ -214,7 +224,8 @@ def _entity_rows(path, entity):
             field = mapping.column_name(name, entity)
             if field == "time":
                 t = float(value)
-                if rows and rows[-1][1] is None:
+                # The time of a row opened on this line ('section# 1 time T') or still open.
+                if rows and (rows[-1][1] is None or rows[-1][0] == no):
                     rows[-1][1] = t
             elif field == "id":
                 rows.append([no, t, int(float(value)), {}])
