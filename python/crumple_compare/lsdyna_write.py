@@ -49,7 +49,7 @@ def glstat(curves):
         return None
     text = BANNER
     for t in _times({0: own}):
-        text += f"\n dt of cycle       0 is controlled by solid 1 of part 1\n\n"
+        text += "\n dt of cycle       0 is controlled by solid 1 of part 1\n\n"
         text += f" {'time':.<31}{_e(t)}\n"
         for q, c in own.items():
             text += f" {_GLSTAT_LABELS.get(q, q.replace('_', ' ')):.<31}{_e(_at(c, t))}\n"
