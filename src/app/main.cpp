@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"
+#include "app/compare_command.hpp"
 #include "app/partition_command.hpp"
 #include "comm/communicator.hpp"
 
@@ -96,6 +97,11 @@ int dispatch(int argc, char** argv) {
   part_cmd->add_option("--partition", part_method, "Partitioner")
       ->check(CLI::IsMember({"metis", "rcb"}));
 
+  // Every argument after `compare` goes to the Python tool, which owns those options and their
+  // --help (src/app/compare_command.hpp).
+  auto* compare_cmd = app.add_subcommand("compare", crumple::app::kCompareHelp);
+  compare_cmd->prefix_command()->allow_extras()->set_help_flag();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -107,6 +113,7 @@ int dispatch(int argc, char** argv) {
   if (*run_cmd) return crumple::app::runCommand(run);
   // check and partition are serial tools: under mpirun only rank 0 works.
   if (!crumple::comm::world().isRoot()) return 0;
+  if (*compare_cmd) return crumple::app::compareCommand(compare_cmd->remaining());
   if (*check_cmd) return crumple::app::checkCommand(check, stdout);
   if (*part_cmd)
     return crumple::app::partitionCommand(part_deck, part_count, part_dir, part_method, stdout);

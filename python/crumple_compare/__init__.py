@@ -1,0 +1,1 @@
+"""crumple compare: Crumple histories against LS-DYNA ASCII output (docs/validation.md)."""
