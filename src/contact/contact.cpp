@@ -458,7 +458,7 @@ void Contact::resolveInitialPenetrations(std::size_t pass) {
 
 void Contact::initialize(double dt0) {
   if (empty()) return;
-  dt0_ = dt0;
+  dt_stiff_ = dt0;
   gatherMasses();
   recordOwnedPositions();
   x_prev_.assign(x_.size(), 0.0);
@@ -518,7 +518,7 @@ std::vector<Record> Contact::checkContacts(double time, double dt_prev) {
       // A tie is as stiff as the elements it joins: the penalty without SLSFAC.
       mine.push_back(tiedForce(
           check, s, tie_weight_[c], tie_offset_[c], nodeAndSegment(node, p.seg[std::size_t(s)]),
-          p.seg_k[std::size_t(s)] / model_.contact_controls.slsfac, ci, dt_prev));
+          p.seg_k[std::size_t(s)] / model_.contact_controls.slsfac, ci, dt_stiff_, dt_prev));
       continue;
     }
     const int64_t before = tests;
@@ -534,7 +534,7 @@ std::vector<Record> Contact::checkContacts(double time, double dt_prev) {
         check,      best->seg, best->proj.N, best->surface.push, pen, int8_t(best->surface.side),
         best->entry};
     mine.push_back(penaltyForce(found, nodeAndSegment(node, p.seg[seg]), p.seg_k[seg],
-                                at(friction_, c), ci, dt0_, dt_prev));
+                                at(friction_, c), ci, dt_stiff_, dt_prev));
   }
   stats_.tests += tests;
   return mine;
@@ -588,6 +588,7 @@ void Contact::computeForces(double time, double dt_prev) {
     buildRoutes();
   }
   const auto t2 = Clock::now();
+  dt_stiff_ = std::max(dt_stiff_, dt_prev);
   auto mine = checkContacts(time, dt_prev);
   const auto t3 = Clock::now();
   gatherRecords(std::move(mine));

@@ -109,6 +109,7 @@ class Contact {
     f(stats_.sorts);
     f(stats_.rebalances);
     f(stats_.max_penetration_ratio);
+    f(dt_stiff_);
   }
   struct Candidate;
   int32_t contactNode(int32_t model_node) const;
@@ -195,7 +196,10 @@ class Contact {
   CheckPartition partition_;
   std::vector<double> friction_;     // tangential force history, 3 per check
   std::vector<double> initial_gap_;  // IGNORE 1/2: initial penetration per check
-  double dt0_ = 0.0;
+  // The step the penalty stiffness is taken at (SOFT = 1 and the stability cap): the initial
+  // step, raised when the step grows, never lowered (LS-DYNA Theory Manual, "soft constraint
+  // penalty"), so that a falling step does not stiffen the contacts already in force.
+  double dt_stiff_ = 0.0;
   bool need_sort_ = true;
   int cycles_since_sort_ = 0;
   int max_sort_interval_ = 0;  // smallest BSORT of the interfaces (0: none)

@@ -10,7 +10,9 @@ namespace {
 // Stability: a contact spring adds k / m* to the square of the highest frequency of the nodes
 // it joins, which the element step (TSSFAC 0.9) leaves little room for; a node of a symmetric
 // interface may carry several springs. Capping k at kStableFraction m* / dt^2 keeps omega dt
-// of one spring at or below 2 sqrt(kStableFraction).
+// of one spring at or below 2 sqrt(kStableFraction). dt is the stiffness step (the initial
+// step, raised when the step grows), never the current one: a cap that rose when the step fell
+// would multiply the force of every penetration already there in one cycle, and make energy.
 constexpr double kStableFraction = 0.1;
 
 // m* = m_node m_seg / (m_node + m_seg), the mass of the node-segment pair.
@@ -18,8 +20,9 @@ double pairMass(double m_node, double m_seg) {
   return m_node + m_seg > 0.0 ? m_node * m_seg / (m_node + m_seg) : 0.0;
 }
 
-double stableStiffness(double k, double m_eff, double dt_prev) {
-  if (dt_prev > 0.0 && m_eff > 0.0) k = std::min(k, kStableFraction * m_eff / (dt_prev * dt_prev));
+double stableStiffness(double k, double m_eff, double dt_stiff) {
+  if (dt_stiff > 0.0 && m_eff > 0.0)
+    k = std::min(k, kStableFraction * m_eff / (dt_stiff * dt_stiff));
   return k;
 }
 
@@ -41,7 +44,7 @@ Record unpack(const double* in) {
 }
 
 Record penaltyForce(const Penetration& p, const NodeAndSegment& m, double stiffness,
-                    const Vec3& friction, const model::ContactInterface& ci, double dt0,
+                    const Vec3& friction, const model::ContactInterface& ci, double dt_stiff,
                     double dt_prev) {
   // Relative velocity of the node to the contact point of the segment.
   Vec3 vrel = m.v_node;
@@ -54,9 +57,11 @@ Record penaltyForce(const Penetration& p, const NodeAndSegment& m, double stiffn
   const double m_eff = pairMass(m.m_node, m_seg);
   double k = stiffness;
   // SOFT = 1: a stiffness from the masses and the step, so soft foam against steel still
-  // stops (LS-DYNA Theory Manual, "soft constraint penalty": 0.5 SOFSCL m / dt^2).
-  if (ci.soft == 1 && dt0 > 0.0) k = std::max(k, 0.5 * ci.sofscl * m_eff / (dt0 * dt0));
-  k = stableStiffness(k, m_eff, dt_prev);
+  // stops (LS-DYNA Theory Manual, "soft constraint penalty": 0.5 SOFSCL m / dt^2, dt the
+  // initial step, updated when the step grows).
+  if (ci.soft == 1 && dt_stiff > 0.0)
+    k = std::max(k, 0.5 * ci.sofscl * m_eff / (dt_stiff * dt_stiff));
+  k = stableStiffness(k, m_eff, dt_stiff);
   const Vec3& n = p.push;
   const double pen = p.depth;
   const double vn = dot(vrel, n);
@@ -94,7 +99,7 @@ Record penaltyForce(const Penetration& p, const NodeAndSegment& m, double stiffn
 
 Record tiedForce(int32_t check, int32_t segment, const std::array<double, 4>& N, double offset,
                  const NodeAndSegment& m, double stiffness, const model::ContactInterface& ci,
-                 double dt_prev) {
+                 double dt_stiff, double dt_prev) {
   Vec3 xc{}, vc{};
   double m_seg = 0.0;
   for (std::size_t a = 0; a < 4; ++a) {
@@ -107,7 +112,7 @@ Record tiedForce(int32_t check, int32_t segment, const std::array<double, 4>& N,
     xc = add(xc, scale(segmentNormal(m.x_seg[0], m.x_seg[1], m.x_seg[2], m.x_seg[3]), offset));
   const Vec3 g = sub(xc, m.x_node);
   const double m_eff = pairMass(m.m_node, m_seg);
-  const double k = stableStiffness(stiffness, m_eff, dt_prev);
+  const double k = stableStiffness(stiffness, m_eff, dt_stiff);
   Vec3 f = scale(g, k);
   double dissipated = 0.0;
   if (ci.vdc > 0.0) {

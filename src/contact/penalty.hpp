@@ -88,17 +88,18 @@ struct Penetration {
 // f_n = k p - c v_n, at least 0, c = VDC/100 x 2 sqrt(k m*); Coulomb friction with an elastic
 // stick, capped at mu f_n, mu = FD + (FS - FD) exp(-DC |v_t|). k is the segment's stiffness
 // (`stiffness`, with the scale factors), raised by SOFT = 1 and capped for stability.
-// `friction`: the tangential force of the last cycle (zero for a new contact). dt0: the first
-// step (SOFT = 1); dt_prev: the last step, over which velocities and slip are taken.
+// `friction`: the tangential force of the last cycle (zero for a new contact). dt_stiff: the
+// step the stiffness is taken at (SOFT = 1 and the stability cap; Contact::stiffnessStep);
+// dt_prev: the last step, over which velocities and slip are taken.
 Record penaltyForce(const Penetration& p, const NodeAndSegment& m, double stiffness,
-                    const Vec3& friction, const model::ContactInterface& ci, double dt0,
+                    const Vec3& friction, const model::ContactInterface& ci, double dt_stiff,
                     double dt_prev);
 
 // A node tied to the point sum N_a x_a + offset n of a segment (the point moves and turns with
 // the segment): a penalty spring of `stiffness` (capped for stability), with VDC damping of
-// the relative velocity.
+// the relative velocity. dt_stiff and dt_prev as for penaltyForce.
 Record tiedForce(int32_t check, int32_t segment, const std::array<double, 4>& N, double offset,
                  const NodeAndSegment& m, double stiffness, const model::ContactInterface& ci,
-                 double dt_prev);
+                 double dt_stiff, double dt_prev);
 
 }  // namespace crumple::contact

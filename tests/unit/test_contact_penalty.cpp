@@ -48,9 +48,9 @@ Projection onSquare(const Vec3& x) {
 // The force of a node found at `gap` (< 0) from the surface, as Contact::computeForces makes it.
 Record force(const Projection& pr, const SurfaceGap& g, const NodeAndSegment& m, double k,
              const crumple::model::ContactInterface& ci, const Vec3& friction = {},
-             double dt0 = 0.0) {
+             double dt_stiff = kDt) {
   const Penetration p{7, 3, pr.N, g.push, -g.gap, int8_t(g.side), 0.0};
-  return contact::penaltyForce(p, m, k, friction, ci, dt0, kDt);
+  return contact::penaltyForce(p, m, k, friction, ci, dt_stiff, kDt);
 }
 
 void expectVec(const Vec3& a, const Vec3& b, double tol = 1e-12) {
@@ -253,12 +253,30 @@ TEST(ContactPenalty, SoftStiffnessAndStabilityCap) {
   expectVec(r.force, {0, 0, 250}, 1e-9);
 }
 
+TEST(ContactPenalty, StabilityCapFollowsTheStiffnessStepNotTheLastStep) {
+  // The step fell tenfold since the stiffness step (an element crushed elsewhere): the cap
+  // stays 0.1 m* / dt_stiff^2 = 5e4, where the last step would have allowed 5e6 and
+  // multiplied the force of the penetration already there a hundredfold in one cycle.
+  const Vec3 x{0.5, 0.5, -0.01};
+  const Projection pr = onSquare(x);
+  const auto g = contact::solidFaceGap(pr, 0.0, 1.0);
+  ASSERT_TRUE(g);
+  const Penetration p{7, 3, pr.N, g->push, -g->gap, int8_t(g->side), 0.0};
+  const Record r = contact::penaltyForce(p, still(x), 1e9, {}, {}, kDt, 0.1 * kDt);
+  expectVec(r.force, {0, 0, 500}, 1e-9);
+  EXPECT_NEAR(r.energy, 0.5 * 5e4 * 0.01 * 0.01, 1e-12);
+  // Ties likewise.
+  const Record t =
+      contact::tiedForce(4, 2, {0.25, 0.25, 0.25, 0.25}, 0.0, still(x), 1e9, {}, kDt, 0.1 * kDt);
+  expectVec(t.force, {0, 0, 0.01 * 0.1 * 0.5 / (kDt * kDt) * 1.0}, 1e-6);
+}
+
 TEST(ContactPenalty, TiedNodeIsPulledToItsPoint) {
   // Node 0.01 above the centre of the square, tied to the centre (N_a = 0.25): the spring
   // k = 1000 pulls it back with (0, 0, -10); the segment nodes take 2.5 each, up.
   const Vec3 x{0.5, 0.5, 0.01};
   const NodeAndSegment m = still(x);
-  const Record r = contact::tiedForce(4, 2, {0.25, 0.25, 0.25, 0.25}, 0.0, m, 1000.0, {}, kDt);
+  const Record r = contact::tiedForce(4, 2, {0.25, 0.25, 0.25, 0.25}, 0.0, m, 1000.0, {}, kDt, kDt);
   expectVec(r.force, {0, 0, -10}, 1e-12);
   EXPECT_NEAR(r.penetration, 0.01, 1e-15);
   EXPECT_NEAR(r.energy, 0.05, 1e-14);
@@ -266,7 +284,7 @@ TEST(ContactPenalty, TiedNodeIsPulledToItsPoint) {
   expectBalanced(r, m);
   // Tied with its offset 0.01 along the normal: no force.
   const Record offset =
-      contact::tiedForce(4, 2, {0.25, 0.25, 0.25, 0.25}, 0.01, m, 1000.0, {}, kDt);
+      contact::tiedForce(4, 2, {0.25, 0.25, 0.25, 0.25}, 0.01, m, 1000.0, {}, kDt, kDt);
   expectVec(offset.force, {0, 0, 0}, 1e-12);
 }
 

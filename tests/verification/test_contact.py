@@ -9,6 +9,9 @@ decks from tools/contact_decks.py:
   - an elastic ball on a rigid plate: Hertz peak force and contact duration within 10%;
   - a square tube crushed axially with single-surface contact: mean crush force between
     0.8 x Wierzbicki-Abramowicz and 1.2 x Abramowicz-Jones, no fold through another;
+  - a plate pressed on a block while the time step falls threefold (an element elsewhere
+    crushed): the contact force stays the load and no energy appears (the penalty stiffness
+    is taken at the initial step, not the current one);
   - a bar of two tied halves on a stonewall; a cask with a tied lid dropped on a rigid target
     (symmetric two-surface contact): impulse = change of momentum.
 
@@ -137,6 +140,23 @@ class ContactVerification(TempDirTest):
         # transient moves the ratio by up to 1.5%).
         ratios = [r["energy_ratio"] for r in rows(out, "glstat.csv") if r["time"] >= 0.25]
         self.assertLess(max(abs(r - 1.0) for r in ratios), 0.01, ratios)
+
+    def test_falling_step_does_not_stiffen_a_resting_contact(self):
+        # Issue 16's one-cycle energy jumps: a stiffness capped at the current step rose 10x
+        # when the step fell, and pushed the resting plate off (energy ratio 3.9 at the end,
+        # the plate's contact force 1662 N against the 1600 N load). It must stay put.
+        out = self.run_deck("pressed", decks().pressed_plate())
+        glstat = rows(out, "glstat.csv")
+        self.assertLess(glstat[-1]["dt"], 0.4 * glstat[1]["dt"])  # the step did fall
+        settled = [r for r in glstat if r["time"] >= 6.0e-5]
+        balance = [r["total"] - r["external_work"] for r in settled]
+        work = settled[-1]["external_work"]
+        self.assertLess(max(balance) - min(balance), 0.005 * work, balance)
+        self.assertAlmostEqual(work, settled[0]["external_work"], delta=0.05 * work)
+        # Settled (within 0.5%) from 70 us on; the stiffening took it to 1558..1673 N.
+        plate = [r for r in rows(out, "rcforc.csv") if r["side"] == 1 and r["time"] >= 7.0e-5]
+        for r in plate:
+            self.assertAlmostEqual(r["fz"], 1600.0, delta=8.0, msg=r)
 
     def test_cask_drop_impulse_equals_momentum_change(self):
         # A steel cask (hex tube with a hex lid tied to it) dropped lid first onto a rigid
