@@ -787,6 +787,26 @@ struct Explicit {
   }
 };
 
+// Kinetic (translational and rotational) plus internal and hourglass energy of a run.
+double totalEnergy(const Explicit& sim) {
+  double e = 0.0;
+  for (std::size_t k = 0; k < sim.nn; ++k)
+    for (int c = 0; c < 3; ++c)
+      e += 0.5 * (sim.mass[k] * sim.v[3 * k + c] * sim.v[3 * k + c] +
+                  sim.inertia[k] * sim.w[3 * k + c] * sim.w[3 * k + c]);
+  for (std::size_t e_ = 0; e_ < sim.blk.size(); ++e_) e += sim.blk.e_int[e_] + sim.blk.e_hg[e_];
+  return e;
+}
+
+// 3000 steps: the largest total energy of the first 300 (early) and of the last 300 (late).
+void energyPeaks(Explicit& sim, double& early, double& late) {
+  for (int n = 0; n < 3000; ++n) {
+    sim.step();
+    if (n < 300) early = std::max(early, totalEnergy(sim));
+    if (n >= 2700) late = std::max(late, totalEnergy(sim));
+  }
+}
+
 // A strip L x b x t along x, nx x ny cells, quadrilaterals or each cell as two triangles.
 struct Strip {
   double L = 200.0, b = 10.0, t = 2.0;
@@ -975,22 +995,8 @@ TEST(ShellStableStep, RandomMotionStaysBoundedAtTheElementStep) {
       std::uniform_real_distribution<double> u(-1.0, 1.0);
       for (auto& vi : sim.v) vi = 1e-2 * u(rng);
       for (auto& wi : sim.w) wi = 1e-1 * u(rng);
-      auto energy = [&] {
-        double e = 0.0;
-        for (std::size_t k = 0; k < sim.nn; ++k)
-          for (int c = 0; c < 3; ++c)
-            e += 0.5 * (sim.mass[k] * sim.v[3 * k + c] * sim.v[3 * k + c] +
-                        sim.inertia[k] * sim.w[3 * k + c] * sim.w[3 * k + c]);
-        for (std::size_t el_ = 0; el_ < sim.blk.size(); ++el_)
-          e += sim.blk.e_int[el_] + sim.blk.e_hg[el_];
-        return e;
-      };
       double early = 0.0, late = 0.0;
-      for (int n = 0; n < 3000; ++n) {
-        sim.step();
-        if (n < 300) early = std::max(early, energy());
-        if (n >= 2700) late = std::max(late, energy());
-      }
+      energyPeaks(sim, early, late);
       EXPECT_LT(late, 1.5 * early) << triangles << " " << t;
       EXPECT_GT(late, 0.5 * early) << triangles << " " << t;
     }
@@ -1372,22 +1378,8 @@ TEST(ShellFull, FreeVibrationConservesEnergy) {
   Explicit sim(std::move(b), s.x0, 0.3);
   for (auto& vi : sim.v) vi = 1e-2 * u(rng);
   for (auto& wi : sim.w) wi = 1e-3 * u(rng);
-  auto energy = [&] {
-    double e = 0.0;
-    for (std::size_t k = 0; k < sim.nn; ++k)
-      for (int c = 0; c < 3; ++c)
-        e += 0.5 * (sim.mass[k] * sim.v[3 * k + c] * sim.v[3 * k + c] +
-                    sim.inertia[k] * sim.w[3 * k + c] * sim.w[3 * k + c]);
-    for (std::size_t el_ = 0; el_ < sim.blk.size(); ++el_)
-      e += sim.blk.e_int[el_] + sim.blk.e_hg[el_];
-    return e;
-  };
   double early = 0.0, late = 0.0;
-  for (int n = 0; n < 3000; ++n) {
-    sim.step();
-    if (n < 300) early = std::max(early, energy());
-    if (n >= 2700) late = std::max(late, energy());
-  }
+  energyPeaks(sim, early, late);
   std::printf("ELFORM 16 free vibration: energy %.6g early, %.6g late\n", early, late);
   EXPECT_NEAR(late / early, 1.0, 0.02);
 }
