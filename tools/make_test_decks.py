@@ -381,11 +381,27 @@ $    tfail      epsf        sn        ss         n         m
 """
 
 
+def structures_shell16() -> str:
+    """The structures deck with both shell sections fully integrated (ELFORM 16): the plate's
+    quadrilaterals run in the ELFORM 16 kernel, the flange's triangles as C0 triangles in a block
+    of their own (parallel determinism of the fully integrated shell)."""
+    text = structures()
+    swaps = [("structures: shells,", "structures_shell16: ELFORM 16 shells,"),
+             ("         1         2    0.8333         5", "         1        16    0.8333         5"),
+             ("         2         4    0.8333         3", "         2        16    0.8333         3")]
+    for old, new in swaps:
+        if old not in text:
+            raise SystemExit(f"structures_shell16: '{old}' not found in the structures deck")
+        text = text.replace(old, new, 1)
+    return text
+
+
 def main() -> None:
     out = ROOT / "tests" / "data" / "decks"
     out.mkdir(parents=True, exist_ok=True)
     (out / "mixed_conditions.k").write_text(mixed_conditions())
     (out / "structures.k").write_text(structures())
+    (out / "structures_shell16.k").write_text(structures_shell16())
     (out / "rigid_welds.k").write_text(rigid_welds())
     # Contact: symmetric two-surface contact of offset blocks with unlike meshes, and the
     # square tube crushed with single-surface contact (5 mm shells, 1 ms: the first fold).
@@ -394,7 +410,8 @@ def main() -> None:
     (out / "contact_tube.k").write_text(contact_decks.tube_crush(size=5.0, end=1.0))
     (out / "contact_tied.k").write_text(contact_decks.tied_bar(end=1.0e-4))
     (out / "contact_cask.k").write_text(contact_decks.cask_drop(end=2.0e-4))
-    print("wrote tests/data/decks/mixed_conditions.k, structures.k, rigid_welds.k, "
+    print("wrote tests/data/decks/mixed_conditions.k, structures.k, structures_shell16.k, "
+          "rigid_welds.k, "
           "contact_blocks.k, contact_tube.k, contact_tied.k and contact_cask.k")
 
 

@@ -57,14 +57,16 @@ struct ShellBlock : BlockBase {
   static constexpr int kSlotsPerElement = 8;  // force and moment slot per corner
   materials::Law law;
   double rho0 = 0.0;
-  int elform = 2;
+  int elform = 2;        // 2 Belytschko-Tsay (10 runs as 2 with bwc), 4 C0 triangle, 16 fully
+                         // integrated (src/elements/shell_full.cpp)
   int nip = 2;           // integration points through the thickness
   bool lobatto = false;  // QR/IRID: Gauss (default) or Lobatto
   double shear_factor = 5.0 / 6.0;
   int ihq = 1;       // hourglass type (viscous 1-3, stiffness 4-5)
   double qm = 0.1;   // hourglass coefficient
   bool bwc = false;  // Belytschko-Wong-Chiang warping correction (*CONTROL_SHELL BWC=1)
-  bool thickness_update = false;                        // *CONTROL_SHELL ISTUPD
+  bool thickness_update = false;  // *CONTROL_SHELL ISTUPD
+  bool warping = false;           // ELFORM 16 with IHQ 8: the warping projection (shell_full.cpp)
   std::vector<std::array<int32_t, 4>> conn;             // local node indices; n3 == n4: triangle
   std::vector<std::array<double, 4>> corner_thickness;  // initial thickness at the 4 corners
   // Per-element state, defined and allocated by the kernel (src/elements/shell.cpp,
@@ -79,12 +81,14 @@ struct ShellBlock : BlockBase {
   // Through-thickness rule: point i at z = zeta[i] t / 2, weight[i] (the weights sum to 1).
   std::vector<double> zeta, weight;
   // Integration-point state in the corotational element frame, stored batch by batch (one
-  // contiguous record of `fields` x kShellBatch values per batch, like SolidBlock::sig):
-  //   sig:   3 nip + 2 fields: in-plane stress (xx, yy, xy) of point i at fields 3 i + k, then
-  //          the element's transverse shear stresses yz, zx (elastic, uniform through the
-  //          thickness) at fields 3 nip and 3 nip + 1
-  //   eps_p: nip fields, effective plastic strain (plastic laws), else empty
-  //   alpha: 3 nip fields, back stress in plane-stress form (kinematic laws), else empty
+  // contiguous record of `fields` x kShellBatch values per batch, like SolidBlock::sig). An
+  // element has inPlanePoints() in-plane points q (1; 4 for ELFORM 16, 2 x 2 Gauss), each with
+  // its own record of 3 nip + 2 fields at field q (3 nip + 2):
+  //   sig:   in-plane stress (xx, yy, xy) of point i at fields 3 i + k, then the transverse
+  //          shear stresses yz, zx (elastic, uniform through the thickness) at 3 nip, 3 nip + 1
+  //   eps_p: nip fields per in-plane point, effective plastic strain (plastic laws), else empty
+  //   alpha: 3 nip fields per in-plane point, back stress in plane-stress form (kinematic laws),
+  //          else empty
   //   hgq:   5 fields, hourglass resistances of the stiffness forms (membrane x, y, bending
   //          x, y, transverse), else empty
   //   drill: 4 fields, the corners' drilling moments (about the element normal) of the
@@ -94,20 +98,32 @@ struct ShellBlock : BlockBase {
     return (e / kShellBatch) * std::size_t(fields) * kShellBatch +
            std::size_t(field) * kShellBatch + e % kShellBatch;
   }
-  int sigFields() const { return 3 * nip + 2; }
-  double& sigAt(int k, int point, std::size_t e) {
-    return sig[blocked(sigFields(), 3 * point + k, e)];
+  int inPlanePoints() const { return elform == 16 ? 4 : 1; }
+  int pointFields() const { return 3 * nip + 2; }
+  int sigFields() const { return inPlanePoints() * pointFields(); }
+  int epsFields() const { return inPlanePoints() * nip; }
+  int alphaFields() const { return inPlanePoints() * 3 * nip; }
+  double& sigAt(int k, int point, std::size_t e, int q = 0) {
+    return sig[blocked(sigFields(), q * pointFields() + 3 * point + k, e)];
   }
-  double sigAt(int k, int point, std::size_t e) const {
-    return sig[blocked(sigFields(), 3 * point + k, e)];
+  double sigAt(int k, int point, std::size_t e, int q = 0) const {
+    return sig[blocked(sigFields(), q * pointFields() + 3 * point + k, e)];
   }
   // Transverse shear stress: k = 0 yz, 1 zx.
-  double& shearAt(int k, std::size_t e) { return sig[blocked(sigFields(), 3 * nip + k, e)]; }
-  double shearAt(int k, std::size_t e) const { return sig[blocked(sigFields(), 3 * nip + k, e)]; }
-  double& epsAt(int point, std::size_t e) { return eps_p[blocked(nip, point, e)]; }
-  double epsAt(int point, std::size_t e) const { return eps_p[blocked(nip, point, e)]; }
-  double& alphaAt(int k, int point, std::size_t e) {
-    return alpha[blocked(3 * nip, 3 * point + k, e)];
+  double& shearAt(int k, std::size_t e, int q = 0) {
+    return sig[blocked(sigFields(), q * pointFields() + 3 * nip + k, e)];
+  }
+  double shearAt(int k, std::size_t e, int q = 0) const {
+    return sig[blocked(sigFields(), q * pointFields() + 3 * nip + k, e)];
+  }
+  double& epsAt(int point, std::size_t e, int q = 0) {
+    return eps_p[blocked(epsFields(), q * nip + point, e)];
+  }
+  double epsAt(int point, std::size_t e, int q = 0) const {
+    return eps_p[blocked(epsFields(), q * nip + point, e)];
+  }
+  double& alphaAt(int k, int point, std::size_t e, int q = 0) {
+    return alpha[blocked(alphaFields(), q * 3 * nip + 3 * point + k, e)];
   }
   double& hgqAt(int mode, std::size_t e) { return hgq[blocked(5, mode, e)]; }
   double& drillAt(int corner, std::size_t e) { return drill[blocked(4, corner, e)]; }

@@ -225,7 +225,9 @@ class SubdomainBuilder {
     for (auto& [part, elems, shared] : groupByPart(model::Family::Solid, model.solids))
       addBlock(solidBlock(part, elems, shared), model::Family::Solid, sd.solid_blocks);
     for (auto& [part, elems, shared] : groupByPart(model::Family::Shell, model.shells))
-      addBlock(shellBlock(part, elems, shared), model::Family::Shell, sd.shell_blocks);
+      for (auto& [triangles, sub, sub_shared] : sortTriangles(part, elems, shared))
+        addBlock(shellBlock(part, sub, sub_shared, triangles), model::Family::Shell,
+                 sd.shell_blocks);
     for (auto& [part, elems, shared] : groupByPart(model::Family::Beam, model.beams))
       addBlock(beamBlock(part, elems, shared), model::Family::Beam, sd.beam_blocks);
     for (auto& [part, elems, shared] : groupByPart(model::Family::Discrete, model.discretes))
@@ -314,6 +316,29 @@ class SubdomainBuilder {
     return out;
   }
 
+  // The shells of an ELFORM 16 part as two groups, quadrilaterals and then triangles (n3 ==
+  // n4), each keeping its shared elements first: the triangles run as C0 triangles, as all
+  // degenerate quadrilaterals do in Crumple (ESORT = 1; src/elements/shell_full.cpp). Other
+  // parts: the group as it is (the one-point kernel sorts its triangles per lane).
+  std::vector<std::tuple<bool, std::vector<int32_t>, std::size_t>> sortTriangles(
+      int32_t part_index, const std::vector<int32_t>& elems, std::size_t shared_count) const {
+    const auto& part = model.parts[static_cast<std::size_t>(part_index)];
+    if (model.shell_sections[static_cast<std::size_t>(part.section)].elform != 16)
+      return {{false, elems, shared_count}};
+    std::vector<int32_t> sub[2];
+    std::size_t shared[2] = {0, 0};
+    for (std::size_t k = 0; k < elems.size(); ++k) {
+      const auto& n = model.shells.nodes[static_cast<std::size_t>(elems[k])];
+      const int tri = n[2] == n[3] ? 1 : 0;
+      sub[tri].push_back(elems[k]);
+      if (k < shared_count) ++shared[tri];
+    }
+    std::vector<std::tuple<bool, std::vector<int32_t>, std::size_t>> out;
+    for (int tri = 0; tri < 2; ++tri)
+      if (!sub[tri].empty()) out.emplace_back(tri == 1, std::move(sub[tri]), shared[tri]);
+    return out;
+  }
+
   // Records the corners of a block's elements, gives the block its slots and keeps it.
   template <class Block>
   void addBlock(Block b, model::Family family, std::vector<Block>& blocks) {
@@ -353,7 +378,7 @@ class SubdomainBuilder {
   }
 
   ShellBlock shellBlock(int32_t part_index, const std::vector<int32_t>& elems,
-                        std::size_t shared_count) const {
+                        std::size_t shared_count, bool triangles) const {
     const auto& part = model.parts[static_cast<std::size_t>(part_index)];
     const auto& mat = model.materials[static_cast<std::size_t>(part.material)];
     const auto& sec = model.shell_sections[static_cast<std::size_t>(part.section)];
@@ -362,12 +387,16 @@ class SubdomainBuilder {
     b.law = lawOf(model, part, false);
     b.rho0 = mat.rho;
     b.rigid = massOnly(model, part);
-    b.elform = sec.elform == 10 ? 2 : sec.elform;
+    // ELFORM 10 runs as 2 with the warping correction; the triangles of an ELFORM 16 part as
+    // C0 triangles (sortTriangles).
+    b.elform = sec.elform == 10 ? 2 : (triangles ? 4 : sec.elform);
     b.nip = sec.nip;
     b.lobatto = model.controls.shell_lobatto;
     b.shear_factor = sec.shrf;
     const auto hg = hourglassOf(model, part);
     b.ihq = hg.ihq;
+    // IHQ 8: the fully integrated shell's warping projection (LS-DYNA *HOURGLASS IHQ 8).
+    b.warping = b.elform == 16 && hg.ihq == 8;
     b.qm = hg.qm;
     // ELFORM 10 is Belytschko-Tsay with the Belytschko-Wong-Chiang warping correction.
     b.bwc = model.controls.shell_bwc || sec.elform == 10;

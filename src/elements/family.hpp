@@ -43,7 +43,9 @@ template <>
 struct FamilyTraits<domain::ShellBlock> {
   static BlockStatus forces(domain::ShellBlock& b, const KernelInputs& in, std::size_t first,
                             std::size_t last) {
-    return computeShellForces(b, in.x, in.v, in.w, in.dt, in.slots, first, last);
+    return b.elform == 16
+               ? computeFullShellForces(b, in.x, in.v, in.w, in.dt, in.slots, first, last)
+               : computeShellForces(b, in.x, in.v, in.w, in.dt, in.slots, first, last);
   }
 };
 

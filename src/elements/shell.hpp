@@ -81,6 +81,18 @@ inline BlockStatus computeShellForces(domain::ShellBlock& block, const domain::N
   return computeShellForces(block, x, v, w, dt, slots, 0, block.size());
 }
 
+// The fully integrated shell (ELFORM 16, src/elements/shell_full.cpp) over elements [first,
+// last) of a block with elform 16 (quadrilaterals only), with the same inputs, slots, energies,
+// erosion and stable step as computeShellForces.
+BlockStatus computeFullShellForces(domain::ShellBlock& block, const domain::NodeVector& x,
+                                   const domain::NodeVector& v, const domain::NodeVector& w,
+                                   double dt, double* slots, std::size_t first, std::size_t last);
+inline BlockStatus computeFullShellForces(domain::ShellBlock& block, const domain::NodeVector& x,
+                                          const domain::NodeVector& v, const domain::NodeVector& w,
+                                          double dt, double* slots) {
+  return computeFullShellForces(block, x, v, w, dt, slots, 0, block.size());
+}
+
 // Stable step of one shell (LS-DYNA Theory Manual, "Time step control", shell elements, the
 // default characteristic length): dt = L_s / c, L_s = (1 + beta) A / (longest side), beta = 0
 // for quadrilaterals and 1 for triangles, c = sqrt(E / (rho (1 - nu^2))) (plane-stress plate

@@ -152,13 +152,14 @@ void readSectionShell(Context& ctx, const deck::Keyword& kw, const KeywordOption
     s.where = c.where();
     const auto elform = c.integer("ELFORM");
     // ELFORM (Keyword Manual, *SECTION_SHELL): 2 Belytschko-Tsay, 4 C0 triangle, 10
-    // Belytschko-Wong-Chiang (BT with the warping correction). Others are refused on use.
-    if (elform != 2 && elform != 4 && elform != 10) {
+    // Belytschko-Wong-Chiang (BT with the warping correction), 16 fully integrated. Others are
+    // refused on use.
+    if (elform != 2 && elform != 4 && elform != 10 && elform != 16) {
       ctx.define(Kind::Section, s.id, c, "SECID");
       ctx.defineUnsupported(Kind::Section, s.id, kw.name + " ELFORM=" + std::to_string(elform),
                             c.where());
       ctx.reportUnsupported(
-          kw, "ELFORM " + std::to_string(elform) + " not supported (2, 4 and 10 are)", false);
+          kw, "ELFORM " + std::to_string(elform) + " not supported (2, 4, 10 and 16 are)", false);
       ctx.collect(cur);
       continue;
     }

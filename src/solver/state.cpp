@@ -56,9 +56,9 @@ void visitShell(B& b, std::size_t e, F&& f) {
   f(b.failed[e]);
   for (int k = 0; k < b.sigFields(); ++k) f(b.sig[b.blocked(b.sigFields(), k, e)]);
   if (!b.eps_p.empty())
-    for (int k = 0; k < b.nip; ++k) f(b.eps_p[b.blocked(b.nip, k, e)]);
+    for (int k = 0; k < b.epsFields(); ++k) f(b.eps_p[b.blocked(b.epsFields(), k, e)]);
   if (!b.alpha.empty())
-    for (int k = 0; k < 3 * b.nip; ++k) f(b.alpha[b.blocked(3 * b.nip, k, e)]);
+    for (int k = 0; k < b.alphaFields(); ++k) f(b.alpha[b.blocked(b.alphaFields(), k, e)]);
   if (!b.hgq.empty())
     for (int k = 0; k < 5; ++k) f(b.hgq[b.blocked(5, k, e)]);
   for (int k = 0; k < 4; ++k) f(b.drill[b.blocked(4, k, e)]);
