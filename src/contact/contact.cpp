@@ -5,6 +5,8 @@
 #include <cmath>
 #include <optional>
 
+#include <omp.h>
+
 #include "contact/geometry.hpp"
 #include "util/archive.hpp"
 #include "util/error.hpp"
@@ -499,45 +501,63 @@ NodeAndSegment Contact::nodeAndSegment(std::size_t node, const std::array<int32_
   return m;
 }
 
-std::vector<Record> Contact::checkContacts(double time, double dt_prev) {
-  std::vector<Record> mine;
-  int64_t tests = 0;
-  const auto& checks = partition_.mine();
-  for (const int32_t active : search_.active()) {
-    const auto i = std::size_t(active);
-    const int32_t check = checks[i];
-    const auto c = std::size_t(check);
-    const auto pass = std::size_t(check_pass_[c]);
-    const Pass& p = passes_[pass];
-    const auto& ci = model_.contacts[std::size_t(p.iface)];
-    if (time < ci.birth || time > ci.death) continue;
-    const auto node = std::size_t(check_node_[c]);
-    if (p.tied) {
-      const int32_t s = tie_seg_[c];
-      if (s < 0) continue;
-      // A tie is as stiff as the elements it joins: the penalty without SLSFAC.
-      mine.push_back(tiedForce(
-          check, s, tie_weight_[c], tie_offset_[c], nodeAndSegment(node, p.seg[std::size_t(s)]),
-          p.seg_k[std::size_t(s)] / model_.contact_controls.slsfac, ci, dt_stiff_, dt_prev));
-      continue;
-    }
-    const int64_t before = tests;
-    auto best = chooseSegment(pass, check, search_.candidates(i), tests, false);
-    partition_.addCost(check, tests - before);
-    if (!best) continue;
-    // Tracked contacts keep the entry offset they began with.
-    if (best->rank == 0) best->entry = entry_[c];
-    const double pen = -best->surface.gap - initial_gap_[c] - best->entry;
-    if (!(pen > 0.0)) continue;
-    const auto seg = std::size_t(best->seg);
-    const Penetration found{
-        check,      best->seg, best->proj.N, best->surface.push, pen, int8_t(best->surface.side),
-        best->entry};
-    mine.push_back(penaltyForce(found, nodeAndSegment(node, p.seg[seg]), p.seg_k[seg],
-                                at(friction_, c), ci, dt_stiff_, dt_prev));
+std::optional<Record> Contact::checkOne(std::size_t i, double time, double dt_prev,
+                                        int64_t& tests) const {
+  const int32_t check = partition_.mine()[i];
+  const auto c = std::size_t(check);
+  const auto pass = std::size_t(check_pass_[c]);
+  const Pass& p = passes_[pass];
+  const auto& ci = model_.contacts[std::size_t(p.iface)];
+  if (time < ci.birth || time > ci.death) return std::nullopt;
+  const auto node = std::size_t(check_node_[c]);
+  if (p.tied) {
+    const int32_t s = tie_seg_[c];
+    if (s < 0) return std::nullopt;
+    // A tie is as stiff as the elements it joins: the penalty without SLSFAC.
+    return tiedForce(
+        check, s, tie_weight_[c], tie_offset_[c], nodeAndSegment(node, p.seg[std::size_t(s)]),
+        p.seg_k[std::size_t(s)] / model_.contact_controls.slsfac, ci, dt_stiff_, dt_prev);
   }
-  stats_.tests += tests;
-  return mine;
+  auto best = chooseSegment(pass, check, search_.candidates(i), tests, false);
+  if (!best) return std::nullopt;
+  // Tracked contacts keep the entry offset they began with.
+  if (best->rank == 0) best->entry = entry_[c];
+  const double pen = -best->surface.gap - initial_gap_[c] - best->entry;
+  if (!(pen > 0.0)) return std::nullopt;
+  const auto seg = std::size_t(best->seg);
+  const Penetration found{
+      check,      best->seg, best->proj.N, best->surface.push, pen, int8_t(best->surface.side),
+      best->entry};
+  return penaltyForce(found, nodeAndSegment(node, p.seg[seg]), p.seg_k[seg], at(friction_, c), ci,
+                      dt_stiff_, dt_prev);
+}
+
+std::vector<Record> Contact::checkContacts(double time, double dt_prev) {
+  // Threaded like the element kernels: each check is computed alone from state nobody writes
+  // during the loop, and the records are put in check order afterwards (gatherRecords), so
+  // the bits do not depend on the thread count. Few active checks run on one thread (the
+  // fork would cost more than it saves).
+  constexpr std::size_t kParallelChecks = 128;
+  const auto& active = search_.active();
+  const std::size_t n = active.size();
+  std::vector<int64_t> tests(n, 0);
+  std::vector<std::vector<Record>> found(static_cast<std::size_t>(omp_get_max_threads()));
+#pragma omp parallel if (n >= kParallelChecks)
+  {
+    auto& mine = found[static_cast<std::size_t>(omp_get_thread_num())];
+#pragma omp for schedule(static)
+    for (std::size_t k = 0; k < n; ++k)
+      if (auto r = checkOne(std::size_t(active[k]), time, dt_prev, tests[k])) mine.push_back(*r);
+  }
+  const auto& checks = partition_.mine();
+  for (std::size_t k = 0; k < n; ++k) {
+    partition_.addCost(checks[std::size_t(active[k])], tests[k]);
+    stats_.tests += tests[k];
+  }
+  std::vector<Record> all = std::move(found.front());
+  for (std::size_t t = 1; t < found.size(); ++t)
+    all.insert(all.end(), found[t].begin(), found[t].end());
+  return all;
 }
 
 bool Contact::sortIfDue() {

@@ -155,6 +155,9 @@ class Contact {
   bool tracks(const Pass& pass, int32_t check, std::size_t seg, const Projection& pr) const;
   // The records of this rank's checks in contact now.
   std::vector<Record> checkContacts(double time, double dt_prev);
+  // The record of active check i (an index into partition_.mine()), if it is in contact;
+  // adds the segments it tested to `tests`.
+  std::optional<Record> checkOne(std::size_t i, double time, double dt_prev, int64_t& tests) const;
   NodeAndSegment nodeAndSegment(std::size_t node, const std::array<int32_t, 4>& seg) const;
   // Every rank's records, in check order.
   void gatherRecords(std::vector<Record> mine);

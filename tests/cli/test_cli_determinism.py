@@ -52,6 +52,16 @@ class ThreadCountIndependence(clitest.TempDirTest):
         self.assertGreater(one["energy"]["internal"], 0.0, "the bar should be deforming by now")
         self.assertSameRun(one, two, "Taylor bar")
 
+    def test_tube_crush_contact(self):
+        # Single-surface contact on a folding tube: the contact checks run on the threads too
+        # (more than 128 active checks), and the records are put in check order.
+        sys.path.insert(0, os.path.join(clitest.SOURCE_DIR, "tools"))
+        import contact_decks  # noqa: E402
+        deck = self.write("tube.k", contact_decks.tube_crush(size=5.0, length=60.0, end=1.0))
+        one, two = self.run_deck(deck, 1), self.run_deck(deck, 2)
+        self.assertGreater(one["contact"]["records_per_cycle"], 1.0)
+        self.assertSameRun(one, two, "1 vs 2 threads")
+
 
 class DigestDefinition(clitest.TempDirTest):
     """state_digest = SHA-256 of the final x then v, little-endian float64, nodes in ascending
