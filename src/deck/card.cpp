@@ -1,9 +1,11 @@
 #include "deck/card.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <span>
 #include <stdexcept>
 #include <utility>
 
@@ -66,7 +68,15 @@ Card::Card(const CardSpec& spec, const DataLine* line, const Keyword& keyword, c
     readFree(text);
     return;
   }
-  const std::vector<std::string_view> fields = fixedFields(text);
+  // The fields on the stack for the usual card (a heap list per card line was one allocation
+  // per line of the deck).
+  constexpr std::size_t kOnStack = 32;
+  std::array<std::string_view, kOnStack> small;
+  std::vector<std::string_view> large(spec.fields.size() > kOnStack ? spec.fields.size() : 0);
+  const std::span<std::string_view> all =
+      large.empty() ? std::span<std::string_view>(small.data(), spec.fields.size())
+                    : std::span<std::string_view>(large);
+  const auto fields = all.first(fixedFields(text, all));
   if (outOfColumns(text, fields) && readSpaced(text)) return;
   for (std::size_t i = 0; i < fields.size(); ++i) parseField(i, fields[i]);
 }
@@ -101,31 +111,34 @@ void Card::readFree(std::string_view text) {
 }
 
 // The text of each field in the keyword's column widths, up to the end of the line.
-std::vector<std::string_view> Card::fixedFields(std::string_view text) const {
-  std::vector<std::string_view> out;
+std::size_t Card::fixedFields(std::string_view text, std::span<std::string_view> out) const {
+  std::size_t n = 0;
   std::size_t col = 0;
   for (std::size_t i = 0; i < spec_->fields.size() && col < text.size(); ++i) {
     const std::size_t w =
         takesRestOfLine(*spec_, i)
             ? std::string_view::npos
             : static_cast<std::size_t>(effectiveWidth(spec_->fields[i], keyword_->format));
-    out.push_back(text.substr(col, w));
+    out[n++] = text.substr(col, w);
     col = w == std::string_view::npos ? text.size() : col + w;
   }
-  return out;
+  return n;
 }
 
 // A tab inside the line, or a blank inside a numeric field ("0       1": a script wrote 8-wide
 // columns into a 10-wide card), means the values are not in the card's columns.
-bool Card::outOfColumns(std::string_view text, const std::vector<std::string_view>& fields) const {
+bool Card::outOfColumns(std::string_view text, std::span<const std::string_view> fields) const {
   if (!splittable()) return false;
-  if (text.substr(0, text.find_last_not_of(" \t") + 1).find('\t') != std::string_view::npos)
-    return true;
+  // A tab before the trailing blanks (a leading one counts).
+  std::size_t end = text.size();
+  while (end > 0 && (text[end - 1] == ' ' || text[end - 1] == '\t')) --end;
+  if (text.substr(0, end).find('\t') != std::string_view::npos) return true;
   for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (spec_->fields[i].type == FieldType::Text) continue;
     const std::string_view s = trim(fields[i]);
-    if (spec_->fields[i].type != FieldType::Text &&
-        s.find_first_of(" \t") != std::string_view::npos && s.find('&') == std::string_view::npos)
-      return true;
+    const bool blank_inside = std::any_of(s.begin(), s.end(), [](char c) { return c == ' '; }) ||
+                              s.find('\t') != std::string_view::npos;
+    if (blank_inside && s.find('&') == std::string_view::npos) return true;
   }
   return false;
 }

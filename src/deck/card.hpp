@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <deque>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -74,8 +75,9 @@ class Card {
   bool splittable() const;
   bool freeFormat(std::string_view text) const;
   void readFree(std::string_view text);
-  std::vector<std::string_view> fixedFields(std::string_view text) const;
-  bool outOfColumns(std::string_view text, const std::vector<std::string_view>& fields) const;
+  // The text of each field in the card's columns into `out` (room for every field); how many.
+  std::size_t fixedFields(std::string_view text, std::span<std::string_view> out) const;
+  bool outOfColumns(std::string_view text, std::span<const std::string_view> fields) const;
   bool readSpaced(std::string_view text);
   std::size_t index(std::string_view field) const;
   void parseField(std::size_t i, std::string_view raw);

@@ -6,11 +6,19 @@
 
 namespace crumple::deck {
 
+namespace {
+bool isBlank(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n';
+}
+}  // namespace
+
+// A plain loop: find_first_not_of with a set of characters calls memchr once per character,
+// and trimming was a fifth of the instructions of reading a deck (callgrind, `check`).
 std::string_view trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r\n");
-  if (first == std::string_view::npos) return {};
-  const auto last = s.find_last_not_of(" \t\r\n");
-  return s.substr(first, last - first + 1);
+  std::size_t first = 0, last = s.size();
+  while (first < last && isBlank(s[first])) ++first;
+  while (last > first && isBlank(s[last - 1])) --last;
+  return s.substr(first, last - first);
 }
 
 namespace {
