@@ -77,6 +77,7 @@ Card::Card(const CardSpec& spec, const DataLine* line, const Keyword& keyword, c
       large.empty() ? std::span<std::string_view>(small.data(), spec.fields.size())
                     : std::span<std::string_view>(large);
   const auto fields = all.first(fixedFields(text, all));
+  for (auto& f : fields) f = trim(f);  // once: the checks and the parse below take them so
   if (outOfColumns(text, fields) && readSpaced(text)) return;
   for (std::size_t i = 0; i < fields.size(); ++i) parseField(i, fields[i]);
 }
