@@ -10,6 +10,7 @@
 #include "materials/laws/null.hpp"
 #include "materials/laws/piecewise_linear.hpp"
 #include "materials/laws/plastic_kinematic.hpp"
+#include "materials/laws/power_law.hpp"
 #include "materials/laws/rigid.hpp"
 #include "materials/laws/soil_foam.hpp"
 #include "materials/laws/springs.hpp"
@@ -23,6 +24,6 @@ struct LawList {};
 // append new laws at the end.
 using AllLaws =
     LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic, DamperViscous,
-            SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam, JohnsonCook>;
+            SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam, JohnsonCook, PowerLaw>;
 
 }  // namespace crumple::materials

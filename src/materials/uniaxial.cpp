@@ -27,6 +27,11 @@ void flowStressAndSlope(const FibreLaw& law, double eps_p, double& y, double& h)
     curveStressAndSlope(law.table.eps, law.table.at(0.0), eps_p, y, h);
     return;
   }
+  if (law.power.k > 0.0) {
+    y = law.power.flow(eps_p);
+    h = law.power.slope(eps_p);
+    return;
+  }
   if (law.curve_eps.empty()) {
     y = law.sigy + law.Hi * eps_p;
     h = law.Hi;
