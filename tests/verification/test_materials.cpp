@@ -492,3 +492,64 @@ TEST(VerificationMaterials, JohnsonCookPullToFailure) {
   RecordProperty("erosion_plastic_strain", fmt::format("{:.4g} (formula {:.4g})", eps_fail, ef));
   RecordProperty("worst_flow_stress_error", fmt::format("{:.3g}", worst));
 }
+
+namespace {
+
+// *MAT_POWER_LAW_PLASTICITY (mm, s, t, MPa): E 210 GPa, PR 0.3, k 500 MPa, n 0.2, Cowper-Symonds
+// SRC 40 /s, SRP 5; SIGY 0, so eps_yp = (E / k)^(1 / (n - 1)) (Keyword Manual, *MAT_018).
+const std::string kPowerLaw = "*MAT_POWER_LAW_PLASTICITY\n1,7.85e-9,210000,0.3,500,0.2,40,5\n";
+
+double powerFlow(double e, double rate) {
+  return (1.0 + std::pow(rate / 40.0, 0.2)) * 500.0 * std::pow(std::pow(420.0, -1.25) + e, 0.2);
+}
+
+}  // namespace
+
+// *MAT_018 in a whole run: the hex of isochoricPull stretched at 100 /s to 10 % strain. Once
+// plastic, its von Mises stress is the power law times the Cowper-Symonds factor at its
+// plastic strain and the effective strain rate of the prescribed motion (without the factor it
+// would be 2.2 times lower), and the internal energy is the work of that stress: the elastic
+// energy plus the plastic work integrated here from the element's own history.
+TEST(VerificationMaterials, PowerLawPullAtRate) {
+  const double rate = 100.0;
+  auto sim = Simulation::fromText("power_law_pull", isochoricPull(kPowerLaw, rate));
+  double worst = 0.0, eps_prev = 0.0, q_prev = 0.0, plastic_work = 0.0;
+  int checked = 0;
+  sim->run([&](const auto&) {
+    const auto& blk = sim->sd.solid_blocks.at(0);
+    const double eps_p = blk.eps_p.at(0);
+    double sig[6];
+    for (int k = 0; k < 6; ++k) sig[k] = blk.sigAt(k, 0);
+    const double p = (sig[0] + sig[1] + sig[2]) / 3.0;
+    const double q = std::sqrt(1.5 * ((sig[0] - p) * (sig[0] - p) + (sig[1] - p) * (sig[1] - p) +
+                                      (sig[2] - p) * (sig[2] - p)) +
+                               3.0 * (sig[3] * sig[3] + sig[4] * sig[4] + sig[5] * sig[5]));
+    if (eps_p > eps_prev) plastic_work += 0.5 * (q + q_prev) * (eps_p - eps_prev);
+    eps_prev = eps_p;
+    q_prev = q;
+    if (eps_p < 1e-3) return;
+    const double lx = sim->x(2, 0) - sim->x(1, 0), ly = sim->x(3, 1) - sim->x(1, 1);
+    const double dx = rate / lx, dy = -0.5 * rate / ly, tr = (dx + 2.0 * dy) / 3.0;
+    const double r = std::sqrt(2.0 / 3.0 * ((dx - tr) * (dx - tr) + 2.0 * (dy - tr) * (dy - tr)));
+    worst = std::max(worst, std::abs(q - powerFlow(eps_p, r)) / q);
+    ++checked;
+  });
+  EXPECT_GT(checked, 100);
+  EXPECT_GT(eps_prev, 0.08);
+  EXPECT_LT(worst, 1e-3);
+  // Energy: internal = plastic work + elastic energy of the current volume.
+  const auto& blk = sim->sd.solid_blocks.at(0);
+  double sig[6];
+  for (int k = 0; k < 6; ++k) sig[k] = blk.sigAt(k, 0);
+  const double vol =
+      (sim->x(2, 0) - sim->x(1, 0)) * (sim->x(3, 1) - sim->x(1, 1)) * (sim->x(5, 2) - sim->x(1, 2));
+  // Elastic energy q^2 / (6 G) + p^2 / (2 K), G = 80769, K = 175000.
+  const double pm = (sig[0] + sig[1] + sig[2]) / 3.0;
+  const double elastic = q_prev * q_prev / (6.0 * 80769.23) + pm * pm / (2.0 * 175000.0);
+  const double e = sim->solver->energies().internal;
+  EXPECT_NEAR(e, (plastic_work + elastic) * vol, 0.005 * e);
+  EXPECT_NEAR(sim->solver->energies().ratio, 1.0, 0.01);
+  RecordProperty("worst_flow_stress_error", fmt::format("{:.3g}", worst));
+  RecordProperty("internal_over_plastic_work",
+                 fmt::format("{:.4g}", e / ((plastic_work + elastic) * vol)));
+}

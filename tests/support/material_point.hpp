@@ -1,0 +1,105 @@
+// One material point of any law driven through a prescribed path, in each element family's
+// state (solid: 3-D stress, shell: plane stress, beam: fibre), for the unit tests of the laws.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <type_traits>
+#include <variant>
+
+#include "materials/materials.hpp"
+
+namespace crumple::testing {
+
+namespace mp {
+
+namespace m = crumple::materials;
+using Strain = std::array<double, 6>;
+
+// A solid point with every history a law may keep.
+struct SolidPoint {
+  Strain s{};
+  Strain alpha{};
+  double eps_p = 0.0;
+  std::array<double, m::kMaxHistory> h{};
+  uint8_t failed = 0;
+
+  void step(const m::Law& law, const Strain& de, double dt) {
+    m::PointBatch b;
+    b.n = 1;
+    b.dt = dt;
+    for (int k = 0; k < 6; ++k) {
+      b.s[k] = &s[static_cast<std::size_t>(k)];
+      b.de[k] = &de[static_cast<std::size_t>(k)];
+      b.alpha[k] = &alpha[static_cast<std::size_t>(k)];
+    }
+    for (int k = 0; k < m::kMaxHistory; ++k) b.h[k] = &h[static_cast<std::size_t>(k)];
+    b.eps_p = &eps_p;
+    b.failed = &failed;
+    std::visit(
+        [&](const auto& l) {
+          if constexpr (m::SolidLaw<std::decay_t<decltype(l)>>) l.update(b);
+        },
+        law);
+  }
+  // A step of axial strain dx in uniaxial stress: the equal lateral strains that leave the
+  // lateral stress zero, by the secant method on copies of the point.
+  void uniaxialStep(const m::Law& law, double dx, double dt) {
+    auto lateral = [&](double dl) {
+      SolidPoint p = *this;
+      p.step(law, {dx, dl, dl, 0, 0, 0}, dt);
+      return p;
+    };
+    double a = -0.5 * dx, b = -0.3 * dx;
+    double fa = lateral(a).s[1], fb = lateral(b).s[1];
+    for (int it = 0; it < 60 && fb != fa && std::abs(fb) > 1e-11; ++it) {
+      const double c = b - fb * (b - a) / (fb - fa);
+      a = b;
+      fa = fb;
+      b = c;
+      fb = lateral(b).s[1];
+    }
+    *this = lateral(b);
+  }
+  double mises() const {
+    const double p = (s[0] + s[1] + s[2]) / 3.0;
+    const double a = s[0] - p, b = s[1] - p, c = s[2] - p;
+    return std::sqrt(1.5 * (a * a + b * b + c * c) +
+                     3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+  }
+};
+
+// A shell point (plane stress, xx yy xy).
+struct ShellPoint {
+  std::array<double, 3> s{}, alpha{};
+  double eps_p = 0.0, de_zz = 0.0;
+  uint8_t failed = 0;
+
+  void step(const m::Law& law, double dxx, double dyy, double dxy, double dt) {
+    const double de[3] = {dxx, dyy, dxy};
+    m::PlaneStressPoints b;
+    b.n = 1;
+    b.dt = dt;
+    for (int k = 0; k < 3; ++k) {
+      b.s[k] = &s[static_cast<std::size_t>(k)];
+      b.de[k] = &de[k];
+      b.alpha[k] = &alpha[static_cast<std::size_t>(k)];
+    }
+    b.de_zz = &de_zz;
+    b.eps_p = &eps_p;
+    b.failed = &failed;
+    std::visit(
+        [&](const auto& l) {
+          if constexpr (m::ShellLaw<std::decay_t<decltype(l)>>) l.updatePlaneStress(b);
+        },
+        law);
+  }
+  double mises() const {
+    return std::sqrt(s[0] * s[0] - s[0] * s[1] + s[1] * s[1] + 3.0 * s[2] * s[2]);
+  }
+};
+
+}  // namespace mp
+
+}  // namespace crumple::testing
