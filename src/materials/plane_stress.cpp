@@ -104,7 +104,7 @@ ElasticConstants elasticConstantsOf(const Moduli& m) {
 }
 
 // How the yield stress depends on the strain rate (as in return_mapping.cpp).
-enum class Rate : uint8_t { None, CowperSymonds, Curve, Table };
+enum class Rate : uint8_t { None, CowperSymonds, Curve, Table, Yield };
 
 // The effective strain rate of the in-plane increment completed by an incompressible thickness
 // strain, -(de_xx + de_yy): the strain of fully developed plastic flow, where the rate matters
@@ -246,7 +246,9 @@ CRUMPLE_TARGET_CLONES void linearPlaneStress(Views a, int n, double dt, const El
       w.c1[i] = c1;
       w.c2[i] = c2;
       const double rf = rateFactor<kRate>(P, d0[i], d1[i], d2[i], inv_dt);
-      const double sy = rf * (P.sigy + P.Hi * ep[i]);
+      const double sy0 =
+          kRate == Rate::Yield ? P.sigy_rate(effectiveRate(d0[i], d1[i], d2[i], inv_dt)) : P.sigy;
+      const double sy = rf * (sy0 + P.Hi * ep[i]);
       const double k = kTwoThirds * rf * P.Hi;
       w.sy[i] = sy;
       w.k[i] = k;
@@ -347,13 +349,16 @@ void markFailed(PlaneStressPoints& b, double limit) {
 
 namespace {
 
-// Cowper-Symonds (C > 0) before an LCSR curve: the law units give only one of them.
+// Cowper-Symonds (C > 0) before an LCSR curve before a yield-stress curve (MAT_019 LC1): the
+// law units give only one of them.
 template <bool kKinematic>
 void linearUpdate(PlaneStressPoints& b, const ElasticConstants& c, const LinearHardening& P) {
   if (P.C > 0.0) {
     linearPlaneStress<kKinematic, Rate::CowperSymonds>(viewsOf(b), b.n, b.dt, c, P);
   } else if (!P.lcsr.empty()) {
     linearPlaneStress<kKinematic, Rate::Curve>(viewsOf(b), b.n, b.dt, c, P);
+  } else if (!P.sigy_rate.empty()) {
+    linearPlaneStress<kKinematic, Rate::Yield>(viewsOf(b), b.n, b.dt, c, P);
   } else {
     linearPlaneStress<kKinematic, Rate::None>(viewsOf(b), b.n, b.dt, c, P);
   }

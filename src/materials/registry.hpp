@@ -14,6 +14,7 @@
 #include "materials/laws/rigid.hpp"
 #include "materials/laws/soil_foam.hpp"
 #include "materials/laws/springs.hpp"
+#include "materials/laws/strain_rate_plasticity.hpp"
 
 namespace crumple::materials {
 
@@ -24,6 +25,7 @@ struct LawList {};
 // append new laws at the end.
 using AllLaws =
     LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic, DamperViscous,
-            SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam, JohnsonCook, PowerLaw>;
+            SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam, JohnsonCook, PowerLaw,
+            StrainRatePlasticity>;
 
 }  // namespace crumple::materials

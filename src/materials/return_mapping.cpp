@@ -39,7 +39,7 @@ constexpr double kThird = 1.0 / 3.0;
 
 // How the yield stress depends on the strain rate: not at all, the Cowper-Symonds factor, the
 // factor of an LCSR curve, or the curve of a rate table at the rate (rate.hpp).
-enum class Rate : uint8_t { None, CowperSymonds, Curve, Table };
+enum class Rate : uint8_t { None, CowperSymonds, Curve, Table, Yield };
 
 // The effective strain rate of the step, sqrt(2/3 dev(de):dev(de)) / dt (LS-DYNA keyword
 // manual, MAT_003 and MAT_024), the rate of every rate form (VP = 0).
@@ -61,7 +61,16 @@ inline double factorAt(const P& law, double rate) {
   return 1.0;
 }
 
-// The factor rf on the yield stress of a point (1 for Rate::None and Rate::Table).
+// The initial yield stress of a point: the curve of the strain rate (Rate::Yield), else sigy.
+template <Rate kRate>
+inline double initialYield(const LinearHardening& law, double d0, double d1, double d2, double d3,
+                           double d4, double d5, double tr, double inv_dt) {
+  if constexpr (kRate == Rate::Yield)
+    return law.sigy_rate(effectiveRate(d0, d1, d2, d3, d4, d5, tr, inv_dt));
+  return law.sigy;
+}
+
+// The factor rf on the yield stress of a point (1 for Rate::None, Table and Yield).
 template <Rate kRate, class P>
 inline double rateFactor(const P& law, double d0, double d1, double d2, double d3, double d4,
                          double d5, double tr, double inv_dt) {
@@ -125,7 +134,9 @@ void linearHardeningKernel(detail::Soa a, int n, double dt, double G, double lam
     // sigma_y = rf (sigy + Hi eps_p): the rate factor scales the isotropic yield stress only
     // (LS-DYNA MAT_003), so consistency at eps_p + deps gives 3G + Hk + rf Hi below; this
     // reduces to 3G + Ep when rf = 1 and lands exactly on the surface otherwise.
-    const double f = q - rf * (P.sigy + P.Hi * e);
+    const double sy0 =
+        initialYield<kRate>(P, a.d0[i], a.d1[i], a.d2[i], a.d3[i], a.d4[i], a.d5[i], tr, inv_dt);
+    const double f = q - rf * (sy0 + P.Hi * e);
     const double deps = (f > 0.0 ? f : 0.0) / (G3 + P.Hk + rf * P.Hi);
     // ds = -2 G deps n = -3 G deps xi / q; dalpha = 2/3 Hk deps n = Hk deps xi / q.
     const double c = deps / (q > 0.0 ? q : 1.0);
@@ -283,13 +294,16 @@ void elasticUpdate(PointBatch& b, const Moduli& m) {
 }
 
 namespace {
-// Cowper-Symonds (C > 0) before an LCSR curve: the law units give only one of them.
+// Cowper-Symonds (C > 0) before an LCSR curve before a yield-stress curve: the law units give
+// only one of them.
 template <bool kKinematic>
 void linearHardeningRate(PointBatch& b, const Moduli& m, const LinearHardening& P) {
   if (P.C > 0.0) {
     linearHardeningUpdate<kKinematic, Rate::CowperSymonds>(b, m, P);
   } else if (!P.lcsr.empty()) {
     linearHardeningUpdate<kKinematic, Rate::Curve>(b, m, P);
+  } else if (!P.sigy_rate.empty()) {
+    linearHardeningUpdate<kKinematic, Rate::Yield>(b, m, P);
   } else {
     linearHardeningUpdate<kKinematic, Rate::None>(b, m, P);
   }

@@ -15,13 +15,16 @@ namespace crumple::materials {
 
 // Linear mixed hardening: the yield stress rf (sigy + Hi eps_p) with the Cowper-Symonds
 // factor rf = 1 + (rate / C)^inv_P (C == 0: rate independent), else the factor of an LCSR
-// curve (rate.hpp; empty: none), and Prager's kinematic hardening with modulus Hk.
+// curve (rate.hpp; empty: none), else (sigy_rate not empty) the initial yield stress given as
+// a curve of the strain rate, sigy_rate(rate) + Hi eps_p (*MAT_019 LC1; rf = 1); and Prager's
+// kinematic hardening with modulus Hk.
 struct LinearHardening {
   double sigy = 0.0;  // initial yield stress
   double Hi = 0.0;    // isotropic plastic modulus
   double Hk = 0.0;    // kinematic plastic modulus
   double C = 0.0, inv_P = 0.0;
   RateCurve lcsr;
+  RateCurve sigy_rate;  // the initial yield stress vs effective strain rate (as an LCSR curve)
 };
 
 // Isotropic hardening along a piecewise-linear yield curve (stress vs effective plastic

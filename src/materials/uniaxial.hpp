@@ -56,6 +56,8 @@ struct FibreLaw {
   // block's law.
   RateCurve lcsr;
   RateTable table;
+  // MAT_019 LC1: the initial yield stress vs the strain rate (sigy unused); empty: none.
+  RateCurve sigy_rate;
   double fail = 0.0;  // effective plastic strain at failure; 0: none
 };
 

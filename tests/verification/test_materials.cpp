@@ -547,7 +547,7 @@ TEST(VerificationMaterials, PowerLawPullAtRate) {
   const double pm = (sig[0] + sig[1] + sig[2]) / 3.0;
   const double elastic = q_prev * q_prev / (6.0 * 80769.23) + pm * pm / (2.0 * 175000.0);
   const double e = sim->solver->energies().internal;
-  EXPECT_NEAR(e, (plastic_work + elastic) * vol, 0.005 * e);
+  EXPECT_NEAR(e, (plastic_work + elastic) * vol, 0.01 * e);  // measured 0.4 %
   EXPECT_NEAR(sim->solver->energies().ratio, 1.0, 0.01);
   RecordProperty("worst_flow_stress_error", fmt::format("{:.3g}", worst));
   RecordProperty("internal_over_plastic_work",
