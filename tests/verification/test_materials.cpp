@@ -553,3 +553,45 @@ TEST(VerificationMaterials, PowerLawPullAtRate) {
   RecordProperty("internal_over_plastic_work",
                  fmt::format("{:.4g}", e / ((plastic_work + elastic) * vol)));
 }
+
+// *MAT_019 in a whole run: the hex of isochoricPull stretched at 40 /s and at 400 /s (beyond
+// the last point of LC1: its end slope) to 10 %
+// strain, LC1 (mm s t MPa) 200, 250, 400 MPa at 0, 10, 100 /s, ETAN 2 GPa. Once plastic, its
+// von Mises stress is sigma_0(rate) + Ep eps_p at the effective strain rate of the motion.
+TEST(VerificationMaterials, StrainRatePlasticityPullAtTwoRates) {
+  const std::string mat =
+      "*MAT_STRAIN_RATE_DEPENDENT_PLASTICITY\n1,7.85e-9,200000,0.3\n7,2000\n"
+      "*DEFINE_CURVE\n7\n0,200\n10,250\n100,400\n";
+  auto sigma0 = [](double r) {
+    return r < 10.0 ? 200.0 + 5.0 * r : 250.0 + 150.0 / 90.0 * (r - 10.0);
+  };
+  const double Ep = 200000.0 * 2000.0 / 198000.0;
+  for (const double rate : {40.0, 400.0}) {
+    auto sim = Simulation::fromText("mat019_pull", isochoricPull(mat, rate));
+    double worst = 0.0, last = 0.0;
+    int checked = 0;
+    sim->run([&](const auto&) {
+      const auto& blk = sim->sd.solid_blocks.at(0);
+      const double eps_p = blk.eps_p.at(0);
+      if (eps_p < 1e-3) return;
+      const double lx = sim->x(2, 0) - sim->x(1, 0), ly = sim->x(3, 1) - sim->x(1, 1);
+      const double dx = rate / lx, dy = -0.5 * rate / ly, tr = (dx + 2.0 * dy) / 3.0;
+      const double r = std::sqrt(2.0 / 3.0 * ((dx - tr) * (dx - tr) + 2.0 * (dy - tr) * (dy - tr)));
+      double sig[6];
+      for (int k = 0; k < 6; ++k) sig[k] = blk.sigAt(k, 0);
+      const double p = (sig[0] + sig[1] + sig[2]) / 3.0;
+      const double q = std::sqrt(1.5 * ((sig[0] - p) * (sig[0] - p) + (sig[1] - p) * (sig[1] - p) +
+                                        (sig[2] - p) * (sig[2] - p)) +
+                                 3.0 * (sig[3] * sig[3] + sig[4] * sig[4] + sig[5] * sig[5]));
+      worst = std::max(worst, std::abs(q - (sigma0(r) + Ep * eps_p)) / q);
+      last = eps_p;
+      ++checked;
+    });
+    EXPECT_GT(checked, 100) << rate;
+    EXPECT_GT(last, 0.08) << rate;
+    // Reading sigma_0 at the static rate instead is 60 % (40 /s) and 4.5 times (400 /s) off.
+    EXPECT_LT(worst, 1e-3) << rate;
+    RecordProperty(rate < 100.0 ? "worst_error_40_per_s" : "worst_error_400_per_s",
+                   fmt::format("{:.3g}", worst));
+  }
+}
