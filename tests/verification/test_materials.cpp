@@ -17,6 +17,17 @@ using crumple::testing::termination;
 
 namespace {
 
+// The von Mises stress of the first point of a solid block.
+template <class Block>
+double misesOf(const Block& blk) {
+  double sig[6];
+  for (int k = 0; k < 6; ++k) sig[k] = blk.sigAt(k, 0);
+  const double p = (sig[0] + sig[1] + sig[2]) / 3.0;
+  return std::sqrt(1.5 * ((sig[0] - p) * (sig[0] - p) + (sig[1] - p) * (sig[1] - p) +
+                          (sig[2] - p) * (sig[2] - p)) +
+                   3.0 * (sig[3] * sig[3] + sig[4] * sig[4] + sig[5] * sig[5]));
+}
+
 // A unit cube whose faces x = 1, y = 1, z = 1 move by -a(t) along their normals (a from curve
 // 1) and whose faces x = 0, y = 0, z = 0 are held: V/V0 = (1 - a)^3, no shear.
 std::string triaxialCompression(const std::string& material, double t_end) {
@@ -162,12 +173,7 @@ TEST(VerificationMaterials, RateTablePullAtTwoRates) {
       const double lx = sim->x(2, 0) - sim->x(1, 0), ly = sim->x(3, 1) - sim->x(1, 1);
       const double dx = rate / lx, dy = -0.5 * rate / ly, tr = (dx + 2.0 * dy) / 3.0;
       const double r = std::sqrt(2.0 / 3.0 * ((dx - tr) * (dx - tr) + 2.0 * (dy - tr) * (dy - tr)));
-      double sig[6];
-      for (int k = 0; k < 6; ++k) sig[k] = blk.sigAt(k, 0);
-      const double p = (sig[0] + sig[1] + sig[2]) / 3.0;
-      const double q = std::sqrt(1.5 * ((sig[0] - p) * (sig[0] - p) + (sig[1] - p) * (sig[1] - p) +
-                                        (sig[2] - p) * (sig[2] - p)) +
-                                 3.0 * (sig[3] * sig[3] + sig[4] * sig[4] + sig[5] * sig[5]));
+      const double q = misesOf(blk);
       const double expected = tableYield(eps_p, r);
       worst = std::max(worst, std::abs(q - expected) / expected);
       last_eps_p = eps_p;
@@ -518,12 +524,7 @@ TEST(VerificationMaterials, PowerLawPullAtRate) {
   sim->run([&](const auto&) {
     const auto& blk = sim->sd.solid_blocks.at(0);
     const double eps_p = blk.eps_p.at(0);
-    double sig[6];
-    for (int k = 0; k < 6; ++k) sig[k] = blk.sigAt(k, 0);
-    const double p = (sig[0] + sig[1] + sig[2]) / 3.0;
-    const double q = std::sqrt(1.5 * ((sig[0] - p) * (sig[0] - p) + (sig[1] - p) * (sig[1] - p) +
-                                      (sig[2] - p) * (sig[2] - p)) +
-                               3.0 * (sig[3] * sig[3] + sig[4] * sig[4] + sig[5] * sig[5]));
+    const double q = misesOf(blk);
     if (eps_p > eps_prev) plastic_work += 0.5 * (q + q_prev) * (eps_p - eps_prev);
     eps_prev = eps_p;
     q_prev = q;
@@ -577,12 +578,7 @@ TEST(VerificationMaterials, StrainRatePlasticityPullAtTwoRates) {
       const double lx = sim->x(2, 0) - sim->x(1, 0), ly = sim->x(3, 1) - sim->x(1, 1);
       const double dx = rate / lx, dy = -0.5 * rate / ly, tr = (dx + 2.0 * dy) / 3.0;
       const double r = std::sqrt(2.0 / 3.0 * ((dx - tr) * (dx - tr) + 2.0 * (dy - tr) * (dy - tr)));
-      double sig[6];
-      for (int k = 0; k < 6; ++k) sig[k] = blk.sigAt(k, 0);
-      const double p = (sig[0] + sig[1] + sig[2]) / 3.0;
-      const double q = std::sqrt(1.5 * ((sig[0] - p) * (sig[0] - p) + (sig[1] - p) * (sig[1] - p) +
-                                        (sig[2] - p) * (sig[2] - p)) +
-                                 3.0 * (sig[3] * sig[3] + sig[4] * sig[4] + sig[5] * sig[5]));
+      const double q = misesOf(blk);
       worst = std::max(worst, std::abs(q - (sigma0(r) + Ep * eps_p)) / q);
       last = eps_p;
       ++checked;
