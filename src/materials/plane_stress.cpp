@@ -398,8 +398,8 @@ double flowMultiplier(const Flow& flow, double e, double c1, double c2, double m
   if (!(q_trial > h)) return dg;
   dg = firstGuess(q_trial, h, slope, c1, c2, m1, m2);
   double lo = 0.0;
-  double hi = h > 0.0 ? 2.0 * (q_trial / h - 1.0) / std::min(m1, m2)
-                      : std::numeric_limits<double>::max();
+  double hi =
+      h > 0.0 ? 2.0 * (q_trial / h - 1.0) / std::min(m1, m2) : std::numeric_limits<double>::max();
   for (int it = 0; it < kPlaneStressMaxIterations; ++it) {
     double i1, i2;
     inverseFactors(m1, m2, dg, i1, i2);
@@ -440,7 +440,8 @@ double curveMultiplier(std::span<const double> x, const Y& y, double rf, double 
 // the elastic predictor, the multiplier `multiplier(d0, d1, d2, e, c1, c2, m1, m2)` of the
 // point, the return and the thickness strain.
 template <class Multiplier>
-void isotropicPlaneStress(PlaneStressPoints& b, const Moduli& moduli, const Multiplier& multiplier) {
+void isotropicPlaneStress(PlaneStressPoints& b, const Moduli& moduli,
+                          const Multiplier& multiplier) {
   const ElasticConstants c = elasticConstantsOf(moduli);
   const double m1 = c.m1, m2 = c.G2;
   for (int i = 0; i < b.n; ++i) {
@@ -474,33 +475,33 @@ void isotropicPlaneStress(PlaneStressPoints& b, const Moduli& moduli, const Mult
 template <Rate kRate>
 void curvePlaneStress(PlaneStressPoints& b, const Moduli& moduli, const CurveHardening& law) {
   const double inv_dt = b.dt > 0.0 ? 1.0 / b.dt : 0.0;
-  isotropicPlaneStress(b, moduli,
-                       [&](double d0, double d1, double d2, double e, double c1, double c2,
-                           double m1, double m2) {
-                         if constexpr (kRate == Rate::Table) {
-                           const CurveBlend y = law.table.at(effectiveRate(d0, d1, d2, inv_dt));
-                           return curveMultiplier(law.table.eps, y, 1.0, e, c1, c2, m1, m2);
-                         } else {
-                           const double rf = rateFactor<kRate>(law, d0, d1, d2, inv_dt);
-                           return curveMultiplier(law.eps, law.sig, rf, e, c1, c2, m1, m2);
-                         }
-                       });
+  isotropicPlaneStress(
+      b, moduli,
+      [&](double d0, double d1, double d2, double e, double c1, double c2, double m1, double m2) {
+        if constexpr (kRate == Rate::Table) {
+          const CurveBlend y = law.table.at(effectiveRate(d0, d1, d2, inv_dt));
+          return curveMultiplier(law.table.eps, y, 1.0, e, c1, c2, m1, m2);
+        } else {
+          const double rf = rateFactor<kRate>(law, d0, d1, d2, inv_dt);
+          return curveMultiplier(law.eps, law.sig, rf, e, c1, c2, m1, m2);
+        }
+      });
 }
 
 // MAT_018: the power law scaled by the Cowper-Symonds factor.
 template <Rate kRate>
 void powerPlaneStress(PlaneStressPoints& b, const Moduli& moduli, const PowerHardening& law) {
   const double inv_dt = b.dt > 0.0 ? 1.0 / b.dt : 0.0;
-  isotropicPlaneStress(b, moduli,
-                       [&](double d0, double d1, double d2, double e, double c1, double c2,
-                           double m1, double m2) {
-                         const double rf = rateFactor<kRate>(law, d0, d1, d2, inv_dt);
-                         auto flow = [&](double eps, double& h, double& slope) {
-                           h = rf * law.flow(eps);
-                           slope = rf * law.slope(eps);
-                         };
-                         return flowMultiplier(flow, e, c1, c2, m1, m2);
-                       });
+  isotropicPlaneStress(
+      b, moduli,
+      [&](double d0, double d1, double d2, double e, double c1, double c2, double m1, double m2) {
+        const double rf = rateFactor<kRate>(law, d0, d1, d2, inv_dt);
+        auto flow = [&](double eps, double& h, double& slope) {
+          h = rf * law.flow(eps);
+          slope = rf * law.slope(eps);
+        };
+        return flowMultiplier(flow, e, c1, c2, m1, m2);
+      });
 }
 
 }  // namespace

@@ -23,9 +23,8 @@ struct LawList {};
 
 // The order is the index of a law in archives (restart dumps, the model sent to other ranks):
 // append new laws at the end.
-using AllLaws =
-    LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic, DamperViscous,
-            SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam, JohnsonCook, PowerLaw,
-            StrainRatePlasticity>;
+using AllLaws = LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic,
+                        DamperViscous, SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam,
+                        JohnsonCook, PowerLaw, StrainRatePlasticity>;
 
 }  // namespace crumple::materials

@@ -263,14 +263,13 @@ void isotropicRadialUpdate(PointBatch& b, const Moduli& m, const Increment& incr
 template <Rate kRate>
 void curveHardeningUpdate(PointBatch& b, const Moduli& m, const CurveHardening& P) {
   const std::span<const double> cx = P.eps, cy = P.sig;
-  isotropicRadialUpdate<kRate != Rate::None>(
-      b, m, [&](double rate, double G3, double q, double e) {
-        if constexpr (kRate == Rate::Table) {
-          return curveIncrement(P.table.eps, P.table.at(rate), G3, 1.0, q, e);
-        } else {
-          return curveIncrement(cx, cy, G3, factorAt<kRate>(P, rate), q, e);
-        }
-      });
+  isotropicRadialUpdate<kRate != Rate::None>(b, m, [&](double rate, double G3, double q, double e) {
+    if constexpr (kRate == Rate::Table) {
+      return curveIncrement(P.table.eps, P.table.at(rate), G3, 1.0, q, e);
+    } else {
+      return curveIncrement(cx, cy, G3, factorAt<kRate>(P, rate), q, e);
+    }
+  });
 }
 
 // MAT_018: the power law scaled by the Cowper-Symonds factor, by safeguarded Newton.

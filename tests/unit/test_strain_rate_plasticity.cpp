@@ -30,7 +30,12 @@ m::Law makeLaw() {
   p.nu = kNu;
   p.etan = kEtan;
   p.lc1 = 0;
-  return m::makeLaw(p, [](int32_t) { return m::CurveData{7, kRate, kSig}; }, "");
+  return m::makeLaw(
+      p,
+      [](int32_t) {
+        return m::CurveData{7, kRate, kSig};
+      },
+      "");
 }
 
 // LC1 written out: linear between its points, its end slopes beyond them.
@@ -103,7 +108,8 @@ TEST(StrainRatePlasticity, DeckReadingAndRefusals) {
     const auto f = t.write(name, hex + mat + "*END\n");
     return crumple::testing::errorOf([&] { crumple::model::readModel(f); });
   };
-  const auto ok = t.write("ok.k", hex + "*MAT_019\n1,7.85e-9,200000,0.3\n7,2000,0,0,0,1e-9\n*END\n");
+  const auto ok =
+      t.write("ok.k", hex + "*MAT_019\n1,7.85e-9,200000,0.3\n7,2000,0,0,0,1e-9\n*END\n");
   const auto model = crumple::model::readModel(ok);
   const auto& p = std::get<m::StrainRatePlasticity::Params>(model.materials.at(0).law);
   EXPECT_EQ(p.etan, 2000.0);

@@ -125,6 +125,14 @@ std::string isochoricPull(const std::string& material, double v) {
   return brickDeck(1, 1, 1, 1.0, 1.0, 1.0, s);
 }
 
+// The effective strain rate sqrt(2/3 dev(D):dev(D)) of isochoricPull at velocity v now
+// (D_xx = v / L_x, D_yy = D_zz = -v / (2 L_y); nodes 1 = (0,0,0), 2 = (1,0,0), 3 = (0,1,0)).
+double isochoricRate(const Simulation& sim, double v) {
+  const double lx = sim.x(2, 0) - sim.x(1, 0), ly = sim.x(3, 1) - sim.x(1, 1);
+  const double dx = v / lx, dy = -0.5 * v / ly, tr = (dx + 2.0 * dy) / 3.0;
+  return std::sqrt(2.0 / 3.0 * ((dx - tr) * (dx - tr) + 2.0 * (dy - tr) * (dy - tr)));
+}
+
 // *MAT_024 (mm, s, t, MPa) with LCSS naming a *DEFINE_TABLE of three yield curves at 1, 10 and
 // 100 /s, each curve following the table.
 const std::string kRateTable024 =
@@ -169,10 +177,7 @@ TEST(VerificationMaterials, RateTablePullAtTwoRates) {
       const auto& blk = sim->sd.solid_blocks.at(0);
       const double eps_p = blk.eps_p.at(0);
       if (eps_p < 1e-3) return;
-      // Nodes 2 = (1,0,0), 3 = (0,1,0), 1 = (0,0,0); v = rate (L0 = 1).
-      const double lx = sim->x(2, 0) - sim->x(1, 0), ly = sim->x(3, 1) - sim->x(1, 1);
-      const double dx = rate / lx, dy = -0.5 * rate / ly, tr = (dx + 2.0 * dy) / 3.0;
-      const double r = std::sqrt(2.0 / 3.0 * ((dx - tr) * (dx - tr) + 2.0 * (dy - tr) * (dy - tr)));
+      const double r = isochoricRate(*sim, rate);
       const double q = misesOf(blk);
       const double expected = tableYield(eps_p, r);
       worst = std::max(worst, std::abs(q - expected) / expected);
@@ -529,9 +534,7 @@ TEST(VerificationMaterials, PowerLawPullAtRate) {
     eps_prev = eps_p;
     q_prev = q;
     if (eps_p < 1e-3) return;
-    const double lx = sim->x(2, 0) - sim->x(1, 0), ly = sim->x(3, 1) - sim->x(1, 1);
-    const double dx = rate / lx, dy = -0.5 * rate / ly, tr = (dx + 2.0 * dy) / 3.0;
-    const double r = std::sqrt(2.0 / 3.0 * ((dx - tr) * (dx - tr) + 2.0 * (dy - tr) * (dy - tr)));
+    const double r = isochoricRate(*sim, rate);
     worst = std::max(worst, std::abs(q - powerFlow(eps_p, r)) / q);
     ++checked;
   });
@@ -575,9 +578,7 @@ TEST(VerificationMaterials, StrainRatePlasticityPullAtTwoRates) {
       const auto& blk = sim->sd.solid_blocks.at(0);
       const double eps_p = blk.eps_p.at(0);
       if (eps_p < 1e-3) return;
-      const double lx = sim->x(2, 0) - sim->x(1, 0), ly = sim->x(3, 1) - sim->x(1, 1);
-      const double dx = rate / lx, dy = -0.5 * rate / ly, tr = (dx + 2.0 * dy) / 3.0;
-      const double r = std::sqrt(2.0 / 3.0 * ((dx - tr) * (dx - tr) + 2.0 * (dy - tr) * (dy - tr)));
+      const double r = isochoricRate(*sim, rate);
       const double q = misesOf(blk);
       worst = std::max(worst, std::abs(q - (sigma0(r) + Ep * eps_p)) / q);
       last = eps_p;

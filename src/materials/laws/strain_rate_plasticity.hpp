@@ -41,7 +41,7 @@ struct StrainRatePlasticity {
   static StrainRatePlasticity make(const Params& p, const CurveAt& curves, const std::string& at);
 
   Moduli moduli;
-  double Hi = 0;                       // Ep
+  double Hi = 0;                          // Ep
   std::vector<double> lc1_rate, lc1_sig;  // LC1
   double tdel = 0;
   void update(PointBatch& b) const;
