@@ -104,7 +104,7 @@ ElasticConstants elasticConstantsOf(const Moduli& m) {
 }
 
 // How the yield stress depends on the strain rate (as in return_mapping.cpp).
-enum class Rate : uint8_t { None, CowperSymonds, Curve, Table };
+enum class Rate : uint8_t { None, CowperSymonds, Curve, Table, Yield };
 
 // The effective strain rate of the in-plane increment completed by an incompressible thickness
 // strain, -(de_xx + de_yy): the strain of fully developed plastic flow, where the rate matters
@@ -246,7 +246,9 @@ CRUMPLE_TARGET_CLONES void linearPlaneStress(Views a, int n, double dt, const El
       w.c1[i] = c1;
       w.c2[i] = c2;
       const double rf = rateFactor<kRate>(P, d0[i], d1[i], d2[i], inv_dt);
-      const double sy = rf * (P.sigy + P.Hi * ep[i]);
+      const double sy0 =
+          kRate == Rate::Yield ? P.sigy_rate(effectiveRate(d0[i], d1[i], d2[i], inv_dt)) : P.sigy;
+      const double sy = rf * (sy0 + P.Hi * ep[i]);
       const double k = kTwoThirds * rf * P.Hi;
       w.sy[i] = sy;
       w.k[i] = k;
@@ -347,13 +349,16 @@ void markFailed(PlaneStressPoints& b, double limit) {
 
 namespace {
 
-// Cowper-Symonds (C > 0) before an LCSR curve: the law units give only one of them.
+// Cowper-Symonds (C > 0) before an LCSR curve before a yield-stress curve (MAT_019 LC1): the
+// law units give only one of them.
 template <bool kKinematic>
 void linearUpdate(PlaneStressPoints& b, const ElasticConstants& c, const LinearHardening& P) {
   if (P.C > 0.0) {
     linearPlaneStress<kKinematic, Rate::CowperSymonds>(viewsOf(b), b.n, b.dt, c, P);
   } else if (!P.lcsr.empty()) {
     linearPlaneStress<kKinematic, Rate::Curve>(viewsOf(b), b.n, b.dt, c, P);
+  } else if (!P.sigy_rate.empty()) {
+    linearPlaneStress<kKinematic, Rate::Yield>(viewsOf(b), b.n, b.dt, c, P);
   } else {
     linearPlaneStress<kKinematic, Rate::None>(viewsOf(b), b.n, b.dt, c, P);
   }
@@ -381,35 +386,34 @@ void curveAt(std::span<const double> x, const Y& y, double eps, double& h, doubl
   h = y[k] + (y[k + 1] - y[k]) * (eps - x[k]) / dx;
 }
 
-// The plastic multiplier of the same return as linearPlaneStress (no back stress) onto the
-// curve (x, y) scaled by rf, with the curve's flow stress and slope looked up at the current
-// iterate, from the trial state (c1, c2, q_trial) at plastic strain e; 0 for an elastic step.
-template <class Y>
-double curveMultiplier(std::span<const double> x, const Y& y, double rf, double e, double c1,
-                       double c2, double m1, double m2) {
+// The plastic multiplier of the same return as linearPlaneStress (no back stress) onto a
+// flow stress `flow(eps, h, slope)` that does not decrease, looked up at the current iterate,
+// from the trial state (c1, c2, q_trial) at plastic strain e; 0 for an elastic step.
+template <class Flow>
+double flowMultiplier(const Flow& flow, double e, double c1, double c2, double m1, double m2) {
   double h, slope;
-  curveAt(x, y, e, h, slope);
+  flow(e, h, slope);
   const double q_trial = std::sqrt(1.5 * (c1 + c2));
   double dg = 0.0;
-  if (!(q_trial > rf * h)) return dg;
-  dg = firstGuess(q_trial, rf * h, rf * slope, c1, c2, m1, m2);
+  if (!(q_trial > h)) return dg;
+  dg = firstGuess(q_trial, h, slope, c1, c2, m1, m2);
   double lo = 0.0;
-  double hi = rf * h > 0.0 ? 2.0 * (q_trial / (rf * h) - 1.0) / std::min(m1, m2)
-                           : std::numeric_limits<double>::max();
+  double hi =
+      h > 0.0 ? 2.0 * (q_trial / h - 1.0) / std::min(m1, m2) : std::numeric_limits<double>::max();
   for (int it = 0; it < kPlaneStressMaxIterations; ++it) {
     double i1, i2;
     inverseFactors(m1, m2, dg, i1, i2);
     const double u1 = c1 * i1 * i1, u2 = c2 * i2 * i2;
     const double q2 = 1.5 * (u1 + u2);
     const double q = std::sqrt(q2);
-    curveAt(x, y, e + kTwoThirds * dg * q, h, slope);
-    const double g = q - rf * h;
+    flow(e + kTwoThirds * dg * q, h, slope);
+    const double g = q - h;
     if (g > 0.0) {
       lo = dg;
     } else {
       hi = dg;
     }
-    double next = dg - g * q / newtonDenominator(u1 * m1 * i1 + u2 * m2 * i2, q2, rf * slope, dg);
+    double next = dg - g * q / newtonDenominator(u1 * m1 * i1 + u2 * m2 * i2, q2, slope, dg);
     next = (next >= lo && next <= hi) ? next : 0.5 * (lo + hi);
     const bool converged =
         !(std::abs(next - dg) > kNewtonTolerance * next) || !(std::abs(g) > kResidualFloor * q);
@@ -419,14 +423,27 @@ double curveMultiplier(std::span<const double> x, const Y& y, double rf, double 
   return dg;
 }
 
-// MAT_024 with a yield curve, one point at a time (the segment search does not vectorise).
-// With a rate table the curve is the table's at the point's strain rate (rate.hpp), on which
-// the return is exact.
-template <Rate kRate>
-void curvePlaneStress(PlaneStressPoints& b, const Moduli& moduli, const CurveHardening& law) {
+// The multiplier onto the curve (x, y) scaled by rf.
+template <class Y>
+double curveMultiplier(std::span<const double> x, const Y& y, double rf, double e, double c1,
+                       double c2, double m1, double m2) {
+  return flowMultiplier(
+      [&](double eps, double& h, double& slope) {
+        curveAt(x, y, eps, h, slope);
+        h *= rf;
+        slope *= rf;
+      },
+      e, c1, c2, m1, m2);
+}
+
+// Isotropic hardening, one point at a time (the hardening's evaluation does not vectorise):
+// the elastic predictor, the multiplier `multiplier(d0, d1, d2, e, c1, c2, m1, m2)` of the
+// point, the return and the thickness strain.
+template <class Multiplier>
+void isotropicPlaneStress(PlaneStressPoints& b, const Moduli& moduli,
+                          const Multiplier& multiplier) {
   const ElasticConstants c = elasticConstantsOf(moduli);
   const double m1 = c.m1, m2 = c.G2;
-  const double inv_dt = b.dt > 0.0 ? 1.0 / b.dt : 0.0;
   for (int i = 0; i < b.n; ++i) {
     const double d0 = b.de[0][i], d1 = b.de[1][i], d2 = b.de[2][i];
     const double s0 = b.s[0][i], s1 = b.s[1][i];
@@ -436,14 +453,7 @@ void curvePlaneStress(PlaneStressPoints& b, const Moduli& moduli, const CurveHar
     const double x1 = t0 + t1, x2 = t0 - t1;
     const double c1 = x1 * x1 * (1.0 / 6.0), c2 = 0.5 * x2 * x2 + 2.0 * t2 * t2;
     const double e = b.eps_p[i];
-    double dg;
-    if constexpr (kRate == Rate::Table) {
-      const CurveBlend y = law.table.at(effectiveRate(d0, d1, d2, inv_dt));
-      dg = curveMultiplier(law.table.eps, y, 1.0, e, c1, c2, m1, m2);
-    } else {
-      const double rf = rateFactor<kRate>(law, d0, d1, d2, inv_dt);
-      dg = curveMultiplier(law.eps, law.sig, rf, e, c1, c2, m1, m2);
-    }
+    const double dg = multiplier(d0, d1, d2, e, c1, c2, m1, m2);
     double i1, i2;
     inverseFactors(m1, m2, dg, i1, i2);
     const double y1 = x1 * i1, y2 = x2 * i2;
@@ -460,6 +470,40 @@ void curvePlaneStress(PlaneStressPoints& b, const Moduli& moduli, const CurveHar
   }
 }
 
+// MAT_024 with a yield curve. With a rate table the curve is the table's at the point's strain
+// rate (rate.hpp), on which the return is exact.
+template <Rate kRate>
+void curvePlaneStress(PlaneStressPoints& b, const Moduli& moduli, const CurveHardening& law) {
+  const double inv_dt = b.dt > 0.0 ? 1.0 / b.dt : 0.0;
+  isotropicPlaneStress(
+      b, moduli,
+      [&](double d0, double d1, double d2, double e, double c1, double c2, double m1, double m2) {
+        if constexpr (kRate == Rate::Table) {
+          const CurveBlend y = law.table.at(effectiveRate(d0, d1, d2, inv_dt));
+          return curveMultiplier(law.table.eps, y, 1.0, e, c1, c2, m1, m2);
+        } else {
+          const double rf = rateFactor<kRate>(law, d0, d1, d2, inv_dt);
+          return curveMultiplier(law.eps, law.sig, rf, e, c1, c2, m1, m2);
+        }
+      });
+}
+
+// MAT_018: the power law scaled by the Cowper-Symonds factor.
+template <Rate kRate>
+void powerPlaneStress(PlaneStressPoints& b, const Moduli& moduli, const PowerHardening& law) {
+  const double inv_dt = b.dt > 0.0 ? 1.0 / b.dt : 0.0;
+  isotropicPlaneStress(
+      b, moduli,
+      [&](double d0, double d1, double d2, double e, double c1, double c2, double m1, double m2) {
+        const double rf = rateFactor<kRate>(law, d0, d1, d2, inv_dt);
+        auto flow = [&](double eps, double& h, double& slope) {
+          h = rf * law.flow(eps);
+          slope = rf * law.slope(eps);
+        };
+        return flowMultiplier(flow, e, c1, c2, m1, m2);
+      });
+}
+
 }  // namespace
 
 void planeStressElastic(PlaneStressPoints& b, const Moduli& m) {
@@ -473,6 +517,14 @@ void planeStressLinear(PlaneStressPoints& b, const Moduli& m, const LinearHarden
     linearUpdate<true>(b, elasticConstantsOf(m), P);
   } else {
     linearUpdate<false>(b, elasticConstantsOf(m), P);
+  }
+}
+
+void planeStressPower(PlaneStressPoints& b, const Moduli& m, const PowerHardening& P) {
+  if (P.C > 0.0) {
+    powerPlaneStress<Rate::CowperSymonds>(b, m, P);
+  } else {
+    powerPlaneStress<Rate::None>(b, m, P);
   }
 }
 

@@ -54,6 +54,8 @@ void planeStressLinear(PlaneStressPoints& b, const Moduli& m, const LinearHarden
                        bool kinematic);
 // Isotropic hardening along a yield curve.
 void planeStressCurve(PlaneStressPoints& b, const Moduli& m, const CurveHardening& P);
+// Isotropic power-law hardening (MAT_018).
+void planeStressPower(PlaneStressPoints& b, const Moduli& m, const PowerHardening& P);
 // Sets b.failed to 1 where the effective plastic strain has reached `limit`, else 0 (all 0
 // when limit <= 0).
 void markFailed(PlaneStressPoints& b, double limit);

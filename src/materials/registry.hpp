@@ -10,9 +10,11 @@
 #include "materials/laws/null.hpp"
 #include "materials/laws/piecewise_linear.hpp"
 #include "materials/laws/plastic_kinematic.hpp"
+#include "materials/laws/power_law.hpp"
 #include "materials/laws/rigid.hpp"
 #include "materials/laws/soil_foam.hpp"
 #include "materials/laws/springs.hpp"
+#include "materials/laws/strain_rate_plasticity.hpp"
 
 namespace crumple::materials {
 
@@ -21,8 +23,8 @@ struct LawList {};
 
 // The order is the index of a law in archives (restart dumps, the model sent to other ranks):
 // append new laws at the end.
-using AllLaws =
-    LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic, DamperViscous,
-            SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam, JohnsonCook>;
+using AllLaws = LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic,
+                        DamperViscous, SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam,
+                        JohnsonCook, PowerLaw, StrainRatePlasticity>;
 
 }  // namespace crumple::materials

@@ -39,7 +39,7 @@ constexpr double kThird = 1.0 / 3.0;
 
 // How the yield stress depends on the strain rate: not at all, the Cowper-Symonds factor, the
 // factor of an LCSR curve, or the curve of a rate table at the rate (rate.hpp).
-enum class Rate : uint8_t { None, CowperSymonds, Curve, Table };
+enum class Rate : uint8_t { None, CowperSymonds, Curve, Table, Yield };
 
 // The effective strain rate of the step, sqrt(2/3 dev(de):dev(de)) / dt (LS-DYNA keyword
 // manual, MAT_003 and MAT_024), the rate of every rate form (VP = 0).
@@ -52,21 +52,30 @@ inline double effectiveRate(double d0, double d1, double d2, double d3, double d
   return std::sqrt(2.0 / 3.0 * ee) * inv_dt;
 }
 
-// Cowper-Symonds dynamic factor 1 + (rate / C)^(1/P).
-inline double cowperSymonds(double d0, double d1, double d2, double d3, double d4, double d5,
-                            double tr, double inv_dt, double C, double inv_P) {
-  const double rate = effectiveRate(d0, d1, d2, d3, d4, d5, tr, inv_dt);
-  return 1.0 + std::pow(rate / C, inv_P);
+// The rate factor rf of a rate form at an effective strain rate (1 for Rate::None, Table):
+// Cowper-Symonds 1 + (rate / C)^(1/P), or the LCSR curve's factor.
+template <Rate kRate, class P>
+inline double factorAt(const P& law, double rate) {
+  if constexpr (kRate == Rate::CowperSymonds) return 1.0 + std::pow(rate / law.C, law.inv_P);
+  if constexpr (kRate == Rate::Curve) return law.lcsr(rate);
+  return 1.0;
 }
 
-// The factor rf on the yield stress of a point (1 for Rate::None and Rate::Table).
+// The initial yield stress of a point: the curve of the strain rate (Rate::Yield), else sigy.
+template <Rate kRate>
+inline double initialYield(const LinearHardening& law, double d0, double d1, double d2, double d3,
+                           double d4, double d5, double tr, double inv_dt) {
+  if constexpr (kRate == Rate::Yield)
+    return law.sigy_rate(effectiveRate(d0, d1, d2, d3, d4, d5, tr, inv_dt));
+  return law.sigy;
+}
+
+// The factor rf on the yield stress of a point (1 for Rate::None, Table and Yield).
 template <Rate kRate, class P>
 inline double rateFactor(const P& law, double d0, double d1, double d2, double d3, double d4,
                          double d5, double tr, double inv_dt) {
-  if constexpr (kRate == Rate::CowperSymonds)
-    return cowperSymonds(d0, d1, d2, d3, d4, d5, tr, inv_dt, law.C, law.inv_P);
-  if constexpr (kRate == Rate::Curve)
-    return law.lcsr(effectiveRate(d0, d1, d2, d3, d4, d5, tr, inv_dt));
+  if constexpr (kRate == Rate::CowperSymonds || kRate == Rate::Curve)
+    return factorAt<kRate>(law, effectiveRate(d0, d1, d2, d3, d4, d5, tr, inv_dt));
   return 1.0;
 }
 
@@ -125,7 +134,9 @@ void linearHardeningKernel(detail::Soa a, int n, double dt, double G, double lam
     // sigma_y = rf (sigy + Hi eps_p): the rate factor scales the isotropic yield stress only
     // (LS-DYNA MAT_003), so consistency at eps_p + deps gives 3G + Hk + rf Hi below; this
     // reduces to 3G + Ep when rf = 1 and lands exactly on the surface otherwise.
-    const double f = q - rf * (P.sigy + P.Hi * e);
+    const double sy0 =
+        initialYield<kRate>(P, a.d0[i], a.d1[i], a.d2[i], a.d3[i], a.d4[i], a.d5[i], tr, inv_dt);
+    const double f = q - rf * (sy0 + P.Hi * e);
     const double deps = (f > 0.0 ? f : 0.0) / (G3 + P.Hk + rf * P.Hi);
     // ds = -2 G deps n = -3 G deps xi / q; dalpha = 2/3 Hk deps n = Hk deps xi / q.
     const double c = deps / (q > 0.0 ? q : 1.0);
@@ -207,16 +218,16 @@ double curveIncrement(std::span<const double> x, const Y& y, double G3, double r
   return f > 0.0 ? returnToCurve(x, y, G3, rf, q, e) : 0.0;
 }
 
-// MAT_024 with a yield curve: isotropic hardening only, so the return is radial on dev(t).
-// Elastic points take the same correction code with deps = 0 (exact no-op). With a rate table
-// the curve is the table's at the point's strain rate (rate.hpp), on which the return is exact.
-template <Rate kRate>
-void curveHardeningUpdate(PointBatch& b, const Moduli& m, const CurveHardening& P) {
+// Radial return with isotropic hardening: the elastic predictor, then the effective plastic
+// strain increment `increment(rate, q, eps_p)` (0 inside the yield surface) at the step's
+// effective strain rate (computed only when kRated), then the deviator shrunk along itself.
+// Elastic points take the same correction code with deps = 0 (exact no-op).
+template <bool kRated, class Increment>
+void isotropicRadialUpdate(PointBatch& b, const Moduli& m, const Increment& increment) {
   const double G = m.shear;
   const double lam = m.bulk - 2.0 * G / 3.0;
   const double G2 = 2.0 * G, G3 = 3.0 * G;
   const double inv_dt = b.dt > 0.0 ? 1.0 / b.dt : 0.0;
-  const std::span<const double> cx = P.eps, cy = P.sig;
   for (int i = 0; i < b.n; ++i) {
     const double d0 = b.de[0][i], d1 = b.de[1][i], d2 = b.de[2][i];
     const double d3 = b.de[3][i], d4 = b.de[4][i], d5 = b.de[5][i];
@@ -233,14 +244,8 @@ void curveHardeningUpdate(PointBatch& b, const Moduli& m, const CurveHardening& 
     const double j2 = 0.5 * (x0 * x0 + x1 * x1 + x2 * x2) + (t3 * t3 + t4 * t4 + t5 * t5);
     const double q = std::sqrt(3.0 * j2);
     const double e = b.eps_p[i];
-    double deps;
-    if constexpr (kRate == Rate::Table) {
-      const CurveBlend y = P.table.at(effectiveRate(d0, d1, d2, d3, d4, d5, tr, inv_dt));
-      deps = curveIncrement(P.table.eps, y, G3, 1.0, q, e);
-    } else {
-      const double rf = rateFactor<kRate>(P, d0, d1, d2, d3, d4, d5, tr, inv_dt);
-      deps = curveIncrement(cx, cy, G3, rf, q, e);
-    }
+    const double rate = kRated ? effectiveRate(d0, d1, d2, d3, d4, d5, tr, inv_dt) : 0.0;
+    const double deps = increment(rate, G3, q, e);
     const double cs = G3 * deps / (q > 0.0 ? q : 1.0);
     b.s[0][i] = t0 - cs * x0;
     b.s[1][i] = t1 - cs * x1;
@@ -252,6 +257,34 @@ void curveHardeningUpdate(PointBatch& b, const Moduli& m, const CurveHardening& 
   }
 }
 
+// MAT_024 with a yield curve: isotropic hardening only, so the return is radial on dev(t).
+// With a rate table the curve is the table's at the point's strain rate (rate.hpp), on which
+// the return is exact.
+template <Rate kRate>
+void curveHardeningUpdate(PointBatch& b, const Moduli& m, const CurveHardening& P) {
+  const std::span<const double> cx = P.eps, cy = P.sig;
+  isotropicRadialUpdate<kRate != Rate::None>(b, m, [&](double rate, double G3, double q, double e) {
+    if constexpr (kRate == Rate::Table) {
+      return curveIncrement(P.table.eps, P.table.at(rate), G3, 1.0, q, e);
+    } else {
+      return curveIncrement(cx, cy, G3, factorAt<kRate>(P, rate), q, e);
+    }
+  });
+}
+
+// MAT_018: the power law scaled by the Cowper-Symonds factor, by safeguarded Newton.
+template <Rate kRate>
+void powerHardeningUpdate(PointBatch& b, const Moduli& m, const PowerHardening& P) {
+  isotropicRadialUpdate<kRate != Rate::None>(b, m, [&](double rate, double G3, double q, double e) {
+    const double rf = factorAt<kRate>(P, rate);
+    if (!(q > rf * P.flow(e))) return 0.0;
+    return radialReturnIncrement(q, e, G3, [&](double x, double& y, double& h) {
+      y = rf * P.flow(x);
+      h = rf * P.slope(x);
+    });
+  });
+}
+
 }  // namespace
 
 void elasticUpdate(PointBatch& b, const Moduli& m) {
@@ -260,13 +293,16 @@ void elasticUpdate(PointBatch& b, const Moduli& m) {
 }
 
 namespace {
-// Cowper-Symonds (C > 0) before an LCSR curve: the law units give only one of them.
+// Cowper-Symonds (C > 0) before an LCSR curve before a yield-stress curve: the law units give
+// only one of them.
 template <bool kKinematic>
 void linearHardeningRate(PointBatch& b, const Moduli& m, const LinearHardening& P) {
   if (P.C > 0.0) {
     linearHardeningUpdate<kKinematic, Rate::CowperSymonds>(b, m, P);
   } else if (!P.lcsr.empty()) {
     linearHardeningUpdate<kKinematic, Rate::Curve>(b, m, P);
+  } else if (!P.sigy_rate.empty()) {
+    linearHardeningUpdate<kKinematic, Rate::Yield>(b, m, P);
   } else {
     linearHardeningUpdate<kKinematic, Rate::None>(b, m, P);
   }
@@ -289,6 +325,14 @@ double effectiveStrainRate(const double de[6], double dt) {
 
 double curveFlowStress(const CurveHardening& P, double eps_p) {
   return flowStressOn(P.eps, P.sig, eps_p);
+}
+
+void powerHardeningReturn(PointBatch& b, const Moduli& m, const PowerHardening& P) {
+  if (P.C > 0.0) {
+    powerHardeningUpdate<Rate::CowperSymonds>(b, m, P);
+  } else {
+    powerHardeningUpdate<Rate::None>(b, m, P);
+  }
 }
 
 void curveHardeningReturn(PointBatch& b, const Moduli& m, const CurveHardening& P) {

@@ -27,6 +27,11 @@ void flowStressAndSlope(const FibreLaw& law, double eps_p, double& y, double& h)
     curveStressAndSlope(law.table.eps, law.table.at(0.0), eps_p, y, h);
     return;
   }
+  if (law.power.k > 0.0) {
+    y = law.power.flow(eps_p);
+    h = law.power.slope(eps_p);
+    return;
+  }
   if (law.curve_eps.empty()) {
     y = law.sigy + law.Hi * eps_p;
     h = law.Hi;
@@ -50,7 +55,15 @@ double flowStress(const FibreLaw& law, double eps_p) {
   return y;
 }
 
-bool updateFibre(const FibreLaw& law, FibrePoint& p, double de, double dgs, double dgt, double dt) {
+bool updateFibre(const FibreLaw& fibre, FibrePoint& p, double de, double dgs, double dgt,
+                 double dt) {
+  // MAT_019: the linear yield curve of the fibre's strain rate (a copy only for it).
+  FibreLaw at_rate;
+  if (!fibre.sigy_rate.empty()) {
+    at_rate = fibre;
+    at_rate.sigy = fibre.sigy_rate(fibreRate(de, dgs, dgt, dt));
+  }
+  const FibreLaw& law = fibre.sigy_rate.empty() ? fibre : at_rate;
   // Elastic predictor.
   const double s_tr = p.sig + law.E * de;
   const double ts_tr = p.tau_s + law.G * dgs;

@@ -26,6 +26,7 @@
 
 #include "materials/law.hpp"
 #include "materials/rate.hpp"
+#include "materials/return_mapping.hpp"
 
 namespace crumple::materials {
 
@@ -46,12 +47,17 @@ struct FibreLaw {
   // MAT_024 with LCSS: yield stress vs effective plastic strain (isotropic only); empty
   // otherwise. Views into the block's law, which outlives the FibreLaw.
   std::span<const double> curve_eps, curve_sig;
+  // MAT_018: the power law k (eps0 + eps_p)^n when power.k > 0 (isotropic only; sigy, Hi and
+  // the curve unused).
+  PowerHardening power;
   double C = 0.0, inv_P = 0.0;  // Cowper-Symonds 1 + (rate / C)^(1/P); C == 0: rate independent
   // MAT_024 LCSR (a factor on the yield stress) or a rate table in LCSS (the yield curve at the
   // fibre's strain rate; curve_eps and curve_sig are then empty): rate.hpp. Views into the
   // block's law.
   RateCurve lcsr;
   RateTable table;
+  // MAT_019 LC1: the initial yield stress vs the strain rate (sigy unused); empty: none.
+  RateCurve sigy_rate;
   double fail = 0.0;  // effective plastic strain at failure; 0: none
 };
 

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "material_point.hpp"
 #include "materials/materials.hpp"
 #include "model/build.hpp"
 #include "temp_dir.hpp"
@@ -52,51 +53,7 @@ m::JohnsonCook makeJc(const m::JohnsonCook::Params& p) {
 using Strain = std::array<double, 6>;
 
 // One point with its history (ln V, E - E0, D, T - TR).
-struct Point {
-  Strain s{};
-  double eps_p = 0.0;
-  std::array<double, 4> h{};
-  uint8_t failed = 0;
-
-  void step(const m::JohnsonCook& law, const Strain& d, double dt) {
-    m::PointBatch b;
-    b.n = 1;
-    b.dt = dt;
-    for (int k = 0; k < 6; ++k) {
-      b.s[k] = &s[k];
-      b.de[k] = &d[k];
-    }
-    b.eps_p = &eps_p;
-    for (int k = 0; k < 4; ++k) b.h[k] = &h[static_cast<std::size_t>(k)];
-    b.failed = &failed;
-    law.update(b);
-  }
-  // A step of axial strain dx with the lateral strain that leaves the lateral stress zero
-  // (uniaxial stress), found by the secant method on copies of the point.
-  void uniaxialStep(const m::JohnsonCook& law, double dx, double dt) {
-    auto lateral = [&](double dl) {
-      Point p = *this;
-      p.step(law, {dx, dl, dl, 0, 0, 0}, dt);
-      return p;
-    };
-    double a = -0.5 * dx, b = -0.3 * dx;
-    double fa = lateral(a).s[1], fb = lateral(b).s[1];
-    for (int it = 0; it < 60 && fb != fa && std::abs(fb) > 1e-11; ++it) {
-      const double c = b - fb * (b - a) / (fb - fa);
-      a = b;
-      fa = fb;
-      b = c;
-      fb = lateral(b).s[1];
-    }
-    *this = lateral(b);
-  }
-  double mises() const {
-    const double p = (s[0] + s[1] + s[2]) / 3.0;
-    const double a = s[0] - p, b = s[1] - p, c = s[2] - p;
-    return std::sqrt(1.5 * (a * a + b * b + c * c) +
-                     3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
-  }
-};
+using Point = crumple::testing::mp::SolidPoint;
 
 }  // namespace
 

@@ -135,22 +135,12 @@ double JohnsonCook::thermalFactor(double dT) const {
 }
 
 double JohnsonCook::returnIncrement(double q, double eps_p, double scale) const {
-  // g(x) = q - 3 G x - scale k(eps_p + x) decreases from g(0) > 0 to g(hi) <= 0 at
-  // hi = g(0) / 3G (k does not decrease): Newton from hi, kept inside the bracket [lo, hi] by
-  // bisection, converges to the root to round-off whatever the sign of k'' (N < 1 or > 1).
-  const double G3 = 3.0 * par.G;
-  double lo = 0.0, hi = (q - scale * hardening(eps_p)) / G3;
-  double x = hi;
-  for (int it = 0; it < 200; ++it) {
-    const double g = q - G3 * x - scale * hardening(eps_p + x);
-    if (g == 0.0) return x;
-    (g > 0.0 ? lo : hi) = x;
-    double next = x + g / (G3 + scale * hardeningSlope(eps_p + x));
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (next == x || hi - lo <= 4.0 * std::numeric_limits<double>::epsilon() * hi) return next;
-    x = next;
-  }
-  return x;
+  // The hardening does not decrease, so the safeguarded Newton return of return_mapping.hpp
+  // converges to round-off whatever the sign of k'' (N < 1 or > 1).
+  return radialReturnIncrement(q, eps_p, 3.0 * par.G, [&](double e, double& y, double& h) {
+    y = scale * hardening(e);
+    h = scale * hardeningSlope(e);
+  });
 }
 
 double JohnsonCook::fractureStrain(double triax, double rate, double dT) const {
