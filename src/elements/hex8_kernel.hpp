@@ -122,9 +122,9 @@ inline double stressWork(const BatchScratch& w, int l) {
 // `first`, and q kept for the next pass. The force of this pass, -q B at x(n), was formed from
 // v(n-1/2) and acts over dt(n) at v(n) = (v(n-1/2) + v(n+1/2)) / 2 in the equations of motion,
 // so half of its work falls in this step and half in the next: the trapezoidal rule on q,
-// (q_old + q) / 2 tr(D) dt, as for the stress (LS-DYNA Theory Manual, "Time integration",
-// energy equation with q(n-1/2) + q(n+1/2)). Counting q tr(D) dt instead over-counts the
-// dissipation of a ringing element whose velocity changes sign between steps.
+// (q_old + q) / 2 tr(D) dt, as for the stress (the energy identity in docs/theory.md, "Energy
+// balance"). Counting q tr(D) dt instead over-counts the dissipation of a ringing element
+// whose velocity changes sign between steps.
 inline double bulkViscosityWork(domain::SolidBlock& blk, std::size_t first, int l, double q,
                                 double trace_d, double dt) {
   double& q_old = blk.q_bulk[first + static_cast<std::size_t>(l)];
