@@ -295,9 +295,8 @@ double Boundary::wallKineticEnergy() const {
   double e = 0.0;
   for (const auto& w : walls_)
     if (w.def->moving) {
-      // At t(n), like the structure's kinetic energy: the mean of the half-step velocities.
-      const double v = 0.5 * (w.velocity_prev + w.velocity);
-      e += 0.5 * w.def->mass * v * v;
+      // At t(n), like the structure's kinetic energy: the product of the half-step velocities.
+      e += 0.5 * w.def->mass * w.velocity_prev * w.velocity;
     }
   return e;
 }

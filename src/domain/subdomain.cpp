@@ -12,13 +12,14 @@
 
 namespace crumple::domain {
 
-void SolidBlock::resize(std::size_t n, bool plastic, bool kinematic, bool stiffness_hourglass,
+void SolidBlock::resize(std::size_t n, bool plastic, bool kinematic, bool hourglass_state,
                         bool gauss_points, int history_count) {
   const std::size_t padded = (n + kSolidBatch - 1) / kSolidBatch * kSolidBatch;
   sig.assign(6 * padded, 0.0);
   eps_p.assign(plastic ? padded : 0, 0.0);
   alpha.assign(kinematic ? 6 * padded : 0, 0.0);
-  hgq.assign(stiffness_hourglass ? 12 * padded : 0, 0.0);
+  hgq.assign(hourglass_state ? 12 * padded : 0, 0.0);
+  q_bulk.assign(padded, 0.0);
   // Padding lanes get a unit volume so that densities stay finite there.
   vol0.assign(padded, 1.0);
   vol.assign(padded, 1.0);
@@ -372,7 +373,7 @@ class SubdomainBuilder {
     const bool kinematic = materials::isKinematic(b.law);
     b.elform = model.solid_sections[static_cast<std::size_t>(part.section)].elform;
     // A fully integrated element has no hourglass modes to control.
-    b.resize(b.size(), plastic, kinematic, b.elform == 1 && b.hourglass.ihq >= 4, b.elform == 2,
+    b.resize(b.size(), plastic, kinematic, b.elform == 1 && b.hourglass.qm > 0.0, b.elform == 2,
              materials::historyCount(b.law));
     return b;
   }

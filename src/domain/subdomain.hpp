@@ -52,9 +52,14 @@ struct SolidBlock : BlockBase {
   // per batch; ELFORM 2 keeps them per Gauss point only, in hist_ip.
   int history = 0;
   std::vector<double> hist;
-  // Hourglass resistance of the stiffness forms, 4 modes x 3 components, stored batch by
+  // Hourglass force of the last pass, 4 modes x 3 components (the stiffness forms' stored
+  // resistance; the viscous forms keep it for the trapezoidal hourglass work), stored batch by
   // batch (12 x kSolidBatch contiguous values per batch): one memory stream instead of twelve.
+  // Empty when the block has no hourglass control (ELFORM 2, QM = 0).
   std::vector<double> hgq;
+  // Bulk viscosity q of the last pass, for its trapezoidal work (docs/theory.md, "Energy
+  // accounting of the viscous forces").
+  std::vector<double> q_bulk;
   static std::size_t blocked(int fields, int component, std::size_t e) {
     return (e / kSolidBatch) * std::size_t(fields) * kSolidBatch +
            std::size_t(component) * kSolidBatch + e % kSolidBatch;
@@ -82,7 +87,7 @@ struct SolidBlock : BlockBase {
   std::size_t paddedSize() const {
     return (elem.size() + kSolidBatch - 1) / kSolidBatch * kSolidBatch;
   }
-  void resize(std::size_t n, bool plastic, bool kinematic, bool stiffness_hourglass,
+  void resize(std::size_t n, bool plastic, bool kinematic, bool hourglass_state,
               bool gauss_points = false, int history_count = 0);
 };
 

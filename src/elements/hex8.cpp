@@ -169,12 +169,15 @@ inline void currentGeometry(const SolidParams& p, const domain::SolidBlock& blk,
   }
 }
 
-// Internal energy (midpoint rule on the stress power, plus bulk viscosity work) and the
-// stress divergence f_a = -(sigma - q I) . B_a.
-inline void stressDivergence(const SolidParams& p, BatchScratch& w, const SolidRates& r,
-                             const SolidSpin& sp, const SolidGeometry& g, LaneArray& de_int) {
+// Internal energy (midpoint rule on the stress power, plus bulk viscosity work, trapezoidal
+// on q) and the stress divergence f_a = -(sigma - q I) . B_a.
+inline void stressDivergence(const SolidParams& p, domain::SolidBlock& blk, std::size_t first,
+                             BatchScratch& w, const SolidRates& r, const SolidSpin& sp,
+                             const SolidGeometry& g, LaneArray& de_int) {
   for (int l = 0; l < kBatch; ++l) {
-    de_int[l] = (detail::stressWork(w, l) - g.q[l] * sp.trace_d[l] * p.dt) * r.vol_mid[l];
+    de_int[l] = (detail::stressWork(w, l) +
+                 detail::bulkViscosityWork(blk, first, l, g.q[l], sp.trace_d[l], p.dt)) *
+                r.vol_mid[l];
   }
   for (int a = 0; a < 8; ++a)
     for (int l = 0; l < kBatch; ++l) {
@@ -208,8 +211,8 @@ inline void hourglassForces(const SolidParams& p, domain::SolidBlock& blk, std::
                   ? 0.125 * p.qm * p.lam2mu * bb * inv_vol[l] * dt
                   : 0.25 * p.qm * geo.rho[l] * geo.cbrt_vol[l] * geo.cbrt_vol[l] * geo.c[l];
   }
-  // This batch's record of stored resistances (stiffness forms only).
-  double* hgq_batch = stiffness_hg ? blk.hgq.data() + first * 12 : nullptr;
+  // This batch's record of the last pass's hourglass forces.
+  double* hgq_batch = blk.hgq.data() + first * 12;
   if (stiffness_hg) {
     // The stored resistance of each mode is a vector in the global frame: it turns with
     // the element, by the same spin increment as the stress (FB 1981 sec. 4.2), or a
@@ -254,17 +257,17 @@ inline void hourglassForces(const SolidParams& p, domain::SolidBlock& blk, std::
         for (int a = 0; a < 8; ++a) sum += w.v[i][a][l] * g[alpha][a][l];
         qdot[l] = sum;
       }
+      // Work by the trapezoidal rule on the force, as for the stress: the force of the last
+      // pass acts over half of this step in the equations of motion (as the bulk viscosity's
+      // does: detail::bulkViscosityWork). The viscous force is new each pass, the stiffness
+      // resistance adds to the stored one.
       double* fq = force[alpha][i];
-      if (stiffness_hg) {
-        double* stored = hgq_batch + (3 * alpha + i) * kBatch;
-        for (int l = 0; l < kBatch; ++l) {
-          const double old = stored[l];
-          fq[l] = old + coef[l] * qdot[l];
-          mean_force[l] = 0.5 * (old + fq[l]);  // trapezoidal work, as for the stress
-          stored[l] = fq[l];
-        }
-      } else {
-        for (int l = 0; l < kBatch; ++l) fq[l] = mean_force[l] = coef[l] * qdot[l];
+      double* stored = hgq_batch + (3 * alpha + i) * kBatch;
+      for (int l = 0; l < kBatch; ++l) {
+        const double old = stored[l];
+        fq[l] = (stiffness_hg ? old : 0.0) + coef[l] * qdot[l];
+        mean_force[l] = 0.5 * (old + fq[l]);
+        stored[l] = fq[l];
       }
       for (int l = 0; l < kBatch; ++l) de_hg[l] += mean_force[l] * qdot[l] * dt;
     }
@@ -354,7 +357,7 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
       SolidGeometry g;
       currentGeometry(p, blk, first, bv, w, sp, g);
       LaneArray de_int, de_hg;
-      stressDivergence(p, w, r, sp, g, de_int);
+      stressDivergence(p, blk, first, w, r, sp, g, de_int);
       for (int l = 0; l < kBatch; ++l) de_hg[l] = 0.0;
       if (p.qm > 0.0) hourglassForces(p, blk, first, w, sp, g, de_hg);
       storeSolidBatch<Law>(blk, first, n, sig_batch, alpha_batch, w, sp, g, de_int, de_hg, bv,

@@ -173,7 +173,7 @@ inline void gaussPointStresses(const Law& law, domain::SolidBlock& blk, std::siz
 
 // Geometry at x(n): volume, exact volume gradient, characteristic length, bulk viscosity (its
 // work taken from de_int).
-inline void fullGeometry(const domain::SolidBlock& blk, std::size_t first, double lam2mu, double dt,
+inline void fullGeometry(domain::SolidBlock& blk, std::size_t first, double lam2mu, double dt,
                          const BulkViscosity& bv, const LaneArray& trace_mean,
                          const LaneArray& vol_mid, BatchScratch& w, FullGeometry& g,
                          LaneArray& de_int) {
@@ -193,7 +193,7 @@ inline void fullGeometry(const domain::SolidBlock& blk, std::size_t first, doubl
             ? rho[l] * g.len[l] *
                   (bv.q1 * g.len[l] * trace_mean[l] * trace_mean[l] - bv.q2 * c[l] * trace_mean[l])
             : 0.0;
-    de_int[l] -= g.qbv[l] * trace_mean[l] * dt * vol_mid[l];
+    de_int[l] += detail::bulkViscosityWork(blk, first, l, g.qbv[l], trace_mean[l], dt) * vol_mid[l];
   }
 }
 

@@ -118,6 +118,21 @@ inline double stressWork(const BatchScratch& w, int l) {
   return p;
 }
 
+// Work per unit volume of the bulk viscosity over the step at lane l of the batch from
+// `first`, and q kept for the next pass. The force of this pass, -q B at x(n), was formed from
+// v(n-1/2) and acts over dt(n) at v(n) = (v(n-1/2) + v(n+1/2)) / 2 in the equations of motion,
+// so half of its work falls in this step and half in the next: the trapezoidal rule on q,
+// (q_old + q) / 2 tr(D) dt, as for the stress (the energy identity in docs/theory.md, "Energy
+// balance"). Counting q tr(D) dt instead over-counts the dissipation of a ringing element
+// whose velocity changes sign between steps.
+inline double bulkViscosityWork(domain::SolidBlock& blk, std::size_t first, int l, double q,
+                                double trace_d, double dt) {
+  double& q_old = blk.q_bulk[first + static_cast<std::size_t>(l)];
+  const double work = -0.5 * (q_old + q) * trace_d * dt;
+  q_old = q;
+  return work;
+}
+
 // The end of an element's pass, shared by the kernels: an inverted element is noted; a failed
 // one, or one whose stable step fell below blk.erode_dt, is eroded (LS-DYNA FAIL, ERODE,
 // TDEL: the element is removed, its slots zeroed); otherwise its corner forces go to its

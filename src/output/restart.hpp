@@ -24,7 +24,8 @@
 
 namespace crumple::output {
 
-inline constexpr uint32_t kDumpVersion = 2;
+// 3: solids keep the last pass's bulk viscosity and (viscous forms too) hourglass forces.
+inline constexpr uint32_t kDumpVersion = 3;
 
 // One part of the state. `save` is collective (every rank calls every section's save, in
 // registration order) and returns the section's bytes on rank 0 (what other ranks return is

@@ -646,6 +646,13 @@ ErodedSums Solver::eroded() const {
   return {static_cast<int64_t>(comm_.sumAll(eroded_)), sums[0], sums[1], sums[2]};
 }
 
+namespace {
+// The dot product of node n's vectors in a and in b (xyz packed).
+double stepProduct(const domain::NodeVector& a, const domain::NodeVector& b, std::size_t n) {
+  return a[3 * n] * b[3 * n] + a[3 * n + 1] * b[3 * n + 1] + a[3 * n + 2] * b[3 * n + 2];
+}
+}  // namespace
+
 Energies Solver::energies() const {
   Energies e;
   sd_.forEachBlockList([&](const auto& blocks, model::Family) {
@@ -656,29 +663,24 @@ Energies Solver::energies() const {
       }
   });
   // Energies are reported at t(n), the time level of the stresses from the last element pass
-  // and of the work integrals: the kinetic energy uses v(n) = (v(n-1/2) + v(n+1/2)) / 2.
+  // and of the work integrals. The kinetic energy there is the one central differences
+  // conserve, 1/2 m v(n-1/2) . v(n+1/2) (docs/theory.md, "Energy balance"): with the
+  // trapezoidal internal energy, it plus the internal energy changes by the work of the
+  // external and constraint forces, exactly for a linear system. 1/2 m v(n)^2 with v(n) the
+  // mean of the half-step velocities exceeds it by m (v(n+1/2) - v(n-1/2))^2 / 8, which is
+  // second order in a smooth motion but large for a mesh ringing near the stability limit (a
+  // block struck by a wall).
   const bool stepped = v_old_.size() == sd_.v.size();
+  const bool spun = w_old_.size() == sd_.w.size();
   for (std::size_t n = 0; n < sd_.numNodes(); ++n) {
     // Nodes of rigid bodies: the bodies' own energy is added below.
     if (!sd_.node_owned[n] || (rigid_ && rigid_->countsNode(n))) continue;
-    double v[3];
-    for (int c = 0; c < 3; ++c)
-      v[c] = stepped ? 0.5 * (v_old_[3 * n + c] + sd_.v[3 * n + c]) : sd_.v[3 * n + c];
     // Kinetic energy of the mass the equations of motion integrate (mass added by scaling
     // included, as the work of the forces goes into it too); the added mass is reported.
-    const double m = sd_.mass[n];
-    e.kinetic += 0.5 * m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (sd_.rotations) {
-      // Rotational kinetic energy of the rotary inertia, at omega(n) likewise.
-      const bool spun = w_old_.size() == sd_.w.size();
-      double w2 = 0.0;
-      for (int c = 0; c < 3; ++c) {
-        const std::size_t i = 3 * n + std::size_t(c);
-        const double wc = spun ? 0.5 * (w_old_[i] + sd_.w[i]) : sd_.w[i];
-        w2 += wc * wc;
-      }
-      e.kinetic += 0.5 * sd_.inertia[n] * w2;
-    }
+    e.kinetic += 0.5 * sd_.mass[n] * stepProduct(stepped ? v_old_ : sd_.v, sd_.v, n);
+    // Rotational kinetic energy of the rotary inertia likewise.
+    if (sd_.rotations)
+      e.kinetic += 0.5 * sd_.inertia[n] * stepProduct(spun ? w_old_ : sd_.w, sd_.w, n);
   }
   const auto sums =
       comm_.sumOrdered({e.kinetic, e.internal, e.hourglass, external_work_, rigidwall_energy_});

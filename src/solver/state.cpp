@@ -28,6 +28,7 @@ void visitSolid(B& b, std::size_t e, F&& f) {
     for (int k = 0; k < 6; ++k) f(b.alpha[b.blocked(6, k, e)]);
   if (!b.hgq.empty())
     for (int c = 0; c < 12; ++c) f(b.hgq[b.blocked(12, c, e)]);
+  f(b.q_bulk[e]);
   if (!b.hist.empty())
     for (int k = 0; k < b.history; ++k) f(b.hist[b.blocked(b.history, k, e)]);
   f(b.vol[e]);

@@ -74,9 +74,10 @@ std::string blockCards(const Block& b) {
   return s;
 }
 
-std::string blocksDeck(const std::vector<Block>& blocks, const std::string& extra) {
+std::string blocksDeck(const std::vector<Block>& blocks, const std::string& extra, int elform = 1) {
   std::string s = "*KEYWORD\n*TITLE\nverification blocks\n" + extra;
-  s += "*PART\nblocks\n         1         1         1\n*SECTION_SOLID\n         1         1\n";
+  s += fmt::format(
+      "*PART\nblocks\n         1         1         1\n*SECTION_SOLID\n         1{:10d}\n", elform);
   for (const auto& b : blocks) s += blockCards(b);
   return s + "*END\n";
 }
@@ -227,13 +228,14 @@ TEST(Walls, MovingWallConservesMomentum) {
 }
 
 // Same impact, energy: the block's kinetic, internal and hourglass energy, the wall's kinetic
-// energy and the stonewall energy balance the wall's initial kinetic energy. On this 2x2x2
-// block, ringing after a hard impact, the balance carries a first-order error in the step
-// (measured: 1.5% at TSSFAC 0.9, 0.35% at 0.5, 0.14% at 0.3), so the test checks the
-// default within 2% and that the error shrinks with the step: within 0.5% at TSSFAC 0.3.
+// energy and the stonewall energy balance the wall's initial kinetic energy. This 2x2x2 block
+// rings hard after the impact; with the kinetic energy and the viscous work the scheme
+// conserves (docs/theory.md, "Energy balance") the balance holds to 0.05% at TSSFAC 0.9,
+// 0.001% at 0.5, 0.02% at 0.3 (before: 1.5%, 0.35%, 0.14%, which the ringing's kinetic energy
+// at v(n) and the viscous work counted with v(n-1/2) made): within 0.2% at either step.
 TEST(Walls, MovingWallEnergyBalance) {
   const double block_mass = kRho * 10 * 10 * 10;
-  for (const auto& [tssfac, tolerance] : {std::pair{0.9, 0.02}, std::pair{0.3, 0.005}}) {
+  for (const auto& [tssfac, tolerance] : {std::pair{0.9, 0.002}, std::pair{0.3, 0.002}}) {
     auto sim =
         Simulation::fromText("wall_moving_energy", movingWallDeck(10 * block_mass, 10, 1, tssfac));
     sim->run();
@@ -352,15 +354,68 @@ TEST_P(GeometricWalls, NoNodeEntersAndTheBlockIsTurnedBack) {
   });
   EXPECT_GE(worst, -1e-9) << "a node entered the " << GetParam();
   EXPECT_GT(sim->momentum(2), 0.0) << "the block was not turned back";
-  // The wall cannot give the block kinetic energy. (The energy ratio is not checked here: on a
-  // block only two elements thick the stonewall's absorbed-energy sum over-counts; see
-  // docs/theory.md, "Stonewall energy".)
+  // The wall cannot give the block kinetic energy, and the energy balances (kinetic, internal,
+  // hourglass and stonewall energy; docs/theory.md, "Energy balance").
   const auto e = sim->solver->energies();
   EXPECT_LT(e.kinetic, e.initial);
+  EXPECT_NEAR(e.ratio, 1.0, 0.01) << GetParam();
 }
 
 INSTANTIATE_TEST_SUITE_P(SphereAndCylinder, GeometricWalls,
                          ::testing::Values("SPHERE", "CYLINDER"));
+
+// Stonewall energy (issue 16). A 4 x 4 x nz block of 1 mm steel hexes falls flat at v = 10 m/s
+// onto a fixed planar stonewall: the bottom node layer, a share 1/(2 nz) of the lumped mass, is
+// stopped dead (the stonewall is an inelastic impact of the nodes it corrects), the rest is
+// thrown back by the compression wave and the block leaves the wall ringing near the mesh's
+// highest frequencies. Central differences conserve 1/2 m v(n-1/2) . v(n+1/2) plus the
+// trapezoidal internal and hourglass energy plus the stonewall's m dv . v(n) sum exactly when
+// no viscous force acts; the bulk viscosity and the viscous hourglass forces work over the
+// next step too (docs/theory.md, "Energy balance"). So: the energy ratio stays within 1% at
+// every cycle, for thin and thick blocks and either formulation (before the fix 1.27 on the
+// thin block), and the stonewall energy is the loss of kinetic + internal + hourglass energy
+// over the impact.
+class StonewallEnergy : public ::testing::TestWithParam<std::tuple<int, int>> {};
+
+TEST_P(StonewallEnergy, BalancesAtEveryCycle) {
+  const auto [nz, elform] = GetParam();
+  const double v = 10.0;
+  const Block a{1, 1, 4, 4, nz, {0, 0, 0.5}, {4, 4, double(nz)}};
+  auto sim = Simulation::fromText(
+      fmt::format("stonewall_energy_{}_{}", nz, elform),
+      blocksDeck(
+          {a},
+          kSteel + termination(0.15) +
+              fmt::format("*INITIAL_VELOCITY\n         0\n       0.0       0.0{:10.4g}\n", -v) +
+              "*RIGIDWALL_PLANAR\n         0\n"
+              "       0.0       0.0       0.0       0.0       0.0       1.0\n",
+          elform));
+  const double mass = totalMass(*sim);
+  const double e0 = sim->solver->energies().total;
+  ASSERT_NEAR(e0, 0.5 * mass * v * v, 1e-12 * e0);
+  double worst = 0.0, rw_mid = -1.0;
+  sim->run([&](const crumple::solver::Solver& s) {
+    const auto e = s.energies();
+    worst = std::max(worst, std::abs(e.ratio - 1.0));
+    if (rw_mid < 0.0 && s.time() >= 0.1) rw_mid = e.rigidwall;
+  });
+  const auto e = sim->solver->energies();
+  EXPECT_LT(worst, 0.01) << "energy ratio at some cycle, nz " << nz << " ELFORM " << elform;
+  // The impact is over (contact lasts about 2 nz / c = 0.0004 nz ms from t = 0.05): the block
+  // moves up and the wall took nothing more in the last third of the run.
+  EXPECT_GT(sim->momentum(2), 0.0);
+  EXPECT_EQ(e.rigidwall, rw_mid);
+  // The stonewall's energy is what kinetic + internal + hourglass energy lost, within 1%.
+  const double lost = e0 - (e.kinetic + e.internal + e.hourglass);
+  EXPECT_NEAR(e.rigidwall, lost, 0.01 * e0);
+  // And it is, to a few percent, the bottom layer's kinetic energy 1/2 (M / 2 nz) v^2 (the
+  // layer lands over two steps while the elements above begin to push on it, so not exactly).
+  const double layer = 0.5 * mass / (2.0 * nz) * v * v;
+  EXPECT_NEAR(e.rigidwall, layer, 0.03 * layer);
+}
+
+INSTANTIATE_TEST_SUITE_P(ThinAndThickBothFormulations, StonewallEnergy,
+                         ::testing::Combine(::testing::Values(2, 8), ::testing::Values(1, 2)));
 
 // A node inside a prism's box is pushed out through the nearest face; a block falling onto
 // the prism's top rests on it (the top face acts as a flat wall).
