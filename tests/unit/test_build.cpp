@@ -464,7 +464,7 @@ TEST(BuildUnsupported, CountsFirstLocationsReasonsAndIgnoredFields) {
                                     "*CONTROL_IMPLICIT_SOLVER\n1\n"
                                     "*CONTROL_MPP_IO_NODUMP\n"
                                     "*CONTROL_THERMAL_SOLVER\n1\n"
-                                    "*CONTROL_SOLID\n1\n"
+                                    "*CONTROL_SOLID\n0,1\n"
                                     "*SECTION_SOLID\n3,1,1\n");
   const Model m = readModel(p);
   ASSERT_EQ(m.unsupported.size(), 5u);
@@ -485,7 +485,7 @@ TEST(BuildUnsupported, CountsFirstLocationsReasonsAndIgnoredFields) {
   EXPECT_EQ(m.ignored[0].keyword, "*SECTION_SOLID");
   EXPECT_EQ(m.ignored[0].field, "AET");
   EXPECT_EQ(m.ignored[1].keyword, "*CONTROL_SOLID");
-  EXPECT_EQ(m.ignored[1].field, "ESORT");
+  EXPECT_EQ(m.ignored[1].field, "FMATRX");
   const std::string table = crumple::model::formatUnsupported(m);
   const std::string loc = p.string() + ":25";
   EXPECT_EQ(table.rfind("keyword ", 0), 0u) << table;
