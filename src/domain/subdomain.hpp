@@ -27,8 +27,9 @@ struct HourglassParams {
 // lanes compute on copies of real data and are never read back).
 inline constexpr int kSolidBatch = 16;
 
-// Elements of one part and one formulation: one element type x one material x one section. State is a structure
-// of arrays owned by the block; element e of the block is global (model) element elem[e].
+// Elements of one part and one formulation: one element type x one material x one section. State is
+// a structure of arrays owned by the block; element e of the block is global (model) element
+// elem[e].
 struct SolidBlock : BlockBase {
   static constexpr model::Family kFamily = model::Family::Solid;
   static constexpr int kSlotsPerElement = 8;  // force slot per corner

@@ -135,8 +135,10 @@ int32_t Model::elementPart(std::size_t g) const {
 }
 
 int Model::solidFormulation(std::size_t e) const {
-  const auto section = parts[static_cast<std::size_t>(solids.part[e])].section;
-  const int form = section == kNone ? 1 : solid_sections[static_cast<std::size_t>(section)].elform;
+  const Part& part = parts[static_cast<std::size_t>(solids.part[e])];
+  const int form = part.section == kNone || part.section_kind != SectionKind::Solid
+                       ? 1
+                       : solid_sections[static_cast<std::size_t>(part.section)].elform;
   return form != 10 && controls.solid_esort && isCanonicalTet(solids.nodes[e]) ? 10 : form;
 }
 

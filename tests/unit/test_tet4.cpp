@@ -13,6 +13,7 @@
 #include "brick_model.hpp"
 #include "domain/subdomain.hpp"
 #include "elements/hex8.hpp"
+#include "gather.hpp"
 #include "model/model.hpp"
 #include "model/solid_shape.hpp"
 
@@ -116,16 +117,6 @@ std::array<Vec3, 4> randomTet(std::mt19937& rng) {
   return x;
 }
 
-// Nodal forces gathered from the element slots in the subdomain's order.
-std::vector<double> gatheredForces(const crumple::domain::Subdomain& sd) {
-  std::vector<double> f(3 * sd.numNodes(), 0.0);
-  for (std::size_t n = 0; n < sd.numNodes(); ++n)
-    for (int32_t k = sd.internal.ptr[n]; k < sd.internal.ptr[n + 1]; ++k)
-      for (int c = 0; c < 3; ++c)
-        f[3 * n + c] += sd.slots[3 * std::size_t(sd.internal.slot[std::size_t(k)]) + c];
-  return f;
-}
-
 TEST(Tet4, CanonicalFormKeepsTheBaseAndApex) {
   using crumple::model::canonicalTet;
   // N4 repeated (LS-DYNA) and N3 = N4 with N5 repeated (the other convention) give the same.
@@ -154,7 +145,7 @@ TEST(Tet4, InternalForceIsBtDBVOfASmallDisplacement) {
     // Lumped mass: a quarter of rho V at each node (gathered from the slots).
     double g[4][3], vol;
     shapeGradients(x0, g, vol);
-    const auto mass = gatheredForces(sd);
+    const auto mass = crumple::testing::gatheredForces(sd);
     for (int a = 0; a < 4; ++a) EXPECT_NEAR(mass[3 * a], kRho * vol / 4, 1e-15 * kRho * vol) << a;
     // A small displacement u over one step: v = u / dt, mid-step geometry x0.
     std::uniform_real_distribution<double> ud(-1.0, 1.0);
@@ -166,7 +157,7 @@ TEST(Tet4, InternalForceIsBtDBVOfASmallDisplacement) {
       sd.x[std::size_t(i)] = sd.x0[std::size_t(i)] + 0.5 * u[i];
     }
     crumple::elements::computeSolidForces(blk, sd.x, sd.v, dt, {0.0, 0.0}, sd.slots.data());
-    const auto f = gatheredForces(sd);
+    const auto f = crumple::testing::gatheredForces(sd);
     double k[12][12];
     stiffness(g, vol, kE, kNu, k);
     double fmax = 0.0;
@@ -218,7 +209,7 @@ TEST(Tet4Patch, UniformStrainIsExactAndInteriorForcesBalance) {
     for (int k = 0; k < 6; ++k) EXPECT_NEAR(blk.sigAt(k, e), expect[k], 1e-13) << e << " " << k;
   EXPECT_EQ(blk.e_hg[0], 0.0);
   // The centre node (1,1,1), index 13, is interior: its forces balance.
-  const auto f = gatheredForces(sd);
+  const auto f = crumple::testing::gatheredForces(sd);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(f[3 * 13 + std::size_t(c)], 0.0, 1e-15) << c;
 }
 
