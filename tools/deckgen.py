@@ -82,6 +82,27 @@ def grid_solids(mesh: Mesh, part: int, grid: dict, divisions) -> None:
                                       grid[i + 1, j + 1, k + 1], grid[i, j + 1, k + 1]])
 
 
+# The six tetrahedra of a hexahedron around its diagonal 1-7 (Kuhn's split, 0-based corners),
+# each positive for a positive hexahedron. Every hex of a structured grid cut the same way
+# gives a conforming mesh: the face diagonals of neighbours coincide.
+KUHN_TETS = ((0, 1, 2, 6), (0, 2, 3, 6), (0, 3, 7, 6), (0, 7, 4, 6), (0, 4, 5, 6), (0, 5, 1, 6))
+
+
+def tetrahedralize(mesh: Mesh, parts=None, blank: bool = False) -> None:
+    """Cuts the hexahedra of `parts` (all when None) into six tetrahedra each, written as
+    LS-DYNA's degenerate hexahedron N1 N2 N3 N4 N4 N4 N4 N4, or with N5-N8 blank (0) when
+    `blank` (the form for *SECTION_SOLID ELFORM 10)."""
+    solids = []
+    for part, ns in mesh.solids:
+        if parts is not None and part not in parts:
+            solids.append((part, ns))
+            continue
+        for t in KUHN_TETS:
+            tet = [ns[a] for a in t]
+            solids.append((part, tet + ([0] * 4 if blank else [tet[3]] * 4)))
+    mesh.solids = solids
+
+
 def quarter_cylinder(mesh: Mesh, part: int, radius: float, length: float, n_core: int,
                      n_ring: int, n_axial: int) -> None:
     """A quarter cylinder (x >= 0, y >= 0, 0 <= z <= length) as a butterfly (O-grid) mesh:

@@ -19,6 +19,11 @@
   contact_blocks.k, contact_tube.k, contact_tied.k, contact_cask.k
                       contact decks of tools/contact_decks.py (two-surface, single-surface
                       with rigid plates, tied).
+  tet_blocks.k        two colliding blocks meshed in tetrahedra (six per hex cell) with
+                      two-surface contact on their triangular faces: block a native ELFORM 10
+                      (N5-N8 blank), block b degenerate hexahedra (N4 repeated) under ELFORM 1
+                      sorted to ELFORM 10 by *CONTROL_SOLID ESORT = 1, with an elastic-plastic
+                      law so that a part's history variables travel with its tetrahedra.
 """
 
 from __future__ import annotations
@@ -27,7 +32,7 @@ import pathlib
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from deckgen import Mesh, block, node_set  # noqa: E402
+from deckgen import Mesh, block, node_set, tetrahedralize  # noqa: E402
 import contact_decks  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
@@ -396,6 +401,48 @@ def structures_shell16() -> str:
     return text
 
 
+def tet_blocks(n1: int = 3, n2: int = 4, v: float = 10.0, end: float = 6e-5) -> str:
+    """SI units. Two 10 mm steel cubes (n1^3 and n2^3 cells of six tetrahedra) flying at each
+    other at +-v along z across a 0.5 mm gap, offset sideways by 1 mm."""
+    m = Mesh()
+    block(m, 1, (0, 0, 0), (0.01, 0.01, 0.01), (n1, n1, n1))
+    block(m, 2, (0.001, 0.001, 0.0105), (0.01, 0.01, 0.01), (n2, n2, n2))
+    tetrahedralize(m, parts={1}, blank=True)
+    tetrahedralize(m, parts={2})
+    a = m.node_ids(lambda x, y, z: z <= 0.0100001)
+    b = m.node_ids(lambda x, y, z: z >= 0.0104)
+    vel = "".join(f"{i:10d}{0:10.4g}{0:10.4g}{v:10.4g}\n" for i in a)
+    vel += "".join(f"{i:10d}{0:10.4g}{0:10.4g}{-v:10.4g}\n" for i in b)
+    return f"""*KEYWORD
+*TITLE
+two tetrahedral blocks colliding (ELFORM 10 native and sorted by ESORT)
+*CONTROL_TERMINATION
+{end:10.4g}
+*CONTROL_SOLID
+         1
+*DATABASE_GLSTAT
+   1.0e-06
+*PART
+block a (ELFORM 10)
+         1         1         1
+block b (ELFORM 1, degenerate, sorted)
+         2         2         2
+*SECTION_SOLID
+         1        10
+*SECTION_SOLID
+         2         1
+*MAT_ELASTIC
+         1    7850.0   2.0e+11       0.3
+*MAT_PLASTIC_KINEMATIC
+         2    7850.0   2.0e+11       0.3   2.0e+08   1.0e+09       0.0
+*CONTACT_SURFACE_TO_SURFACE_ID
+         7
+         1         2         3         3
+*INITIAL_VELOCITY_NODE
+{vel}{m.keyword_text()}*END
+"""
+
+
 def main() -> None:
     out = ROOT / "tests" / "data" / "decks"
     out.mkdir(parents=True, exist_ok=True)
@@ -410,9 +457,10 @@ def main() -> None:
     (out / "contact_tube.k").write_text(contact_decks.tube_crush(size=5.0, end=1.0))
     (out / "contact_tied.k").write_text(contact_decks.tied_bar(end=1.0e-4))
     (out / "contact_cask.k").write_text(contact_decks.cask_drop(end=2.0e-4))
+    (out / "tet_blocks.k").write_text(tet_blocks())
     print("wrote tests/data/decks/mixed_conditions.k, structures.k, structures_shell16.k, "
-          "rigid_welds.k, "
-          "contact_blocks.k, contact_tube.k, contact_tied.k and contact_cask.k")
+          "rigid_welds.k, contact_blocks.k, contact_tube.k, contact_tied.k, contact_cask.k and "
+          "tet_blocks.k")
 
 
 if __name__ == "__main__":

@@ -10,6 +10,18 @@
 
 namespace crumple::app {
 
+namespace {
+
+// Per part, the solids that run as tetrahedra (ELFORM 10, native or sorted by ESORT).
+std::map<int32_t, std::size_t> tetrahedraPerPart(const model::Model& m) {
+  std::map<int32_t, std::size_t> out;
+  for (std::size_t e = 0; e < m.solids.size(); ++e)
+    if (m.solidFormulation(e) == 10) ++out[m.solids.part[e]];
+  return out;
+}
+
+}  // namespace
+
 std::string modelSummary(const model::Model& m, const solver::Solver& s) {
   std::string out;
   out += fmt::format("deck: {}\n", m.deck_path);
@@ -23,13 +35,17 @@ std::string modelSummary(const model::Model& m, const solver::Solver& s) {
     ++per_part[{m.elementPart(g), int(m.element(g).first)}];
   static constexpr const char* kPlural[] = {"solids", "shells", "beams", "discretes"};
   static constexpr const char* kSingular[] = {"solid", "shell", "beam", "discrete"};
+  const auto tets = tetrahedraPerPart(m);
   for (const auto& [key, count] : per_part) {
     const auto& part = m.parts[static_cast<std::size_t>(key.first)];
     const auto& mat = m.materials[static_cast<std::size_t>(part.material)];
-    out += fmt::format("  part {}{}: {} {}, {} {} (density {:g})\n", part.id,
-                       part.title.empty() ? "" : " \"" + part.title + "\"", count,
-                       count == 1 ? kSingular[key.second] : kPlural[key.second],
-                       model::materialKeyword(mat.law), mat.id, mat.rho);
+    const auto t = key.second == int(model::Family::Solid) ? tets.find(key.first) : tets.end();
+    out +=
+        fmt::format("  part {}{}: {} {}, {} {} (density {:g}){}\n", part.id,
+                    part.title.empty() ? "" : " \"" + part.title + "\"", count,
+                    count == 1 ? kSingular[key.second] : kPlural[key.second],
+                    model::materialKeyword(mat.law), mat.id, mat.rho,
+                    t == tets.end() ? "" : fmt::format(", {} as ELFORM 10 tetrahedra", t->second));
   }
   out += fmt::format("total mass: {:.6g}\n", s.totalMass());
   if (s.addedMass() > 0.0)

@@ -223,16 +223,21 @@ class SubdomainBuilder {
   Subdomain build() {
     counts();
     nodes();
-    for (auto& [part, elems, shared] : groupByPart(model::Family::Solid, model.solids))
-      addBlock(solidBlock(part, elems, shared), model::Family::Solid, sd.solid_blocks);
-    for (auto& [part, elems, shared] : groupByPart(model::Family::Shell, model.shells))
-      for (auto& [triangles, sub, sub_shared] : sortTriangles(part, elems, shared))
-        addBlock(shellBlock(part, sub, sub_shared, triangles), model::Family::Shell,
+    // A part's solids split by formulation (*CONTROL_SOLID ESORT sorts its tetrahedra out).
+    for (auto& [key, elems, shared] :
+         groupByPart(model::Family::Solid, model.solids,
+                     [&](std::size_t e) { return model.solidFormulation(e); }))
+      addBlock(solidBlock(key.first, key.second, elems, shared), model::Family::Solid,
+               sd.solid_blocks);
+    for (auto& [key, elems, shared] : groupByPart(model::Family::Shell, model.shells))
+      for (auto& [triangles, sub, sub_shared] : sortTriangles(key.first, elems, shared))
+        addBlock(shellBlock(key.first, sub, sub_shared, triangles), model::Family::Shell,
                  sd.shell_blocks);
-    for (auto& [part, elems, shared] : groupByPart(model::Family::Beam, model.beams))
-      addBlock(beamBlock(part, elems, shared), model::Family::Beam, sd.beam_blocks);
-    for (auto& [part, elems, shared] : groupByPart(model::Family::Discrete, model.discretes))
-      addBlock(discreteBlock(part, elems, shared), model::Family::Discrete, sd.discrete_blocks);
+    for (auto& [key, elems, shared] : groupByPart(model::Family::Beam, model.beams))
+      addBlock(beamBlock(key.first, elems, shared), model::Family::Beam, sd.beam_blocks);
+    for (auto& [key, elems, shared] : groupByPart(model::Family::Discrete, model.discretes))
+      addBlock(discreteBlock(key.first, elems, shared), model::Family::Discrete,
+               sd.discrete_blocks);
     pressureSegments();
     if (num_ranks > 1) neighbours();
     sd.slots.assign(3 * slot, 0.0);
@@ -241,7 +246,8 @@ class SubdomainBuilder {
   }
 
  private:
-  using Group = std::tuple<int32_t, std::vector<int32_t>, std::size_t>;  // part, elems, shared
+  // (part, formulation), elems, shared
+  using Group = std::tuple<std::pair<int32_t, int>, std::vector<int32_t>, std::size_t>;
 
   void counts() {
     sd.rank = rank;
@@ -291,24 +297,26 @@ class SubdomainBuilder {
     }
   }
 
-  // Blocks: one per family and part. Elements touching a node that another rank also holds
-  // come first, so their forces can be sent while the others are computed; each group
-  // ascending.
-  template <class List>
-  std::vector<Group> groupByPart(model::Family family, const List& list) const {
+  // Blocks: one per family, part and formulation, in that order. Elements touching a node
+  // that another rank also holds come first, so their forces can be sent while the others are
+  // computed; each group ascending.
+  template <class List, class Form = int (*)(std::size_t)>
+  std::vector<Group> groupByPart(
+      model::Family family, const List& list, Form form = [](std::size_t) { return 0; }) const {
+    using Key = std::pair<int32_t, int>;
     const std::size_t offset = model.familyOffset(family);
-    std::map<int32_t, std::vector<int32_t>> rest, first;
+    std::map<Key, std::vector<int32_t>> rest, first;
     for (std::size_t e = 0; e < list.part.size(); ++e) {
       if (elem_rank[offset + e] != rank) continue;
       bool shared = false;
       for (int32_t n : list.nodes[e]) shared = shared || nr.shared(static_cast<std::size_t>(n));
-      (shared ? first : rest)[list.part[e]].push_back(int32_t(e));
+      (shared ? first : rest)[Key{list.part[e], form(e)}].push_back(int32_t(e));
     }
     std::vector<Group> out;
-    std::set<int32_t> keys;
+    std::set<Key> keys;
     for (const auto& [p, v] : rest) keys.insert(p);
     for (const auto& [p, v] : first) keys.insert(p);
-    for (int32_t p : keys) {
+    for (const Key& p : keys) {
       std::vector<int32_t> elems = first.count(p) ? first[p] : std::vector<int32_t>{};
       const std::size_t shared_count = elems.size();
       if (rest.count(p)) elems.insert(elems.end(), rest[p].begin(), rest[p].end());
@@ -359,7 +367,7 @@ class SubdomainBuilder {
     blocks.push_back(std::move(b));
   }
 
-  SolidBlock solidBlock(int32_t part_index, const std::vector<int32_t>& elems,
+  SolidBlock solidBlock(int32_t part_index, int elform, const std::vector<int32_t>& elems,
                         std::size_t shared_count) const {
     const auto& part = model.parts[static_cast<std::size_t>(part_index)];
     const auto& mat = model.materials[static_cast<std::size_t>(part.material)];
@@ -371,7 +379,7 @@ class SubdomainBuilder {
     b.hourglass = hourglassOf(model, part);
     const bool plastic = materials::isPlastic(b.law);
     const bool kinematic = materials::isKinematic(b.law);
-    b.elform = model.solid_sections[static_cast<std::size_t>(part.section)].elform;
+    b.elform = elform;
     // A fully integrated element has no hourglass modes to control.
     b.resize(b.size(), plastic, kinematic, b.elform == 1 && b.hourglass.qm > 0.0, b.elform == 2,
              materials::historyCount(b.law));

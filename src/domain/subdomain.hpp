@@ -27,15 +27,18 @@ struct HourglassParams {
 // lanes compute on copies of real data and are never read back).
 inline constexpr int kSolidBatch = 16;
 
-// Elements of one part: one element type x one material x one section. State is a structure
-// of arrays owned by the block; element e of the block is global (model) element elem[e].
+// Elements of one part and one formulation: one element type x one material x one section. State is
+// a structure of arrays owned by the block; element e of the block is global (model) element
+// elem[e].
 struct SolidBlock : BlockBase {
   static constexpr model::Family kFamily = model::Family::Solid;
   static constexpr int kSlotsPerElement = 8;  // force slot per corner
   materials::Law law;
   double rho0 = 0.0;
   HourglassParams hourglass;
-  int elform = 1;  // *SECTION_SOLID ELFORM: 1 one-point, 2 fully integrated (8 points)
+  // The formulation its elements run (model::Model::solidFormulation): 1 one-point
+  // hexahedron, 2 fully integrated (8 points), 10 one-point tetrahedron.
+  int elform = 1;
 
   // BlockBase::elem: elements with a node shared with another rank come first (ascending),
   // then the others (ascending): the first group is computed before the shared-node exchange

@@ -64,6 +64,26 @@ inline void gradientOfAll(const NodalBatch& x, NodalBatch& b, std::index_sequenc
   (gradientOfNode<int(A)>(x, b), ...);
 }
 
+// The two shapes of the one-point kernel: the volume gradient B = dV/dx and the area A with
+// characteristic length L = V / A. The hexahedron: FB 1981 and its largest face; the
+// tetrahedron (ELFORM 10): hex8_kernel.hpp, its minimum altitude.
+struct HexShape {
+  static constexpr bool kHourglass = true;
+  static void gradient(const NodalBatch& x, NodalBatch& b) {
+    gradientOfAll(x, b, std::make_index_sequence<8>{});
+  }
+  static void lengthArea(const NodalBatch& x, const NodalBatch&, LaneArray& area) {
+    maxFaceArea(x, area);
+  }
+};
+struct TetShape {
+  static constexpr bool kHourglass = false;  // a linear element has no hourglass modes
+  static void gradient(const NodalBatch& x, NodalBatch& b) { detail::tetVolumeGradient(x, b); }
+  static void lengthArea(const NodalBatch&, const NodalBatch& b, LaneArray& area) {
+    detail::tetLengthArea(b, area);
+  }
+};
+
 // The constants of one block for one call.
 struct SolidParams {
   double dt = 0, lam2mu = 0, qm = 0;
@@ -90,12 +110,13 @@ struct SolidGeometry {
   LaneArray vol, area, rho, c, c_dt, len, q, cbrt_vol;
 };
 
+template <class Shape>
 inline void midStepGradient(const SolidParams& p, BatchScratch& w, SolidRates& r) {
   const double dt = p.dt;
   for (int c = 0; c < 3; ++c)
     for (int a = 0; a < 8; ++a)
       for (int l = 0; l < kBatch; ++l) w.xm[c][a][l] = w.x[c][a][l] - 0.5 * dt * w.v[c][a][l];
-  gradientOfAll(w.xm, w.b, std::make_index_sequence<8>{});
+  Shape::gradient(w.xm, w.b);
   volumeOf(w.xm, w.b, r.vol_mid);
   LaneArray inv_vol_mid;
   for (int l = 0; l < kBatch; ++l) inv_vol_mid[l] = 1.0 / r.vol_mid[l];
@@ -145,12 +166,13 @@ inline void updateStress(const Law& law, const SolidParams& p, const domain::Sol
 }
 
 // Geometry at x(n): volume, volume gradient, characteristic length, bulk viscosity.
+template <class Shape>
 inline void currentGeometry(const SolidParams& p, const domain::SolidBlock& blk, std::size_t first,
                             const BulkViscosity& bv, BatchScratch& w, const SolidSpin& sp,
                             SolidGeometry& g) {
-  gradientOfAll(w.x, w.b, std::make_index_sequence<8>{});
+  Shape::gradient(w.x, w.b);
   volumeOf(w.x, w.b, g.vol);
-  maxFaceArea(w.x, g.area);
+  Shape::lengthArea(w.x, w.b, g.area);
   for (int l = 0; l < kBatch; ++l) {
     const std::size_t e = first + static_cast<std::size_t>(l);
     const double v_safe = g.vol[l] > 0.0 ? g.vol[l] : 1.0;
@@ -321,7 +343,7 @@ inline void storeSolidBatch(domain::SolidBlock& blk, std::size_t first, int n, d
 // load time from the CPU. The clones do the same IEEE operations in the same order (no FMA
 // contraction, no fast-math), so they give the same bits; tested on the example decks
 // (docs/performance.md).
-template <class Law>
+template <class Law, class Shape>
 [[gnu::flatten, gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] BlockStatus
 solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVector& x,
                  const domain::NodeVector& v, double dt, const BulkViscosity& bv, double* slots,
@@ -333,7 +355,7 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
   SolidParams p;
   p.dt = dt;
   p.lam2mu = law.moduli.bulk + 4.0 / 3.0 * law.moduli.shear;
-  p.qm = blk.hourglass.qm;
+  p.qm = Shape::kHourglass ? blk.hourglass.qm : 0.0;
   p.stiffness_hg = blk.hourglass.ihq >= 4;
   p.projected_hg = blk.hourglass.ihq >= 2;
   std::vector<BlockStatus> status(nbatch);
@@ -351,11 +373,11 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
       double* sig_batch = blk.sig.data() + first * 6;
       double* alpha_batch = Law::kKinematic ? blk.alpha.data() + first * 6 : nullptr;
       SolidRates r;
-      midStepGradient(p, w, r);
+      midStepGradient<Shape>(p, w, r);
       SolidSpin sp;
       updateStress(law, p, blk, first, sig_batch, alpha_batch, w, r, sp);
       SolidGeometry g;
-      currentGeometry(p, blk, first, bv, w, sp, g);
+      currentGeometry<Shape>(p, blk, first, bv, w, sp, g);
       LaneArray de_int, de_hg;
       stressDivergence(p, blk, first, w, r, sp, g, de_int);
       for (int l = 0; l < kBatch; ++l) de_hg[l] = 0.0;
@@ -385,8 +407,14 @@ double solidTimeStep(double length, double wave_speed, double trace_d, const Bul
 
 void markIsolatedElements(domain::SolidBlock& blk, const domain::GatherPlan& plan) {
   const materials::Moduli mod = materials::moduliOf(blk.law);
+  // A free tetrahedron's highest mode (lumped mass) has 2 / omega between 0.5 and 0.87 of
+  // its minimum altitude over c: 0.51 for the regular one at nu = 0.49, 0.50 in the limit,
+  // never lower over 3000 random shapes at nu = 0.4999 (docs/theory.md). In a mesh the
+  // shared nodes' mass lowers it to within the altitude rule (tests/unit/test_tet4.cpp).
   const double factor =
-      std::min(1.0, std::sqrt((mod.bulk + 4.0 / 3.0 * mod.shear) / (3.0 * mod.bulk)));
+      blk.elform == 10
+          ? 0.5
+          : std::min(1.0, std::sqrt((mod.bulk + 4.0 / 3.0 * mod.shear) / (3.0 * mod.bulk)));
   blk.dt_scale.clear();
   for (std::size_t e = 0; e < blk.size(); ++e) {
     bool isolated = true;
@@ -413,7 +441,10 @@ BlockStatus computeSolidForces(domain::SolidBlock& block, const domain::NodeVect
   return std::visit(
       [&](const auto& law) -> BlockStatus {
         if constexpr (materials::SolidLaw<std::decay_t<decltype(law)>>)
-          return solidBlockForces(law, block, x, v, dt, bv, slots, first, last);
+          return block.elform == 10 ? solidBlockForces<std::decay_t<decltype(law)>, TetShape>(
+                                          law, block, x, v, dt, bv, slots, first, last)
+                                    : solidBlockForces<std::decay_t<decltype(law)>, HexShape>(
+                                          law, block, x, v, dt, bv, slots, first, last);
         else
           materials::noUpdateFor(materials::Family::Solid);
       },
@@ -426,15 +457,23 @@ BlockStatus initializeSolids(domain::SolidBlock& blk, const domain::NodeVector& 
   const double c = std::sqrt((mod.bulk + 4.0 / 3.0 * mod.shear) / blk.rho0);
   BlockStatus st;
   NodalBatch xb, bb;
+  const bool tet = blk.elform == 10;
+  const int corners = tet ? 4 : 8;
   const std::size_t ne = blk.size();
   element_dt.assign(ne, 0.0);
   for (std::size_t first = 0; first < ne; first += kBatch) {
     const int n = static_cast<int>(std::min<std::size_t>(kBatch, ne - first));
     gatherNodal(blk, first, n, x0, xb);
-    volumeGradient(xb, bb);
     LaneArray vol, area;
-    volumeOf(xb, bb, vol);
-    maxFaceArea(xb, area);
+    if (tet) {
+      TetShape::gradient(xb, bb);
+      volumeOf(xb, bb, vol);
+      TetShape::lengthArea(xb, bb, area);
+    } else {
+      volumeGradient(xb, bb);
+      volumeOf(xb, bb, vol);
+      maxFaceArea(xb, area);
+    }
     for (int l = 0; l < n; ++l) {
       const std::size_t e = first + static_cast<std::size_t>(l);
       blk.vol0[e] = blk.vol[e] = vol[l];
@@ -442,10 +481,12 @@ BlockStatus initializeSolids(domain::SolidBlock& blk, const domain::NodeVector& 
         if (st.bad_elem < 0) st.bad_elem = blk.elem[e];
         continue;
       }
-      const double corner_mass = blk.rho0 * vol[l] / 8.0;
+      // A quarter of the tetrahedron's mass at each of its nodes (the repeated corners get
+      // none), an eighth of the hexahedron's at each corner.
+      const double corner_mass = blk.rho0 * vol[l] / corners;
       double* slot = slots + 3 * (blk.slot_offset + 8 * e);
       for (int a = 0; a < 8; ++a) {
-        slot[3 * a] = corner_mass;
+        slot[3 * a] = a < corners ? corner_mass : 0.0;
         slot[3 * a + 1] = slot[3 * a + 2] = 0.0;
       }
       double dte = solidTimeStep(vol[l] / area[l], c, 0.0, bv);

@@ -37,10 +37,11 @@ struct BlockStatus {
   int32_t eroded = 0;     // elements eroded in this pass
 };
 
-// One cycle for a block of solids: strain rate at the mid-step geometry
-// x - dt/2 v, Jaumann stress rotation, material update, bulk viscosity, stress divergence at
-// x, hourglass forces, element energies and stable time step. Corner forces go to the block's
-// force slots (no scatter). `dt` is the step dt(n-1/2) that brought x and v to this cycle.
+// One cycle for a block of one-point solids, hexahedra (ELFORM 1) or tetrahedra (ELFORM 10,
+// nodes N1 N2 N3 N4 N4 N4 N4 N4, no hourglass control; hex8_kernel.hpp): strain rate at the
+// mid-step geometry x - dt/2 v, Jaumann stress rotation, material update, bulk viscosity, stress
+// divergence at x, hourglass forces, element energies and stable time step. Corner forces go to the
+// block's force slots (no scatter). `dt` is the step dt(n-1/2) that brought x and v to this cycle.
 // Elements [first, last) of the block only, both multiples of kBatch or last == size().
 BlockStatus computeSolidForces(domain::SolidBlock& block, const domain::NodeVector& x,
                                const domain::NodeVector& v, double dt, const BulkViscosity& bv,
@@ -58,7 +59,8 @@ BlockStatus computeFullSolidForces(domain::SolidBlock& block, const domain::Node
                                    double* slots, std::size_t first, std::size_t last);
 
 // Initial volumes and the stable step of a block; writes each corner's lumped mass
-// (rho0 V0 / 8) into the x component of its force slot, so that nodal masses are assembled by
+// (rho0 V0 / 8; a tetrahedron's rho0 V0 / 4 at corners 1-4, 0 at 5-8) into the x component
+// of its force slot, so that nodal masses are assembled by
 // the same ordered gather as forces.
 BlockStatus initializeSolids(domain::SolidBlock& block, const domain::NodeVector& x0, double* slots,
                              std::vector<double>& element_dt, const BulkViscosity& bv);
@@ -70,9 +72,10 @@ BlockStatus initializeSolids(domain::SolidBlock& block, const domain::NodeVector
 void markIsolatedElements(domain::SolidBlock& block, const domain::GatherPlan& plan);
 
 // Stable time step of one element from its characteristic length (volume / largest face
-// area, LS-DYNA Theory Manual sec. 22 "Time step control") and the dilatational wave speed,
-// reduced for bulk viscosity: dt = L / (Q + sqrt(Q^2 + c^2)), Q = Q2 c + Q1 L |tr D| (for
-// either sign of tr D: a step that jumps with the sign pumps energy into vibrating elements).
+// area; a tetrahedron's minimum altitude; LS-DYNA Theory Manual "Time step control") and the
+// dilatational wave speed, reduced for bulk viscosity: dt = L / (Q + sqrt(Q^2 + c^2)), Q = Q2 c +
+// Q1 L |tr D| (for either sign of tr D: a step that jumps with the sign pumps energy into vibrating
+// elements).
 double solidTimeStep(double length, double wave_speed, double trace_d, const BulkViscosity& bv);
 
 }  // namespace crumple::elements

@@ -49,6 +49,45 @@ inline void maxFaceArea(const NodalBatch& x, LaneArray& area) {
   for (int l = 0; l < kBatch; ++l) area[l] = std::sqrt(area[l]);
 }
 
+// The constant-strain tetrahedron (ELFORM 10) in the canonical node order N1 N2 N3 N4 (corners
+// 4-7 repeat N4, model/solid_shape.hpp): with V = (x2 - x1) . ((x3 - x1) x (x4 - x1)) / 6,
+// B_a = dV/dx_a is a third of the area vector of the face opposite node a, pointing at a
+// (LS-DYNA Theory Manual, "Solid elements"; Zienkiewicz & Taylor, vol. 1, the linear
+// tetrahedron). The repeated corners get B = 0, so every sum over the hexahedron's eight
+// corners gives the tetrahedron's, and x . B / 3 its volume.
+inline void tetVolumeGradient(const NodalBatch& x, NodalBatch& b) {
+  constexpr double sixth = 1.0 / 6.0;
+  for (int l = 0; l < kBatch; ++l) {
+    const double ax = x[0][1][l] - x[0][0][l], ay = x[1][1][l] - x[1][0][l],
+                 az = x[2][1][l] - x[2][0][l];
+    const double bx = x[0][2][l] - x[0][0][l], by = x[1][2][l] - x[1][0][l],
+                 bz = x[2][2][l] - x[2][0][l];
+    const double cx = x[0][3][l] - x[0][0][l], cy = x[1][3][l] - x[1][0][l],
+                 cz = x[2][3][l] - x[2][0][l];
+    // dV/dx2 = (b x c) / 6, dV/dx3 = (c x a) / 6, dV/dx4 = (a x b) / 6, dV/dx1 = -(sum).
+    const double g[3][3] = {{by * cz - bz * cy, bz * cx - bx * cz, bx * cy - by * cx},
+                            {cy * az - cz * ay, cz * ax - cx * az, cx * ay - cy * ax},
+                            {ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx}};
+    for (int c = 0; c < 3; ++c) {
+      for (int a = 1; a < 4; ++a) b[c][a][l] = sixth * g[a - 1][c];
+      b[c][0][l] = -(b[c][1][l] + b[c][2][l] + b[c][3][l]);
+      for (int a = 4; a < 8; ++a) b[c][a][l] = 0.0;
+    }
+  }
+}
+
+// The area A for the tetrahedron's characteristic length L = V / A: with |B_a| a third of the
+// area of the face opposite a, V / max|B_a| = 3 V / A_max is its minimum altitude, the length
+// LS-DYNA takes for 4-node tetrahedra (Theory Manual, "Time step control").
+inline void tetLengthArea(const NodalBatch& b, LaneArray& area) {
+  for (int l = 0; l < kBatch; ++l) {
+    double m = 0.0;
+    for (int a = 0; a < 4; ++a)
+      m = std::max(m, b[0][a][l] * b[0][a][l] + b[1][a][l] * b[1][a][l] + b[2][a][l] * b[2][a][l]);
+    area[l] = std::sqrt(m);
+  }
+}
+
 // Lane l of a batch starting at `first` with `n` live elements reads element first+min(l,n-1).
 inline std::size_t laneElement(std::size_t first, int n, int l) {
   return first + static_cast<std::size_t>(std::min(l, n - 1));

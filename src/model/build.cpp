@@ -369,7 +369,7 @@ const std::vector<Meaning>& meanings() {
       {"*CONTROL_HOURGLASS", 6, readControlHourglass, {}},
       {"*CONTROL_BULK_VISCOSITY", 6, readControlBulkViscosity, {}},
       {"*CONTROL_ENERGY", 6, readControlEnergy, {}},
-      {"*CONTROL_SOLID", 6, readIgnoredControl, {}},
+      {"*CONTROL_SOLID", 6, readControlSolid, {}},
       {"*CONTROL_ACCURACY", 6, readIgnoredControl, {}},
       {"*CONTROL_OUTPUT", 6, readIgnoredControl, {}},
       {"*CONTROL_SHELL", 6, readControlShell, {}},
@@ -649,6 +649,7 @@ Model buildModel(const deck::Deck& deck, const std::filesystem::path& path,
   ctx.attempt([&] { finishRigid(ctx); });
   ctx.attempt([&] { finishConditions(ctx); });
   ctx.attempt([&] { finishControls(ctx); });
+  ctx.attempt([&] { noteDegenerateSolids(ctx); });
   if (model.nodes.size() == 0)
     ctx.fail(path.string() + ": the deck defines no nodes (*NODE)");
   else if (model.numElements() == 0 && !options.allow_unsupported)

@@ -8,6 +8,7 @@
 
 #include "deck/number.hpp"
 #include "model/build_context.hpp"
+#include "model/solid_shape.hpp"
 #include "util/vec3.hpp"
 
 namespace crumple::model::build {
@@ -78,31 +79,12 @@ double shellThickness(const Model& m, std::size_t e) {
   return n > 0 ? sum / n : 0.0;
 }
 
-// Faces of the 8-node hexahedron in LS-DYNA node order, each listed so that the right-hand
-// rule on (x3 - x1) x (x4 - x2) points out of an element numbered the usual way.
-constexpr int kHexFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                                 {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-
-// A face with repeated nodes (wedges and tetrahedra written as hexahedra) as a triangle with
-// n3 == n4, or nothing when fewer than three nodes are distinct.
-bool normaliseFace(std::array<int32_t, 4>& f) {
-  std::array<int32_t, 4> out{};
-  int n = 0;
-  for (int k = 0; k < 4; ++k) {
-    const int32_t v = f[std::size_t(k)];
-    if (n > 0 && out[std::size_t(n - 1)] == v) continue;
-    out[std::size_t(n++)] = v;
-  }
-  if (n > 1 && out[std::size_t(n - 1)] == out[0]) --n;
-  if (n < 3) return false;
-  if (n == 3) out[3] = out[2];
-  f = out;
-  return true;
-}
-
 using FaceKey = std::array<int32_t, 4>;
+// The face's distinct nodes, sorted (a triangle padded with kNone): a triangle turned round
+// (a c b b) is the same face as (a b c c).
 FaceKey keyOf(std::array<int32_t, 4> f) {
   std::sort(f.begin(), f.end());
+  std::fill(std::unique(f.begin(), f.end()), f.end(), kNone);
   return f;
 }
 
@@ -121,10 +103,12 @@ std::vector<Segment> partSegments(const Model& m, const std::vector<uint8_t>& in
     if (!in_part[std::size_t(m.solids.part[e])]) continue;
     const auto& n = m.solids.nodes[e];
     const Vec3 ce = centroid(m, n.data(), 8);
-    for (const auto& hf : kHexFaces) {
-      std::array<int32_t, 4> f{n[std::size_t(hf[0])], n[std::size_t(hf[1])], n[std::size_t(hf[2])],
-                               n[std::size_t(hf[3])]};
-      if (!normaliseFace(f)) continue;
+    int32_t sf[6][4];
+    int sizes[6];
+    const int nf = solidFaces(n, sf, sizes);
+    for (int k = 0; k < nf; ++k) {
+      // A triangle as a quadrilateral with n3 == n4, as shells write it.
+      std::array<int32_t, 4> f{sf[k][0], sf[k][1], sf[k][2], sf[k][sizes[k] == 4 ? 3 : 2]};
       // Orientation from the geometry, so that a mirrored element still faces outwards.
       const Vec3 cf = centroid(m, f.data(), f[2] == f[3] ? 3 : 4);
       if (dot(areaVector(m, f), sub(cf, ce)) < 0.0)
@@ -137,12 +121,13 @@ std::vector<Segment> partSegments(const Model& m, const std::vector<uint8_t>& in
   std::vector<Segment> out;
   for (const auto& [f, e] : faces) {
     if (count[keyOf(f)] != 1) continue;
-    // V from the divergence theorem over the six faces (exact for planar faces).
-    const auto& n = m.solids.nodes[std::size_t(e)];
+    // V from the divergence theorem over the faces (exact for planar faces).
+    int32_t sf[6][4];
+    int sizes[6];
+    const int nf = solidFaces(m.solids.nodes[std::size_t(e)], sf, sizes);
     double vol = 0.0;
-    for (const auto& hf : kHexFaces) {
-      std::array<int32_t, 4> g{n[std::size_t(hf[0])], n[std::size_t(hf[1])], n[std::size_t(hf[2])],
-                               n[std::size_t(hf[3])]};
+    for (int k = 0; k < nf; ++k) {
+      std::array<int32_t, 4> g{sf[k][0], sf[k][1], sf[k][2], sf[k][sizes[k] == 4 ? 3 : 2]};
       vol += dot(centroid(m, g.data(), 4), areaVector(m, g)) / 3.0;
     }
     const Vec3 av = areaVector(m, f);

@@ -2,10 +2,14 @@
 // *HOURGLASS (LS-DYNA Keyword Manual Vol. I and II); the material laws read their own cards
 // (build_materials.cpp).
 #include <algorithm>
+#include <map>
 #include <numeric>
+
+#include <fmt/format.h>
 
 #include "deck/number.hpp"
 #include "model/build_context.hpp"
+#include "model/solid_shape.hpp"
 #include "util/error.hpp"
 
 namespace crumple::model::build {
@@ -152,6 +156,28 @@ void finishNodes(Context& ctx) {
   ctx.model.finalize();
 }
 
+namespace {
+
+// The ELFORM of the part's solid section (0 when the part has none usable).
+int sectionElform(const Context& ctx, int32_t part) {
+  if (part == kNone) return 0;
+  const auto& p = ctx.model.parts[static_cast<std::size_t>(part)];
+  if (p.section == kNone || p.section_kind != SectionKind::Solid) return 0;
+  return ctx.model.solid_sections[static_cast<std::size_t>(p.section)].elform;
+}
+
+// An element of an ELFORM 10 section: four distinct nodes, stored as N1 N2 N3 N4 N4 N4 N4 N4.
+std::array<int32_t, 8> tetrahedronNodes(const Card& c, const std::array<int32_t, 8>& n) {
+  int32_t d[8];
+  const int k = distinctNodes(n, d);
+  if (k != 4)
+    c.fail("N1", "a tetrahedron (*SECTION_SOLID ELFORM 10) needs 4 distinct nodes, not " +
+                     std::to_string(k) + " (N1 N2 N3 N4, N5 to N8 blank or N4)");
+  return canonicalTet(n);
+}
+
+}  // namespace
+
 void readSolids(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
   const auto& spec = keywordSpec("*ELEMENT_SOLID");
   static constexpr std::string_view kN[10] = {"N1", "N2", "N3", "N4", "N5",
@@ -185,6 +211,7 @@ void readSolids(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
       if (ids[i] == 0) nc->fail(kN[i], "node id missing");
       s.nodes[i] = ctx.node(*nc, kN[i], ids[i]);
     }
+    if (sectionElform(ctx, part) == 10) s.nodes = tetrahedronNodes(*nc, s.nodes);
     ctx.solid_input.push_back(s);
     ctx.collect(cur);
   }
@@ -343,10 +370,11 @@ void readSectionSolid(Context& ctx, const deck::Keyword& kw, const KeywordOption
     s.where = c.where();
     const auto elform = c.integer("ELFORM");
     // ELFORM (Keyword Manual, *SECTION_SOLID): 1 constant stress (default), 2 fully integrated
-    // selective-reduced; 0 is the one-point corotational form of *MAT_MODIFIED_HONEYCOMB,
-    // run here as 1 with a note. -1 and -2 (fully integrated forms for poor aspect ratios)
+    // selective-reduced, 10 one-point tetrahedron; 0 is the one-point corotational form of
+    // *MAT_MODIFIED_HONEYCOMB, run here as 1 with a note. -1 and -2 (fully integrated forms
+    // for poor aspect ratios), 13 (nodal-pressure tetrahedron), 15 (pentahedron) and the rest
     // are refused rather than silently run as something else.
-    if (elform == 1 || elform == 2) {
+    if (elform == 1 || elform == 2 || elform == 10) {
       s.elform = static_cast<int>(elform);
     } else if (elform == 0) {
       s.elform = 1;
@@ -357,7 +385,8 @@ void readSectionSolid(Context& ctx, const deck::Keyword& kw, const KeywordOption
       ctx.defineUnsupported(Kind::Section, s.id, kw.name + " ELFORM=" + std::to_string(elform),
                             c.where());
       ctx.reportUnsupported(
-          kw, "ELFORM " + std::to_string(elform) + " not supported yet (1 and 2 are; 0 runs as 1)",
+          kw,
+          "ELFORM " + std::to_string(elform) + " not supported yet (1, 2 and 10 are; 0 runs as 1)",
           false);
       ctx.collect(cur);
       continue;
@@ -417,6 +446,87 @@ void finishDefinitions(Context& ctx) {
   sections(ctx.model.discrete_sections, SectionKind::Discrete);
   sortById(ctx.model.hourglass, ctx.hourglass_index);
   sortById(ctx.model.eos, ctx.eos_index);
+}
+
+}  // namespace crumple::model::build
+
+namespace crumple::model::build {
+
+namespace {
+
+// What a degenerate solid is, from its distinct nodes (Keyword Manual, *ELEMENT_SOLID).
+enum class Degenerate { None, Tetrahedron, Pentahedron, Other };
+Degenerate degenerateShape(const std::array<int32_t, 8>& n) {
+  int32_t d[8];
+  switch (distinctNodes(n, d)) {
+    case 8:
+      return Degenerate::None;
+    case 4:
+      return Degenerate::Tetrahedron;
+    case 6:
+      // N1 N2 N3 N4 N5 N5 N6 N6: the two triangles (N1 N2 N5), (N4 N3 N6).
+      return n[4] == n[5] && n[6] == n[7] ? Degenerate::Pentahedron : Degenerate::Other;
+    default:
+      return Degenerate::Other;
+  }
+}
+
+}  // namespace
+
+void readControlSolid(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*CONTROL_SOLID");
+  CardCursor cur(kw, ctx.deck);
+  const Card& c = cur.readOptional(spec.card("card 1"));
+  if (!cur.atEnd()) cur.read(spec.card("card 2"));
+  const int64_t esort = c.integer("ESORT");
+  if (esort != 0 && esort != 1)
+    ctx.reject(c, "ESORT", "only 0 (no sorting) and 1 (tetrahedra to ELFORM 10) are supported");
+  ctx.model.controls.solid_esort = esort == 1;
+  ctx.collect(cur);
+  if (esort != 1) return;
+  // ESORT = 1 (Keyword Manual, *CONTROL_SOLID): degenerate hexahedra of the one-point and
+  // fully integrated forms run as the tetrahedron (ELFORM 10) and the pentahedron (ELFORM 15).
+  Solids& s = ctx.model.solids;
+  std::size_t pentahedra = 0, first = 0;
+  for (std::size_t e = 0; e < s.size(); ++e) {
+    const int form = sectionElform(ctx, s.part[e]);
+    if (form != 1 && form != 2) continue;
+    const Degenerate shape = degenerateShape(s.nodes[e]);
+    if (shape == Degenerate::Tetrahedron) s.nodes[e] = canonicalTet(s.nodes[e]);
+    if (shape == Degenerate::Pentahedron && pentahedra++ == 0) first = e;
+  }
+  if (pentahedra > 0)
+    ctx.reject(c, "ESORT",
+               "sorts pentahedra into ELFORM 15, which Crumple does not have: " +
+                   std::to_string(pentahedra) + " solid(s) are pentahedra (first: element " +
+                   std::to_string(s.id[first]) +
+                   "); ESORT = 0 runs them as degenerate hexahedra (poor)",
+               "*CONTROL_SOLID ESORT=1 pentahedra (ELFORM 15)");
+}
+
+void noteDegenerateSolids(Context& ctx) {
+  const Model& m = ctx.model;
+  // Per part: tetrahedra, pentahedra and other collapsed hexahedra that run as hexahedra.
+  std::map<int32_t, std::array<std::size_t, 3>> count;
+  for (std::size_t e = 0; e < m.solids.size(); ++e) {
+    const Degenerate shape = degenerateShape(m.solids.nodes[e]);
+    if (shape == Degenerate::None || m.solidFormulation(e) == 10) continue;
+    ++count[m.solids.part[e]][static_cast<std::size_t>(shape) - 1];
+  }
+  for (const auto& [part, n] : count) {
+    const Part& p = m.parts[static_cast<std::size_t>(part)];
+    const int form = sectionElform(ctx, part);
+    ctx.ignore(
+        "*CONTROL_SOLID", "ESORT",
+        fmt::format("part {}: {} degenerate solid(s) ({} tetrahedra, {} pentahedra, {} other) "
+                    "run as ELFORM {} hexahedra with collapsed nodes, a poor element (too stiff "
+                    "or too soft, lumped mass piled on the repeated node){}",
+                    p.id, n[0] + n[1] + n[2], n[0], n[1], n[2], form,
+                    n[0] > 0 && !m.controls.solid_esort
+                        ? "; *CONTROL_SOLID ESORT = 1 runs the tetrahedra as ELFORM 10"
+                        : ""),
+        p.where);
+  }
 }
 
 }  // namespace crumple::model::build

@@ -1,5 +1,7 @@
 #include "model/model.hpp"
 
+#include "model/solid_shape.hpp"
+
 #include "util/curve.hpp"
 
 #include <algorithm>
@@ -130,6 +132,14 @@ int Model::elementNodes(std::size_t g, int32_t out[8]) const {
 int32_t Model::elementPart(std::size_t g) const {
   return onFamily(
       *this, g, [](const auto& list, int32_t i) { return list.part[static_cast<std::size_t>(i)]; });
+}
+
+int Model::solidFormulation(std::size_t e) const {
+  const Part& part = parts[static_cast<std::size_t>(solids.part[e])];
+  const int form = part.section == kNone || part.section_kind != SectionKind::Solid
+                       ? 1
+                       : solid_sections[static_cast<std::size_t>(part.section)].elform;
+  return form != 10 && controls.solid_esort && isCanonicalTet(solids.nodes[e]) ? 10 : form;
 }
 
 int64_t Model::elementId(std::size_t g) const {

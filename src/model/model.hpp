@@ -82,7 +82,9 @@ struct EquationOfState {
 // ---- sections, hourglass, parts -----------------------------------------------------------
 struct SectionSolid {
   int64_t id = 0;
-  int elform = 1;  // 1 = constant stress (one point); 2 = selective-reduced (8 points)
+  // 1 = constant stress (one point); 2 = selective-reduced (8 points); 10 = constant-strain
+  // tetrahedron (its elements stored as N1 N2 N3 N4 N4 N4 N4 N4, model/solid_shape.hpp)
+  int elform = 1;
   util::SourceLoc where;
 };
 
@@ -258,21 +260,24 @@ struct RigidWallPlanar {
 
 // *CONTROL_* values after LS-DYNA defaulting (blank/zero fields mean "default").
 struct Controls {
-  double end_time = 0.0;                // *CONTROL_TERMINATION ENDTIM
-  int64_t end_cycle = 0;                // ENDCYC; 0 = none
-  double dt_min_ratio = 0.0;            // DTMIN (fraction of the initial step); 0 = none
-  double end_mass_ratio = 0.0;          // ENDMAS (% mass increase for termination); 0 = none
-  double tssfac = 0.9;                  // *CONTROL_TIMESTEP
-  double dt_init = 0.0;                 // DTINIT; 0 = from the elements
-  double dt2ms = 0.0;                   // mass scaling; negative: only elements below |DT2MS|
-  int32_t dt_max_curve = kNone;         // LCTM
-  double q_quadratic = 1.5;             // *CONTROL_BULK_VISCOSITY Q1
-  double q_linear = 0.06;               // Q2
-  int hourglass_ihq = 1;                // *CONTROL_HOURGLASS IHQ
-  double hourglass_qh = 0.1;            // QH
-  bool hourglass_energy = false;        // *CONTROL_ENERGY HGEN == 2
-  bool rigidwall_energy = true;         // RWEN == 2 (default)
-  bool erode_on_dtmin = false;          // ERODE = 1 with DTMIN: erode solids and shells
+  double end_time = 0.0;          // *CONTROL_TERMINATION ENDTIM
+  int64_t end_cycle = 0;          // ENDCYC; 0 = none
+  double dt_min_ratio = 0.0;      // DTMIN (fraction of the initial step); 0 = none
+  double end_mass_ratio = 0.0;    // ENDMAS (% mass increase for termination); 0 = none
+  double tssfac = 0.9;            // *CONTROL_TIMESTEP
+  double dt_init = 0.0;           // DTINIT; 0 = from the elements
+  double dt2ms = 0.0;             // mass scaling; negative: only elements below |DT2MS|
+  int32_t dt_max_curve = kNone;   // LCTM
+  double q_quadratic = 1.5;       // *CONTROL_BULK_VISCOSITY Q1
+  double q_linear = 0.06;         // Q2
+  int hourglass_ihq = 1;          // *CONTROL_HOURGLASS IHQ
+  double hourglass_qh = 0.1;      // QH
+  bool hourglass_energy = false;  // *CONTROL_ENERGY HGEN == 2
+  bool rigidwall_energy = true;   // RWEN == 2 (default)
+  bool erode_on_dtmin = false;    // ERODE = 1 with DTMIN: erode solids and shells
+  // *CONTROL_SOLID ESORT = 1: tetrahedra written as degenerate hexahedra under ELFORM 1 or 2
+  // run as ELFORM 10 (Model::solidFormulation).
+  bool solid_esort = false;
   double energy_ratio_min = 0.0;        // `crumple run --energy-band LO,HI`; 0 = no check
   double energy_ratio_max = 0.0;        // HI of --energy-band
   bool shell_bwc = false;               // *CONTROL_SHELL BWC = 1 (warping correction)
@@ -367,6 +372,9 @@ struct Model {
   int elementNodes(std::size_t g, int32_t out[8]) const;
   int32_t elementPart(std::size_t g) const;
   int64_t elementId(std::size_t g) const;
+  // The formulation solid e runs: its section's ELFORM (1, 2 or 10), or 10 for a tetrahedron
+  // under ELFORM 1 or 2 when *CONTROL_SOLID ESORT = 1 (the reader made its nodes canonical).
+  int solidFormulation(std::size_t e) const;
   // "shell element 12" for messages.
   std::string elementName(std::size_t g) const;
 

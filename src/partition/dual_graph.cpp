@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "model/solid_shape.hpp"
 #include "partition/incidence.hpp"
 #include "partition/partition.hpp"
 
@@ -46,49 +47,13 @@ Incidence nodeElements(const model::Model& model) {
 
 namespace {
 
-// Hex faces in LS-DYNA node order (0-based), outward by the right-hand rule.
-constexpr int kHexFaces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                                 {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-
-// The faces of one element as lists of 3 or 4 distinct node indices. Degenerate hexes:
-// collapsing nodes turns a hex face into a triangle (kept), an edge or a point (dropped); this
-// gives the right faces for the LS-DYNA wedge (n5=n6, n7=n8) and pyramid (n5=...=n8) and for
-// the tetrahedron written n3=n4, n5=...=n8. The other tetrahedron convention (n4=...=n8) would
-// keep the bottom "face" n1..n4, which is the whole element, and lose the triangle n1 n2 n3, so
-// any element with 4 distinct nodes is given its 4 triangles directly.
-int elementFaces(const std::array<int32_t, 8>& n, int32_t faces[6][4], int sizes[6]) {
-  int32_t d[8];
-  const int k = detail::distinctNodes(n, d);
-  if (k < 4) return 0;  // not a solid; the model validation reports it
-  if (k == 4) {
-    constexpr int kTet[4][3] = {{0, 1, 2}, {0, 1, 3}, {1, 2, 3}, {0, 2, 3}};
-    for (int f = 0; f < 4; ++f) {
-      for (int i = 0; i < 3; ++i) faces[f][i] = d[kTet[f][i]];
-      sizes[f] = 3;
-    }
-    return 4;
-  }
-  int nf = 0;
-  for (const auto& hf : kHexFaces) {
-    int m = 0;
-    for (int i = 0; i < 4; ++i) {
-      const int32_t v = n[std::size_t(hf[i])];
-      bool seen = false;
-      for (int j = 0; j < m; ++j) seen = seen || faces[nf][j] == v;
-      if (!seen) faces[nf][m++] = v;
-    }
-    if (m >= 3) sizes[nf++] = m;
-  }
-  return nf;
-}
-
 // Faces of any element: a solid's as above; a shell's edges (so shells meeting along an edge
 // are neighbours, and a shell lying on a solid's face or edge is the solid's); the two nodes
 // of a beam or discrete element (neighbours through a shared node).
 int anyElementFaces(const model::Model& model, std::size_t g, int32_t faces[6][4], int sizes[6]) {
   const auto [family, i] = model.element(g);
   if (family == model::Family::Solid)
-    return elementFaces(model.solids.nodes[std::size_t(i)], faces, sizes);
+    return model::solidFaces(model.solids.nodes[std::size_t(i)], faces, sizes);
   int32_t d[8];
   const int k = detail::elementDistinctNodes(model, g, d);
   if (family == model::Family::Shell) {

@@ -10,18 +10,6 @@
 
 namespace crumple::partition::detail {
 
-// Distinct node indices of an 8-node (possibly degenerate) hex, in order of first appearance.
-// Returns how many there are (<= 8).
-inline int distinctNodes(const std::array<int32_t, 8>& n, int32_t out[8]) {
-  int k = 0;
-  for (int32_t v : n) {
-    bool seen = false;
-    for (int i = 0; i < k; ++i) seen = seen || out[i] == v;
-    if (!seen) out[k++] = v;
-  }
-  return k;
-}
-
 // Distinct force-carrying nodes of global element g (any family), in order of appearance.
 inline int elementDistinctNodes(const model::Model& model, std::size_t g, int32_t out[8]) {
   int32_t n[8];

@@ -42,13 +42,16 @@ std::vector<int32_t> elementWeights(const model::Model& model, const Options& op
   // rate effects, a pow) to the elastic update; stiffness hourglass control (IHQ 4-5) adds its
   // hourglass stress update. A part without a material (only in a tolerant `check` read)
   // counts as elastic.
-  auto partWeight = [&](const model::Part& part) -> int32_t {
+  auto costOfPart = [&](const model::Part& part) {
     const model::MaterialLaw* law =
         part.material != model::kNone && std::size_t(part.material) < model.materials.size()
             ? &model.materials[std::size_t(part.material)].law
             : nullptr;
     // Each law declares its cost class (materials/law.hpp).
-    const materials::Cost cost = law ? materials::costOf(*law) : materials::Cost::Elastic;
+    return law ? materials::costOf(*law) : materials::Cost::Elastic;
+  };
+  auto partWeight = [&](const model::Part& part) -> int32_t {
+    const materials::Cost cost = costOfPart(part);
     if (cost == materials::Cost::Rigid) return kWeightRigid;
     const bool plastic = cost == materials::Cost::Plastic;
     switch (part.section_kind) {
@@ -78,6 +81,13 @@ std::vector<int32_t> elementWeights(const model::Model& model, const Options& op
   for (std::size_t e = 0; e < ne; ++e) {
     const int32_t p = model.elementPart(e);
     if (p >= 0 && std::size_t(p) < part_weight.size()) w[e] = part_weight[std::size_t(p)];
+    // A tetrahedron (ELFORM 10) runs the one-point kernel without hourglass control (not
+    // measured apart: it gathers the same eight corners).
+    if (p >= 0 && e < model.solids.size() && w[e] != kWeightRigid &&
+        model.solidFormulation(e) == 10)
+      w[e] = costOfPart(model.parts[std::size_t(p)]) == materials::Cost::Plastic
+                 ? kWeightSolidPlastic
+                 : kWeightSolidElastic;
     if (!opt.contact_elements.empty() && opt.contact_elements[e] != 0)
       w[e] = std::max<int32_t>(1, int32_t(std::lround(w[e] * opt.contact_bias)));
   }

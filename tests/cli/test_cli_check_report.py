@@ -70,6 +70,17 @@ class CheckReport(clitest.TempDirTest):
         self.assertGreater(report["initial_dt"], 0.0)
         self.assertAlmostEqual(report["end_time"], 0.01)
 
+    def test_tetrahedra_counted_per_part(self):
+        # tet_blocks.k: part 1 native ELFORM 10, part 2 degenerate hexahedra sorted by ESORT.
+        deck = os.path.join(clitest.SOURCE_DIR, "tests", "data", "decks", "tet_blocks.k")
+        p = crumple("check", deck, cwd=self.tmp)
+        self.assertEqual(p.returncode, 0, describe(p))
+        self.assertRegex(p.stdout, r"(?m)^  part 1 .*: 162 solids, .*, 162 as ELFORM 10 tetrahedra$",
+                         describe(p))
+        self.assertRegex(p.stdout, r"(?m)^  part 2 .*: 384 solids, .*, 384 as ELFORM 10 tetrahedra$",
+                         describe(p))
+        self.assertNotIn("degenerate solid", p.stdout, describe(p))
+
     def test_implicit_deck_refused_unless_run_explicitly_on_request(self):
         self.write("imp.k", IMPLICIT)
         p = crumple("check", "imp.k", "--json", cwd=self.tmp)

@@ -69,16 +69,33 @@ class RealDecks(clitest.TempDirTest):
         return s
 
     def test_block_check_and_run(self):
-        p = self.check(BLOCK, 0)
+        # *CONTROL_SOLID ESORT = 1 asks for its 80 pentahedra to run as ELFORM 15, which
+        # Crumple lacks: refused, named; --ignore-unsupported runs them as hexahedra.
+        p = self.check(BLOCK, 1)
+        self.assertIn("*CONTROL_SOLID ESORT=1 pentahedra (ELFORM 15)", p.stdout, describe(p))
+        self.assertIn("80 solid(s) are pentahedra", p.stdout, describe(p))
         self.assertRegex(p.stdout, r"(?m)^nodes: 6724$", describe(p))
         self.assertRegex(p.stdout, r"(?m)^solid elements: 5680$", describe(p))
         table = unsupported_table(p.stdout)
         self.assertIn("*DATABASE_ELOUT", table, describe(p))
         self.assertIn("output not written yet", table["*DATABASE_ELOUT"])
         self.assertIn("*DATABASE_SPCFORC", table, describe(p))
+        # The same deck with ESORT = 0 runs, the pentahedra as collapsed hexahedra, and says so.
+        with open(self.deck(BLOCK)) as f:
+            lines = f.read().split("\n")
+        esort = lines.index("*CONTROL_SOLID") + 2
+        self.assertEqual(lines[esort][:10], "         1")
+        lines[esort] = "         0" + lines[esort][10:]
+        copy = os.path.join(self.tmp, "block_esort0.k")
+        with open(copy, "w") as f:
+            f.write("\n".join(lines))
+        p = crumple("check", copy, cwd=self.tmp)
+        self.assertEqual(p.returncode, 0, describe(p))
+        self.assertIn("80 degenerate solid(s) (0 tetrahedra, 80 pentahedra, 0 other) run as "
+                      "ELFORM 1 hexahedra", p.stdout, describe(p))
         dt = self.initial_step(p)
         # About 20 cycles: enough to see the deck's loads act, short enough to stay quick.
-        s = self.short_run(self.deck(BLOCK), 20 * dt)
+        s = self.short_run(copy, 20 * dt)
         self.assertEqual(s["counts"]["nodes"], 6724)
         self.assertEqual(s["counts"]["solids"], 5680)
         self.assertAlmostEqual(s["end_time"], float(f"{20 * dt:.6g}"), delta=1e-12)

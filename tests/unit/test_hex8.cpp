@@ -11,6 +11,7 @@
 #include "brick_model.hpp"
 #include "domain/subdomain.hpp"
 #include "elements/hex8.hpp"
+#include "gather.hpp"
 #include "model/model.hpp"
 
 namespace {
@@ -119,16 +120,6 @@ void imposeLinearField(crumple::domain::Subdomain& sd, double dt) {
   for (std::size_t i = 0; i < sd.x.size(); ++i) sd.x[i] = sd.x0[i] + 0.5 * dt * sd.v[i];
 }
 
-// Nodal forces gathered from the element slots in the subdomain's order.
-std::vector<double> gatheredForces(const crumple::domain::Subdomain& sd) {
-  std::vector<double> f(3 * sd.numNodes(), 0.0);
-  for (std::size_t n = 0; n < sd.numNodes(); ++n)
-    for (int32_t k = sd.internal.ptr[n]; k < sd.internal.ptr[n + 1]; ++k)
-      for (int c = 0; c < 3; ++c)
-        f[3 * n + c] += sd.slots[3 * std::size_t(sd.internal.slot[std::size_t(k)]) + c];
-  return f;
-}
-
 class Hex8Patch : public ::testing::TestWithParam<int> {};
 
 TEST_P(Hex8Patch, UniformStrainIsExactAndInteriorForcesBalance) {
@@ -158,7 +149,7 @@ TEST_P(Hex8Patch, UniformStrainIsExactAndInteriorForcesBalance) {
   }
 
   // Gather and check the interior node (13) is in equilibrium.
-  const auto f = gatheredForces(sd);
+  const auto f = crumple::testing::gatheredForces(sd);
   const double scale = std::abs(blk.sigAt(0, 0));
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(f[3 * 13 + c], 0.0, 1e-13 * scale) << c;
 }
@@ -267,7 +258,7 @@ TEST(Hex8Full, UniformStrainIsExactAndInteriorForcesBalance) {
       EXPECT_NEAR(blk.sig_ip[0][q * padded + e], lambda * tr + 2 * mu * G[0][0] * dt, 1e-12);
       EXPECT_NEAR(blk.sig_ip[3][q * padded + e], mu * (G[0][1] + G[1][0]) * dt, 1e-12);
     }
-  const auto f = gatheredForces(sd);
+  const auto f = crumple::testing::gatheredForces(sd);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(f[3 * 13 + c], 0.0, 1e-13 * std::abs(blk.sigAt(0, 0)));
 }
 

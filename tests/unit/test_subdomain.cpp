@@ -8,6 +8,7 @@
 
 #include "brick_model.hpp"
 #include "domain/subdomain.hpp"
+#include "gather.hpp"
 #include "model/model.hpp"
 
 namespace {
@@ -32,15 +33,6 @@ void fillSlots(domain::Subdomain& sd) {
           sd.slots[3 * (b.slot_offset + 8 * k + a) + c] = cornerValue(b.elem[k], a, c);
 }
 
-std::vector<double> gatherAll(const domain::Subdomain& sd) {
-  std::vector<double> f(3 * sd.numNodes(), 0.0);
-  for (std::size_t n = 0; n < sd.numNodes(); ++n)
-    for (int32_t s = sd.internal.ptr[n]; s < sd.internal.ptr[n + 1]; ++s)
-      for (int c = 0; c < 3; ++c)
-        f[3 * n + c] += sd.slots[3 * std::size_t(sd.internal.slot[std::size_t(s)]) + c];
-  return f;
-}
-
 class SubdomainRanks : public ::testing::TestWithParam<int> {};
 
 TEST_P(SubdomainRanks, GhostExchangeReproducesSerialSumsBitForBit) {
@@ -53,7 +45,7 @@ TEST_P(SubdomainRanks, GhostExchangeReproducesSerialSumsBitForBit) {
 
   auto serial = domain::buildSerialSubdomain(m);
   fillSlots(serial);
-  const auto f_serial = gatherAll(serial);
+  const auto f_serial = crumple::testing::gatheredForces(serial);
 
   std::vector<domain::Subdomain> sds;
   for (int r = 0; r < ranks; ++r) {
@@ -75,7 +67,7 @@ TEST_P(SubdomainRanks, GhostExchangeReproducesSerialSumsBitForBit) {
     }
   std::map<int32_t, int> owners;
   for (const auto& sd : sds) {
-    const auto f = gatherAll(sd);
+    const auto f = crumple::testing::gatheredForces(sd);
     for (std::size_t n = 0; n < sd.numNodes(); ++n) {
       const auto g = static_cast<std::size_t>(sd.node_model[n]);
       for (int c = 0; c < 3; ++c) EXPECT_EQ(f[3 * n + c], f_serial[3 * g + c]) << "node " << g;
