@@ -89,8 +89,9 @@ struct ShellBlock : BlockBase {
   //   eps_p: nip fields per in-plane point, effective plastic strain (plastic laws), else empty
   //   alpha: 3 nip fields per in-plane point, back stress in plane-stress form (kinematic laws),
   //          else empty
-  //   hgq:   5 fields, hourglass resistances of the stiffness forms (membrane x, y, bending
-  //          x, y, transverse), else empty
+  //   hgq:   5 fields, the hourglass forces of the last cycle (membrane x, y, bending x, y,
+  //          transverse): the stiffness forms' resistances, the viscous forms' forces (for
+  //          their work); empty without hourglass control and for ELFORM 16
   //   drill: 4 fields, the corners' drilling moments (about the element normal) of the
   //          drilling-rotation constraint (src/elements/shell.cpp, "Drilling rotations")
   std::vector<double> sig, eps_p, alpha, hgq, drill;

@@ -306,11 +306,16 @@ inline void cornerForces(const ShellParams& p, const domain::ShellBlock& blk, Sh
                             scale * E * t * t * t * A * bb * (1.0 / 192.0),
                             scale * p.kappa * p.mc.G * t * t * t * bb * (1.0 / 12.0)};
     double hf[5], e_hg = 0.0;
+    // Work by the trapezoidal rule on the force, for both forms: the force formed now acts
+    // half over the last step and half over the next, at v(n) (docs/theory.md, "Energy
+    // balance"), so this step's rate meets the mean of the last force and this one. (The
+    // viscous force counted whole at this step's rate over-counted the dissipation of ringing
+    // modes, as it did for the solids.)
     for (int mode = 0; mode < 5; ++mode) {
       const double old = hg_prev[mode][l];
-      hf[mode] = old + coef[mode] * r.qdot[mode][l];
+      hf[mode] = (p.stiffness_hg ? old : 0.0) + coef[mode] * r.qdot[mode][l];
       o.hg_new[mode][l] = hf[mode];
-      e_hg += (p.hg_old_weight * old + p.hg_new_weight * hf[mode]) * r.qdot[mode][l] * dt;
+      e_hg += 0.5 * (old + hf[mode]) * r.qdot[mode][l] * dt;
     }
     // Drilling moments (none for triangles), accumulated like the stiffness hourglass
     // resistances; the membrane spin's share goes to the in-plane forces.
@@ -359,7 +364,7 @@ inline void storeState(const ShellParams& p, domain::ShellBlock& blk, const Shel
   Lanes alive;  // 1 for an element not eroded (as double: the selects below vectorise)
   aliveLanes(blk, first, alive);
   storePoints<Law>(p, s, alive, sig_batch, ep_batch, alpha_batch, q);
-  if (p.stiffness_hg) {
+  if (p.hg_state) {
     double* hgq_batch = blk.hgq.data() + first * 5;
     for (int mode = 0; mode < 5; ++mode)
       for (int l = 0; l < B; ++l)
@@ -415,7 +420,7 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
       double* alpha_batch = Law::kKinematic
                                 ? blk.alpha.data() + first * static_cast<std::size_t>(3 * p.nip)
                                 : nullptr;
-      const double* hg_old = p.stiffness_hg ? blk.hgq.data() + first * 5 : s.zeros;
+      const double* hg_old = p.hg_state ? blk.hgq.data() + first * 5 : s.zeros;
       ShellRates r;
       midStepRates(p, s, ln, r);
       Lanes work, failed_points;
@@ -534,7 +539,9 @@ void resizeShellBlock(domain::ShellBlock& blk, std::size_t n) {
   } else {
     blk.alpha.clear();
   }
-  if (blk.ihq >= 4 && blk.inPlanePoints() == 1) {  // ELFORM 16 has no hourglass modes
+  // The last hourglass forces: the stiffness forms' state, the viscous forms' work (ELFORM 16
+  // has no hourglass modes).
+  if (blk.inPlanePoints() == 1 && (blk.ihq >= 4 || blk.qm > 0.0)) {
     blk.hgq.assign(padded * 5, 0.0);
   } else {
     blk.hgq.clear();

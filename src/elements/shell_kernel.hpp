@@ -144,10 +144,12 @@ struct ShellParams {
   int nip = 0, npts = 0, fields = 0;
   double kappa = 0;
   bool stiffness_hg = false;
+  // The block keeps the hourglass forces of the last cycle (ShellBlock::hgq): the stiffness
+  // forms accumulate them; the viscous forms keep them for their work.
+  bool hg_state = false;
   double qm = 0;
-  // Hourglass scale: QM dt for the stiffness forms, QM L_s / c for the viscous ones; the
-  // stiffness forms' resistance moves by its mean over the step.
-  double hg_dt = 0, hg_visc = 0, hg_old_weight = 0, hg_new_weight = 0;
+  // Hourglass scale: QM dt for the stiffness forms, QM L_s / c for the viscous ones.
+  double hg_dt = 0, hg_visc = 0;
   double bwc = 0, drill_coef = 0;
   bool thickness_update = false, scaled_mass = false, can_fail = false;
   int fail_points = 0;  // failed points that erode an element: all of them (nip x in-plane)
@@ -166,10 +168,9 @@ inline ShellParams shellParamsOf(const Law& law, const domain::ShellBlock& blk, 
   p.kappa = blk.shear_factor;
   p.stiffness_hg = blk.ihq >= 4 && blk.inPlanePoints() == 1;  // none in ELFORM 16
   p.qm = blk.qm;
+  p.hg_state = !blk.hgq.empty();
   p.hg_dt = p.stiffness_hg ? dt : 0.0;
   p.hg_visc = p.stiffness_hg ? 0.0 : p.inv_c;
-  p.hg_old_weight = p.stiffness_hg ? 0.5 : 0.0;
-  p.hg_new_weight = p.stiffness_hg ? 0.5 : 1.0;
   p.bwc = blk.bwc ? 1.0 : 0.0;
   p.drill_coef = kDrillStiffness * p.mc.E * (1.0 / 12.0);
   p.thickness_update = blk.thickness_update;
@@ -355,7 +356,7 @@ inline void writeSlots(const ShellParams& p, domain::ShellBlock& blk, const Shel
       blk.active[e] = 0;
       if (failed) blk.failed[e] = 1;
       for (int k = 0; k < p.fields; ++k) blk.sig[domain::ShellBlock::blocked(p.fields, k, e)] = 0.0;
-      if (p.stiffness_hg)
+      if (p.hg_state)
         for (int mode = 0; mode < 5; ++mode) blk.hgqAt(mode, e) = 0.0;
       for (int a = 0; a < 4; ++a) blk.drillAt(a, e) = 0.0;
       std::fill(slot, slot + 24, 0.0);
