@@ -697,8 +697,8 @@ void shellResultants(const domain::ShellBlock& blk, std::size_t e, double out[8]
         m[k] -= w * z * blk.sigAt(k, p, e, iq);
       }
     }
-    q[0] += t * blk.shearAt(0, e, iq) / nq;
-    q[1] += t * blk.shearAt(1, e, iq) / nq;
+    q[0] += t * blk.shearAt(1, e, iq) / nq;  // Qx from tau_zx
+    q[1] += t * blk.shearAt(0, e, iq) / nq;  // Qy from tau_yz
   }
   const double r[8] = {m[0], m[1], m[2], q[0], q[1], n[0], n[1], n[2]};
   std::copy(r, r + 8, out);

@@ -339,6 +339,113 @@ class Erosion(D3plotCase):
         self.compare_with_vtu(out, deck)
 
 
+def cantilever(load):
+    """Ten resultant beams (ELFORM 2) of 10 mm along x, 10 x 10 mm steel, clamped at x = 0,
+    orientation node on +y (s = y, t = z); an end load `load` (kN) along +z ramped over 50 ms.
+    The first bending mode, omega = 1.875^2 sqrt(E I / (rho A L^4)) = 5.2 rad/ms, makes that
+    quasi-static: the ramp leaves a dynamic error of about 1 / (omega T) = 0.4%. Small
+    deflection: the tip moves P L^3 / (3 E I) = 0.19 mm for 0.1 kN."""
+    s = "*KEYWORD\n*TITLE\ncantilever\n*CONTROL_TERMINATION\n      50.0\n"
+    s += "*DATABASE_BINARY_D3PLOT\n      12.5\n*PART\nbeam\n         1         1         1\n"
+    s += "*SECTION_BEAM\n         1         2    0.8333         2         0\n"
+    s += "     100.0     833.3     833.3    1406.0     83.33\n"
+    s += "*MAT_ELASTIC\n         1   7.85e-6     210.0       0.3\n*NODE\n"
+    s += "".join(f"{i + 1:8d}{10.0 * i:16.6f}{0.0:16.6f}{0.0:16.6f}\n" for i in range(11))
+    s += f"{99:8d}{0.0:16.6f}{100.0:16.6f}{0.0:16.6f}\n*ELEMENT_BEAM\n"
+    s += "".join(f"{e:8d}{1:8d}{e:8d}{e + 1:8d}{99:8d}\n" for e in range(1, 11))
+    s += "*BOUNDARY_SPC_NODE\n         1         0         1         1         1         1"
+    s += "         1         1\n        99         0         1         1         1         1"
+    s += "         1         1\n"
+    s += "*DEFINE_CURVE\n         1\n                 0.0                 0.0\n"
+    s += "                50.0                 1.0\n"
+    s += f"*LOAD_NODE_POINT\n        11         3         1{load:10.4g}\n"
+    return s + "*END\n"
+
+
+def pulled_plate():
+    """A 40 x 20 mm plate of 4 x 2 Belytschko-Tsay shells, 1 mm thick, NIP 3, elastic steel,
+    in the xy plane (z held): the x = 0 edge held along x (node 1 also along y), the x = 40
+    edge pulled 0.02 mm along x in 1 ms. A membrane state: the stress is the same at every
+    point through the thickness."""
+    s = "*KEYWORD\n*TITLE\npulled plate\n*CONTROL_TERMINATION\n       1.0\n"
+    s += "*DATABASE_BINARY_D3PLOT\n      0.25\n*PART\nplate\n         1         1         1\n"
+    s += "*SECTION_SHELL\n         1         2    0.8333         3\n"
+    s += "       1.0       1.0       1.0       1.0\n"
+    s += "*MAT_ELASTIC\n         1   7.85e-6     210.0       0.3\n*NODE\n"
+    s += "".join(f"{1 + i + 5 * j:8d}{10.0 * i:16.6f}{10.0 * j:16.6f}{0.0:16.6f}\n"
+                 for j in range(3) for i in range(5))
+    s += "*ELEMENT_SHELL\n"
+    s += "".join(f"{1 + i + 4 * j:8d}{1:8d}{1 + i + 5 * j:8d}{2 + i + 5 * j:8d}"
+                 f"{7 + i + 5 * j:8d}{6 + i + 5 * j:8d}\n" for j in range(2) for i in range(4))
+    s += "*BOUNDARY_SPC_NODE\n"
+    for n in range(1, 16):
+        dofs = (1 if n == 1 or n % 5 == 1 else 0, 1 if n == 1 else 0, 1, 1, 1, 0)
+        s += f"{n:10d}{0:10d}" + "".join(f"{d:10d}" for d in dofs) + "\n"
+    s += "*SET_NODE_LIST\n         1\n         5        10        15\n"
+    s += "*DEFINE_CURVE\n         1\n                 0.0                 0.0\n"
+    s += "                 1.0                0.02\n"
+    s += "*BOUNDARY_PRESCRIBED_MOTION_SET\n         1         1         2         1       1.0\n"
+    return s + "*END\n"
+
+
+class Resultants(D3plotCase):
+    """The beam and shell resultants against statics."""
+
+    def test_cantilever_shear_and_moment(self):
+        load, length = 0.1, 100.0
+        deck = self.write("cantilever.k", cantilever(load))
+        out = os.path.join(self.tmp, "out")
+        self.run_ok("run", deck, "-o", out, "-q")
+        d3 = read_d3plot(out, part_titles(deck))
+        self.assertEqual(d3["errors"], [])
+        self.assertEqual(d3["times"][-1], 50.0)
+        shear_t, moment_s = [], []
+        for e in range(1, 11):
+            c = d3["cells"][("line", 1, e)]
+            x_mid = 10.0 * e - 5.0
+            # Statics of the cantilever: shear P along t everywhere, bending about s of
+            # P (L - x); no axial force, no shear along s, no bending about t, no torque.
+            self.assertAlmostEqual(abs(c["ShearResultant"][1]), load, delta=0.01 * load)
+            self.assertAlmostEqual(abs(c["BendingResultant"][0]), load * (length - x_mid),
+                                   delta=0.01 * load * length)
+            for v in (c["AxialForce"], c["ShearResultant"][0], c["BendingResultant"][1],
+                      c["TorsionResultant"]):
+                self.assertLess(abs(float(v)), 0.01 * load, e)
+            shear_t.append(float(c["ShearResultant"][1]))
+            moment_s.append(float(c["BendingResultant"][0]))
+        # One sign along the whole beam (Crumple's convention, docs/theory.md "d3plot").
+        self.assertTrue(all(v > 0 for v in shear_t) or all(v < 0 for v in shear_t), shear_t)
+        self.assertTrue(all(v > 0 for v in moment_s) or all(v < 0 for v in moment_s), moment_s)
+
+    def test_plate_membrane_forces(self):
+        deck = self.write("plate.k", pulled_plate())
+        out = os.path.join(self.tmp, "out")
+        self.run_ok("run", deck, "-o", out, "-q")
+        h = Header(os.path.join(out, "d3plot"))
+        last = h.states(out)[-1]
+        # The shell records follow the globals, the nodes, the solids and the beams.
+        at = 1 + h.nglbv + 9 * h.numnp + h.nv3d * h.nel8 + h.nv1d * h.nel2
+        self.assertEqual(h.nv2d, 33)
+        stretched = 0
+        for e in range(h.nel4):
+            r = last[at + 33 * e: at + 33 * (e + 1)]
+            mid, inner, outer = r[0:6], r[7:13], r[14:20]
+            m, q, n, thick = r[21:24], r[24:26], r[26:29], r[29]
+            self.assertEqual(mid, inner)  # a membrane: every layer alike
+            self.assertEqual(mid, outer)
+            # N = sigma t (the plate's local axes are the global x, y), M = Q = 0.
+            for k, c in ((0, 0), (1, 1), (2, 3)):
+                # (to 1e-5 of N: the corotational frame turns by ~1e-6 from the global axes)
+                self.assertAlmostEqual(n[k], mid[c] * thick, delta=1e-5 * abs(mid[0]) * thick)
+            for v in m:
+                self.assertLess(abs(v), 1e-6 * abs(n[0]) * thick)
+            for v in q:
+                self.assertLess(abs(v), 1e-6 * abs(n[0]))
+            # Pulled 0.02 / 40 along x: sigma_xx about E eps = 0.105 GPa, to the ringing.
+            stretched += abs(mid[0] / (210.0 * 0.02 / 40.0) - 1.0) < 0.1
+        self.assertGreaterEqual(stretched, h.nel4 // 2)
+
+
 class RestartAndRanks(D3plotCase):
     def test_restart_continues_the_family(self):
         deck = self.write("dump.k", "*KEYWORD\n*INCLUDE\n" + data_deck("structures.k") +
