@@ -339,12 +339,16 @@ void D3plotWriter::writeRoot(WordFile& out) const {
   out.finish();
 }
 
-void D3plotWriter::start() {
+bool D3plotWriter::beginFamily() {
   member_ = 0;
   member_words_ = 0;
   states_ = 0;
-  if (!comm_.isRoot()) return;
-  removeMembersAfter(0);
+  if (comm_.isRoot()) removeMembersAfter(0);
+  return comm_.isRoot();
+}
+
+void D3plotWriter::start() {
+  if (!beginFamily()) return;
   WordFile out(dir_ / d3plotName(0), 0);
   writeRoot(out);
   root_words_ = out.position();
@@ -357,11 +361,7 @@ void D3plotWriter::prepareRestart() {
 }
 
 void D3plotWriter::startFromPrepared() {
-  member_ = 0;
-  member_words_ = 0;
-  states_ = 0;
-  if (!comm_.isRoot()) return;
-  removeMembersAfter(0);
+  if (!beginFamily()) return;
   std::ofstream out(dir_ / d3plotName(0), std::ios::binary | std::ios::trunc);
   out.write(pending_root_.data(), std::streamsize(pending_root_.size()));
   if (!out) throw std::runtime_error("cannot write " + (dir_ / d3plotName(0)).string());
@@ -532,8 +532,10 @@ void D3plotWriter::load(const std::vector<char>& bytes) {
   // The folder must hold this run's family: the d3plot file this model writes, the member at
   // least as long as the states the dump counts.
   auto foreign = [&](int index) {
-    return util::InputError("the restart dump does not belong to this folder: " +
-                            d3plotName(index) + " is missing or not the dumped run's");
+    return util::InputError(fmt::format(
+        "'{}' is missing or not the file the restart dump was written with: the results folder "
+        "does not hold the run the dump was written by",
+        (dir_ / d3plotName(index)).string()));
   };
   std::ifstream in(dir_ / d3plotName(0), std::ios::binary);
   const std::vector<char> root((std::istreambuf_iterator<char>(in)),

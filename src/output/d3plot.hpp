@@ -92,6 +92,8 @@ class D3plotWriter {
   void writeElements(WordFile* out, const solver::Solver& s) const;
   void shellRecord(const domain::ShellBlock& b, const domain::NodeVector& x, std::size_t k,
                    float* r) const;
+  // A new family: no states yet; rank 0 removes the members of an earlier run (true there).
+  bool beginFamily();
   void removeMembersAfter(int index) const;
   void writeRoot(WordFile& out) const;
 

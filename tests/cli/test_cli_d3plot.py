@@ -295,6 +295,14 @@ class Structures(D3plotCase):
                          Header(os.path.join(split, "d3plot")).states(split))
 
 
+def driven_set(set_id, nodes, dof, end, value):
+    """Node set `set_id` displaced along `dof` from 0 to `value` over [0, end] (curve 1)."""
+    s = f"*SET_NODE_LIST\n{set_id:10d}\n" + "".join(f"{n:10d}" for n in nodes) + "\n"
+    s += "*DEFINE_CURVE\n         1\n                 0.0                 0.0\n"
+    s += f"{end:20.6g}{value:20.6g}\n"
+    return s + f"*BOUNDARY_PRESCRIBED_MOTION_SET\n{set_id:10d}{dof:10d}         2         1       1.0\n"
+
+
 def eroding_column():
     """Two unit cubes stacked along z: the lower elastic (part 1), the upper (part 2) of a
     plastic steel failing at 5% plastic strain; the bottom held, the top pulled up 5 mm in
@@ -313,12 +321,34 @@ def eroding_column():
     s += "".join(f"{v:8d}" for v in (11, 1, 1, 2, 3, 4, 5, 6, 7, 8)) + "\n"
     s += "".join(f"{v:8d}" for v in (12, 2, 5, 6, 7, 8, 9, 10, 11, 12)) + "\n"
     s += "*SET_NODE_LIST\n         1\n         1         2         3         4\n"
-    s += "*SET_NODE_LIST\n         2\n         9        10        11        12\n"
     s += "*BOUNDARY_SPC_SET\n         1         0         1         1         1\n"
-    s += "*DEFINE_CURVE\n         1\n                 0.0                 0.0\n"
-    s += "                 0.1                 5.0\n"
-    s += "*BOUNDARY_PRESCRIBED_MOTION_SET\n         2         3         2         1       1.0\n"
-    return s + "*END\n"
+    return s + driven_set(2, (9, 10, 11, 12), 3, 0.1, 5.0) + "*END\n"
+
+
+class Extent(D3plotCase):
+    """*DATABASE_EXTENT_BINARY: the shell switches honoured, the rest reported."""
+
+    def test_shell_flags(self):
+        # MAXINT 5, SIGFLG 2 (no shell stresses), EPSFLG 1, RLTFLG 2 (no resultants), ENGFLG 1.
+        deck = self.write("extent.k", "*KEYWORD\n*INCLUDE\n" + data_deck("structures.k") +
+                          "\n*DATABASE_EXTENT_BINARY\n         0         0         5         0"
+                          "         2         1         2         1\n*END\n")
+        out = os.path.join(self.tmp, "out")
+        self.run_ok("run", deck, "-o", out, "-q")
+        h = Header(os.path.join(out, "d3plot"))
+        self.assertEqual(h.w[43:47], (999, 1000, 999, 1000))
+        self.assertEqual(h.nv2d, 3 * 1 + 4)
+        d3 = read_d3plot(out, part_titles(data_deck("structures.k")))
+        self.assertEqual(d3["errors"], [])
+        shell = next(c for k, c in d3["cells"].items() if k[0] == "shell")
+        self.assertNotIn("Stress", shell)
+        self.assertIn("EffPlastStrn", shell)
+        self.assertIn("Thickness", shell)
+        self.assertIn("Stress", next(c for k, c in d3["cells"].items() if k[0] == "solid"))
+        with open(os.path.join(out, "run.log"), encoding="utf-8") as f:
+            log = f.read()
+        self.assertIn("MAXINT", log)  # written as 3: reported as read but not honoured
+        self.assertNotIn("SIGFLG", log)
 
 
 class Erosion(D3plotCase):
@@ -381,11 +411,7 @@ def pulled_plate():
     for n in range(1, 16):
         dofs = (1 if n == 1 or n % 5 == 1 else 0, 1 if n == 1 else 0, 1, 1, 1, 0)
         s += f"{n:10d}{0:10d}" + "".join(f"{d:10d}" for d in dofs) + "\n"
-    s += "*SET_NODE_LIST\n         1\n         5        10        15\n"
-    s += "*DEFINE_CURVE\n         1\n                 0.0                 0.0\n"
-    s += "                 1.0                0.02\n"
-    s += "*BOUNDARY_PRESCRIBED_MOTION_SET\n         1         1         2         1       1.0\n"
-    return s + "*END\n"
+    return s + driven_set(1, (5, 10, 15), 1, 1.0, 0.02) + "*END\n"
 
 
 class Resultants(D3plotCase):
