@@ -529,6 +529,25 @@ class RestartAndRanks(D3plotCase):
             self.assertEqual(read_bytes(os.path.join(again, name)),
                              read_bytes(os.path.join(full, name)), name)
 
+    def test_restart_deck_starts_a_family(self):
+        # A run without *DATABASE_BINARY_D3PLOT, restarted with it: a new family, from the
+        # restart on, that VTK reads.
+        deck = self.write("brick.k", clitest.one_brick_deck(end_time=0.01).replace(
+            "*END\n", "*DATABASE_BINARY_D3DUMP\n        50\n*END\n"))
+        out = os.path.join(self.tmp, "out")
+        self.run_ok("run", deck, "-o", out, "-q")
+        self.assertEqual(family(out), [])
+        dumps = sorted(f for f in os.listdir(out) if f.startswith("d3dump_"))
+        changes = self.write("changes.k", "*KEYWORD\n*DATABASE_BINARY_D3PLOT\n     0.002\n*END\n")
+        self.run_ok("run", deck, "-q", "--restart", os.path.join(out, dumps[0]),
+                    "--restart-deck", changes)
+        self.assertEqual(family(out), ["d3plot", "d3plot01"])
+        d3 = read_d3plot(out, {"block": 1})
+        self.assertEqual(d3["errors"], [])
+        self.assertGreater(d3["times"][0], 0.0)  # the first state is the restart's
+        self.assertEqual(d3["times"][-1], f32(read_summary(out)["end_time"]))
+        self.assertEqual(sorted(d3["cells"]), [("solid", 1, 1)])
+
     def test_two_ranks_write_the_serial_states(self):
         mpirun = shutil.which("mpirun")
         if mpirun is None:
