@@ -25,6 +25,7 @@ struct RunOptions {
   std::string restart_deck;         // *CONTROL_TERMINATION / *DATABASE_ changes at restart
   double checkpoint_every = 0.0;    // wall seconds between dumps; 0: none
   std::vector<double> energy_band;  // --energy-band LO,HI: error when the energy ratio leaves it
+  double d3plot_x = 0.0;            // --d3plot-x: d3plot family member size / 512^2 words; 0: 7
   int64_t cycles = 0;               // --cycles N: stop after N cycles (as ENDCYC); 0: no limit
   // Run a deck that uses unsupported features which change the answer, leaving them out.
   bool ignore_unsupported = false;

@@ -66,6 +66,10 @@ int dispatch(int argc, char** argv) {
                    "Write a restart dump every SECONDS of wall time (the two newest are kept)")
       ->check(CLI::PositiveNumber);
   run_cmd
+      ->add_option("--d3plot-x", run.d3plot_x,
+                   "Largest d3plot family member, in 512^2 words (LS-DYNA's x=; default 7)")
+      ->check(CLI::PositiveNumber);
+  run_cmd
       ->add_option("--energy-band", run.energy_band,
                    "LO,HI: error termination when the energy ratio leaves [LO, HI] (checked "
                    "every 64 cycles; default: no check)")

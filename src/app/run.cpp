@@ -4,6 +4,8 @@
 #include <omp.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iterator>
 
 #include "app/report.hpp"
@@ -158,6 +160,8 @@ void Run::readModel() {
   if (!opt_.restart_deck.empty()) model::readRestartDeck(opt_.restart_deck, ctl);
   if (opt_.end_time) ctl.end_time = *opt_.end_time;
   setEnergyBand(opt_.energy_band, ctl);
+  if (opt_.d3plot_x > 0.0)
+    ctl.d3plot_file_words = std::max<int64_t>(1, std::llround(opt_.d3plot_x * 512.0 * 512.0));
   if (opt_.strict && !model_.unsupported.empty()) {
     throw util::InputError("--strict: the deck uses unsupported keywords:\n" +
                            model::formatUnsupported(model_));

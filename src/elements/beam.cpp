@@ -578,4 +578,12 @@ BlockStatus computeBeamForces(domain::BeamBlock& block, const domain::NodeVector
   return beamForces(block, materials::fibreLawOf(block.law), sec, x, v, w, dt, slots, first, last);
 }
 
+void beamSectionResultants(const domain::BeamBlock& blk, std::size_t e, double out[6]) {
+  const std::array<double, 6>& R = blk.resultant[e];
+  const double L = blk.length0[e];
+  const double r[6] = {
+      R[0], -(R[3] + R[5]) / L, (R[2] + R[4]) / L, 0.5 * (R[4] - R[2]), 0.5 * (R[5] - R[3]), R[1]};
+  std::copy(r, r + 6, out);
+}
+
 }  // namespace crumple::elements

@@ -58,6 +58,13 @@ BlockStatus computeBeamForces(domain::BeamBlock& block, const domain::NodeVector
 
 // Lumped rotational inertia of one end of a beam of length L, density rho, area A and largest
 // second moment of area I: rho L (A L^2 + 12 I) / 8 (see beam.cpp for why).
+// Section resultants of element e at mid-length, for the d3plot: axial force, shear forces
+// along s and t, moments about s and t, torque. From the conjugate end resultants R (axial force,
+// torque, moments about s and t at node 1, at node 2) as the Hughes-Liu update builds them:
+// R = {N, T, -Ms + L Qt / 2, -Mt - L Qs / 2, Ms + L Qt / 2, Mt - L Qs / 2} with L the initial
+// length, so Ms = (R4 - R2) / 2, Mt = (R5 - R3) / 2, Qt = (R2 + R4) / L, Qs = -(R3 + R5) / L.
+void beamSectionResultants(const domain::BeamBlock& block, std::size_t e, double out[6]);
+
 double beamRotationalInertia(double rho, double length, double area, double i_max);
 
 // Stable step of one element (LS-DYNA Theory Manual, "Time Step Control", beams and trusses):

@@ -690,4 +690,25 @@ void shellSurfaceStress(const domain::ShellBlock& blk, const domain::NodeVector&
   }
 }
 
+void shellResultants(const domain::ShellBlock& blk, std::size_t e, double out[8]) {
+  // Point i sits at z = zeta_i t / 2 with weight w_i (sum 1): integral of f dz = t sum w_i f_i.
+  const double t = blk.thick[e];
+  const int nq = blk.inPlanePoints();
+  double m[3] = {}, n[3] = {}, q[2] = {};
+  for (int iq = 0; iq < nq; ++iq) {
+    for (int p = 0; p < blk.nip; ++p) {
+      const double w = blk.weight[std::size_t(p)] * t / nq;
+      const double z = blk.zeta[std::size_t(p)] * 0.5 * t;
+      for (int k = 0; k < 3; ++k) {
+        n[k] += w * blk.sigAt(k, p, e, iq);
+        m[k] -= w * z * blk.sigAt(k, p, e, iq);
+      }
+    }
+    q[0] += t * blk.shearAt(1, e, iq) / nq;  // Qx from tau_zx
+    q[1] += t * blk.shearAt(0, e, iq) / nq;  // Qy from tau_yz
+  }
+  const double r[8] = {m[0], m[1], m[2], q[0], q[1], n[0], n[1], n[2]};
+  std::copy(r, r + 8, out);
+}
+
 }  // namespace crumple::elements

@@ -106,4 +106,12 @@ double shellTimeStep(double area, double longest_side, bool triangle, double wav
 void shellSurfaceStress(const domain::ShellBlock& block, const domain::NodeVector& x, std::size_t e,
                         double out[3][6], double eps_p_out[3]);
 
+// Resultants per unit width of element e in its corotational frame, for the d3plot: bending
+// moments Mxx, Myy, Mxy, transverse shears Qx (from tau_zx), Qy (from tau_yz), membrane forces
+// Nxx, Nyy, Nxy (the order lasso-python reads: moments, shears, normal forces; VTK 9.1's
+// vtkLSDynaReader labels the three groups in another order); the mean over the in-plane points. N =
+// integral of sigma dz, M = -integral of z sigma dz (the Belytschko-Tsay resultants of the LS-DYNA
+// Theory Manual, z along the element normal), Q = t tau with the uniform transverse shear stress.
+void shellResultants(const domain::ShellBlock& block, std::size_t e, double out[8]);
+
 }  // namespace crumple::elements

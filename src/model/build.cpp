@@ -378,7 +378,7 @@ const std::vector<Meaning>& meanings() {
       {"*CONTROL_IMPLICIT_GENERAL", 6, readControlImplicitGeneral, {}},
       {"*CONTROL_DYNAMIC_RELAXATION", 6, readControlDynamicRelaxation, {}},
       {"*CONTROL_DAMPING", 6, readControlDynamicRelaxation, {}},
-      {"*DATABASE_EXTENT_BINARY", 6, readIgnoredControl, {}},
+      {"*DATABASE_EXTENT_BINARY", 6, readDatabaseExtentBinary, {}},
       {"*DATABASE_GLSTAT", 6, readDatabaseAscii, {}},
       {"*DATABASE_MATSUM", 6, readDatabaseAscii, {}},
       {"*DATABASE_NODOUT", 6, readDatabaseAscii, {}},

@@ -353,6 +353,7 @@ void readControlDynamicRelaxation(Context&, const deck::Keyword&, const KeywordO
 void readIgnoredControl(Context&, const deck::Keyword&, const KeywordOptions&);
 void readDatabaseAscii(Context&, const deck::Keyword&, const KeywordOptions&);
 void readDatabaseD3plot(Context&, const deck::Keyword&, const KeywordOptions&);
+void readDatabaseExtentBinary(Context&, const deck::Keyword&, const KeywordOptions&);
 void readDatabaseD3dump(Context&, const deck::Keyword&, const KeywordOptions&);
 void readHistoryNode(Context&, const deck::Keyword&, const KeywordOptions&);
 void readHistoryNodeSet(Context&, const deck::Keyword&, const KeywordOptions&);

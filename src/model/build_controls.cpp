@@ -3,6 +3,7 @@
 // fields can be reported go through readIgnoredControl.
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 
 #include "model/build_context.hpp"
 
@@ -160,10 +161,40 @@ void readDatabaseD3plot(Context& ctx, const deck::Keyword& kw, const KeywordOpti
   CardCursor cur(kw, ctx.deck);
   const Card& c = cur.readOptional(spec.card("card 1"));
   cur.readOptional(spec.card("card 2"));
+  ctx.model.controls.d3plot = true;  // LS-DYNA writes the d3plot family when this is present
   ctx.model.controls.d3plot_dt = c.real("DT");
   if (ctx.model.controls.d3plot_dt < 0) c.fail("DT", "must not be negative");
   // NPLTC: the number of plot states, DT = ENDTIM / NPLTC when DT is not given.
   ctx.d3plot_npltc = c.integer("NPLTC");
+  ctx.collect(cur);
+}
+
+void readDatabaseExtentBinary(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  // Only the shell output switches are honoured; NEIPH, NEIPS, MAXINT (written as 3: mid,
+  // inner and outer surface), STRFLG and the fields of cards 2 and 3 are left unread, so a
+  // value other than the default is reported as read but not honoured.
+  const auto& spec = keywordSpec("*DATABASE_EXTENT_BINARY");
+  CardCursor cur(kw, ctx.deck);
+  const Card& c = cur.readOptional(spec.card("card 1"));
+  for (const auto& name : {"card 2", "card 3"})
+    if (!cur.atEnd()) cur.read(spec.card(name));
+  // 1 (or blank) includes, 2 excludes for shells (Keyword Manual Vol. I,
+  // *DATABASE_EXTENT_BINARY); SIGFLG and EPSFLG 3 exclude for solids too, which Crumple does not
+  // do (the solid record has a fixed length of 7 words, the manual's NV3D without NEIPH).
+  auto flag = [&](const char* field) {
+    const int64_t v = c.integer(field);
+    const bool solids_too =
+        v == 3 && std::string_view(field) != "RLTFLG" && std::string_view(field) != "ENGFLG";
+    if (v != 1 && v != 2 && !solids_too) c.fail(field, "must be 1 (include) or 2 (exclude)");
+    if (solids_too)
+      ctx.ignore(kw.name, field, "3 is honoured as 2: solids keep theirs in the d3plot", c.where());
+    return v == 1;
+  };
+  D3plotExtent& e = ctx.model.controls.d3plot_extent;
+  e.shell_stress = flag("SIGFLG");
+  e.shell_plastic_strain = flag("EPSFLG");
+  e.shell_resultants = flag("RLTFLG");
+  e.shell_energy = flag("ENGFLG");
   ctx.collect(cur);
 }
 

@@ -259,6 +259,17 @@ struct RigidWallPlanar {
 };
 
 // *CONTROL_* values after LS-DYNA defaulting (blank/zero fields mean "default").
+// *DATABASE_EXTENT_BINARY card 1 fields that shape the d3plot (Keyword Manual Vol. I): for
+// shells, 1 writes and 2 leaves out the stress tensor (SIGFLG), the effective plastic strain
+// (EPSFLG), the resultants (RLTFLG) and the thickness and internal energy (ENGFLG). NEIPH, NEIPS,
+// MAXINT other than 3 and STRFLG are read but not honoured (reported by the deck reader).
+struct D3plotExtent {
+  bool shell_stress = true;
+  bool shell_plastic_strain = true;
+  bool shell_resultants = true;
+  bool shell_energy = true;
+};
+
 struct Controls {
   double end_time = 0.0;          // *CONTROL_TERMINATION ENDTIM
   int64_t end_cycle = 0;          // ENDCYC; 0 = none
@@ -284,7 +295,11 @@ struct Controls {
   bool shell_thickness_update = false;  // ISTUPD != 0
   bool shell_lobatto = false;           // INTGRD = 1
   double d3plot_dt = 0.0;               // *DATABASE_BINARY_D3PLOT DT; 0 = first and last state
-  double glstat_dt = 0.0;               // *DATABASE_GLSTAT; 0 = not requested
+  bool d3plot = false;                  // *DATABASE_BINARY_D3PLOT present: write the d3plot family
+  D3plotExtent d3plot_extent;           // *DATABASE_EXTENT_BINARY (the fields Crumple honours)
+  // Largest d3plot family member in 4-byte words (`crumple run --d3plot-x`, LS-DYNA's x=).
+  int64_t d3plot_file_words = 7 * 512 * 512;
+  double glstat_dt = 0.0;  // *DATABASE_GLSTAT; 0 = not requested
   double matsum_dt = 0.0;
   double nodout_dt = 0.0;
   double rwforc_dt = 0.0;

@@ -15,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include "output/d3plot.hpp"
 #include "util/error.hpp"
 
 namespace crumple::output {
@@ -243,6 +244,8 @@ std::vector<fs::path> earlierResults(const fs::path& dir) {
       if ((name.rfind(kDumpPrefix, 0) == 0 || name == kDumpTemporary) &&
           isRegularFileOrLink(e.path()))
         dumps.push_back(e.path());
+      // The d3plot family: a shorter new run must not leave an older run's later members.
+      if (d3plotIndex(name) >= 0 && isRegularFileOrLink(e.path())) dumps.push_back(e.path());
     }
   std::sort(dumps.begin(), dumps.end());
   found.insert(found.end(), dumps.begin(), dumps.end());

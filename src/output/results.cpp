@@ -94,6 +94,15 @@ ResultsWriter::ResultsWriter(std::filesystem::path dir, const model::Model& mode
     if (root) rcforc_csv_ = CsvWriter(dir_ / "rcforc.csv", kRcforcColumns);
   }
   if (comm.isRoot()) std::filesystem::create_directories(dir_ / kStatesFolder);
+  // The d3plot family beside the VTU states, as LS-DYNA writes it when the deck asks; a
+  // restarted run continues the family from loadState.
+  if (ctl.d3plot) {
+    d3plot_.emplace(dir_, model, comm);
+    if (restart)
+      d3plot_->prepareRestart();
+    else
+      d3plot_->start();
+  }
   comm.barrier();
 }
 
@@ -121,6 +130,7 @@ std::vector<char> ResultsWriter::saveState() const {
     w.put<uint8_t>(csv->isOpen() ? 1 : 0);
     w.put(csv->position());
   }
+  w.put(d3plot_ ? d3plot_->save() : std::vector<char>());  // empty: no d3plot
   return std::move(w.bytes());
 }
 
@@ -154,8 +164,14 @@ void ResultsWriter::loadState(const std::vector<char>& bytes, double time) {
     r.get(open);
     r.get(pos);
   }
+  std::vector<char> d3plot;
+  r.get(d3plot);
   if (!r.atEnd() || times.size() != names.size())
     throw util::InputError("restart dump: the output section is inconsistent");
+  // A dump of a run without d3plot, restarted with *DATABASE_BINARY_D3PLOT: a new family.
+  const bool d3plot_continues = d3plot_ && !d3plot.empty();
+  if (d3plot_continues) d3plot_->load(d3plot);
+  if (d3plot_ && !d3plot_continues) d3plot_->startFromPrepared();
   if (!comm_.isRoot()) return;
   const std::filesystem::path paths[] = {dir_ / "glstat.csv", dir_ / "matsum.csv",
                                          dir_ / "nodout.csv", dir_ / "rwforc.csv",
@@ -175,6 +191,7 @@ void ResultsWriter::loadState(const std::vector<char>& bytes, double time) {
   }
   for (std::size_t k = 0; k < csv.size(); ++k)
     if (wanted[k]) *writers[k] = CsvWriter(paths[k], *columns[k], csv[k].second);
+  if (d3plot_continues) d3plot_->resume();
   std::vector<std::pair<double, std::string>> states;
   for (std::size_t k = 0; k < times.size(); ++k) states.emplace_back(times[k], names[k]);
   pvd_.restore(std::move(states));
@@ -277,6 +294,7 @@ void ResultsWriter::write(const solver::Solver& s, bool last) {
 }
 
 void ResultsWriter::writePlotState(const solver::Solver& s) {
+  if (d3plot_) d3plot_->writeState(s);  // collective
   const auto& sd = s.subdomain();
   const std::size_t nn = sd.numNodes();
   std::vector<double> disp(3 * nn);

@@ -4,11 +4,13 @@
 
 #include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 
 #include "comm/communicator.hpp"
 #include "model/model.hpp"
+#include "output/d3plot.hpp"
 #include "output/energy_audit.hpp"
 #include "output/files.hpp"
 #include "output/vtk.hpp"
@@ -79,6 +81,7 @@ class ResultsWriter {
   std::vector<std::pair<int32_t, int32_t>> history_local_;  // (deck order, local node), owned
   std::size_t history_count_ = 0;
   PvdWriter pvd_;
+  std::optional<D3plotWriter> d3plot_;  // when the deck has *DATABASE_BINARY_D3PLOT
   int plot_count_ = 0;
   double last_plot_time_ = -1.0;
   double seconds_ = 0.0;

@@ -705,9 +705,9 @@ Energies Solver::energies() const {
 }
 
 std::vector<PartSums> Solver::partSums() const {
-  // Seven sums per model part (element count, kinetic, internal, hourglass, momentum), added
-  // over this rank's blocks and then over ranks in rank order.
-  constexpr std::size_t kFields = 7;
+  // Eight sums per model part (element count, kinetic, internal, hourglass, momentum, mass),
+  // added over this rank's blocks and then over ranks in rank order.
+  constexpr std::size_t kFields = 8;
   std::vector<double> local(kFields * model_.parts.size(), 0.0);
   for (const auto& blk : sd_.solid_blocks) {
     double* p = &local[kFields * static_cast<std::size_t>(blk.part)];
@@ -718,6 +718,7 @@ std::vector<PartSums> Solver::partSums() const {
       // Kinetic energy and momentum of a part: each corner carries rho0 V0 / 8 at the velocity
       // of its node, which splits shared nodes between parts by the mass each part gives them.
       const double corner_mass = blk.rho0 * blk.vol0[k] / 8.0;
+      p[7] += blk.rho0 * blk.vol0[k];
       for (int a = 0; a < 8; ++a) {
         const double* v = &sd_.v[3 * static_cast<std::size_t>(blk.conn[k][a])];
         p[1] += 0.5 * corner_mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
@@ -739,6 +740,7 @@ std::vector<PartSums> Solver::partSums() const {
         const std::size_t corners =
             conn.size() == 4 && conn[2] == conn[3] ? 3 : 2 + (conn.size() == 4 ? 2 : 0);
         const double corner_mass = masses[ib][k] / double(corners);
+        p[7] += masses[ib][k];
         for (std::size_t a = 0; a < corners; ++a) {
           const double* v = &sd_.v[3 * static_cast<std::size_t>(conn[a])];
           p[1] += 0.5 * corner_mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
@@ -765,6 +767,7 @@ std::vector<PartSums> Solver::partSums() const {
     ps.internal = p[2];
     ps.hourglass = p[3];
     for (int c = 0; c < 3; ++c) ps.momentum[c] = p[4 + c];
+    ps.mass = p[7];
     out.push_back(ps);
   }
   return out;

@@ -45,6 +45,7 @@ struct PartSums {
   int64_t part_id = 0;
   double kinetic = 0, internal = 0, hourglass = 0;
   double momentum[3] = {0, 0, 0};
+  double mass = 0;  // the mass the kinetic energy and momentum above count (d3plot part mass)
 };
 
 // Elements removed by failure (erosion) so far: their count, their (physical) mass, and the
