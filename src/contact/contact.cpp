@@ -540,8 +540,12 @@ std::vector<Record> Contact::checkContacts(double time, double dt_prev) {
   constexpr std::size_t kParallelChecks = 128;
   const auto& active = search_.active();
   const std::size_t n = active.size();
-  std::vector<int64_t> tests(n, 0);
-  std::vector<std::vector<Record>> found(static_cast<std::size_t>(omp_get_max_threads()));
+  // Scratch kept between cycles (this is the cycle's hot path): cleared, not reallocated.
+  auto& tests = check_tests_;
+  auto& found = thread_records_;
+  tests.assign(n, 0);
+  found.resize(static_cast<std::size_t>(omp_get_max_threads()));
+  for (auto& f : found) f.clear();
 #pragma omp parallel if (n >= kParallelChecks)
   {
     auto& mine = found[static_cast<std::size_t>(omp_get_thread_num())];
@@ -554,9 +558,8 @@ std::vector<Record> Contact::checkContacts(double time, double dt_prev) {
     partition_.addCost(checks[std::size_t(active[k])], tests[k]);
     stats_.tests += tests[k];
   }
-  std::vector<Record> all = std::move(found.front());
-  for (std::size_t t = 1; t < found.size(); ++t)
-    all.insert(all.end(), found[t].begin(), found[t].end());
+  std::vector<Record> all;
+  for (const auto& f : found) all.insert(all.end(), f.begin(), f.end());
   return all;
 }
 

@@ -203,6 +203,9 @@ class Contact {
   // step, raised when the step grows, never lowered (LS-DYNA Theory Manual, "soft constraint
   // penalty"), so that a falling step does not stiffen the contacts already in force.
   double dt_stiff_ = 0.0;
+  // checkContacts' scratch: segments tested per active check, records found per thread.
+  std::vector<int64_t> check_tests_;
+  std::vector<std::vector<Record>> thread_records_;
   bool need_sort_ = true;
   int cycles_since_sort_ = 0;
   int max_sort_interval_ = 0;  // smallest BSORT of the interfaces (0: none)
