@@ -5,7 +5,6 @@ import argparse
 import os
 import sys
 
-USAGE_ERROR, ERROR = 2, 1
 TIME_UNITS = {"s": 1.0, "ms": 1e-3, "us": 1e-6}
 
 
@@ -54,23 +53,8 @@ def _one(p, option, positional, name):
 
 
 def main(argv=None):
-    try:
-        args = parse(sys.argv[1:] if argv is None else argv)
-    except SystemExit as e:
-        return USAGE_ERROR if e.code else 0
-    try:
-        import numpy  # noqa: F401
-        import matplotlib  # noqa: F401
-    except ImportError as e:
-        print(f"crumple compare: {sys.executable} lacks {e.name} (Debian: apt-get install "
-              "python3-numpy python3-matplotlib)", file=sys.stderr)
-        return ERROR
-    from .errors import CompareError
-    try:
-        return run(args)
-    except CompareError as e:
-        print(f"crumple compare: error: {e}", file=sys.stderr)
-        return ERROR
+    from .command import main as command_main
+    return command_main("crumple compare", parse, run, argv)
 
 
 def run(args):

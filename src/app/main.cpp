@@ -2,8 +2,8 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"
-#include "app/compare_command.hpp"
 #include "app/partition_command.hpp"
+#include "app/python_tool.hpp"
 #include "comm/communicator.hpp"
 
 namespace {
@@ -101,10 +101,12 @@ int dispatch(int argc, char** argv) {
   part_cmd->add_option("--partition", part_method, "Partitioner")
       ->check(CLI::IsMember({"metis", "rcb"}));
 
-  // Every argument after `compare` goes to the Python tool, which owns those options and their
-  // --help (src/app/compare_command.hpp).
+  // Every argument after `compare` or `plot` goes to the Python tool, which owns those options
+  // and their --help (src/app/python_tool.hpp).
   auto* compare_cmd = app.add_subcommand("compare", crumple::app::kCompareHelp);
   compare_cmd->prefix_command()->allow_extras()->set_help_flag();
+  auto* plot_cmd = app.add_subcommand("plot", crumple::app::kPlotHelp);
+  plot_cmd->prefix_command()->allow_extras()->set_help_flag();
 
   try {
     app.parse(argc, argv);
@@ -117,7 +119,10 @@ int dispatch(int argc, char** argv) {
   if (*run_cmd) return crumple::app::runCommand(run);
   // check and partition are serial tools: under mpirun only rank 0 works.
   if (!crumple::comm::world().isRoot()) return 0;
-  if (*compare_cmd) return crumple::app::compareCommand(compare_cmd->remaining());
+  if (*compare_cmd)
+    return crumple::app::pythonToolCommand("compare", "crumple_compare", compare_cmd->remaining());
+  if (*plot_cmd)
+    return crumple::app::pythonToolCommand("plot", "crumple_compare.plot", plot_cmd->remaining());
   if (*check_cmd) return crumple::app::checkCommand(check, stdout);
   if (*part_cmd)
     return crumple::app::partitionCommand(part_deck, part_count, part_dir, part_method, stdout);

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "model/build.hpp"
+#include "model/units.hpp"
 
 namespace crumple::app {
 
@@ -26,6 +27,8 @@ std::string modelSummary(const model::Model& m, const solver::Solver& s) {
   std::string out;
   out += fmt::format("deck: {}\n", m.deck_path);
   if (!m.title.empty()) out += fmt::format("title: {}\n", m.title);
+  out += fmt::format("units: {}{}\n", model::describeUnits(m.units),
+                     m.units.source.empty() ? "" : ", " + m.units.source);
   out += fmt::format("nodes: {}\nsolid elements: {}\n", m.nodes.size(), m.solids.size());
   if (m.shells.size() > 0) out += fmt::format("shell elements: {}\n", m.shells.size());
   if (m.beams.size() > 0) out += fmt::format("beam elements: {}\n", m.beams.size());

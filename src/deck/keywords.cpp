@@ -239,6 +239,9 @@ std::vector<KeywordSpec> makeTables() {
           I("SHLEDG")}}}});
   t.push_back(
       {"*CONTROL_SOLUTION", {{"card 1", {I("SOLN"), I("NLQ"), I("ISNAN"), I("LCINT", 100, Z)}}}});
+  t.push_back(
+      {"*CONTROL_UNITS",
+       {{"card 1", {A("LENGTH"), A("TIME"), A("MASS"), A("TEMP"), A("VERSION"), A("SI")}}}});
   // Dynamic relaxation (*CONTROL_DAMPING is its name in LS-DYNA 93x-94x decks); the
   // parameters act only when IDRFLG or a curve's SIDR turns it on.
   for (std::string_view name : {"*CONTROL_DYNAMIC_RELAXATION", "*CONTROL_DAMPING"})

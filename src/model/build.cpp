@@ -11,6 +11,7 @@
 #include "deck/deck.hpp"
 #include "deck/number.hpp"
 #include "model/build_context.hpp"
+#include "model/units.hpp"
 #include "util/error.hpp"
 
 namespace crumple::model {
@@ -375,6 +376,7 @@ const std::vector<Meaning>& meanings() {
       {"*CONTROL_SHELL", 6, readControlShell, {}},
       {"*CONTROL_CONTACT", 5, readControlContact, {}},
       {"*CONTROL_SOLUTION", 6, readControlSolution, {}},
+      {"*CONTROL_UNITS", 6, readControlUnits, {}},
       {"*CONTROL_IMPLICIT_GENERAL", 6, readControlImplicitGeneral, {}},
       {"*CONTROL_DYNAMIC_RELAXATION", 6, readControlDynamicRelaxation, {}},
       {"*CONTROL_DAMPING", 6, readControlDynamicRelaxation, {}},
@@ -407,7 +409,6 @@ Unsupported unsupportedReason(std::string_view name) {
       {"*CONTROL_PARALLEL", {"ignored: MPP/SMP option", false}},
       {"*CONTROL_MPP", {"ignored: MPP/SMP option", false}},
       {"*CONTROL_CPU", {"ignored: MPP/SMP option", false}},
-      {"*CONTROL_UNITS", {"ignored: units are the deck's own, consistent units", false}},
       {"*CONTROL_STRUCTURED", {"ignored: structured-file output", false}},
       {"*CONTROL_DEBUG", {"ignored: diagnostic output", false}},
       {"*CONTROL_REPORT", {"ignored: diagnostic output", false}},
@@ -649,6 +650,7 @@ Model buildModel(const deck::Deck& deck, const std::filesystem::path& path,
   ctx.attempt([&] { finishRigid(ctx); });
   ctx.attempt([&] { finishConditions(ctx); });
   ctx.attempt([&] { finishControls(ctx); });
+  inferUnits(ctx.model);
   ctx.attempt([&] { noteDegenerateSolids(ctx); });
   if (model.nodes.size() == 0)
     ctx.fail(path.string() + ": the deck defines no nodes (*NODE)");

@@ -348,6 +348,7 @@ void readControlBulkViscosity(Context&, const deck::Keyword&, const KeywordOptio
 void readControlEnergy(Context&, const deck::Keyword&, const KeywordOptions&);
 void readControlImplicitGeneral(Context&, const deck::Keyword&, const KeywordOptions&);
 void readControlSolution(Context&, const deck::Keyword&, const KeywordOptions&);
+void readControlUnits(Context&, const deck::Keyword&, const KeywordOptions&);
 void readControlDynamicRelaxation(Context&, const deck::Keyword&, const KeywordOptions&);
 // Keywords read only to report their non-default fields (*CONTROL_SOLID, ...).
 void readIgnoredControl(Context&, const deck::Keyword&, const KeywordOptions&);

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "model/build_context.hpp"
+#include "model/units.hpp"
 
 namespace crumple::model::build {
 
@@ -66,6 +67,31 @@ void readControlDynamicRelaxation(Context& ctx, const deck::Keyword& kw, const K
     ctx.reject(c, "IDRFLG",
                "IDRFLG " + std::to_string(idrflg) + ": dynamic relaxation is not supported",
                "dynamic relaxation");
+  ctx.collect(cur);
+}
+
+// *CONTROL_UNITS (Keyword Manual vol. I): the units the deck is written in. The solution does
+// not depend on them; they label the outputs (model/units.hpp). Blank fields are the manual's
+// defaults (m, sec, kg).
+void readControlUnits(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  CardCursor cur(kw, ctx.deck);
+  const Card& c = cur.readOptional(keywordSpec("*CONTROL_UNITS").card("card 1"));
+  auto word = [&c](std::string_view field, std::string_view blank) {
+    std::string w = c.text(field);
+    std::transform(w.begin(), w.end(), w.begin(),
+                   [](unsigned char ch) { return std::tolower(ch); });
+    return w.empty() ? std::string(blank) : w;
+  };
+  const std::string length = word("LENGTH", "m"), time = word("TIME", "sec"),
+                    mass = word("MASS", "kg");
+  if (const NamedUnits* u = unitSystemOf(length, time, mass))
+    ctx.model.units = {std::string(u->name), "*CONTROL_UNITS at " + c.where().str()};
+  else
+    ctx.ignore(
+        kw.name, "LENGTH",
+        "LENGTH " + length + ", TIME " + time + ", MASS " + mass +
+            " is not a consistent system Crumple names: the units are inferred from the metals",
+        c.where());
   ctx.collect(cur);
 }
 

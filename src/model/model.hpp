@@ -333,9 +333,18 @@ struct IgnoredField {
   util::SourceLoc where;
 };
 
+// The deck's consistent unit system (Keyword Manual vol. I, "Consistent units"): from
+// *CONTROL_UNITS, else inferred from the density and Young's modulus of its metals
+// (model/units.hpp). It labels outputs only: the solution never uses it.
+struct UnitSystem {
+  std::string name;    // "t-mm-s", "kg-mm-ms", ... (model/units.hpp); empty: not known
+  std::string source;  // how it was found, for run.log and summary.json
+};
+
 struct Model {
   std::string title;
   std::string deck_path;
+  UnitSystem units;
 
   Nodes nodes;
   Solids solids;

@@ -24,6 +24,9 @@ template <class A, class M>
 void fields(A& a, M& m) {
   a(m.title);
   a(m.deck_path);
+  util::fieldCount<2>(m.units);
+  a(m.units.name);
+  a(m.units.source);
   util::fieldCount<2>(m.nodes);
   util::fieldCount<3>(m.solids);  // shells, beams and discretes add to this base (no check)
   a(m.nodes.id);

@@ -518,6 +518,10 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
                                                   ? nlohmann::json(audit.first_outside_time)
                                                   : nlohmann::json()}};
   j["mass"] = {{"physical", s.totalMass()}, {"added", s.addedMass()}};
+  // The deck's unit system, for labels (`crumple plot`); null when not known.
+  j["units"] = {
+      {"system", model_.units.name.empty() ? nlohmann::json() : nlohmann::json(model_.units.name)},
+      {"source", model_.units.source}};
   j["eroded_elements"] = eroded;
   // What erosion took out of the model: the elements' physical mass (their nodes keep theirs,
   // lumped) and the internal and hourglass energy they held, which stay in the energy sums.

@@ -711,3 +711,36 @@ TEST(BuildRealDeckRules, ContactOverAPartWithoutUsableSection) {
     return u.changes_answer && u.feature == "*SECTION_SHELL ELFORM=6";
   }));
 }
+
+// The unit system labels outputs (model/units.hpp): *CONTROL_UNITS names it, else the metals'
+// density and Young's modulus give it away, a density scaled tenfold included.
+TEST(BuildModel, UnitsFromControlUnitsOrInferredFromTheMetals) {
+  TempDir t;
+  const Model inferred = build(t, "");  // steel in tonne, mm, s: 7.8e-9, 2e5
+  EXPECT_EQ(inferred.units.name, "t-mm-s");
+  EXPECT_NE(inferred.units.source.find("inferred from 1 of 1 metal"), std::string::npos)
+      << inferred.units.source;
+
+  const Model named = build(t, "*CONTROL_UNITS\n        mm        ms        kg\n");
+  EXPECT_EQ(named.units.name, "kg-mm-ms");
+  EXPECT_NE(named.units.source.find("*CONTROL_UNITS at"), std::string::npos);
+  const Model blank = build(t, "*CONTROL_UNITS\n\n");  // the manual's defaults: m, sec, kg
+  EXPECT_EQ(blank.units.name, "kg-m-s");
+
+  const Model odd = build(t, "*CONTROL_UNITS\n        ft       sec      slug\n");
+  EXPECT_EQ(odd.units.name, "t-mm-s");
+  ASSERT_EQ(odd.ignored.size(), 1u);
+  EXPECT_NE(odd.ignored[0].reason.find("LENGTH ft, TIME sec, MASS slug"), std::string::npos);
+
+  std::string scaled = kMesh;
+  scaled.replace(scaled.find("7.8e-9"), 6, "7.8e-8");  // mass-scaled tenfold
+  EXPECT_EQ(readModel(t.write("scaled.k", scaled)).units.name, "t-mm-s");
+  std::string aluminium_si = kMesh;
+  aluminium_si.replace(aluminium_si.find("7.8e-9,2.0e5"), 12, "2700,7.0e10");
+  EXPECT_EQ(readModel(t.write("si.k", aluminium_si)).units.name, "kg-m-s");
+  std::string rubbery = kMesh;  // 1e6 Pa in SI: near no metal in any system
+  rubbery.replace(rubbery.find("7.8e-9,2.0e5"), 12, "1100,1.0e6");
+  const Model unknown = readModel(t.write("rubber.k", rubbery));
+  EXPECT_TRUE(unknown.units.name.empty());
+  EXPECT_NE(unknown.units.source.find("not known"), std::string::npos);
+}

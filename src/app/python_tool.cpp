@@ -1,4 +1,4 @@
-#include "app/compare_command.hpp"
+#include "app/python_tool.hpp"
 
 #include <spawn.h>
 #include <sys/wait.h>
@@ -43,12 +43,13 @@ std::vector<char*> pointers(std::vector<std::string>& strings) {
 }
 
 // posix_spawn, not exec: MPI was initialised in main() and is finalised after we return.
-int spawnAndWait(std::vector<std::string> argv, std::vector<std::string> env) {
+int spawnAndWait(const std::string& tool, std::vector<std::string> argv,
+                 std::vector<std::string> env) {
   auto args = pointers(argv);
   auto envp = pointers(env);
   pid_t pid = 0;
   if (posix_spawn(&pid, args[0], nullptr, nullptr, args.data(), envp.data()) != 0) {
-    std::fprintf(stderr, "crumple compare: error: cannot start %s\n", args[0]);
+    std::fprintf(stderr, "crumple %s: error: cannot start %s\n", tool.c_str(), args[0]);
     return 1;
   }
   int status = 0;
@@ -58,27 +59,28 @@ int spawnAndWait(std::vector<std::string> argv, std::vector<std::string> env) {
 
 }  // namespace
 
-int compareCommand(const std::vector<std::string>& args) {
+int pythonToolCommand(const std::string& tool, const std::string& module,
+                      const std::vector<std::string>& args) {
   const std::string python = envOr("CRUMPLE_PYTHON", "/usr/bin/python3");
   const std::string package_dir = envOr("CRUMPLE_COMPARE_DIR", CRUMPLE_PYTHON_DIR);
   if (access(python.c_str(), X_OK) != 0) {
     std::fprintf(stderr,
-                 "crumple compare: error: no Python interpreter at %s (install python3, "
+                 "crumple %s: error: no Python interpreter at %s (install python3, "
                  "python3-numpy and python3-matplotlib, or set CRUMPLE_PYTHON)\n",
-                 python.c_str());
+                 tool.c_str(), python.c_str());
     return 1;
   }
   if (!std::filesystem::is_regular_file(std::filesystem::path(package_dir) / "crumple_compare" /
                                         "__main__.py")) {
     std::fprintf(stderr,
-                 "crumple compare: error: the crumple_compare package is not in %s (set "
+                 "crumple %s: error: the crumple_compare package is not in %s (set "
                  "CRUMPLE_COMPARE_DIR to the folder that holds it)\n",
-                 package_dir.c_str());
+                 tool.c_str(), package_dir.c_str());
     return 1;
   }
-  std::vector<std::string> argv = {python, "-m", "crumple_compare"};
+  std::vector<std::string> argv = {python, "-m", module};
   argv.insert(argv.end(), args.begin(), args.end());
-  return spawnAndWait(std::move(argv), childEnvironment(package_dir));
+  return spawnAndWait(tool, std::move(argv), childEnvironment(package_dir));
 }
 
 }  // namespace crumple::app
