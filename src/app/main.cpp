@@ -1,6 +1,7 @@
 // crumple: explicit finite-element crash and impact solver.
 #include <CLI/CLI.hpp>
 
+#include "app/advise_command.hpp"
 #include "app/commands.hpp"
 #include "app/partition_command.hpp"
 #include "app/python_tool.hpp"
@@ -94,12 +95,28 @@ int dispatch(int argc, char** argv) {
   part_cmd->add_option("deck", part_deck, "Keyword deck (.k)")
       ->required()
       ->check(CLI::ExistingFile);
-  part_cmd->add_option("-n,--parts", part_count, "Number of ranks")
-      ->required()
-      ->check(CLI::PositiveNumber);
+  auto* parts_opt =
+      part_cmd->add_option("-n,--parts", part_count, "Number of ranks")->check(CLI::PositiveNumber);
   part_cmd->add_option("-o,--output", part_dir, "Output folder (default: <deck stem>.partition)");
   part_cmd->add_option("--partition", part_method, "Partitioner")
       ->check(CLI::IsMember({"metis", "rcb"}));
+  crumple::app::AdviseOptions advise;
+  bool advise_flag = false;
+  auto* advise_opt = part_cmd->add_flag(
+      "--advise", advise_flag,
+      "Instead of one partition: time the deck's serial cycle, partition it for 1..MAX ranks and "
+      "predict the time per cycle and parallel efficiency of each; advise the most ranks at 80% "
+      "efficiency or more (docs/parallel.md). Under `mpirun -np 2` it measures the network too");
+  part_cmd->add_option("--max", advise.max_ranks, "Most ranks to predict for (--advise)")
+      ->check(CLI::Range(1, 4096))
+      ->needs(advise_opt);
+  part_cmd->add_option("--sample-cycles", advise.sample_cycles, "Serial cycles timed (--advise)")
+      ->check(CLI::Range(1, 100000))
+      ->needs(advise_opt);
+  parts_opt->excludes(advise_opt);
+  part_cmd->callback([&] {
+    if (!advise_flag && part_count == 0) throw CLI::RequiredError("-n,--parts (or --advise)");
+  });
 
   // Every argument after `compare` or `plot` goes to the Python tool, which owns those options
   // and their --help (src/app/python_tool.hpp).
@@ -117,6 +134,13 @@ int dispatch(int argc, char** argv) {
     return code == 0 ? 0 : 2;
   }
   if (*run_cmd) return crumple::app::runCommand(run);
+  // The network measurement of --advise needs every rank.
+  if (*part_cmd && advise_flag) {
+    advise.deck = part_deck;
+    advise.out_dir = part_dir;
+    advise.method = part_method;
+    return crumple::app::adviseCommand(advise, stdout);
+  }
   // check and partition are serial tools: under mpirun only rank 0 works.
   if (!crumple::comm::world().isRoot()) return 0;
   if (*compare_cmd)

@@ -136,6 +136,43 @@ Communicator& world() {
   return instance;
 }
 
+namespace {
+// Seconds per round trip of `bytes` between ranks 0 and 1, the fastest of `repetitions`
+// (the least disturbed by other work on a shared machine).
+double roundTrip(int rank, std::vector<char>& buffer, int repetitions) {
+  const int n = static_cast<int>(buffer.size());
+  double best = 1e30;
+  for (int i = 0; i < repetitions; ++i) {
+    const double t0 = MPI_Wtime();
+    if (rank == 0) {
+      check(MPI_Send(buffer.data(), n, MPI_BYTE, 1, 7, MPI_COMM_WORLD), "Send");
+      check(MPI_Recv(buffer.data(), n, MPI_BYTE, 1, 7, MPI_COMM_WORLD, MPI_STATUS_IGNORE), "Recv");
+    } else {
+      check(MPI_Recv(buffer.data(), n, MPI_BYTE, 0, 7, MPI_COMM_WORLD, MPI_STATUS_IGNORE), "Recv");
+      check(MPI_Send(buffer.data(), n, MPI_BYTE, 0, 7, MPI_COMM_WORLD), "Send");
+    }
+    best = std::min(best, MPI_Wtime() - t0);
+  }
+  return best;
+}
+}  // namespace
+
+LinkSpeed pingPong(const Communicator& c, int repetitions) {
+  LinkSpeed out;
+  if (!c.distributed()) return out;
+  if (c.rank() <= 1) {
+    std::vector<char> small(8), large(std::size_t(1) << 20);
+    roundTrip(c.rank(), small, 10);  // connection set-up
+    const double t_small = roundTrip(c.rank(), small, repetitions);
+    const double t_large = roundTrip(c.rank(), large, std::max(4, repetitions / 10));
+    out.latency_s = 0.5 * t_small;
+    out.bandwidth_bytes_per_s = double(large.size()) / std::max(1e-9, 0.5 * (t_large - t_small));
+    out.measured = true;
+  }
+  c.barrier();
+  return out;
+}
+
 void initialize(int* argc, char*** argv) {
   const bool launched = std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") ||
                         std::getenv("PMIX_RANK") || std::getenv("CRUMPLE_FORCE_MPI");

@@ -72,6 +72,16 @@ class Communicator {
 // The communicator of this process.
 Communicator& world();
 
+// Message latency and bandwidth between ranks 0 and 1, from a ping-pong (the cost model of
+// `crumple partition --advise`, docs/parallel.md). Collective: every rank calls it; ranks
+// above 1 only wait. `measured` is false on one rank (nothing to measure).
+struct LinkSpeed {
+  double latency_s = 0;              // half the round trip of an 8-byte message
+  double bandwidth_bytes_per_s = 0;  // a 1 MiB message, latency taken off
+  bool measured = false;
+};
+LinkSpeed pingPong(const Communicator& c, int repetitions = 200);
+
 // Starts MPI when the process was launched by mpirun (OMPI_COMM_WORLD_SIZE, PMI_SIZE or
 // CRUMPLE_FORCE_MPI in the environment); otherwise world() stays serial.
 void initialize(int* argc, char*** argv);

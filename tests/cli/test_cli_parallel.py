@@ -57,6 +57,57 @@ class Partition(TempDirTest):
         self.assertIn("400", p.stderr)
 
 
+class Advise(TempDirTest):
+    """`crumple partition --advise` (docs/parallel.md, "How many ranks")."""
+
+    def advise(self, *extra, ranks=1):
+        out = os.path.join(self.tmp, "advice")
+        args = ("partition", example("bar_impact", "bar_impact.k"), "--advise", "--max", 8,
+                "--sample-cycles", 20, "-o", out, *extra)
+        p = crumple(*args) if ranks == 1 else mpirun(ranks, *args)
+        self.assertEqual(p.returncode, 0, describe(p))
+        with open(os.path.join(out, "advise.json"), encoding="utf-8") as f:
+            return p, json.load(f)
+
+    def test_predictions_and_the_advice(self):
+        p, j = self.advise()
+        preds = j["predictions"]
+        self.assertEqual([q["ranks"] for q in preds], [1, 2, 3, 4, 6, 8])
+        serial = j["serial_cycle"]
+        self.assertEqual(serial["cycles_timed"], 20)
+        one = preds[0]
+        self.assertEqual(one["efficiency"], 1.0)
+        self.assertAlmostEqual(one["cycle_s"], serial["elements_s"] + serial["nodes_s"] +
+                               serial["contact_split_s"] + serial["contact_replicated_s"])
+        self.assertGreater(preds[1]["speedup"], 1.0)
+        best = j["recommended_ranks"]
+        by_ranks = {q["ranks"]: q for q in preds}
+        self.assertGreaterEqual(by_ranks[best]["efficiency"], 0.8)
+        for q in preds:
+            if q["ranks"] > best:
+                self.assertLess(q["efficiency"], 0.8)
+            self.assertAlmostEqual(q["speedup"], one["cycle_s"] / q["cycle_s"])
+        self.assertFalse(j["network"]["measured"])
+        self.assertIn(f"advice: {best} rank", p.stdout)
+        self.assertIn("not measured", p.stdout)
+
+    def test_network_measured_under_mpirun(self):
+        if shutil.which("mpirun") is None:
+            self.skipTest("mpirun not found")
+        p, j = self.advise(ranks=2)
+        self.assertTrue(j["network"]["measured"])
+        self.assertGreater(j["network"]["latency_s"], 0.0)
+        self.assertLess(j["network"]["latency_s"], 1e-3)
+        self.assertGreater(j["network"]["bandwidth_bytes_per_s"], 1e7)
+        self.assertEqual(p.stdout.count("advice:"), 1, describe(p))
+
+    def test_usage(self):
+        deck = example("bar_impact", "bar_impact.k")
+        for args in ((), ("--max", 4), ("-n", 4, "--advise")):
+            p = crumple("partition", deck, *args)
+            self.assertEqual(p.returncode, 2, describe(p))
+
+
 class DistributedErrors(TempDirTest):
     def setUp(self):
         super().setUp()

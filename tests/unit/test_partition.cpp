@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "app/partition_command.hpp"
+#include "partition/advice.hpp"
 #include "partition/partition.hpp"
 #include "partition_fixtures.hpp"
 #include "util/error.hpp"
@@ -449,3 +450,79 @@ TEST(PartitionCommand, WritesFilesAndTable) {
 }
 
 }  // namespace
+
+// ---- How many ranks (partition/advice.hpp) --------------------------------------------------
+
+namespace {
+// Stats of a partition into `weights.size()` ranks, each rank holding `nodes` nodes and one
+// neighbour message of `comm_s`.
+crumple::partition::Stats syntheticStats(const std::vector<double>& weights, int64_t nodes,
+                                         int64_t total_nodes, double comm_s) {
+  crumple::partition::Stats s;
+  s.parts = int(weights.size());
+  s.nodes = total_nodes;
+  double sum = 0, most = 0;
+  for (std::size_t r = 0; r < weights.size(); ++r) {
+    crumple::partition::RankStats rs;
+    rs.rank = int(r);
+    rs.elements = int64_t(weights[r]);
+    rs.weight = weights[r];
+    rs.nodes = nodes;
+    rs.comm_s = s.parts > 1 ? comm_s : 0.0;
+    if (s.parts > 1) rs.neighbours = {int(r) == 0 ? 1 : 0};
+    s.ranks.push_back(rs);
+    sum += weights[r];
+    most = std::max(most, weights[r]);
+  }
+  s.load_imbalance = most / (sum / double(weights.size())) - 1;
+  return s;
+}
+}  // namespace
+
+TEST(PartitionAdvice, PredictionAddsTheSlowestRanksParts) {
+  using namespace crumple::partition;
+  CycleCosts serial;
+  serial.elements_s = 1000e-6;
+  serial.nodes_s = 100e-6;
+  serial.contact_split_s = 240e-6;
+  serial.contact_replicated_s = 10e-6;
+  Network net{1e-6, 1e9, true};
+  const Prediction one = predict(syntheticStats({1000}, 1000, 1000, 0), serial, net, true);
+  EXPECT_DOUBLE_EQ(one.cycle_s, serial.total());
+  EXPECT_DOUBLE_EQ(one.efficiency, 1.0);
+  EXPECT_DOUBLE_EQ(one.comm_s, 0.0);
+
+  // Four ranks, the heaviest with 300 of 1000 weight units and 260 of 1000 nodes, 5 us of
+  // element exchange: 300 + 26 + (240 * 1.2 / 4 + 10) + (5 + 2 + 3 * 2) us.
+  const Prediction four =
+      predict(syntheticStats({300, 250, 250, 200}, 260, 1000, 5e-6), serial, net, true);
+  EXPECT_NEAR(four.elements_s, 300e-6, 1e-15);
+  EXPECT_NEAR(four.nodes_s, 26e-6, 1e-15);
+  EXPECT_NEAR(four.contact_s, 82e-6, 1e-15);
+  EXPECT_NEAR(four.comm_s, 13e-6, 1e-15);
+  EXPECT_NEAR(four.cycle_s, 421e-6, 1e-15);
+  EXPECT_NEAR(four.efficiency, 1350.0 / 421.0 / 4.0, 1e-12);
+  EXPECT_NEAR(four.comm_share, 13.0 / 421.0, 1e-12);
+  EXPECT_NEAR(four.imbalance, 0.2, 1e-12);
+  // Without contact there are no contact exchanges.
+  serial.contact_split_s = serial.contact_replicated_s = 0;
+  EXPECT_NEAR(
+      predict(syntheticStats({250, 250, 250, 250}, 250, 1000, 5e-6), serial, net, false).comm_s,
+      7e-6, 1e-15);
+}
+
+TEST(PartitionAdvice, RecommendsTheMostRanksAtEightyPercent) {
+  using namespace crumple::partition;
+  auto at = [](int ranks, double eff) {
+    Prediction p;
+    p.ranks = ranks;
+    p.efficiency = eff;
+    return p;
+  };
+  EXPECT_EQ(recommend({at(1, 1.0), at(2, 0.95), at(4, 0.81), at(8, 0.79)}), 4);
+  EXPECT_EQ(recommend({at(1, 1.0), at(2, 0.7), at(4, 0.85)}), 4);  // the most, not the first
+  EXPECT_EQ(recommend({at(1, 1.0), at(2, 0.5)}), 1);
+  EXPECT_EQ(candidateRanks(1), (std::vector<int>{1}));
+  EXPECT_EQ(candidateRanks(10), (std::vector<int>{1, 2, 3, 4, 6, 8, 10}));
+  EXPECT_EQ(candidateRanks(64), (std::vector<int>{1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64}));
+}
