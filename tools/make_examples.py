@@ -3,6 +3,8 @@
 
   taylor_bar/taylor_bar.k   copper rod on a rigid wall (Kamoulakos 1990; reference/verification.md #2)
   bar_impact/bar_impact.k   elastic bar striking a stonewall (reference #1: sigma = rho c0 v0, 2L/c0)
+  sign_post_in_soil/sign_post_in_soil.k   car bumper at 20 mph into a steel post in soil
+                                          (tools/sign_post_deck.py)
 """
 
 from __future__ import annotations
@@ -13,6 +15,7 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from deckgen import Mesh, block, node_set, quarter_cylinder  # noqa: E402
+import sign_post_deck  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 
@@ -131,9 +134,14 @@ $      mid        ro         e        pr
 """
 
 
+def decks() -> dict[str, str]:
+    """Every example deck's text keyed by its path under examples/."""
+    return {"taylor_bar/taylor_bar.k": taylor_bar(), "bar_impact/bar_impact.k": bar_impact(),
+            "sign_post_in_soil/sign_post_in_soil.k": sign_post_deck.deck()}
+
+
 def main() -> None:
-    decks = {"taylor_bar/taylor_bar.k": taylor_bar(), "bar_impact/bar_impact.k": bar_impact()}
-    for rel, text in decks.items():
+    for rel, text in decks().items():
         path = ROOT / "examples" / rel
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_text(text)
