@@ -263,8 +263,11 @@ double Boundary::applyRigidWalls(double dt_n, double dt_half, domain::Subdomain&
         }
         v[c] = v_new[c];
       }
+      // The node's force along its own surface normal (friction is tangential): on a curved
+      // wall the normals differ from node to node, and rwforc's normal force is their sum.
+      if (owned) forces.push_back(dt_n > 0.0 ? m * dvn / dt_n : 0.0);
     }
-    sumWallForce(w, ids, forces, comm);
+    sumWallForce(w, ids, forces, comm, plane);
     if (d.moving && d.mass > 0.0) {
       // The structure pushes back on a wall of finite mass (Newton's third law).
       w.velocity -= dt_n * w.normal_force / d.mass;
@@ -278,7 +281,8 @@ double Boundary::applyRigidWalls(double dt_n, double dt_half, domain::Subdomain&
 }
 
 void Boundary::sumWallForce(WallState& w, const std::vector<int64_t>& ids,
-                            const std::vector<double>& forces, const comm::Communicator& comm) {
+                            const std::vector<double>& forces, const comm::Communicator& comm,
+                            bool plane) {
   const auto all_ids = comm.allGather(ids);
   const auto all_forces = comm.allGather(forces);
   std::vector<std::size_t> order(all_ids.size());
@@ -286,9 +290,13 @@ void Boundary::sumWallForce(WallState& w, const std::vector<int64_t>& ids,
   std::sort(order.begin(), order.end(),
             [&](std::size_t a, std::size_t b) { return all_ids[a] < all_ids[b]; });
   w.force = {0.0, 0.0, 0.0};
-  for (std::size_t k : order)
-    for (int c = 0; c < 3; ++c) w.force[c] += all_forces[3 * k + static_cast<std::size_t>(c)];
-  w.normal_force = dot(w.def->normal, w.force.data());
+  double normal_sum = 0.0;
+  for (std::size_t k : order) {
+    for (int c = 0; c < 3; ++c) w.force[c] += all_forces[4 * k + static_cast<std::size_t>(c)];
+    normal_sum += all_forces[4 * k + 3];
+  }
+  // A plane's normal is one vector: the resultant's component along it (as before, to the bit).
+  w.normal_force = plane ? dot(w.def->normal, w.force.data()) : normal_sum;
 }
 
 double Boundary::wallKineticEnergy() const {

@@ -82,8 +82,11 @@ class Boundary {
     const model::Curve* curve;
     double sf;
   };
+  // The wall's resultant and normal force from its nodes' (fx, fy, fz, fn) on every rank,
+  // added in node id order (the same bits at any rank count).
   static void sumWallForce(WallState& w, const std::vector<int64_t>& ids,
-                           const std::vector<double>& forces, const comm::Communicator& comm);
+                           const std::vector<double>& forces, const comm::Communicator& comm,
+                           bool plane);
 
   std::vector<std::pair<int32_t, model::DofMask>> spc_;
   std::vector<std::pair<int32_t, model::DofMask>> spc_rot_;  // rotational SPC (bits: rx, ry, rz)

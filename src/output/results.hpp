@@ -62,10 +62,14 @@ class ResultsWriter {
   struct Schedule {
     double interval = 0.0;
     double next = 0.0;
+    // The time of the last row written: the end of a run whose last cycle was also a sample
+    // time writes it once (not kept in a dump: a restart starts after the dump's time).
+    double written = -1.0e300;
     bool due(double t, bool last) const {
-      return interval > 0.0 && (last || t >= next * (1 - 1e-9));
+      return interval > 0.0 && t != written && (last || t >= next * (1 - 1e-9));
     }
     void advance(double t) {
+      written = t;
       while (next <= t * (1 + 1e-9)) next += interval;
     }
   };

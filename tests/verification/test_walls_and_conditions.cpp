@@ -348,12 +348,22 @@ TEST_P(GeometricWalls, NoNodeEntersAndTheBlockIsTurnedBack) {
     const double x = sim->x(id, 0), y = sim->x(id, 1), z = sim->x(id, 2);
     return sphere ? std::sqrt(x * x + y * y + z * z) : std::sqrt(x * x + z * z);
   };
-  sim->run([&](const crumple::solver::Solver&) {
+  double normal_impulse = 0.0, z_impulse = 0.0;  // the same step weights both
+  sim->run([&](const crumple::solver::Solver& s) {
     for (int n = 0; n < a.numNodes(); ++n)
       worst = std::min(worst, distance(a.first_node + n) - radius);
+    const auto& w = s.boundary().walls().at(0);
+    normal_impulse += w.normal_force * s.dt();
+    z_impulse += w.force[2] * s.dt();
   });
   EXPECT_GE(worst, -1e-9) << "a node entered the " << GetParam();
   EXPECT_GT(sim->momentum(2), 0.0) << "the block was not turned back";
+  // rwforc's normal force of a curved wall is the sum of the nodes' forces along their own
+  // normals: at least the resultant's z part (the normals lean away from z), at most that over
+  // the cosine of the steepest contact (the cylinder's block edge at x = 2 on r = 3: 0.745).
+  EXPECT_GE(normal_impulse, z_impulse * (1 - 1e-12)) << GetParam();
+  EXPECT_LE(normal_impulse, z_impulse / (sphere ? 0.3 : 0.74)) << GetParam();
+  EXPECT_GT(z_impulse, 0.0);
   // The wall cannot give the block kinetic energy, and the energy balances (kinetic, internal,
   // hourglass and stonewall energy; docs/theory.md, "Energy balance").
   const auto e = sim->solver->energies();
