@@ -756,7 +756,8 @@ std::vector<PartSums> Solver::partSums() const {
     p[0] += double(blk.size());
     for (std::size_t k = 0; k < blk.size(); ++k) p[2] += blk.e_int[k];
   }
-  const auto total = comm_.sumOrdered(local);
+  auto total = comm_.sumOrdered(local);
+  if (rigid_) rigidPartSums(total, kFields);
   std::vector<PartSums> out;
   for (std::size_t i = 0; i < model_.parts.size(); ++i) {
     const double* p = &total[kFields * i];
@@ -771,6 +772,30 @@ std::vector<PartSums> Solver::partSums() const {
     out.push_back(ps);
   }
   return out;
+}
+
+void Solver::rigidPartSums(std::vector<double>& total, std::size_t fields) const {
+  // A rigid body's nodes need not carry its mass (*PART_INERTIA gives the body's own), so its
+  // kinetic energy (translation and rotation), momentum and mass are the body's, all on its
+  // master part; parts merged into it (*CONSTRAINED_RIGID_BODIES) report none of them.
+  for (const auto& state : rigid_->states()) {
+    if (state.kind != constraints::RigidBodyState::Kind::Part) continue;
+    const auto def = std::find_if(model_.rigid.bodies.begin(), model_.rigid.bodies.end(),
+                                  [&](const auto& d) { return !d.nodal && d.id == state.id; });
+    if (def == model_.rigid.bodies.end()) continue;
+    for (std::size_t k = 0; k < def->parts.size(); ++k) {
+      double* p = &total[fields * static_cast<std::size_t>(def->parts[k])];
+      const bool master = k == 0;
+      const auto& V = state.velocity;
+      const auto& w = state.angular_velocity;
+      const auto& L = state.angular_momentum;
+      p[1] = master ? 0.5 * state.mass * (V[0] * V[0] + V[1] * V[1] + V[2] * V[2]) +
+                          0.5 * (w[0] * L[0] + w[1] * L[1] + w[2] * L[2])
+                    : 0.0;
+      for (int c = 0; c < 3; ++c) p[4 + c] = master ? state.mass * V[c] : 0.0;
+      p[7] = master ? state.mass : 0.0;
+    }
+  }
 }
 
 }  // namespace crumple::solver

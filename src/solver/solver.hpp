@@ -107,6 +107,8 @@ class Solver {
   void loadState(StateSection which, const std::vector<char>& bytes);
 
  private:
+  // partSums' rigid parts: the body's kinetic energy, momentum and mass on its master part.
+  void rigidPartSums(std::vector<double>& total, std::size_t fields) const;
   // One element pass: the minimum stable step found and any inverted element.
   struct ElementPass {
     double dt_min = 1e300;

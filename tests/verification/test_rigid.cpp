@@ -584,6 +584,24 @@ TEST(VerificationRigid, DeterminismDeckExercisesWeldFailure) {
   EXPECT_EQ(flying.id, 3);
   EXPECT_NEAR(flying.cm[0], 12.0 + 2.0 * sim.solver->time(), 1e-12);
   EXPECT_NEAR(sim.solver->energies().ratio, 1.0, 0.01);
+  // matsum: the body's mass is *PART_INERTIA's, not its nodes'; its mass, momentum and kinetic
+  // energy are on the master part 3, and part 4 merged into it reports none.
+  for (const auto& p : sim.solver->partSums()) {
+    if (p.part_id == 3) {
+      EXPECT_DOUBLE_EQ(p.mass, flying.mass);
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(p.momentum[c], flying.mass * flying.velocity[c], 1e-12 * flying.mass);
+      EXPECT_GE(p.kinetic, 0.5 * flying.mass *
+                               (flying.velocity[0] * flying.velocity[0] +
+                                flying.velocity[1] * flying.velocity[1] +
+                                flying.velocity[2] * flying.velocity[2]) *
+                               (1 - 1e-12));
+    }
+    if (p.part_id == 4) {
+      EXPECT_EQ(p.mass, 0.0);
+      EXPECT_EQ(p.kinetic, 0.0);
+    }
+  }
 }
 
 }  // namespace
