@@ -118,12 +118,14 @@ int dispatch(int argc, char** argv) {
     if (!advise_flag && part_count == 0) throw CLI::RequiredError("-n,--parts (or --advise)");
   });
 
-  // Every argument after `compare` or `plot` goes to the Python tool, which owns those options
-  // and their --help (src/app/python_tool.hpp).
+  // Every argument after `compare`, `plot` or `report` goes to the Python tool, which owns those
+  // options and their --help (src/app/python_tool.hpp).
   auto* compare_cmd = app.add_subcommand("compare", crumple::app::kCompareHelp);
   compare_cmd->prefix_command()->allow_extras()->set_help_flag();
   auto* plot_cmd = app.add_subcommand("plot", crumple::app::kPlotHelp);
   plot_cmd->prefix_command()->allow_extras()->set_help_flag();
+  auto* report_cmd = app.add_subcommand("report", crumple::app::kReportHelp);
+  report_cmd->prefix_command()->allow_extras()->set_help_flag();
 
   try {
     app.parse(argc, argv);
@@ -147,6 +149,9 @@ int dispatch(int argc, char** argv) {
     return crumple::app::pythonToolCommand("compare", "crumple_compare", compare_cmd->remaining());
   if (*plot_cmd)
     return crumple::app::pythonToolCommand("plot", "crumple_compare.plot", plot_cmd->remaining());
+  if (*report_cmd)
+    return crumple::app::pythonToolCommand("report", "crumple_compare.run_report",
+                                           report_cmd->remaining());
   if (*check_cmd) return crumple::app::checkCommand(check, stdout);
   if (*part_cmd)
     return crumple::app::partitionCommand(part_deck, part_count, part_dir, part_method, stdout);

@@ -1,7 +1,8 @@
 // The commands whose work is done by the Python package python/crumple_compare (numpy,
 // matplotlib): `crumple compare` (Crumple's histories against LS-DYNA's ASCII output of the same
-// deck, docs/validation.md) and `crumple plot` (a run's curves as PNG, README "Using it"). This
-// file starts the interpreter on the package's module for the command.
+// deck, docs/validation.md), `crumple plot` (a run's curves as PNG) and `crumple report` (a
+// run's HTML page; both README "Using it"). This file starts the interpreter on the package's
+// module for the command.
 #pragma once
 
 #include <string>
@@ -18,6 +19,11 @@ inline constexpr const char* kPlotHelp =
     "Plot a run's histories as PNG: energies with the energy ratio, contact, wall and section "
     "forces, part energies, node histories (accelerations SAE J211 CFC filtered on request); "
     "`crumple plot --help` for the options (run by /usr/bin/python3 with numpy and matplotlib)";
+
+inline constexpr const char* kReportHelp =
+    "One self-contained HTML page of a run: model, energy balance with plot and verdict, time "
+    "breakdown and parallel efficiency, warnings, partition picture, largest contact and wall "
+    "forces, links to the result files; `crumple report --help` for the options";
 
 // Runs `python3 -m <module> args...` for the command `tool` ("compare", "plot") and returns its
 // exit status (0 done, 1 error, 2 usage). The interpreter is $CRUMPLE_PYTHON or

@@ -58,6 +58,25 @@ def read_vtu(folder, *flags):
     return json.loads(proc.stdout)
 
 
+# The environment of `mpirun` in the tests: root allowed, oversubscription, passive OpenMP waits.
+MPI_ENV = dict(os.environ, OMP_WAIT_POLICY="PASSIVE", OMPI_ALLOW_RUN_AS_ROOT="1",
+               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_rmaps_base_oversubscribe="1")
+# Open MPI's components leave allocations LeakSanitizer cannot attribute (no frame of ours);
+# address and undefined-behaviour checks stay on.
+MPI_ENV["ASAN_OPTIONS"] = (MPI_ENV.get("ASAN_OPTIONS", "") + ":detect_leaks=0").lstrip(":")
+
+
+def missing_module(*names):
+    """The first of the Python modules `names` this interpreter lacks, or None."""
+    import importlib
+    for name in names:
+        try:
+            importlib.import_module(name)
+        except ImportError:
+            return name
+    return None
+
+
 def example(*parts):
     return os.path.join(SOURCE_DIR, "examples", *parts)
 

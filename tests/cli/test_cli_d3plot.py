@@ -38,11 +38,7 @@ except ImportError:  # the tests skip (clitest counts them as neither passed nor
 
 SAMPLES = "/work/shared/reference/d3plot-samples"
 EOF_MARKER = -999999.0
-MPI_ENV = dict(os.environ, OMP_WAIT_POLICY="PASSIVE", OMPI_ALLOW_RUN_AS_ROOT="1",
-               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_rmaps_base_oversubscribe="1")
-# Open MPI's components leave allocations LeakSanitizer cannot attribute (no frame of ours);
-# address and undefined-behaviour checks stay on (as in test_cli_parallel.py).
-MPI_ENV["ASAN_OPTIONS"] = (MPI_ENV.get("ASAN_OPTIONS", "") + ":detect_leaks=0").lstrip(":")
+MPI_ENV = clitest.MPI_ENV
 
 
 def data_deck(name):

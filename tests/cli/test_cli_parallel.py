@@ -15,11 +15,7 @@ import subprocess
 from clitest import TempDirTest, crumple, describe, example, main, one_brick_deck, read_vtu
 import clitest
 
-MPI_ENV = dict(os.environ, OMP_WAIT_POLICY="PASSIVE", OMPI_ALLOW_RUN_AS_ROOT="1",
-               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_rmaps_base_oversubscribe="1")
-# Open MPI's components leave allocations LeakSanitizer cannot attribute (no frame of ours);
-# address and undefined-behaviour checks stay on.
-MPI_ENV["ASAN_OPTIONS"] = (MPI_ENV.get("ASAN_OPTIONS", "") + ":detect_leaks=0").lstrip(":")
+MPI_ENV = clitest.MPI_ENV
 
 
 def mpirun(n, *args, cwd=None):

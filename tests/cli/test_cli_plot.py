@@ -16,12 +16,9 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import clitest  # noqa: E402
 from clitest import crumple, describe  # noqa: E402
 
-try:
-    import matplotlib  # noqa: F401
+MISSING = clitest.missing_module("matplotlib", "numpy")
+if not MISSING:
     import numpy as np
-    MISSING = None
-except ImportError as e:
-    MISSING = e.name
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 

@@ -24,9 +24,7 @@ import time
 import clitest
 from clitest import TempDirTest, crumple, describe, example, main, read_summary
 
-MPI_ENV = dict(os.environ, OMP_WAIT_POLICY="PASSIVE", OMPI_ALLOW_RUN_AS_ROOT="1",
-               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_rmaps_base_oversubscribe="1")
-MPI_ENV["ASAN_OPTIONS"] = (MPI_ENV.get("ASAN_OPTIONS", "") + ":detect_leaks=0").lstrip(":")
+MPI_ENV = clitest.MPI_ENV
 HISTORIES = ("glstat.csv", "matsum.csv", "nodout.csv", "rwforc.csv", "rcforc.csv", "results.pvd")
 
 

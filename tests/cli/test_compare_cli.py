@@ -16,12 +16,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import clitest  # noqa: E402
 from clitest import crumple, describe  # noqa: E402
 
-try:
-    import matplotlib  # noqa: F401
-    import numpy  # noqa: F401
-    MISSING = None
-except ImportError as e:
-    MISSING = e.name
+MISSING = clitest.missing_module("matplotlib", "numpy")
 
 
 def setUpModule():
