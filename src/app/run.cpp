@@ -50,7 +50,8 @@ bool rootStep(const comm::Communicator& comm, F&& step) {
 
 // -o, else a restart continues the dumped run in its own folder (the history files are cut
 // back to the dump and continued: ResultsWriter::loadState checks that they are that run's),
-// else <deck stem>.out.
+// else <deck stem>.out. A restart's -o naming a new or empty folder gets a copy of the dumped
+// run's results first (Run::prepareFolder).
 std::filesystem::path resultsFolder(const RunOptions& opt, const std::filesystem::path& dump) {
   if (!opt.output_dir.empty()) return opt.output_dir;
   if (!opt.restart.empty()) return dump.parent_path().empty() ? "." : dump.parent_path();
@@ -265,6 +266,17 @@ bool Run::prepareFolder() {
   std::error_code ec;
   dir_existed_ = std::filesystem::exists(dir_, ec);
   if (!restart_) return rootStep(comm_, [&] { output::prepareResultsDir(dir_, opt_.overwrite); });
+  // -o naming a new or empty folder: the restart continues there, from a copy of the dumped
+  // run's results, and leaves the dumped run's folder as it was.
+  const std::filesystem::path dumped = dump_path_.parent_path().empty()
+                                           ? std::filesystem::path(".")
+                                           : dump_path_.parent_path();
+  const bool fresh = !std::filesystem::exists(dir_, ec) || std::filesystem::is_empty(dir_, ec);
+  if (!opt_.output_dir.empty() && fresh)
+    return rootStep(comm_, [&] {
+      output::prepareResultsDir(dir_, false);
+      output::copyRunFolder(dumped, dir_);
+    });
   return rootStep(comm_, [&] {
     if (!std::filesystem::is_directory(dir_))
       throw util::InputError("results folder '" + dir_.string() +

@@ -254,6 +254,27 @@ std::vector<fs::path> earlierResults(const fs::path& dir) {
 
 }  // namespace
 
+void copyRunFolder(const fs::path& from, const fs::path& to) {
+  std::error_code ec;
+  fs::create_directories(to / kStatesFolder, ec);
+  auto copyOne = [&](const fs::path& src, const fs::path& dst, bool link) {
+    std::error_code e;
+    if (link) fs::create_hard_link(src, dst, e);
+    if (!link || e) fs::copy_file(src, dst, fs::copy_options::overwrite_existing, e);
+    if (e)
+      throw util::InputError(fmt::format("cannot copy '{}' into the new results folder: {}",
+                                         src.string(), e.message()));
+  };
+  for (const auto& entry : fs::directory_iterator(from, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_regular_file() && name.rfind("d3dump_", 0) != 0)
+      copyOne(entry.path(), to / name, false);
+  }
+  for (const auto& entry : fs::directory_iterator(from / kStatesFolder, ec))
+    if (entry.is_regular_file())
+      copyOne(entry.path(), to / kStatesFolder / entry.path().filename(), true);
+}
+
 void prepareResultsDir(const fs::path& dir, bool overwrite) {
   std::error_code ec;
   const fs::file_status status = fs::status(dir, ec);

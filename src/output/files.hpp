@@ -88,6 +88,13 @@ inline constexpr const char* kDumpTemporary = ".d3dump.tmp";
 // at the top and in kStatesFolder) counts as a result; nothing else is ever touched.
 void prepareResultsDir(const std::filesystem::path& dir, bool overwrite);
 
+// A restart into a new folder (`--restart DUMP -o NEWDIR`): copies the dumped run's results
+// from `from` into the empty or new folder `to` (every file but the restart dumps, and the
+// plot states, hard-linked where the file system allows: they are only ever removed, never
+// rewritten), so that the restart cuts them back and continues them there; `from` is left as
+// it was. Throws util::InputError naming the file that could not be copied.
+void copyRunFolder(const std::filesystem::path& from, const std::filesystem::path& to);
+
 // Undoes a run that failed before its first state: removes the result files and pieces from
 // `dir` (as prepareResultsDir would with `overwrite`) and, when `remove_dir` (the run created
 // it), the folder itself if nothing else is left in it. Never throws: it runs on an error path.

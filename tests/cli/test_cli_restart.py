@@ -104,6 +104,44 @@ class RestartEquality(RestartCase):
                                   f.read())
 
 
+class RestartIntoANewFolder(RestartCase):
+    def snapshot(self, folder):
+        out = {}
+        for root, _, files in os.walk(folder):
+            for name in files:
+                path = os.path.join(root, name)
+                out[os.path.relpath(path, folder)] = read(path)
+        return out
+
+    def test_continues_in_the_new_folder_and_leaves_the_dumped_run(self):
+        # `--restart DUMP -o NEWDIR`: the histories so far are copied into NEWDIR and
+        # continued there, to the uninterrupted run's bytes; the dumped run's folder keeps
+        # every byte (no cut-back, no new rows, no removed dump).
+        wrapped = self.with_dumps(example("bar_impact", "bar_impact.k"), 200)
+        full = os.path.join(self.tmp, "full")
+        self.run_ok("run", wrapped, "-q", "-o", full, "--threads", 1)
+        mid = os.path.join(self.tmp, "mid")
+        shutil.copytree(full, mid)
+        for name in ("summary.json",):  # as a run stopped at the dump would leave it
+            os.remove(os.path.join(mid, name))
+        before = self.snapshot(mid)
+        new = os.path.join(self.tmp, "continued")
+        self.run_ok("run", wrapped, "-q", "--threads", 2, "--restart",
+                    os.path.join(mid, dumps(mid)[0]), "-o", new)
+        self.assert_same_results(full, new, files=HISTORIES + ("d3plot", "d3plot01"))
+        self.assertEqual(self.snapshot(mid), before)
+        self.assertEqual(dumps(new), dumps(full)[1:])  # only the continuation's own dump
+        # -o naming a folder with other results is checked as before: refused, untouched.
+        other = os.path.join(self.tmp, "other")
+        self.run_ok("run", example("bar_impact", "bar_impact.k"), "-q", "-o", other,
+                    "--endtime", "0.001")
+        kept = self.snapshot(other)
+        p = crumple("run", wrapped, "-q", "--restart", os.path.join(mid, dumps(mid)[0]), "-o",
+                    other)
+        self.assertEqual(p.returncode, 1, describe(p))
+        self.assertEqual(self.snapshot(other), kept)
+
+
 class RestartAcrossRanks(RestartCase):
     def setUp(self):
         super().setUp()
