@@ -268,9 +268,8 @@ bool Run::prepareFolder() {
   if (!restart_) return rootStep(comm_, [&] { output::prepareResultsDir(dir_, opt_.overwrite); });
   // -o naming a new or empty folder: the restart continues there, from a copy of the dumped
   // run's results, and leaves the dumped run's folder as it was.
-  const std::filesystem::path dumped = dump_path_.parent_path().empty()
-                                           ? std::filesystem::path(".")
-                                           : dump_path_.parent_path();
+  const std::filesystem::path dumped =
+      dump_path_.parent_path().empty() ? std::filesystem::path(".") : dump_path_.parent_path();
   const bool fresh = !std::filesystem::exists(dir_, ec) || std::filesystem::is_empty(dir_, ec);
   if (!opt_.output_dir.empty() && fresh)
     return rootStep(comm_, [&] {
