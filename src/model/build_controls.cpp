@@ -185,14 +185,14 @@ void readCrossSectionPlane(Context& ctx, const deck::Keyword& kw, const KeywordO
     if (other.id == cs.id)
       c1.fail("PSID", "cross section " + std::to_string(cs.id) + " is already defined at " +
                           other.where.str());
-  // A circular cut (RADIUS) and forces in the frame of a rigid body, accelerometer or
-  // coordinate system (ID, ITYPE) are not computed: the section is left out, and said so.
-  if (c1.real("RADIUS") != 0.0 || c2.integer("ID") != 0) {
-    ctx.reportUnsupported(kw, c1.real("RADIUS") != 0.0
-                                  ? "a circular cut (RADIUS) is not supported"
-                                  : "section forces in a local frame (ID, ITYPE) not supported");
+  // Forces in the frame of a rigid body, accelerometer or coordinate system (ID, ITYPE) are
+  // not computed: the section is left out, and said so (output only: the run is unaffected).
+  if (c2.integer("ID") != 0) {
+    ctx.reportUnsupported(kw, "section forces in a local frame (ID, ITYPE) not supported", false);
     return;
   }
+  cs.radius = c1.real("RADIUS");
+  if (cs.radius < 0) c1.fail("RADIUS", "must not be negative");
   if (const int64_t psid = c1.integer("PSID"); psid != 0) cs.parts = ctx.partSet(c1, "PSID", psid);
   std::sort(cs.parts.begin(), cs.parts.end());
   cs.center = {c1.real("XCT"), c1.real("YCT"), c1.real("ZCT")};

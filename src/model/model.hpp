@@ -317,14 +317,16 @@ struct Controls {
 
 // *DATABASE_CROSS_SECTION_PLANE (Keyword Manual Vol. I): a plane through `center` with
 // normal `normal` (XCT.. to XCH..), bounded (LENL, LENM > 0) in the directions `l` (towards
-// XHEV..) and m = n x l; PSID's parts (empty: every part). The elements cut and the nodes of
-// the cut are found from the initial geometry (src/output/sections.hpp).
+// XHEV..) and m = n x l, or to a circle of RADIUS about the tail; PSID's parts (empty: every part).
+// The elements cut and the nodes of the cut are found from the initial geometry
+// (src/output/sections.hpp).
 struct CrossSection {
   int64_t id = 0;  // CSID of _ID, else the 1-based order of definition
   std::string title;
   std::vector<int32_t> parts;  // model part indices, ascending; empty = every part
   Vec3 center{}, normal{}, l{};
   double lenl = 0.0, lenm = 0.0;  // 0 = unbounded
+  double radius = 0.0;            // RADIUS > 0: a circular cut about the tail (LENL, LENM unused)
   util::SourceLoc where;
 };
 

@@ -191,7 +191,7 @@ void fields(A& a, M& m) {
   a.count(
       m.cross_sections.size(),
       [&](auto& c) {
-        util::fieldCount<9>(c);
+        util::fieldCount<10>(c);
         a(c.id);
         a(c.title);
         a(c.parts);
@@ -200,6 +200,7 @@ void fields(A& a, M& m) {
         a(c.l);
         a(c.lenl);
         a(c.lenm);
+        a(c.radius);
         loc(a, c.where);
       },
       m.cross_sections);

@@ -95,9 +95,14 @@ double cutArea(const Block& b, std::size_t k, const Vec3* x, const model::CrossS
   }
 }
 
-// Inside the LENL x LENM rectangle from the tail (unbounded directions always are).
+// Inside the circle of RADIUS about the tail, or the LENL x LENM rectangle from it (an
+// unbounded direction always is).
 bool withinBounds(const Vec3& p, const model::CrossSection& cs) {
   const Vec3 r = sub(p, cs.center);
+  if (cs.radius > 0.0) {
+    const Vec3 in_plane = sub(r, scale(cs.normal, dot(r, cs.normal)));
+    return dot(in_plane, in_plane) <= cs.radius * cs.radius;
+  }
   const Vec3 m = cross(cs.normal, cs.l);
   const double u = dot(r, cs.l), v = dot(r, m);
   return (cs.lenl <= 0.0 || (u >= 0.0 && u <= cs.lenl)) &&

@@ -5,11 +5,11 @@
 // is fixed at the start from the initial geometry: the elements of the section's parts with
 // nodes on both sides of the plane (a node on it counts as the side the normal points to)
 // whose centre projects into the LENL x LENM rectangle from the tail XCT.. (everywhere when
-// those are 0), and their nodes on the positive side. The section force is the force those
-// elements exert on those nodes, negated: the resultant the material on the positive side
-// exerts on the negative side, +sigma A n for a bar in tension sigma along n. The moment is
-// taken about the centroid of the cut nodes (their mean current position) and includes the
-// shells' and beams' nodal moments. The area is that of the cut through the elements in the
+// those are 0) or the circle of RADIUS about it, and their nodes on the positive side. The section
+// force is the force those elements exert on those nodes, negated: the resultant the material on
+// the positive side exerts on the negative side, +sigma A n for a bar in tension sigma along n. The
+// moment is taken about the centroid of the cut nodes (their mean current position) and includes
+// the shells' and beams' nodal moments. The area is that of the cut through the elements in the
 // initial geometry (solids: the polygon the plane cuts from the hexahedron; shells: the cut
 // length times the thickness; beams: the section area).
 //

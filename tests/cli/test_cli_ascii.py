@@ -161,6 +161,25 @@ class SectionPhysics(Case):
         mid = min(rows, key=lambda r: abs(r["time"] - 1.0))
         self.assertAlmostEqual(mid["fx"], 0.5 * load, delta=0.02 * load)
 
+    def test_bounded_cuts(self):
+        # Tail at (45, 0, 0): a circle of radius 4 takes the one element column whose centre
+        # (y, z) = (2.5, 2.5) lies within it; a rectangle LENL = 5 along y by LENM = 10 along
+        # z = n x l takes the two columns at y = 2.5.
+        extra = "*DATABASE_CROSS_SECTION_PLANE_ID\n         8circle\n"
+        extra += "         0      45.0       0.0       0.0      46.0       0.0       0.0       4.0\n"
+        extra += "*DATABASE_CROSS_SECTION_PLANE_ID\n         9rectangle\n"
+        extra += "         0      45.0       0.0       0.0      46.0       0.0       0.0\n"
+        extra += "      45.0       1.0       0.0       5.0      10.0\n"
+        out = self.run_deck("bar.k", bar(extra=extra))
+        rows = read_csv(os.path.join(out, "secforc.csv"))
+        last = {int(r["section"]): r for r in rows}
+        self.assertEqual(last[8]["area"], 25.0)
+        self.assertEqual(last[9]["area"], 50.0)
+        self.assertAlmostEqual(last[8]["cy"], 2.5, delta=0.01)  # nodes at y, z in {0, 5}
+        # The halves carry half the load (symmetry about y = 5).
+        self.assertAlmostEqual(last[9]["fx"], 0.5 * last[7]["fx"], delta=1e-6 * last[7]["fx"])
+        self.assertGreater(last[8]["fx"], 0.0)
+
     def test_beam_cantilever_moment(self):
         load, length, x_cut_nodes = 0.1, 100.0, 50.0
         out = self.run_deck("cantilever.k", cantilever(load))
@@ -179,13 +198,10 @@ class SectionPhysics(Case):
 
 
 class FilesAndReader(Case):
-    def test_only_requested_files_and_reader_agrees_with_csv(self):
+    def assertReaderAgrees(self, out, at_least):
+        """Every curve lsdyna.py reads from the ASCII files that the CSVs also hold: the same
+        times and values, to the five significant digits LS-DYNA prints."""
         from crumple_compare import crumple_csv, lsdyna
-        out = self.run_deck("bar.k", bar())
-        for name in ("glstat", "matsum", "nodout", "secforc"):
-            self.assertTrue(os.path.isfile(os.path.join(out, name)), name)
-        for name in ("rcforc", "rwforc", "sleout"):
-            self.assertFalse(os.path.exists(os.path.join(out, name)), name)
         theirs = lsdyna.read_folder(out)
         ours = crumple_csv.read_folder(out)
         compared = 0
@@ -199,8 +215,31 @@ class FilesAndReader(Case):
             # Five significant digits, and LS-DYNA's E13.4 in matsum.
             np.testing.assert_allclose(d.y, c.y, rtol=6e-5, atol=1e-4 * scale, err_msg=key)
             compared += 1
-        self.assertGreaterEqual(compared, 20, sorted(theirs))
+        self.assertGreaterEqual(compared, at_least, sorted(theirs))
+        return theirs
+
+    def test_walls_nodes_and_energies(self):
+        # The loads-and-constraints deck: a moving rigid wall (rwforc, the glstat stonewall
+        # line), history nodes, two parts.
+        deck = os.path.join(clitest.SOURCE_DIR, "tests", "data", "decks", "mixed_conditions.k")
+        out = os.path.join(self.tmp, "mixed")
+        self.run_ok("run", deck, "-o", out, "-q")
+        for name in ("glstat", "matsum", "nodout", "rwforc"):
+            self.assertTrue(os.path.isfile(os.path.join(out, name)), name)
+        theirs = self.assertReaderAgrees(out, 30)
+        self.assertTrue(any(k.startswith("rwforc.wall") for k in theirs), sorted(theirs))
+        self.assertIn("glstat.rigidwall", theirs)
+
+    def test_only_requested_files_and_reader_agrees_with_csv(self):
+        from crumple_compare import lsdyna
+        out = self.run_deck("bar.k", bar())
+        for name in ("glstat", "matsum", "nodout", "secforc"):
+            self.assertTrue(os.path.isfile(os.path.join(out, name)), name)
+        for name in ("rcforc", "rwforc", "sleout"):
+            self.assertFalse(os.path.exists(os.path.join(out, name)), name)
+        self.assertReaderAgrees(out, 20)
         # secforc: the labelled values against secforc.csv.
+        theirs = lsdyna.read_folder(out)
         rows = read_csv(os.path.join(out, "secforc.csv"))
         # The final sample repeats the last regular one (both files hold it twice).
         rows = [r for i, r in enumerate(rows) if i + 1 == len(rows) or rows[i + 1]["time"] != r["time"]]
