@@ -172,6 +172,7 @@ std::vector<char> ResultsWriter::saveState() const {
   }
   w.put(times);
   w.put(names);
+  // streams() hands out the files for writing; here they are only read.
   for (const Stream& st : const_cast<ResultsWriter*>(this)->streams()) {
     w.put<uint8_t>(st.file->isOpen() ? 1 : 0);
     w.put(st.file->position());
