@@ -11,7 +11,8 @@
   (../shared/decks/bolted_joint_lsdyna, when present): the same text where numbers are
   masked, every number ending in the same column;
 - physics: a bar under an axial end load P (static after a slow ramp): section force P along
-  the normal, no moment, area 100 mm^2, centroid on the cut nodes; a cantilever of beams under
+  the normal, no moment, area 100 mm^2, centroid on the cut nodes; cuts bounded by a circle
+  and a rectangle; a shell plate pulled in-plane: sigma t W through t W; a cantilever of beams under
   a tip load P: shear P and moment P (L - x) about the cut nodes, of the signs the
   positive-side-on-negative-side convention gives;
 - the section files are the same bytes at 1, 2 and 3 ranks, and a restarted run continues
@@ -195,6 +196,27 @@ class SectionPhysics(Case):
             self.assertLess(abs(last[key]), 0.01 * load, key)
         self.assertEqual(last["area"], 100.0)
         self.assertAlmostEqual(last["cx"], 50.0, delta=0.01)
+
+
+    def test_shell_plate_membrane_force(self):
+        # test_cli_d3plot's plate of 4 x 2 shells, 40 x 20 x 1 mm, free to contract in y, its
+        # x = 40 edge pulled 0.02 mm in 1 ms (quasi-static: the axial period is 0.03 ms).
+        # Uniaxial stress E u / L = 0.105 GPa; a cut at x = 15 carries sigma t W = 2.1 kN
+        # through 20 mm x 1 mm.
+        section = "*DATABASE_SECFORC\n      0.05\n*DATABASE_CROSS_SECTION_PLANE\n"
+        section += "         0      15.0       0.0       0.0      16.0       0.0       0.0\n"
+        deck = test_cli_d3plot.pulled_plate().replace("*PART\n", section + "*PART\n", 1)
+        out = self.run_deck("plate.k", deck)
+        last = read_csv(os.path.join(out, "secforc.csv"))[-1]
+        self.assertEqual(last["time"], 1.0)
+        force = 210.0 * 0.02 / 40.0 * 20.0 * 1.0
+        self.assertAlmostEqual(last["fx"], force, delta=0.02 * force)
+        self.assertLess(max(abs(last["fy"]), abs(last["fz"])), 0.01 * force)
+        self.assertLess(max(abs(last[k]) for k in ("mx", "my", "mz")), 0.01 * force * 20.0)
+        self.assertAlmostEqual(last["area"], 20.0, places=9)
+        # The plate contracts towards y = 0 (node 1 held in y): the cut's middle node at
+        # 10 (1 - nu u / L).
+        self.assertAlmostEqual(last["cy"], 10.0 * (1.0 - 0.3 * 0.02 / 40.0), delta=1e-4)
 
 
 class FilesAndReader(Case):
