@@ -256,9 +256,19 @@ std::vector<KeywordSpec> makeTables() {
                  {I("IMFLAG"), R("DT0", 0, Q), I("IMFORM", 2, Q), I("NSBS", 1, Q), I("IGS", 2, Q),
                   I("CNSTN", 0, Q), I("FORM", 0, Q), I("ZERO_V", 0, Q)}}}});
   // ---- database -----------------------------------------------------------------------------
-  for (std::string_view name : {"*DATABASE_GLSTAT", "*DATABASE_MATSUM", "*DATABASE_NODOUT",
-                                "*DATABASE_RWFORC", "*DATABASE_RCFORC"})
+  for (std::string_view name :
+       {"*DATABASE_GLSTAT", "*DATABASE_MATSUM", "*DATABASE_NODOUT", "*DATABASE_RWFORC",
+        "*DATABASE_RCFORC", "*DATABASE_SLEOUT", "*DATABASE_SECFORC"})
     t.push_back({name, asciiDatabase()});
+  // Keyword Manual Vol. I, *DATABASE_CROSS_SECTION_PLANE: the cut's tail (XCT..) and the
+  // normal's head (XCH..), the edge vector's head (XHEV..), its lengths; ID/ITYPE name a local
+  // output frame.
+  t.push_back(
+      {"*DATABASE_CROSS_SECTION_PLANE",
+       {{"id card", {I("CSID"), A("TITLE", 70)}},
+        {"card 1",
+         {I("PSID"), R("XCT"), R("YCT"), R("ZCT"), R("XCH"), R("YCH"), R("ZCH"), R("RADIUS")}},
+        {"card 2", {R("XHEV"), R("YHEV"), R("ZHEV"), R("LENL"), R("LENM"), I("ID"), I("ITYPE")}}}});
   t.push_back({"*DATABASE_BINARY_D3PLOT",
                {{"card 1", {R("DT"), I("LCDT"), I("BEAM", 0, Q), I("NPLTC"), I("PSETID")}},
                 {"card 2", {I("IOOPT", 0, Q)}}}});

@@ -353,6 +353,7 @@ void readControlDynamicRelaxation(Context&, const deck::Keyword&, const KeywordO
 // Keywords read only to report their non-default fields (*CONTROL_SOLID, ...).
 void readIgnoredControl(Context&, const deck::Keyword&, const KeywordOptions&);
 void readDatabaseAscii(Context&, const deck::Keyword&, const KeywordOptions&);
+void readCrossSectionPlane(Context&, const deck::Keyword&, const KeywordOptions&);
 void readDatabaseD3plot(Context&, const deck::Keyword&, const KeywordOptions&);
 void readDatabaseExtentBinary(Context&, const deck::Keyword&, const KeywordOptions&);
 void readDatabaseD3dump(Context&, const deck::Keyword&, const KeywordOptions&);

@@ -7,6 +7,7 @@
 
 #include "model/build_context.hpp"
 #include "model/units.hpp"
+#include "util/vec3.hpp"
 
 namespace crumple::model::build {
 
@@ -174,11 +175,66 @@ void readDatabaseAscii(Context& ctx, const deck::Keyword& kw, const KeywordOptio
   Controls& k = ctx.model.controls;
   const double dt = c.real("DT");
   if (dt < 0) c.fail("DT", "must not be negative");
-  if (kw.name == "*DATABASE_GLSTAT") k.glstat_dt = dt;
-  if (kw.name == "*DATABASE_MATSUM") k.matsum_dt = dt;
-  if (kw.name == "*DATABASE_NODOUT") k.nodout_dt = dt;
-  if (kw.name == "*DATABASE_RWFORC") k.rwforc_dt = dt;
-  if (kw.name == "*DATABASE_RCFORC") k.rcforc_dt = dt;
+  // Each keyword present asks for its file in LS-DYNA's ASCII layout, at DT (0: Crumple's
+  // default interval, as for the CSV histories).
+  const std::pair<std::string_view, std::pair<double*, bool*>> files[] = {
+      {"*DATABASE_GLSTAT", {&k.glstat_dt, &k.ascii.glstat}},
+      {"*DATABASE_MATSUM", {&k.matsum_dt, &k.ascii.matsum}},
+      {"*DATABASE_NODOUT", {&k.nodout_dt, &k.ascii.nodout}},
+      {"*DATABASE_RWFORC", {&k.rwforc_dt, &k.ascii.rwforc}},
+      {"*DATABASE_RCFORC", {&k.rcforc_dt, &k.ascii.rcforc}},
+      {"*DATABASE_SLEOUT", {&k.sleout_dt, &k.ascii.sleout}},
+      {"*DATABASE_SECFORC", {&k.secforc_dt, &k.ascii.secforc}},
+  };
+  for (const auto& [name, target] : files)
+    if (kw.name == name) {
+      *target.first = dt;
+      *target.second = true;
+    }
+  ctx.collect(cur);
+}
+
+void readCrossSectionPlane(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*DATABASE_CROSS_SECTION_PLANE");
+  CardCursor cur(kw, ctx.deck);
+  CrossSection cs;
+  cs.id = int64_t(ctx.model.cross_sections.size()) + 1;
+  cs.where = ctx.deck.loc(kw);
+  if (opts.has("ID")) {
+    const Card& idc = cur.read(spec.card("id card"));
+    if (!idc.blank("CSID")) cs.id = idc.integer("CSID");
+    cs.title = idc.text("TITLE");
+  }
+  const Card& c1 = cur.read(spec.card("card 1"));
+  const Card& c2 = cur.readOptional(spec.card("card 2"));
+  for (const auto& other : ctx.model.cross_sections)
+    if (other.id == cs.id)
+      c1.fail("PSID", "cross section " + std::to_string(cs.id) + " is already defined at " +
+                          other.where.str());
+  // Forces in the frame of a rigid body, accelerometer or coordinate system (ID, ITYPE) are
+  // not computed: the section is left out, and said so (output only: the run is unaffected).
+  if (c2.integer("ID") != 0) {
+    ctx.reportUnsupported(kw, "section forces in a local frame (ID, ITYPE) not supported", false);
+    return;
+  }
+  cs.radius = c1.real("RADIUS");
+  if (cs.radius < 0) c1.fail("RADIUS", "must not be negative");
+  if (const int64_t psid = c1.integer("PSID"); psid != 0) cs.parts = ctx.partSet(c1, "PSID", psid);
+  std::sort(cs.parts.begin(), cs.parts.end());
+  cs.center = {c1.real("XCT"), c1.real("YCT"), c1.real("ZCT")};
+  const Vec3 head = {c1.real("XCH"), c1.real("YCH"), c1.real("ZCH")};
+  const Vec3 edge = {c2.real("XHEV"), c2.real("YHEV"), c2.real("ZHEV")};
+  cs.lenl = c2.real("LENL");
+  cs.lenm = c2.real("LENM");
+  if (cs.lenl < 0 || cs.lenm < 0) c2.fail(cs.lenl < 0 ? "LENL" : "LENM", "must not be negative");
+  cs.normal = util::unit(util::sub(head, cs.center));
+  if (cs.normal == Vec3{}) c1.fail("XCH", "the normal's head is its tail: no direction");
+  // l: the edge vector (tail XCT..) made normal to n; only a bounded cut needs it.
+  const Vec3 l = util::sub(edge, cs.center);
+  cs.l = util::unit(util::sub(l, util::scale(cs.normal, util::dot(l, cs.normal))));
+  if ((cs.lenl > 0 || cs.lenm > 0) && cs.l == Vec3{})
+    c2.fail("XHEV", "a bounded cut (LENL, LENM) needs an edge vector not along the normal");
+  ctx.model.cross_sections.push_back(std::move(cs));
   ctx.collect(cur);
 }
 

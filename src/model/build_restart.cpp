@@ -20,6 +20,8 @@ void readRestartDeck(const std::filesystem::path& path, Controls& controls) {
       {"*DATABASE_NODOUT", readDatabaseAscii},
       {"*DATABASE_RWFORC", readDatabaseAscii},
       {"*DATABASE_RCFORC", readDatabaseAscii},
+      {"*DATABASE_SLEOUT", readDatabaseAscii},
+      {"*DATABASE_SECFORC", readDatabaseAscii},
       {"*TITLE", nullptr},  // a label for the reader of the deck, nothing to change
   };
   const deck::Deck deck = deck::readDeck(path);
@@ -41,12 +43,15 @@ void readRestartDeck(const std::filesystem::path& path, Controls& controls) {
           deck.loc(kw).str() + ": " + kw.name +
           " is not supported in a restart deck (it may change *CONTROL_TERMINATION, "
           "*DATABASE_BINARY_D3PLOT, *DATABASE_BINARY_D3DUMP and the *DATABASE_GLSTAT, _MATSUM, "
-          "_NODOUT, _RWFORC and _RCFORC intervals)");
+          "_NODOUT, _RWFORC, _RCFORC, _SLEOUT and _SECFORC intervals)");
     if (handler) handler(ctx, kw, KeywordOptions{});
   }
   // NPLTC without DT: the plot interval follows the (possibly new) end time.
   if (ctx.d3plot_npltc > 0 && scratch.controls.d3plot_dt == 0.0 && scratch.controls.end_time > 0)
     scratch.controls.d3plot_dt = scratch.controls.end_time / double(ctx.d3plot_npltc);
+  // Which LS-DYNA ASCII files are written is the original deck's: a restart continues them
+  // (only their intervals change).
+  scratch.controls.ascii = controls.ascii;
   controls = scratch.controls;
 }
 

@@ -304,7 +304,30 @@ struct Controls {
   double nodout_dt = 0.0;
   double rwforc_dt = 0.0;
   double rcforc_dt = 0.0;
+  double sleout_dt = 0.0;
+  double secforc_dt = 0.0;
+  // The *DATABASE_<file> keywords present: Crumple writes those files in LS-DYNA's ASCII
+  // layout (src/output/ascii.hpp) beside its CSV histories.
+  struct AsciiFiles {
+    bool glstat = false, matsum = false, nodout = false, rwforc = false, rcforc = false;
+    bool sleout = false, secforc = false;
+  } ascii;
   int64_t d3dump_cycles = 0;  // *DATABASE_BINARY_D3DUMP CYCL; 0 = no cycle-driven dumps
+};
+
+// *DATABASE_CROSS_SECTION_PLANE (Keyword Manual Vol. I): a plane through `center` with
+// normal `normal` (XCT.. to XCH..), bounded (LENL, LENM > 0) in the directions `l` (towards
+// XHEV..) and m = n x l, or to a circle of RADIUS about the tail; PSID's parts (empty: every part).
+// The elements cut and the nodes of the cut are found from the initial geometry
+// (src/output/sections.hpp).
+struct CrossSection {
+  int64_t id = 0;  // CSID of _ID, else the 1-based order of definition
+  std::string title;
+  std::vector<int32_t> parts;  // model part indices, ascending; empty = every part
+  Vec3 center{}, normal{}, l{};
+  double lenl = 0.0, lenm = 0.0;  // 0 = unbounded
+  double radius = 0.0;            // RADIUS > 0: a circular cut about the tail (LENL, LENM unused)
+  util::SourceLoc where;
 };
 
 // A keyword the reader saw but Crumple does not act on, reported once (ARCHITECTURE "Errors").
@@ -373,10 +396,11 @@ struct Model {
   std::vector<PressureLoad> pressure_loads;
   std::vector<BodyLoad> body_loads;
   std::vector<RigidWallPlanar> rigid_walls;
-  std::vector<Vec3> initial_velocity;   // per node (zero if none given)
-  std::vector<PointMass> point_masses;  // *ELEMENT_MASS, in deck order
-  std::vector<int32_t> history_nodes;   // *DATABASE_HISTORY_NODE, in deck order
-  RigidDefinitions rigid;               // rigid bodies, spot welds, tied node sets
+  std::vector<Vec3> initial_velocity;        // per node (zero if none given)
+  std::vector<PointMass> point_masses;       // *ELEMENT_MASS, in deck order
+  std::vector<int32_t> history_nodes;        // *DATABASE_HISTORY_NODE, in deck order
+  std::vector<CrossSection> cross_sections;  // *DATABASE_CROSS_SECTION_PLANE, in deck order
+  RigidDefinitions rigid;                    // rigid bodies, spot welds, tied node sets
   std::vector<ContactInterface> contacts;
   ContactControls contact_controls;
 

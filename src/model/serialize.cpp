@@ -192,6 +192,22 @@ void fields(A& a, M& m) {
   a(m.point_masses);
   a(m.history_nodes);
   a.count(
+      m.cross_sections.size(),
+      [&](auto& c) {
+        util::fieldCount<10>(c);
+        a(c.id);
+        a(c.title);
+        a(c.parts);
+        a(c.center);
+        a(c.normal);
+        a(c.l);
+        a(c.lenl);
+        a(c.lenm);
+        a(c.radius);
+        loc(a, c.where);
+      },
+      m.cross_sections);
+  a.count(
       m.rigid.bodies.size(),
       [&](auto& b) {
         util::fieldCount<14>(b);

@@ -30,19 +30,27 @@ uint64_t fnv1a(const char* data, std::size_t size, uint64_t hash) {
   return hash;
 }
 
-CsvWriter::CsvWriter(const fs::path& path, const std::vector<std::string>& columns)
-    : path_(path), out_(path, std::ios::trunc), columns_(columns.size()) {
-  if (!out_) throw std::runtime_error(fmt::format("cannot open '{}' for writing", path.string()));
-  fmt::memory_buffer line;
+namespace {
+std::string csvHeader(const std::vector<std::string>& columns) {
+  std::string line;
   for (std::size_t i = 0; i < columns.size(); ++i) {
     if (i > 0) line.push_back(',');
-    line.append(columns[i]);
+    line += columns[i];
   }
-  line.push_back('\n');
-  put(line.data(), line.size());
+  return line + '\n';
+}
+}  // namespace
+
+HistoryFile::HistoryFile(const fs::path& path, std::string_view header)
+    : path_(path), out_(path, std::ios::trunc | std::ios::binary) {
+  if (!out_) throw std::runtime_error(fmt::format("cannot open '{}' for writing", path.string()));
+  write(header);
 }
 
-void CsvWriter::checkResume(const fs::path& path, const Position& resume) {
+CsvWriter::CsvWriter(const fs::path& path, const std::vector<std::string>& columns)
+    : HistoryFile(path, csvHeader(columns)), columns_(columns.size()) {}
+
+void HistoryFile::checkResume(const fs::path& path, const Position& resume) {
   std::error_code ec;
   const auto size = fs::file_size(path, ec);
   if (ec || size < resume.bytes)
@@ -62,9 +70,7 @@ void CsvWriter::checkResume(const fs::path& path, const Position& resume) {
   }
 }
 
-CsvWriter::CsvWriter(const fs::path& path, const std::vector<std::string>& columns,
-                     const Position& resume)
-    : path_(path), columns_(columns.size()) {
+HistoryFile::HistoryFile(const fs::path& path, const Position& resume) : path_(path) {
   checkResume(path, resume);
   std::error_code ec;
   // The rows after the dump belong to the interrupted continuation: the restarted run
@@ -78,7 +84,7 @@ CsvWriter::CsvWriter(const fs::path& path, const std::vector<std::string>& colum
   pos_ = resume;
 }
 
-void CsvWriter::put(const char* data, std::size_t size) {
+void HistoryFile::put(const char* data, std::size_t size) {
   out_.write(data, static_cast<std::streamsize>(size));
   pos_.bytes += size;
   pos_.hash = fnv1a(data, size, pos_.hash);
@@ -101,7 +107,7 @@ void CsvWriter::row(const std::vector<double>& values) {
   put(line.data(), line.size());
 }
 
-void CsvWriter::flush() {
+void HistoryFile::flush() {
   out_.flush();
   checkStream(out_, path_);
 }
@@ -194,9 +200,11 @@ namespace {
 // Files a run (or `crumple partition`) writes at the top of the results folder.
 // results.pvd.tmp is what a run killed while rewriting the collection leaves (vtk.cpp writes
 // through a temporary file); it is ours as much as results.pvd.
-constexpr std::array<const char*, 10> kResultFiles = {
-    "summary.json", "results.pvd", "glstat.csv", "run.log",        "matsum.csv",
-    "nodout.csv",   "rcforc.csv",  "rwforc.csv", "partition.json", "results.pvd.tmp"};
+// The LS-DYNA ASCII files (ascii.hpp) are written under LS-DYNA's names, without extension.
+constexpr std::array<const char*, 18> kResultFiles = {
+    "summary.json", "results.pvd", "glstat.csv",  "run.log",        "matsum.csv",      "nodout.csv",
+    "rcforc.csv",   "rwforc.csv",  "secforc.csv", "partition.json", "results.pvd.tmp", "glstat",
+    "matsum",       "nodout",      "rcforc",      "rwforc",         "sleout",          "secforc"};
 
 // A piece, or the temporary file of a piece whose writing was interrupted.
 bool isPieceFile(fs::path p) {

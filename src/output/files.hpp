@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace crumple::output {
@@ -18,38 +19,55 @@ namespace crumple::output {
 inline constexpr uint64_t kFnvOffset = 0xcbf29ce484222325ull;
 uint64_t fnv1a(const char* data, std::size_t size, uint64_t hash = kFnvOffset);
 
-// A CSV file with a header row; numbers written with 17 significant digits (round-trip).
-class CsvWriter {
+// A history file written a few rows at a time, which a restarted run continues: it counts
+// the bytes written and hashes them (FNV-1a 64), so that a restart dump records how far the
+// file is written and the continued run finds the file of the same run and cuts it back there.
+// The CSV histories and LS-DYNA's ASCII files (ascii.hpp) are written through it.
+class HistoryFile {
  public:
-  // How much of the file is written, and the FNV-1a 64 of those bytes (a restart dump records
-  // it, so that the continued run finds the file of the same run and cuts it back there).
   struct Position {
     uint64_t bytes = 0;
     uint64_t hash = kFnvOffset;
   };
-  CsvWriter() = default;
-  CsvWriter(const std::filesystem::path& path, const std::vector<std::string>& columns);
+  HistoryFile() = default;
+  // A new file (replacing any) that starts with `header`.
+  HistoryFile(const std::filesystem::path& path, std::string_view header);
   // Continues the file at `resume` (restart): its first resume.bytes bytes must hash to
-  // resume.hash, else util::InputError (the folder holds another run's file); the rows after
-  // them (written after the dump) are cut off and new rows are appended.
-  CsvWriter(const std::filesystem::path& path, const std::vector<std::string>& columns,
-            const Position& resume);
+  // resume.hash, else util::InputError (the folder holds another run's file); the bytes after
+  // them (written after the dump) are cut off and new text is appended.
+  HistoryFile(const std::filesystem::path& path, const Position& resume);
   // The check of that constructor alone, so that every file can be checked before any is cut.
   static void checkResume(const std::filesystem::path& path, const Position& resume);
   bool isOpen() const { return out_.is_open(); }
-  // One row; `values` must have as many entries as the header. Integers print exactly.
-  void row(const std::vector<double>& values);
-  // Hands the rows to the system; throws std::runtime_error naming the file when a write failed
+  void write(std::string_view text) { put(text.data(), text.size()); }
+  // Hands the text to the system; throws std::runtime_error naming the file when a write failed
   // (a full disk: the stream buffers, so the failure shows here).
   void flush();
   const Position& position() const { return pos_; }
 
- private:
+ protected:
   void put(const char* data, std::size_t size);
+
+ private:
   std::filesystem::path path_;
   std::ofstream out_;
-  std::size_t columns_ = 0;
   Position pos_;
+};
+
+// A CSV file with a header row; numbers written with 17 significant digits (round-trip).
+class CsvWriter : public HistoryFile {
+ public:
+  CsvWriter() = default;
+  CsvWriter(const std::filesystem::path& path, const std::vector<std::string>& columns);
+  // Continues the file at `resume` (restart), as HistoryFile's.
+  CsvWriter(const std::filesystem::path& path, const std::vector<std::string>& columns,
+            const Position& resume)
+      : HistoryFile(path, resume), columns_(columns.size()) {}
+  // One row; `values` must have as many entries as the header. Integers print exactly.
+  void row(const std::vector<double>& values);
+
+ private:
+  std::size_t columns_ = 0;
 };
 
 // SHA-256 of raw bytes (the checksum of restart dumps: with the CPU's SHA extensions it is

@@ -7,7 +7,9 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <string_view>
 
 #include "elements/shell.hpp"
 #include "util/archive.hpp"
@@ -47,6 +49,9 @@ const std::vector<std::string> kRwforcColumns = {"time", "wall", "fn", "fx", "fy
 // side 1 = SURFA (slave), 2 = SURFB (master); energy is the interface's contact energy.
 const std::vector<std::string> kRcforcColumns = {"time", "contact", "side",   "fx",
                                                  "fy",   "fz",      "energy", "pairs"};
+// Section forces (sections.hpp): force and moment about the centroid (cx, cy, cz), cut area.
+const std::vector<std::string> kSecforcColumns = {"time", "section", "fx", "fy", "fz", "mx",
+                                                  "my",   "mz",      "cx", "cy", "cz", "area"};
 // The glstat sample the energy audit takes: the global terms and each interface's energy.
 EnergySample energySample(const solver::Solver& s, const solver::Energies& e) {
   EnergySample out{s.time(), s.cycle(), e, {}, {}};
@@ -63,17 +68,13 @@ EnergySample energySample(const solver::Solver& s, const solver::Energies& e) {
 ResultsWriter::ResultsWriter(std::filesystem::path dir, const model::Model& model,
                              const solver::Solver& s, const comm::Communicator& comm, bool restart)
     : dir_(std::move(dir)), model_(model), comm_(comm), pvd_(dir_ / "results.pvd") {
-  // On restart the files are opened by loadState, which knows where the dump left them.
-  const bool root = comm.isRoot() && !restart;
   const auto& ctl = model.controls;
   const double end = s.endTime();
-  requested_ = {ctl.glstat_dt, ctl.matsum_dt, ctl.nodout_dt,
-                ctl.rwforc_dt, ctl.rcforc_dt, ctl.d3plot_dt};
+  requested_ = {ctl.glstat_dt, ctl.matsum_dt, ctl.nodout_dt, ctl.rwforc_dt,
+                ctl.rcforc_dt, ctl.d3plot_dt, ctl.sleout_dt, ctl.secforc_dt};
   glstat_.interval = intervalOr(ctl.glstat_dt, end, kDefaultSamples);
   matsum_.interval = intervalOr(ctl.matsum_dt, end, kDefaultSamples);
   plot_.interval = intervalOr(ctl.d3plot_dt, end, kDefaultPlotStates);
-  if (root) glstat_csv_ = CsvWriter(dir_ / "glstat.csv", kGlstatColumns);
-  if (root) matsum_csv_ = CsvWriter(dir_ / "matsum.csv", kMatsumColumns);
   const auto& sd = s.subdomain();
   history_count_ = model.history_nodes.size();
   for (std::size_t k = 0; k < model.history_nodes.size(); ++k) {
@@ -81,18 +82,19 @@ ResultsWriter::ResultsWriter(std::filesystem::path dir, const model::Model& mode
     if (local != model::kNone && sd.node_owned[static_cast<std::size_t>(local)])
       history_local_.emplace_back(int32_t(k), local);
   }
-  if (history_count_ > 0) {
-    nodout_.interval = intervalOr(ctl.nodout_dt, end, kDefaultSamples);
-    if (root) nodout_csv_ = CsvWriter(dir_ / "nodout.csv", kNodoutColumns);
-  }
-  if (!model.rigid_walls.empty()) {
+  if (history_count_ > 0) nodout_.interval = intervalOr(ctl.nodout_dt, end, kDefaultSamples);
+  if (!model.rigid_walls.empty())
     rwforc_.interval = intervalOr(ctl.rwforc_dt, end, kDefaultSamples);
-    if (root) rwforc_csv_ = CsvWriter(dir_ / "rwforc.csv", kRwforcColumns);
-  }
   if (!model.contacts.empty()) {
     rcforc_.interval = intervalOr(ctl.rcforc_dt, end, kDefaultSamples);
-    if (root) rcforc_csv_ = CsvWriter(dir_ / "rcforc.csv", kRcforcColumns);
+    if (ctl.ascii.sleout) sleout_.interval = intervalOr(ctl.sleout_dt, end, kDefaultSamples);
   }
+  if (!model.cross_sections.empty()) {
+    secforc_.interval = intervalOr(ctl.secforc_dt, end, kDefaultSamples);
+    sections_.emplace(model, sd);
+  }
+  // On restart the files are opened by loadState, which knows where the dump left them.
+  if (comm.isRoot() && !restart) openStreams();
   if (comm.isRoot()) std::filesystem::create_directories(dir_ / kStatesFolder);
   // The d3plot family beside the VTU states, as LS-DYNA writes it when the deck asks; a
   // restarted run continues the family from loadState.
@@ -106,10 +108,55 @@ ResultsWriter::ResultsWriter(std::filesystem::path dir, const model::Model& mode
   comm.barrier();
 }
 
+std::vector<ResultsWriter::Stream> ResultsWriter::streams() {
+  const auto& ascii = model_.controls.ascii;
+  const bool nodes = history_count_ > 0, walls = !model_.rigid_walls.empty();
+  const bool contacts = !model_.contacts.empty(), sections = !model_.cross_sections.empty();
+  return {{"glstat.csv", &glstat_csv_, &kGlstatColumns, true},
+          {"matsum.csv", &matsum_csv_, &kMatsumColumns, true},
+          {"nodout.csv", &nodout_csv_, &kNodoutColumns, nodes},
+          {"rwforc.csv", &rwforc_csv_, &kRwforcColumns, walls},
+          {"rcforc.csv", &rcforc_csv_, &kRcforcColumns, contacts},
+          {"secforc.csv", &secforc_csv_, &kSecforcColumns, sections},
+          {"glstat", &glstat_txt_, nullptr, ascii.glstat},
+          {"matsum", &matsum_txt_, nullptr, ascii.matsum},
+          {"nodout", &nodout_txt_, nullptr, ascii.nodout && nodes},
+          {"rwforc", &rwforc_txt_, nullptr, ascii.rwforc && walls},
+          {"rcforc", &rcforc_txt_, nullptr, ascii.rcforc && contacts},
+          {"sleout", &sleout_txt_, nullptr, ascii.sleout && contacts},
+          {"secforc", &secforc_txt_, nullptr, ascii.secforc && sections}};
+}
+
+void ResultsWriter::openStreams() {
+  const std::string& title = model_.title;
+  std::vector<ascii::LegendEntry> parts, nodes, contacts, sections;
+  for (const auto& p : model_.parts) parts.push_back({p.id, p.title});
+  for (int32_t n : model_.history_nodes)
+    nodes.push_back({model_.nodes.id[static_cast<std::size_t>(n)], {}});
+  for (const auto& c : model_.contacts) contacts.push_back({c.id, c.title});
+  for (const auto& c : model_.cross_sections) sections.push_back({c.id, c.title});
+  const std::map<std::string_view, std::string> headers = {
+      {"glstat", ascii::banner(title)},
+      {"matsum", ascii::matsumHeader(title, parts)},
+      {"nodout", ascii::nodoutHeader(title, nodes)},
+      {"rwforc", ascii::rwforcHeader(title)},
+      {"rcforc", ascii::entityHeader(title, contacts)},
+      {"sleout", ascii::entityHeader(title, contacts)},
+      {"secforc", ascii::entityHeader(title, sections)}};
+  for (const Stream& st : streams()) {
+    if (!st.wanted) continue;
+    if (st.columns)
+      *static_cast<CsvWriter*>(st.file) = CsvWriter(dir_ / st.name, *st.columns);
+    else
+      *st.file = HistoryFile(dir_ / st.name, headers.at(st.name));
+  }
+}
+
 std::vector<char> ResultsWriter::saveState() const {
   util::ArchiveWriter w;
-  const Schedule* schedules[] = {&glstat_, &matsum_, &nodout_, &rwforc_, &rcforc_, &plot_};
-  for (std::size_t k = 0; k < 6; ++k) {
+  const Schedule* schedules[] = {&glstat_, &matsum_, &nodout_, &rwforc_,
+                                 &rcforc_, &plot_,   &sleout_, &secforc_};
+  for (std::size_t k = 0; k < requested_.size(); ++k) {
     w.put(requested_[k]);
     w.put(schedules[k]->interval);
     w.put(schedules[k]->next);
@@ -125,10 +172,10 @@ std::vector<char> ResultsWriter::saveState() const {
   }
   w.put(times);
   w.put(names);
-  for (const CsvWriter* csv :
-       {&glstat_csv_, &matsum_csv_, &nodout_csv_, &rwforc_csv_, &rcforc_csv_}) {
-    w.put<uint8_t>(csv->isOpen() ? 1 : 0);
-    w.put(csv->position());
+  // streams() hands out the files for writing; here they are only read.
+  for (const Stream& st : const_cast<ResultsWriter*>(this)->streams()) {
+    w.put<uint8_t>(st.file->isOpen() ? 1 : 0);
+    w.put(st.file->position());
   }
   w.put(d3plot_ ? d3plot_->save() : std::vector<char>());  // empty: no d3plot
   return std::move(w.bytes());
@@ -136,8 +183,9 @@ std::vector<char> ResultsWriter::saveState() const {
 
 void ResultsWriter::loadState(const std::vector<char>& bytes, double time) {
   util::ArchiveReader r(bytes);
-  Schedule* schedules[] = {&glstat_, &matsum_, &nodout_, &rwforc_, &rcforc_, &plot_};
-  for (std::size_t k = 0; k < 6; ++k) {
+  Schedule* schedules[] = {&glstat_, &matsum_, &nodout_, &rwforc_,
+                           &rcforc_, &plot_,   &sleout_, &secforc_};
+  for (std::size_t k = 0; k < requested_.size(); ++k) {
     double requested = 0.0;
     Schedule dumped;
     r.get(requested);
@@ -159,8 +207,9 @@ void ResultsWriter::loadState(const std::vector<char>& bytes, double time) {
   std::vector<std::string> names;
   r.get(times);
   r.get(names);
-  std::array<std::pair<uint8_t, CsvWriter::Position>, 5> csv{};
-  for (auto& [open, pos] : csv) {
+  const std::vector<Stream> files = streams();
+  std::vector<std::pair<uint8_t, HistoryFile::Position>> dumped(files.size());
+  for (auto& [open, pos] : dumped) {
     r.get(open);
     r.get(pos);
   }
@@ -173,24 +222,7 @@ void ResultsWriter::loadState(const std::vector<char>& bytes, double time) {
   if (d3plot_continues) d3plot_->load(d3plot);
   if (d3plot_ && !d3plot_continues) d3plot_->startFromPrepared();
   if (!comm_.isRoot()) return;
-  const std::filesystem::path paths[] = {dir_ / "glstat.csv", dir_ / "matsum.csv",
-                                         dir_ / "nodout.csv", dir_ / "rwforc.csv",
-                                         dir_ / "rcforc.csv"};
-  const std::vector<std::string>* columns[] = {&kGlstatColumns, &kMatsumColumns, &kNodoutColumns,
-                                               &kRwforcColumns, &kRcforcColumns};
-  CsvWriter* writers[] = {&glstat_csv_, &matsum_csv_, &nodout_csv_, &rwforc_csv_, &rcforc_csv_};
-  const bool wanted[] = {true, true, history_count_ > 0, !model_.rigid_walls.empty(),
-                         !model_.contacts.empty()};
-  // Every file is checked before any is cut back: a folder of another run stays untouched.
-  for (std::size_t k = 0; k < csv.size(); ++k) {
-    if ((csv[k].first != 0) != wanted[k])
-      throw util::InputError("the restart dump does not belong to this deck: it wrote " +
-                             paths[k].filename().string() + (wanted[k] ? " not" : "") +
-                             ", this deck would" + (wanted[k] ? "" : " not"));
-    if (wanted[k]) CsvWriter::checkResume(paths[k], csv[k].second);
-  }
-  for (std::size_t k = 0; k < csv.size(); ++k)
-    if (wanted[k]) *writers[k] = CsvWriter(paths[k], *columns[k], csv[k].second);
+  resumeStreams(files, dumped);
   if (d3plot_continues) d3plot_->resume();
   std::vector<std::pair<double, std::string>> states;
   for (std::size_t k = 0; k < times.size(); ++k) states.emplace_back(times[k], names[k]);
@@ -206,90 +238,253 @@ void ResultsWriter::loadState(const std::vector<char>& bytes, double time) {
   }
 }
 
+void ResultsWriter::resumeStreams(
+    const std::vector<Stream>& files,
+    const std::vector<std::pair<uint8_t, HistoryFile::Position>>& dumped) {
+  // Every file is checked before any is cut back: a folder of another run stays untouched.
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    const bool wanted = files[k].wanted;
+    if ((dumped[k].first != 0) != wanted)
+      throw util::InputError(
+          std::string("the restart dump does not belong to this deck: it wrote ") + files[k].name +
+          (wanted ? " not" : "") + ", this deck would" + (wanted ? "" : " not"));
+    if (wanted) HistoryFile::checkResume(dir_ / files[k].name, dumped[k].second);
+  }
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    if (!files[k].wanted) continue;
+    const auto path = dir_ / files[k].name;
+    if (files[k].columns)
+      *static_cast<CsvWriter*>(files[k].file) =
+          CsvWriter(path, *files[k].columns, dumped[k].second);
+    else
+      *files[k].file = HistoryFile(path, dumped[k].second);
+  }
+}
+
 void ResultsWriter::write(const solver::Solver& s, bool last) {
   util::ScopedTimer timer(seconds_);
   const double t = s.time();
-  const auto& sd = s.subdomain();
-  const bool root = comm_.isRoot();
   if (glstat_.due(t, last)) {
-    const auto e = s.energies();
-    if (root)
-      glstat_csv_.row({t, double(s.cycle()), s.dt(), e.kinetic, e.internal, e.hourglass, e.contact,
-                       e.external_work, e.total, e.ratio, e.rigidwall, s.addedMass()});
-    if (root) glstat_csv_.flush();
-    if (root) notes_ += audit_.observe(energySample(s, e));
+    writeGlstat(s);
     glstat_.advance(t);
   }
   if (matsum_.due(t, last)) {
-    const auto sums = s.partSums();
-    if (root)
-      for (const auto& p : sums)
-        matsum_csv_.row({t, double(p.part_id), p.kinetic, p.internal, p.hourglass, p.momentum[0],
-                         p.momentum[1], p.momentum[2]});
-    if (root) matsum_csv_.flush();
+    writeMatsum(s);
     matsum_.advance(t);
   }
   if (nodout_.due(t, last)) {
-    // Rows of the history nodes this rank owns, gathered and written in deck order.
-    constexpr std::size_t kRow = 15;  // deck order + the 14 nodout columns
-    std::vector<double> rows;
-    for (const auto& [order, n] : history_local_) {
-      const std::size_t i = 3 * static_cast<std::size_t>(n);
-      const double row[kRow] = {double(order),
-                                t,
-                                double(sd.node_id[static_cast<std::size_t>(n)]),
-                                sd.x[i],
-                                sd.x[i + 1],
-                                sd.x[i + 2],
-                                sd.x[i] - sd.x0[i],
-                                sd.x[i + 1] - sd.x0[i + 1],
-                                sd.x[i + 2] - sd.x0[i + 2],
-                                sd.v[i],
-                                sd.v[i + 1],
-                                sd.v[i + 2],
-                                sd.a[i],
-                                sd.a[i + 1],
-                                sd.a[i + 2]};
-      rows.insert(rows.end(), row, row + kRow);
-    }
-    const auto all = comm_.allGather(rows);
-    if (root) {
-      std::vector<std::size_t> idx(all.size() / kRow);
-      for (std::size_t k = 0; k < idx.size(); ++k) idx[k] = k;
-      std::sort(idx.begin(), idx.end(),
-                [&](std::size_t a, std::size_t b) { return all[kRow * a] < all[kRow * b]; });
-      for (std::size_t k : idx)
-        nodout_csv_.row(std::vector<double>(all.begin() + long(kRow * k + 1),
-                                            all.begin() + long(kRow * (k + 1))));
-      nodout_csv_.flush();
-    }
+    writeNodout(s);
     nodout_.advance(t);
   }
   if (rwforc_.due(t, last)) {
-    if (root) {
-      for (const auto& w : s.boundary().walls())
-        rwforc_csv_.row({t, double(w.def->id), w.normal_force, w.force[0], w.force[1], w.force[2]});
-      rwforc_csv_.flush();
-    }
+    writeRwforc(s);
     rwforc_.advance(t);
   }
-  if (s.contact() && rcforc_.due(t, last)) {
-    const auto forces = s.contact()->interfaceForces();  // collective
-    if (root) {
-      for (const auto& f : forces) {
-        rcforc_csv_.row({t, double(f.id), 1.0, f.side_a[0], f.side_a[1], f.side_a[2], f.energy,
-                         double(f.pairs)});
-        rcforc_csv_.row({t, double(f.id), 2.0, f.side_b[0], f.side_b[1], f.side_b[2], f.energy,
-                         double(f.pairs)});
-      }
-      rcforc_csv_.flush();
-    }
-    rcforc_.advance(t);
+  const bool rcforc = s.contact() && rcforc_.due(t, last);
+  const bool sleout = s.contact() && sleout_.due(t, last);
+  if (rcforc || sleout) writeContact(s, rcforc, sleout);
+  if (rcforc) rcforc_.advance(t);
+  if (sleout) sleout_.advance(t);
+  if (sections_ && secforc_.due(t, last)) {
+    writeSecforc(s);
+    secforc_.advance(t);
   }
   if ((s.cycle() == 0 || plot_.due(t, last)) && t != last_plot_time_) {
     writePlotState(s);
     plot_.advance(t);
     last_plot_time_ = t;
+  }
+}
+
+ascii::GlstatSample ResultsWriter::glstatSample(const solver::Solver& s,
+                                                const solver::Energies& e) const {
+  const auto& sd = s.subdomain();
+  ascii::GlstatSample g;
+  g.cycle = s.cycle() + 1;  // LS-DYNA counts its cycles from 1
+  const int64_t elem = s.stepElement();
+  if (elem >= 0) {
+    static constexpr const char* kFamilies[] = {"solid", "shell", "beam", "spring"};
+    g.dt_family = kFamilies[static_cast<std::size_t>(sd.familyOf(elem))];
+    g.dt_element = comm_.maxAll(sd.elementId(elem));  // the rank holding it knows its ids
+    g.dt_part = comm_.maxAll(sd.elementPart(elem));
+  }
+  const solver::ErodedSums eroded = s.eroded();  // collective
+  const auto parts = s.partSums();               // collective
+  double mass = 0.0;
+  for (const auto& p : parts) {
+    mass += p.mass;
+    for (std::size_t c = 0; c < 3; ++c) g.velocity[c] += p.momentum[c];
+  }
+  if (mass > 0.0)
+    for (double& v : g.velocity) v /= mass;
+  g.time = s.time();
+  g.dt = s.dt();
+  g.kinetic = e.kinetic;
+  g.internal = e.internal;
+  g.hourglass = e.hourglass;
+  g.contact = e.contact;
+  g.external_work = e.external_work;
+  g.eroded_internal = eroded.internal;
+  g.eroded_hourglass = eroded.hourglass;
+  g.total = e.total;
+  g.ratio = e.ratio;
+  // The eroded energies stay in Crumple's sums (summary.json "eroded_internal_energy").
+  g.ratio_without_eroded =
+      e.total != 0.0 ? e.ratio * (e.total - eroded.internal - eroded.hourglass) / e.total : e.ratio;
+  g.stonewall = !model_.rigid_walls.empty();
+  g.stonewall_energy = e.rigidwall;
+  g.mass_scaled = model_.controls.dt2ms != 0.0;
+  g.added_mass = s.addedMass();
+  g.percent_increase = s.totalMass() > 0.0 ? 100.0 * s.addedMass() / s.totalMass() : 0.0;
+  return g;
+}
+
+void ResultsWriter::writeGlstat(const solver::Solver& s) {
+  const bool root = comm_.isRoot();
+  const auto e = s.energies();
+  const double t = s.time();
+  if (root)
+    glstat_csv_.row({t, double(s.cycle()), s.dt(), e.kinetic, e.internal, e.hourglass, e.contact,
+                     e.external_work, e.total, e.ratio, e.rigidwall, s.addedMass()});
+  if (root) glstat_csv_.flush();
+  if (model_.controls.ascii.glstat) {
+    const ascii::GlstatSample g = glstatSample(s, e);  // collective
+    if (root) {
+      glstat_txt_.write(ascii::glstatBlock(g));
+      glstat_txt_.flush();
+    }
+  }
+  if (root) notes_ += audit_.observe(energySample(s, e));
+}
+
+void ResultsWriter::writeMatsum(const solver::Solver& s) {
+  const auto sums = s.partSums();  // collective
+  if (!comm_.isRoot()) return;
+  const double t = s.time();
+  std::vector<ascii::MatsumPart> parts;
+  for (const auto& p : sums) {
+    matsum_csv_.row({t, double(p.part_id), p.kinetic, p.internal, p.hourglass, p.momentum[0],
+                     p.momentum[1], p.momentum[2]});
+    ascii::MatsumPart m;
+    m.id = p.part_id;
+    m.internal = p.internal;
+    m.kinetic = p.kinetic;
+    m.hourglass = p.hourglass;
+    m.momentum = {p.momentum[0], p.momentum[1], p.momentum[2]};
+    parts.push_back(m);
+  }
+  matsum_csv_.flush();
+  if (matsum_txt_.isOpen()) {
+    matsum_txt_.write(ascii::matsumBlock(t, parts));
+    matsum_txt_.flush();
+  }
+}
+
+void ResultsWriter::writeNodout(const solver::Solver& s) {
+  // Rows of the history nodes this rank owns, gathered and written in deck order: the deck
+  // order, the 14 nodout.csv columns and the angular velocity.
+  const auto& sd = s.subdomain();
+  constexpr std::size_t kRow = 18;
+  std::vector<double> rows;
+  for (const auto& [order, n] : history_local_) {
+    const std::size_t i = 3 * static_cast<std::size_t>(n);
+    double row[kRow] = {double(order), s.time(), double(sd.node_id[static_cast<std::size_t>(n)])};
+    for (std::size_t c = 0; c < 3; ++c) {
+      row[3 + c] = sd.x[i + c];
+      row[6 + c] = sd.x[i + c] - sd.x0[i + c];
+      row[9 + c] = sd.v[i + c];
+      row[12 + c] = sd.a[i + c];
+      row[15 + c] = sd.rotations ? sd.w[i + c] : 0.0;
+    }
+    rows.insert(rows.end(), row, row + kRow);
+  }
+  const auto all = comm_.allGather(rows);
+  if (!comm_.isRoot()) return;
+  std::vector<std::size_t> idx(all.size() / kRow);
+  for (std::size_t k = 0; k < idx.size(); ++k) idx[k] = k;
+  std::sort(idx.begin(), idx.end(),
+            [&](std::size_t a, std::size_t b) { return all[kRow * a] < all[kRow * b]; });
+  std::vector<ascii::NodoutRow> text;
+  for (std::size_t k : idx) {
+    const double* r = all.data() + kRow * k;
+    nodout_csv_.row(std::vector<double>(r + 1, r + 15));
+    ascii::NodoutRow n;
+    n.id = int64_t(r[2]);
+    for (std::size_t c = 0; c < 3; ++c) {
+      n.coor[c] = r[3 + c];
+      n.disp[c] = r[6 + c];
+      n.vel[c] = r[9 + c];
+      n.acc[c] = r[12 + c];
+      n.rot_vel[c] = r[15 + c];
+    }
+    text.push_back(n);
+  }
+  nodout_csv_.flush();
+  if (nodout_txt_.isOpen()) {
+    nodout_txt_.write(ascii::nodoutBlock(s.cycle() + 1, s.time(), text, sd.rotations));
+    nodout_txt_.flush();
+  }
+}
+
+void ResultsWriter::writeRwforc(const solver::Solver& s) {
+  if (!comm_.isRoot()) return;
+  std::vector<ascii::WallRecord> walls;
+  for (const auto& w : s.boundary().walls()) {
+    rwforc_csv_.row(
+        {s.time(), double(w.def->id), w.normal_force, w.force[0], w.force[1], w.force[2]});
+    walls.push_back({w.def->id, w.normal_force, {w.force[0], w.force[1], w.force[2]}});
+  }
+  rwforc_csv_.flush();
+  if (rwforc_txt_.isOpen()) {
+    rwforc_txt_.write(ascii::rwforcBlock(s.time(), walls));
+    rwforc_txt_.flush();
+  }
+}
+
+void ResultsWriter::writeContact(const solver::Solver& s, bool rcforc, bool sleout) {
+  const auto forces = s.contact()->interfaceForces();  // collective
+  if (!comm_.isRoot()) return;
+  const double t = s.time();
+  std::vector<ascii::ContactRecord> records;
+  for (const auto& f : forces) {
+    if (rcforc) {
+      rcforc_csv_.row(
+          {t, double(f.id), 1.0, f.side_a[0], f.side_a[1], f.side_a[2], f.energy, double(f.pairs)});
+      rcforc_csv_.row(
+          {t, double(f.id), 2.0, f.side_b[0], f.side_b[1], f.side_b[2], f.energy, double(f.pairs)});
+    }
+    ascii::ContactRecord c;
+    c.id = f.id;
+    c.slave = f.side_a;
+    c.master = f.side_b;
+    // Crumple keeps one energy per interface: written as the slave side's (docs/theory.md).
+    c.slave_energy = f.energy;
+    for (const auto& def : model_.contacts)
+      if (def.id == f.id) c.single_surface = def.kind == model::ContactKind::SingleSurface;
+    records.push_back(c);
+  }
+  if (rcforc) rcforc_csv_.flush();
+  if (rcforc && rcforc_txt_.isOpen()) {
+    rcforc_txt_.write(ascii::rcforcBlock(t, records));
+    rcforc_txt_.flush();
+  }
+  if (sleout && sleout_txt_.isOpen()) {
+    sleout_txt_.write(ascii::sleoutBlock(s.cycle() + 1, t, records));
+    sleout_txt_.flush();
+  }
+}
+
+void ResultsWriter::writeSecforc(const solver::Solver& s) {
+  const auto sections = sections_->compute(s.subdomain(), comm_, s.forcesComputed());
+  if (!comm_.isRoot()) return;
+  for (const auto& c : sections)
+    secforc_csv_.row({s.time(), double(c.id), c.force[0], c.force[1], c.force[2], c.moment[0],
+                      c.moment[1], c.moment[2], c.centroid[0], c.centroid[1], c.centroid[2],
+                      c.area});
+  secforc_csv_.flush();
+  if (secforc_txt_.isOpen()) {
+    secforc_txt_.write(ascii::secforcBlock(s.time(), sections));
+    secforc_txt_.flush();
   }
 }
 

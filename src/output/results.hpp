@@ -13,6 +13,7 @@
 #include "output/d3plot.hpp"
 #include "output/energy_audit.hpp"
 #include "output/files.hpp"
+#include "output/sections.hpp"
 #include "output/vtk.hpp"
 #include "solver/solver.hpp"
 
@@ -74,14 +75,39 @@ class ResultsWriter {
     }
   };
   void writePlotState(const solver::Solver& s);
+  // One history each, when due (collective where their sums are).
+  void writeGlstat(const solver::Solver& s);
+  void writeMatsum(const solver::Solver& s);
+  void writeNodout(const solver::Solver& s);
+  void writeRwforc(const solver::Solver& s);
+  void writeContact(const solver::Solver& s, bool rcforc, bool sleout);
+  void writeSecforc(const solver::Solver& s);
+  // The glstat record of LS-DYNA's layout (collective).
+  ascii::GlstatSample glstatSample(const solver::Solver& s, const solver::Energies& e) const;
+  // Every history file, CSV and LS-DYNA ASCII: its name, the file and whether this run writes
+  // it (a restart dump records how far each is written).
+  struct Stream {
+    const char* name;
+    HistoryFile* file;
+    const std::vector<std::string>* columns;  // CSV columns; null for an ASCII file
+    bool wanted;
+  };
+  std::vector<Stream> streams();
+  void openStreams();
+  void resumeStreams(const std::vector<Stream>& files,
+                     const std::vector<std::pair<uint8_t, HistoryFile::Position>>& dumped);
 
   std::filesystem::path dir_;
   const model::Model& model_;
   const comm::Communicator& comm_;
-  Schedule glstat_, matsum_, nodout_, rwforc_, rcforc_, plot_;
+  Schedule glstat_, matsum_, nodout_, rwforc_, rcforc_, plot_, sleout_, secforc_;
   // The intervals the deck asked for (0: the default), to tell a restart deck's change.
-  std::array<double, 6> requested_{};
-  CsvWriter glstat_csv_, matsum_csv_, nodout_csv_, rwforc_csv_, rcforc_csv_;
+  std::array<double, 8> requested_{};
+  CsvWriter glstat_csv_, matsum_csv_, nodout_csv_, rwforc_csv_, rcforc_csv_, secforc_csv_;
+  // LS-DYNA's ASCII files, for the *DATABASE_<file> keywords of the deck.
+  HistoryFile glstat_txt_, matsum_txt_, nodout_txt_, rwforc_txt_, rcforc_txt_, sleout_txt_,
+      secforc_txt_;
+  std::optional<SectionForces> sections_;                   // when the deck has cross sections
   std::vector<std::pair<int32_t, int32_t>> history_local_;  // (deck order, local node), owned
   std::size_t history_count_ = 0;
   PvdWriter pvd_;

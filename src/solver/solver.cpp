@@ -407,6 +407,7 @@ Solver::ElementPass Solver::computeInternalForces() {
   gather(sd_.internal, sd_.f, 3);
   if (sd_.rotations) gather(sd_.rotational, sd_.moment, 3);
   gather(sd_.pressure, sd_.f_ext, 3);
+  forces_computed_ = true;
   return pass;
 }
 

@@ -77,6 +77,11 @@ class Solver {
   Energies energies() const;
   std::vector<PartSums> partSums() const;
   double addedMass() const { return added_mass_; }
+  // Global index of the element controlling the next step (-1: none).
+  int64_t stepElement() const { return dt_elem_; }
+  // True once a cycle has computed element forces into the slots (before, they hold the
+  // corner masses of the initialisation): what section forces read.
+  bool forcesComputed() const { return forces_computed_; }
   double totalMass() const { return total_mass_; }
   double initialDt() const { return dt_initial_; }
   // "shell element 12 (part 3)": the element controlling the initial step.
@@ -201,6 +206,7 @@ class Solver {
   int64_t dt_initial_elem_ = -1;
   std::string dt_initial_label_;
   int64_t dt_elem_ = -1;  // global index of the element controlling the step
+  bool forces_computed_ = false;
   double total_mass_ = 0.0, added_mass_ = 0.0;
   int64_t eroded_ = 0;
 
