@@ -82,6 +82,8 @@ def read_folder(folder):
         "rwforc.csv": lambda p: _series(p, ["wall"], mapping.CRUMPLE_RWFORC,
                                         lambda i, q: f"rwforc.wall{i[0]}.{q}"),
         "rcforc.csv": _rcforc,
+        "secforc.csv": lambda p: _series(p, ["section"], mapping.CRUMPLE_SECFORC,
+                                         lambda i, q: f"secforc.section{i[0]}.{q}"),
     }
     curves = {}
     for name, reader in readers.items():

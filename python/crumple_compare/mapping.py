@@ -15,9 +15,10 @@
 | sleout.total | sleout: summary 'total energy' | sum of rcforc.csv energy over the contacts |
 | rwforc.wallW.fn (fx, fy, fz) | rwforc: normal force (x, y, z force) of wall W | rwforc.csv: fn (fx, fy, fz), wall W |
 | nodout.nodeN.dx (dy, dz, vx .. az, x, y, z) | nodout: x-disp .. z-accl, x-coor .. z-coor | nodout.csv: the same names, node N |
+| secforc.sectionS.fx (fy, fz, mx, my, mz, cx, cy, cz, area) | secforc: x-force .. z-moment, x-center .. z-center, area of section S | secforc.csv: the same names, section S |
 
 Quantities with no counterpart on the other side (eroded energies, spring and damper energy,
-rotations, contact moments, every secforc curve) are read and listed as unmatched in the
+rotations, contact moments) are read and listed as unmatched in the
 report, never dropped silently."""
 
 import re
@@ -62,6 +63,7 @@ CRUMPLE_GLSTAT = ["kinetic", "internal", "hourglass", "contact", "external_work"
 CRUMPLE_MATSUM = ["kinetic", "internal", "hourglass", "x_momentum", "y_momentum", "z_momentum"]
 CRUMPLE_NODOUT = NODOUT_TRANSLATION
 CRUMPLE_RWFORC = ["fn", "fx", "fy", "fz"]
+CRUMPLE_SECFORC = ["fx", "fy", "fz", "mx", "my", "mz", "cx", "cy", "cz", "area"]
 CRUMPLE_RCFORC_SIDES = {1: "slave", 2: "master"}
 
 

@@ -161,6 +161,10 @@ class SectionPhysics(Case):
         # Mid-ramp (t = 1 ms, load/2): still the applied load, to the small dynamic error.
         mid = min(rows, key=lambda r: abs(r["time"] - 1.0))
         self.assertAlmostEqual(mid["fx"], 0.5 * load, delta=0.02 * load)
+        # `crumple plot RUN sections` draws the section's resultant force from secforc.csv.
+        p = self.run_ok("plot", out, "sections", "--out", os.path.join(self.tmp, "pictures"))
+        self.assertTrue(os.path.isfile(os.path.join(self.tmp, "pictures", "sections.png")),
+                        describe(p))
 
     def test_bounded_cuts(self):
         # Tail at (45, 0, 0): a circle of radius 4 takes the one element column whose centre
