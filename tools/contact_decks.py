@@ -338,13 +338,16 @@ upper half
 """
 
 
-def cask_drop(v: float = 5.0, end: float = 3.0e-4, n_theta: int = 24) -> str:
+def cask_drop(v: float = 5.0, end: float = 3.0e-4, n_theta: int = 24, refine: int = 1,
+              elform: int = 1) -> str:
     """A steel cask (a tube of outer radius 0.1 m, wall 0.02 m, height 0.3 m, in hexes) with a
     lid (a disk of hexes tied to the tube's bottom face), dropped lid first at v onto a fixed
-    rigid target, with two-surface symmetric penalty contact between cask and target."""
+    rigid target, with two-surface symmetric penalty contact between cask and target. `refine`
+    multiplies the divisions through the wall, along the height and across the lid; `elform`
+    is the solids' formulation (2, fully integrated: no hourglass modes to ring)."""
     m = Mesh()
     R, wall, H, t_lid = 0.1, 0.02, 0.3, 0.02
-    nr, nz = 2, 6
+    nr, nz = 2 * refine, 6 * refine
     ring = {}
     for k in range(nz + 1):
         for j in range(nr + 1):
@@ -359,16 +362,16 @@ def cask_drop(v: float = 5.0, end: float = 3.0e-4, n_theta: int = 24) -> str:
                 m.add_solid(1, [ring[i, j, k], ring[i, j + 1, k], ring[i1, j + 1, k], ring[i1, j, k],
                                 ring[i, j, k + 1], ring[i, j + 1, k + 1], ring[i1, j + 1, k + 1],
                                 ring[i1, j, k + 1]])
-    # The lid: a square grid mapped onto the disk of radius R, two layers.
-    n = 8
+    # The lid: a square grid mapped onto the disk of radius R, two layers (2 x refine).
+    n, layers = 8 * refine, 2 * refine
     disk = {}
-    for k in range(3):
+    for k in range(layers + 1):
         for j in range(n + 1):
             for i in range(n + 1):
                 x, y = 2.0 * i / n - 1.0, 2.0 * j / n - 1.0
                 disk[i, j, k] = m.add_node(R * x * math.sqrt(1 - y * y / 2),
-                                           R * y * math.sqrt(1 - x * x / 2), t_lid * k / 2)
-    grid_solids(m, 2, disk, (n, n, 2))
+                                           R * y * math.sqrt(1 - x * x / 2), t_lid * k / layers)
+    grid_solids(m, 2, disk, (n, n, layers))
     cask_nodes = list(range(1, len(m.nodes) + 1))
     block(m, 3, (-0.15, -0.15, -0.0405), (0.3, 0.3, 0.04), (6, 6, 1))
     return f"""*KEYWORD
@@ -390,7 +393,7 @@ lid
 target
          3         1         2
 *SECTION_SOLID
-         1         1
+         1{elform:10d}
 *MAT_ELASTIC
          1    7850.0   2.0e+11       0.3
 *MAT_RIGID

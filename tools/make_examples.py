@@ -4,6 +4,7 @@
   taylor_bar/taylor_bar.k   copper rod on a rigid wall (Kamoulakos 1990; reference/verification.md #2)
   bar_impact/bar_impact.k   elastic bar striking a stonewall (reference #1: sigma = rho c0 v0, 2L/c0)
   box_beam/box_beam.k       square steel tube crushed axially by a 60 kg mass (reference #5)
+  cask_drop/cask_drop.k     steel cask with a tied lid, 9 m drop onto a rigid target
 
   python3 tools/make_examples.py                          writes them all
   python3 tools/make_examples.py --box-beam-refined OUT.k the box beam at 2x the mesh in each
@@ -155,10 +156,23 @@ def box_beam(refined: bool = False, end: float = 25.0) -> str:
                         "(mm, ms, kg, GPa)", 1)
 
 
+def cask_drop(end: float = 4.0e-4) -> str:
+    """Units m, kg, s, Pa (SI, as the contact test decks). An elastic steel cask (outer radius
+    0.1 m, wall 0.02 m, 0.32 m tall with its lid, 31.6 kg) dropped lid first from 9 m (the
+    regulatory drop height for transport packages, IAEA SSR-6: v = sqrt(2 g h) = 13.29 m/s) onto
+    a fixed rigid target; lid tied to the body, symmetric two-surface penalty contact with the
+    target; fully integrated hexes (ELFORM 2), twice the test deck's divisions."""
+    v = math.sqrt(2 * 9.81 * 9.0)
+    text = contact_decks.cask_drop(v, end=end, n_theta=48, refine=2, elform=2)
+    return text.replace("cask with a tied lid dropped on a rigid target (symmetric two-surface contact)",
+                        "cask with a tied lid, 9 m drop (13.29 m/s) onto a rigid target "
+                        "(symmetric two-surface contact; m, kg, s, Pa)", 1)
+
+
 def example_decks() -> dict[str, str]:
     """Every committed example deck by its path under examples/."""
     return {"taylor_bar/taylor_bar.k": taylor_bar(), "bar_impact/bar_impact.k": bar_impact(),
-            "box_beam/box_beam.k": box_beam()}
+            "box_beam/box_beam.k": box_beam(), "cask_drop/cask_drop.k": cask_drop()}
 
 
 def main() -> None:
