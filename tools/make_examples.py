@@ -167,8 +167,8 @@ def cask_drop(end: float = 4.0e-4) -> str:
     target; fully integrated hexes (ELFORM 2), twice the test deck's divisions."""
     v = math.sqrt(2 * 9.81 * 9.0)
     text = contact_decks.cask_drop(v, end=end, n_theta=48, refine=2, elform=2)
-    return text.replace("cask with a tied lid dropped on a rigid target (symmetric two-surface contact)",
-                        "cask with a tied lid, 9 m drop (13.29 m/s) onto a rigid target "
+    title = "cask with a tied lid dropped on a rigid target (symmetric two-surface contact)"
+    return text.replace(title, "cask with a tied lid, 9 m drop (13.29 m/s) onto a rigid target "
                         "(symmetric two-surface contact; m, kg, s, Pa)", 1)
 
 
@@ -269,7 +269,8 @@ $      ihq        qh
 *PART
 penetrator (rigid steel)
          1         1         1
-""" + "".join(f"soil block {p - 1}\n{p:10d}         1         2\n" for p in parts) + f"""*SECTION_SOLID
+""" + "".join(f"soil block {p - 1}\n{p:10d}         1         2\n" for p in parts) + \
+        f"""*SECTION_SOLID
          1         1
 *MAT_RIGID
 $      mid        ro         e        pr

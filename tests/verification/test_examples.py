@@ -102,7 +102,8 @@ class ExampleVerification(TempDirTest):
         # S = 10.6 of the whole 25 ms run (706.7 mm; examples/earth_penetrator/README.md).
         S_WHOLE_RUN, v0, radius, crh = 10.6, 70.0, 0.025, 3.0
         out = self.run_example("earth_penetrator", "--endtime", "7")
-        mass = 4.0 * abs([r for r in rows(out, "matsum.csv") if r["part"] == 1][0]["z_momentum"]) / v0
+        rod = [r for r in rows(out, "matsum.csv") if r["part"] == 1]
+        mass = 4.0 * abs(rod[0]["z_momentum"]) / v0  # the whole rod, four quarters
         area = math.pi * radius ** 2
         nose = 0.18 * math.sqrt(crh - 0.25) + 0.56
         k = 1.8e-5 * nose * (mass / area) ** 0.7 * 0.27 * mass ** 0.4  # m per (m/s) per unit S
