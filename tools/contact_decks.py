@@ -158,13 +158,61 @@ plate
 """
 
 
+def fold_half_wavelength(side: float, thickness: float) -> float:
+    """H of the symmetric folding mode of a square tube (Wierzbicki & Abramowicz 1983, J. Appl.
+    Mech. 50:727-734): H = 0.983 t^(1/3) C^(2/3); one fold (lobe) is 2H of the tube's length."""
+    return 0.983 * thickness ** (1 / 3) * side ** (2 / 3)
+
+
+def _tube_wall_offset(s: int, f: float, z: float, side: float, thickness: float, size: float,
+                      trigger: float) -> float:
+    """Outward offset of a wall node (side s, fraction f across it, height z above the tube's
+    foot) from the perfect square. trigger = 0: a cosine dent of 1% of t over the two lowest
+    rows (the old test decks). trigger > 0: a bead of depth trigger x t over one half-wavelength
+    H at the foot, in the symmetric mode's pattern (two opposite walls in, two out, nothing at
+    the corners), so that the first fold forms there (the usual trigger of crash boxes)."""
+    if trigger <= 0.0:
+        return 0.01 * thickness * math.cos(math.pi * z / (2 * size)) if z < 2 * size else 0.0
+    H = fold_half_wavelength(side, thickness)
+    if z > H:
+        return 0.0
+    sign = -1.0 if s % 2 == 0 else 1.0
+    return sign * trigger * thickness * math.sin(math.pi * f) * math.sin(math.pi * z / H)
+
+
+def _tube_crusher(speed: float, impact_mass, side: float, moving: list[int]) -> tuple[str, str]:
+    """The crushing plate's material card and its motion: driven down at `speed` (a curve), or,
+    with impact_mass (kg), a free rigid mass that starts down at `speed` carrying the tube
+    (`moving`: the tube's and the plate's nodes) into the fixed plate, as a crash box on a sled
+    strikes a barrier; the tube's foot is then the struck end."""
+    if impact_mass is None:
+        return ("""*MAT_RIGID
+         3   7.85e-6     210.0       0.3
+       1.0         4         7
+""", f"""*BOUNDARY_PRESCRIBED_MOTION_RIGID
+         3         3         0         1      -1.0
+*DEFINE_CURVE
+         1
+                 0.0{speed:20.6g}
+              1000.0{speed:20.6g}
+""")
+    volume = (2 * 0.8 * side) ** 2 * 4.0
+    return (f"""*MAT_RIGID
+         3{impact_mass / volume:10.4g}     210.0       0.3
+       1.0         4         7
+""", "*INITIAL_VELOCITY_NODE\n" + _velocities(moving, (0, 0, -speed)))
+
+
 def tube_crush(side: float = 50.0, thickness: float = 1.5, length: float = 120.0,
                size: float = 2.5, speed: float = 10.0, end: float = 6.0,
-               nip: int = 3, single: str = "AUTOMATIC_SINGLE_SURFACE") -> str:
+               nip: int = 3, single: str = "AUTOMATIC_SINGLE_SURFACE", trigger: float = 0.0,
+               impact_mass=None) -> str:
     """A square steel tube (side C, wall t; mm, ms, kg, GPa) standing on a fixed rigid plate and
     crushed by a rigid plate moving down at `speed` (m/s = mm/ms), with single-surface contact
     on the tube and node-to-surface contact with both plates. Nearly perfectly plastic steel
-    (yield 0.3 GPa, tangent 0.5 GPa) so that the folding theories apply with sigma0 = yield."""
+    (yield 0.3 GPa, tangent 0.05 GPa) so that the folding theories apply with sigma0 = yield.
+    `trigger` and `impact_mass`: see _tube_wall_offset and _tube_crusher; with a mass, the
+    plates' momenta and the tube's top corner are written (matsum, nodout)."""
     m = Mesh()
     per_side = max(2, round(side / size))
     n_axial = max(2, round(length / size))
@@ -174,16 +222,15 @@ def tube_crush(side: float = 50.0, thickness: float = 1.5, length: float = 120.0
             f = k / per_side
             x0, y0 = [(0, 0), (side, 0), (side, side), (0, side)][s]
             x1, y1 = [(side, 0), (side, side), (0, side), (0, 0)][s]
-            around.append((x0 + f * (x1 - x0) - side / 2, y0 + f * (y1 - y0) - side / 2))
+            around.append((x0 + f * (x1 - x0) - side / 2, y0 + f * (y1 - y0) - side / 2, s, f))
     ring = len(around)
     ids = {}
     for k in range(n_axial + 1):
         for i in range(ring):
             z = length * k / n_axial
-            # A small imperfection (a cosine dent of 1% of t near the top) starts the first fold
-            # at the loaded end, as in tests and other codes' examples.
-            x, y = around[i]
-            dent = 0.01 * thickness * math.cos(math.pi * z / (2 * size)) if z < 2 * size else 0.0
+            x, y, s, f = around[i]
+            # Offset along the ray from the axis (normal to the wall away from the corners).
+            dent = _tube_wall_offset(s, f, z, side, thickness, size, trigger)
             r = math.hypot(x, y)
             ids[i, k] = m.add_node(x + dent * x / r, y + dent * y / r, z + 1.0)
     for k in range(n_axial):
@@ -196,6 +243,16 @@ def tube_crush(side: float = 50.0, thickness: float = 1.5, length: float = 120.0
     block(m, 2, (-half, -half, -4.0), (2 * half, 2 * half, 4.0), (8, 8, 1))
     block(m, 3, (-half, -half, length + 2.0), (2 * half, 2 * half, 4.0), (8, 8, 1))
     top_first = base + 9 * 9 * 2 + 1
+    plate_nodes = list(range(top_first, len(m.nodes) + 1))
+    moving = list(range(1, tube_nodes + 1)) + plate_nodes
+    crusher, motion = _tube_crusher(speed, impact_mass, side, moving)
+    histories = "" if impact_mass is None else f"""*DATABASE_MATSUM
+      0.02
+*DATABASE_NODOUT
+      0.02
+*DATABASE_HISTORY_NODE
+{ids[0, n_axial]:10d}{plate_nodes[0]:10d}
+"""
     return f"""*KEYWORD
 *TITLE
 square steel tube axial crush (single-surface contact)
@@ -210,7 +267,7 @@ $    wrpang     esort     irnxx    istupd    theory       bwc     miter      pro
       0.02
 *DATABASE_BINARY_D3PLOT
        0.5
-*PART
+{histories}*PART
 tube
          1         1         1
 base plate
@@ -227,16 +284,7 @@ crushing plate
 *MAT_RIGID
          2   7.85e-6     210.0       0.3
        1.0         7         7
-*MAT_RIGID
-         3   7.85e-6     210.0       0.3
-       1.0         4         7
-*BOUNDARY_PRESCRIBED_MOTION_RIGID
-         3         3         0         1      -1.0
-*DEFINE_CURVE
-         1
-                 0.0{speed:20.6g}
-              1000.0{speed:20.6g}
-*CONTACT_{single}_ID
+{crusher}{motion}*CONTACT_{single}_ID
          1
          1         0         3         0
 *CONTACT_AUTOMATIC_NODES_TO_SURFACE_ID
@@ -290,13 +338,16 @@ upper half
 """
 
 
-def cask_drop(v: float = 5.0, end: float = 3.0e-4, n_theta: int = 24) -> str:
+def cask_drop(v: float = 5.0, end: float = 3.0e-4, n_theta: int = 24, refine: int = 1,
+              elform: int = 1) -> str:
     """A steel cask (a tube of outer radius 0.1 m, wall 0.02 m, height 0.3 m, in hexes) with a
     lid (a disk of hexes tied to the tube's bottom face), dropped lid first at v onto a fixed
-    rigid target, with two-surface symmetric penalty contact between cask and target."""
+    rigid target, with two-surface symmetric penalty contact between cask and target. `refine`
+    multiplies the divisions through the wall, along the height and across the lid; `elform`
+    is the solids' formulation (2, fully integrated: no hourglass modes to ring)."""
     m = Mesh()
     R, wall, H, t_lid = 0.1, 0.02, 0.3, 0.02
-    nr, nz = 2, 6
+    nr, nz = 2 * refine, 6 * refine
     ring = {}
     for k in range(nz + 1):
         for j in range(nr + 1):
@@ -311,16 +362,16 @@ def cask_drop(v: float = 5.0, end: float = 3.0e-4, n_theta: int = 24) -> str:
                 m.add_solid(1, [ring[i, j, k], ring[i, j + 1, k], ring[i1, j + 1, k], ring[i1, j, k],
                                 ring[i, j, k + 1], ring[i, j + 1, k + 1], ring[i1, j + 1, k + 1],
                                 ring[i1, j, k + 1]])
-    # The lid: a square grid mapped onto the disk of radius R, two layers.
-    n = 8
+    # The lid: a square grid mapped onto the disk of radius R, two layers (2 x refine).
+    n, layers = 8 * refine, 2 * refine
     disk = {}
-    for k in range(3):
+    for k in range(layers + 1):
         for j in range(n + 1):
             for i in range(n + 1):
                 x, y = 2.0 * i / n - 1.0, 2.0 * j / n - 1.0
                 disk[i, j, k] = m.add_node(R * x * math.sqrt(1 - y * y / 2),
-                                           R * y * math.sqrt(1 - x * x / 2), t_lid * k / 2)
-    grid_solids(m, 2, disk, (n, n, 2))
+                                           R * y * math.sqrt(1 - x * x / 2), t_lid * k / layers)
+    grid_solids(m, 2, disk, (n, n, layers))
     cask_nodes = list(range(1, len(m.nodes) + 1))
     block(m, 3, (-0.15, -0.15, -0.0405), (0.3, 0.3, 0.04), (6, 6, 1))
     return f"""*KEYWORD
@@ -342,7 +393,7 @@ lid
 target
          3         1         2
 *SECTION_SOLID
-         1         1
+         1{elform:10d}
 *MAT_ELASTIC
          1    7850.0   2.0e+11       0.3
 *MAT_RIGID

@@ -160,3 +160,46 @@ def node_set(set_id: int, nodes: list[int], title: str = "") -> str:
     for i in range(0, len(nodes), 8):
         out.append("".join(f"{n:10d}" for n in nodes[i:i + 8]))
     return "\n".join(out) + "\n"
+
+
+def quarter_annulus(mesh: Mesh, part: int, radii: list[float], n_theta: int,
+                    z_levels: list[float]) -> dict:
+    """A quarter annular cylinder (x >= 0, y >= 0) of hexes: nodes at the given radii (inner
+    first; a pilot hole when radii[0] > 0), n_theta sectors over 90 degrees and the given z
+    levels (ascending). Returns the node ids keyed (i radius, j angle, k level)."""
+    grid = {}
+    for k, z in enumerate(z_levels):
+        for j in range(n_theta + 1):
+            a = 0.5 * math.pi * j / n_theta
+            for i, r in enumerate(radii):
+                grid[i, j, k] = mesh.add_node(r * math.cos(a), r * math.sin(a), z)
+    grid_solids(mesh, part, grid, (len(radii) - 1, n_theta, len(z_levels) - 1))
+    return grid
+
+
+def ogive_radius(u: float, radius: float, crh: float) -> float:
+    """Radius of a tangent ogive nose (caliber radius head crh: ogive radius crh x diameter) at
+    the distance u behind its tip; the nose is radius x sqrt(4 crh - 1) long."""
+    s = crh * 2.0 * radius
+    length = radius * math.sqrt(4.0 * crh - 1.0)
+    w = length - u  # distance ahead of the shoulder
+    return math.sqrt(max(s * s - w * w, 0.0)) - (s - radius) if w > 0.0 else radius
+
+
+def quarter_ogive_rod(mesh: Mesh, part: int, radius: float, shank: float, crh: float,
+                      tip_radius: float, n_core: int, n_ring: int, n_nose: int, n_shank: int,
+                      z_tip: float) -> None:
+    """A quarter rod (x >= 0, y >= 0) along +z from its tip at z_tip: a tangent-ogive nose
+    (blunted to tip_radius) then a cylindrical shank; the butterfly mesh of quarter_cylinder
+    with each section scaled to the nose's radius there."""
+    nose = radius * math.sqrt(4.0 * crh - 1.0)
+    first = len(mesh.nodes)
+    quarter_cylinder(mesh, part, radius, nose + shank, n_core, n_ring, n_nose + n_shank)
+    # quarter_cylinder spaces its sections evenly; respace them so the nose has n_nose of them.
+    dz = (nose + shank) / (n_nose + n_shank)
+    for i in range(first, len(mesh.nodes)):
+        x, y, z = mesh.nodes[i]
+        k = round(z / dz)
+        u = nose * k / n_nose if k <= n_nose else nose + shank * (k - n_nose) / n_shank
+        f = max(ogive_radius(u, radius, crh), tip_radius) / radius
+        mesh.nodes[i] = (f * x, f * y, z_tip + u)

@@ -9,6 +9,8 @@ prints 'N passed, N failed' and exits non-zero on any failure or error. Skipped 
 neither (they are listed with their reason).
 """
 
+import csv
+import importlib
 import json
 import os
 import subprocess
@@ -37,6 +39,28 @@ def describe(proc):
     """The exit status and both streams of a finished run, for assertion messages."""
     return (f"\n  command: {' '.join(proc.args)}\n  exit status: {proc.returncode}"
             f"\n  stdout: {proc.stdout.strip()[:2000]!r}\n  stderr: {proc.stderr.strip()[:2000]!r}")
+
+
+def tools_module(name):
+    """The module `name` of the source tree's tools/ (the deck generators)."""
+    sys.path.insert(0, os.path.join(SOURCE_DIR, "tools"))
+    return importlib.import_module(name)
+
+
+def history_rows(folder, name):
+    """A CSV history of a results folder (glstat.csv, matsum.csv, ...) as rows of floats. A row
+    repeating the time of an earlier one for the same part/node/contact/side (the final sample
+    when the end time is also an output time is written twice) is dropped, so that sums over
+    the rows of one time count each part once."""
+    with open(os.path.join(folder, name), encoding="utf-8") as f:
+        out, seen = [], set()
+        for r in csv.DictReader(f):
+            r = {k: float(v) for k, v in r.items()}
+            key = tuple(v for k, v in r.items() if k in ("time", "part", "node", "contact", "side"))
+            if key not in seen:
+                seen.add(key)
+                out.append(r)
+        return out
 
 
 def read_summary(folder):

@@ -18,7 +18,6 @@ decks from tools/contact_decks.py:
 Run as: python3 tests/verification/test_contact.py <crumple> <source dir>
 """
 
-import csv
 import math
 import os
 import sys
@@ -26,17 +25,11 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cli"))
 import clitest  # noqa: E402
 from clitest import TempDirTest, crumple, describe, main, read_summary  # noqa: E402
+from clitest import history_rows as rows  # noqa: E402
 
 
 def decks():
-    sys.path.insert(0, os.path.join(clitest.SOURCE_DIR, "tools"))
-    import contact_decks  # noqa: E402
-    return contact_decks
-
-
-def rows(folder, name):
-    with open(os.path.join(folder, name), encoding="utf-8") as f:
-        return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+    return clitest.tools_module("contact_decks")
 
 
 class ContactVerification(TempDirTest):
