@@ -70,9 +70,18 @@ def plot(run: pathlib.Path, f: dict, png: pathlib.Path) -> None:
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    from crumple_compare.signals import cfc_filter, uniform
     r = rows(run / "rwforc.csv")
+    t, fx = [float(x["time"]) for x in r], [float(x["fx"]) for x in r]
+    step = (t[-1] - t[0]) / (len(t) - 1)
+    grid, f60 = uniform(t, fx, step)
+    f60 = cfc_filter(f60, step * 1e-3, 60)
     fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(7, 6))
-    top.plot([float(x["time"]) for x in r], [float(x["fx"]) for x in r], lw=0.5)
+    top.plot(t, fx, lw=0.4, color="0.7", label="as sampled")
+    top.plot(grid, f60, label="CFC 60")
+    # The first contact of the bumper's face is a one-cycle spike of several MN: clipped.
+    top.set_ylim(min(0.0, f60.min()), 2.0 * f60.max())
+    top.legend()
     top.set_ylabel("wall force fx [kN]")
     bottom.plot(f["grid"], f["a60"] / G)
     bottom.set_ylabel("rear deceleration, CFC 60 [g]")
