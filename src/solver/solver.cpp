@@ -776,14 +776,16 @@ std::vector<PartSums> Solver::partSums() const {
 }
 
 void Solver::rigidPartSums(std::vector<double>& total, std::size_t fields) const {
-  // A rigid body's nodes need not carry its mass (*PART_INERTIA gives the body's own), so its
-  // kinetic energy (translation and rotation), momentum and mass are the body's, all on its
-  // master part; parts merged into it (*CONSTRAINED_RIGID_BODIES) report none of them.
+  // With *PART_INERTIA the body's mass is its own, not its nodes' (the element corner sums
+  // above), so its kinetic energy (translation and rotation), momentum and mass are the body's,
+  // all on its master part; parts merged into it (*CONSTRAINED_RIGID_BODIES) report none of
+  // them. Without it the corner sums are right, and the body's own sums would count the mass
+  // of its extra nodes (*CONSTRAINED_EXTRA_NODES) twice: with their elements' parts too.
   for (const auto& state : rigid_->states()) {
     if (state.kind != constraints::RigidBodyState::Kind::Part) continue;
     const auto def = std::find_if(model_.rigid.bodies.begin(), model_.rigid.bodies.end(),
                                   [&](const auto& d) { return !d.nodal && d.id == state.id; });
-    if (def == model_.rigid.bodies.end()) continue;
+    if (def == model_.rigid.bodies.end() || !def->inertia_given) continue;
     for (std::size_t k = 0; k < def->parts.size(); ++k) {
       double* p = &total[fields * static_cast<std::size_t>(def->parts[k])];
       const bool master = k == 0;
