@@ -64,7 +64,8 @@ void checkShellThickness(const Context& ctx, const Card& c, const Context::Eleme
   const Part& p = ctx.model.parts[static_cast<std::size_t>(e.part)];
   if (p.section == kNone || p.section_kind != SectionKind::Shell) return;
   const SectionShell& s = ctx.model.shell_sections[static_cast<std::size_t>(p.section)];
-  if (s.t[0] > 0) return;
+  // 2D solids (ELFORM 13, 15) have no thickness (src/elements/solid2d.hpp).
+  if (s.t[0] > 0 || s.elform == 13 || s.elform == 15) return;
   c.fail("EID", "shell " + std::to_string(e.id) + " has no thickness: section " +
                     std::to_string(s.id) + " gives T1 = 0 and the element none (" +
                     "*ELEMENT_SHELL_THICKNESS)");
@@ -195,7 +196,10 @@ void readSectionShell(Context& ctx, const deck::Keyword& kw, const KeywordOption
                  "2D solids (ELFORM 13, 15) have no thickness: masses and forces are per unit "
                  "depth (13) or per radian (15)",
                  c2.where());
-    if (c2.real("NLOC") != 0)
+    if (c2.real("NLOC") != 0 && planar)
+      ctx.ignore(kw.name, "NLOC", "a 2D solid (ELFORM 13, 15) has no reference surface",
+                 c2.where());
+    else if (c2.real("NLOC") != 0)
       ctx.reject(c2, "NLOC", "reference surfaces off the mid-surface are not supported");
     ctx.define(Kind::Section, s.id, c, "SECID");
     ctx.model.shell_sections.push_back(s);
