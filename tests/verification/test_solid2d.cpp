@@ -200,15 +200,14 @@ TEST(VerificationSolid2D, AxisymmetricStepIsStableOnTheAxisAtTssfacOne) {
   std::string vel = "*INITIAL_VELOCITY_NODE\n";
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i <= nx; ++i)
-      vel += fmt::format("{:10d}{:10.6g}{:10.6g}{:10.6g}\n", 1 + i + (nx + 1) * j,
-                         i == 0 ? 0.0 : 0.5 * std::sin(1.7 * i * j), 0.7 * std::cos(i + 2.3 * j),
-                         0.0);
+      vel +=
+          fmt::format("{:10d}{:10.6g}{:10.6g}{:10.6g}\n", 1 + i + (nx + 1) * j,
+                      i == 0 ? 0.0 : 0.5 * std::sin(1.7 * i * j), 0.7 * std::cos(i + 2.3 * j), 0.0);
   const std::string sets = quadNodeSet(1, nx, ny, [](int i, int) { return i == 0; }) +
                            "*BOUNDARY_SPC_SET\n         1         0         1         0\n" +
                            "*CONTROL_TIMESTEP\n       0.0       1.0\n";
-  auto sim = Simulation::fromText(
-      "axis_step2d",
-      quadDeck(nx, ny, 0.0, 4.0, 8.0, 15, true, kSteel + termination(0.2) + sets + vel));
+  auto sim = Simulation::fromText("axis_step2d", quadDeck(nx, ny, 0.0, 4.0, 8.0, 15, true,
+                                                          kSteel + termination(0.2) + sets + vel));
   const double e0 = sim->solver->energies().kinetic;
   double worst[2] = {0.0, 0.0};  // first and second half
   sim->run([&](const auto& s) {
@@ -219,9 +218,10 @@ TEST(VerificationSolid2D, AxisymmetricStepIsStableOnTheAxisAtTssfacOne) {
   EXPECT_GT(sim->solver->cycle(), 1000);
   EXPECT_LT(worst[0], 0.05);
   EXPECT_LE(worst[1], 1.1 * worst[0]);
-  std::printf("[ figure ] axis mesh at TSSFAC 1: %lld cycles, worst |E - E0| / E0 = %.2e in the "
-              "first half, %.2e in the second\n",
-              static_cast<long long>(sim->solver->cycle()), worst[0], worst[1]);
+  std::printf(
+      "[ figure ] axis mesh at TSSFAC 1: %lld cycles, worst |E - E0| / E0 = %.2e in the "
+      "first half, %.2e in the second\n",
+      static_cast<long long>(sim->solver->cycle()), worst[0], worst[1]);
 }
 
 // Lame's thick-walled cylinder in plane strain (a slice a <= r <= b with every node held in
