@@ -24,6 +24,9 @@
                       (N5-N8 blank), block b degenerate hexahedra (N4 repeated) under ELFORM 1
                       sorted to ELFORM 10 by *CONTROL_SOLID ESORT = 1, with an elastic-plastic
                       law so that a part's history variables travel with its tetrahedra.
+  axisym_rod.k        an axisymmetric (*SECTION_SHELL ELFORM 15) elastic-plastic rod with a
+                      conical tip stopped on its SPC'd end face, with a radial velocity
+                      component, the axis held in x: 2D solids across ranks.
 """
 
 from __future__ import annotations
@@ -443,6 +446,54 @@ block b (ELFORM 1, degenerate, sorted)
 """
 
 
+def axisym_rod(nx: int = 6, ny: int = 30, radius: float = 5.0, length: float = 50.0,
+               v: float = 200.0, end: float = 1.5e-2) -> str:
+    """mm, ms, kg, GPa. A steel rod, x the radius and y the axis, its lower face tapered
+    (a conical tip), moving at -v along y (with a small outward radial component) onto its end
+    nodes held in y; nodes on the axis held in x."""
+    def node_id(i: int, j: int) -> int:
+        return 1 + i + (nx + 1) * j
+    nodes, vel = [], []
+    for j in range(ny + 1):
+        for i in range(nx + 1):
+            x = radius * i / nx
+            y = length * j / ny + (0.1 * length / ny) * (i / nx) * (1 - j / ny)
+            nodes.append(f"{node_id(i, j):8d}{x:16.9g}{y:16.9g}{0.0:16.9g}")
+            vel.append(f"{node_id(i, j):10d}{0.05 * v * x / radius:10.5g}{-v:10.5g}{0.0:10.5g}")
+    elems = [f"{1 + i + nx * j:8d}{1:8d}{node_id(i, j):8d}{node_id(i + 1, j):8d}"
+             f"{node_id(i + 1, j + 1):8d}{node_id(i, j + 1):8d}"
+             for j in range(ny) for i in range(nx)]
+    bottom = [node_id(i, 0) for i in range(nx + 1)]
+    axis = [node_id(0, j) for j in range(ny + 1)]
+    spc = "".join(f"{n:10d}{0:10d}{0:10d}{1:10d}\n" for n in bottom)
+    spc += "".join(f"{n:10d}{0:10d}{1:10d}{0:10d}\n" for n in axis)
+    nl = "\n"
+    return f"""*KEYWORD
+*TITLE
+axisymmetric rod impact (*SECTION_SHELL ELFORM 15)
+*CONTROL_TERMINATION
+{end:10.4g}
+*DATABASE_GLSTAT
+   1.0e-03
+*PART
+rod
+         1         1         1
+*SECTION_SHELL
+         1        15
+       1.0       1.0       1.0       1.0
+*MAT_PLASTIC_KINEMATIC
+         1   7.85e-6     210.0       0.3      0.40       1.0       0.0
+*BOUNDARY_SPC_NODE
+{spc}*INITIAL_VELOCITY_NODE
+{nl.join(vel)}
+*NODE
+{nl.join(nodes)}
+*ELEMENT_SHELL
+{nl.join(elems)}
+*END
+"""
+
+
 def main() -> None:
     out = ROOT / "tests" / "data" / "decks"
     out.mkdir(parents=True, exist_ok=True)
@@ -458,9 +509,10 @@ def main() -> None:
     (out / "contact_tied.k").write_text(contact_decks.tied_bar(end=1.0e-4))
     (out / "contact_cask.k").write_text(contact_decks.cask_drop(end=2.0e-4))
     (out / "tet_blocks.k").write_text(tet_blocks())
+    (out / "axisym_rod.k").write_text(axisym_rod())
     print("wrote tests/data/decks/mixed_conditions.k, structures.k, structures_shell16.k, "
-          "rigid_welds.k, contact_blocks.k, contact_tube.k, contact_tied.k, contact_cask.k and "
-          "tet_blocks.k")
+          "rigid_welds.k, contact_blocks.k, contact_tube.k, contact_tied.k, contact_cask.k, "
+          "tet_blocks.k and axisym_rod.k")
 
 
 if __name__ == "__main__":

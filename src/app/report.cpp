@@ -21,6 +21,16 @@ std::map<int32_t, std::size_t> tetrahedraPerPart(const model::Model& m) {
   return out;
 }
 
+// A part of 2D solids (*SECTION_SHELL ELFORM 13, 15): what its shells are and what their
+// masses and forces are per; empty for other parts.
+std::string planarNote(const model::Model& m, const model::Part& part) {
+  if (part.section_kind != model::SectionKind::Shell || part.section == model::kNone) return "";
+  const int f = m.shell_sections[static_cast<std::size_t>(part.section)].elform;
+  if (f == 13) return ", 2D plane-strain solids (ELFORM 13, per unit depth)";
+  if (f == 15) return ", 2D axisymmetric solids (ELFORM 15, per radian)";
+  return "";
+}
+
 }  // namespace
 
 std::string modelSummary(const model::Model& m, const solver::Solver& s) {
@@ -43,12 +53,12 @@ std::string modelSummary(const model::Model& m, const solver::Solver& s) {
     const auto& part = m.parts[static_cast<std::size_t>(key.first)];
     const auto& mat = m.materials[static_cast<std::size_t>(part.material)];
     const auto t = key.second == int(model::Family::Solid) ? tets.find(key.first) : tets.end();
-    out +=
-        fmt::format("  part {}{}: {} {}, {} {} (density {:g}){}\n", part.id,
-                    part.title.empty() ? "" : " \"" + part.title + "\"", count,
-                    count == 1 ? kSingular[key.second] : kPlural[key.second],
-                    model::materialKeyword(mat.law), mat.id, mat.rho,
-                    t == tets.end() ? "" : fmt::format(", {} as ELFORM 10 tetrahedra", t->second));
+    out += fmt::format("  part {}{}: {} {}, {} {} (density {:g}){}\n", part.id,
+                       part.title.empty() ? "" : " \"" + part.title + "\"", count,
+                       count == 1 ? kSingular[key.second] : kPlural[key.second],
+                       model::materialKeyword(mat.law), mat.id, mat.rho,
+                       t == tets.end() ? planarNote(m, part)
+                                       : fmt::format(", {} as ELFORM 10 tetrahedra", t->second));
   }
   out += fmt::format("total mass: {:.6g}\n", s.totalMass());
   if (s.addedMass() > 0.0)

@@ -58,7 +58,8 @@ struct ShellBlock : BlockBase {
   materials::Law law;
   double rho0 = 0.0;
   int elform = 2;        // 2 Belytschko-Tsay (10 runs as 2 with bwc), 4 C0 triangle, 16 fully
-                         // integrated (src/elements/shell_full.cpp)
+                         // integrated (src/elements/shell_full.cpp); 13 plane strain and 15
+                         // volume-weighted axisymmetric 2D solids (src/elements/solid2d.cpp)
   int nip = 2;           // integration points through the thickness
   bool lobatto = false;  // QR/IRID: Gauss (default) or Lobatto
   double shear_factor = 5.0 / 6.0;
@@ -94,16 +95,24 @@ struct ShellBlock : BlockBase {
   //          their work); empty without hourglass control and for ELFORM 16
   //   drill: 4 fields, the corners' drilling moments (about the element normal) of the
   //          drilling-rotation constraint (src/elements/shell.cpp, "Drilling rotations")
+  // 2D solids (planar(): ELFORM 13, 15) keep one point with the full 3-D state in the global
+  // frame: sig and alpha 6 fields (Voigt xx, yy, zz, xy, yz, zx; zz is the out-of-plane or hoop
+  // component), eps_p 1; hgq fields 0, 1 the hourglass force (x, y) of the last pass and field
+  // 2 the bulk viscosity q of the last pass (both for their trapezoidal work); area0 the
+  // initial volume (per radian for ELFORM 15, per unit thickness for 13), thick 1.
   std::vector<double> sig, eps_p, alpha, hgq, drill;
   static std::size_t blocked(int fields, int field, std::size_t e) {
     return (e / kShellBatch) * std::size_t(fields) * kShellBatch +
            std::size_t(field) * kShellBatch + e % kShellBatch;
   }
   int inPlanePoints() const { return elform == 16 ? 4 : 1; }
-  int pointFields() const { return 3 * nip + 2; }
+  // A 2D solid in the x-y plane (*SECTION_SHELL ELFORM 13 plane strain, 15 axisymmetric).
+  bool planar() const { return elform == 13 || elform == 15; }
+  bool axisymmetric() const { return elform == 15; }
+  int pointFields() const { return planar() ? 6 : 3 * nip + 2; }
   int sigFields() const { return inPlanePoints() * pointFields(); }
   int epsFields() const { return inPlanePoints() * nip; }
-  int alphaFields() const { return inPlanePoints() * 3 * nip; }
+  int alphaFields() const { return planar() ? 6 : inPlanePoints() * 3 * nip; }
   double& sigAt(int k, int point, std::size_t e, int q = 0) {
     return sig[blocked(sigFields(), q * pointFields() + 3 * point + k, e)];
   }

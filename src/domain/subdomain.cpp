@@ -399,8 +399,9 @@ class SubdomainBuilder {
     // ELFORM 10 runs as 2 with the warping correction; the triangles of an ELFORM 16 part as
     // C0 triangles (sortTriangles).
     b.elform = sec.elform == 10 ? 2 : (triangles ? 4 : sec.elform);
-    b.nip = sec.nip;
-    b.lobatto = model.controls.shell_lobatto;
+    // 2D solids (ELFORM 13, 15) have one point and no thickness direction.
+    b.nip = b.planar() ? 1 : sec.nip;
+    b.lobatto = !b.planar() && model.controls.shell_lobatto;
     b.shear_factor = sec.shrf;
     const auto hg = hourglassOf(model, part);
     b.ihq = hg.ihq;

@@ -12,6 +12,7 @@
 #include "elements/discrete.hpp"
 #include "elements/hex8.hpp"
 #include "elements/shell.hpp"
+#include "elements/solid2d.hpp"
 #include "model/model.hpp"
 
 namespace crumple::elements {
@@ -43,6 +44,7 @@ template <>
 struct FamilyTraits<domain::ShellBlock> {
   static BlockStatus forces(domain::ShellBlock& b, const KernelInputs& in, std::size_t first,
                             std::size_t last) {
+    if (b.planar()) return computeSolid2DForces(b, in.x, in.v, in.dt, in.bv, in.slots, first, last);
     return b.elform == 16
                ? computeFullShellForces(b, in.x, in.v, in.w, in.dt, in.slots, first, last)
                : computeShellForces(b, in.x, in.v, in.w, in.dt, in.slots, first, last);

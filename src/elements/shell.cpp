@@ -541,7 +541,7 @@ void resizeShellBlock(domain::ShellBlock& blk, std::size_t n) {
   }
   // The last hourglass forces: the stiffness forms' state, the viscous forms' work (ELFORM 16
   // has no hourglass modes).
-  if (blk.inPlanePoints() == 1 && (blk.ihq >= 4 || blk.qm > 0.0)) {
+  if (blk.planar() || (blk.inPlanePoints() == 1 && (blk.ihq >= 4 || blk.qm > 0.0))) {
     blk.hgq.assign(padded * 5, 0.0);
   } else {
     blk.hgq.clear();
@@ -633,6 +633,14 @@ BlockStatus computeShellForces(domain::ShellBlock& block, const domain::NodeVect
 
 void shellSurfaceStress(const domain::ShellBlock& blk, const domain::NodeVector& x, std::size_t e,
                         double out[3][6], double eps_p_out[3]) {
+  // A 2D solid's one point holds the global 3-D stress (blocks.hpp): the same at every layer.
+  if (blk.planar()) {
+    for (int surface = 0; surface < 3; ++surface) {
+      for (int k = 0; k < 6; ++k) out[surface][k] = blk.sigAt(k, 0, e);
+      eps_p_out[surface] = blk.eps_p.empty() ? 0.0 : blk.epsAt(0, e);
+    }
+    return;
+  }
   // The element's frame at x (lane 0 of a batch holding it).
   NodalShell xb;
   for (int a = 0; a < 4; ++a)
@@ -691,6 +699,12 @@ void shellSurfaceStress(const domain::ShellBlock& blk, const domain::NodeVector&
 }
 
 void shellResultants(const domain::ShellBlock& blk, std::size_t e, double out[8]) {
+  // A 2D solid bends nowhere: its in-plane forces per unit depth, N = sigma x 1.
+  if (blk.planar()) {
+    const double r[8] = {0, 0, 0, 0, 0, blk.sigAt(0, 0, e), blk.sigAt(1, 0, e), blk.sigAt(3, 0, e)};
+    std::copy(r, r + 8, out);
+    return;
+  }
   // Point i sits at z = zeta_i t / 2 with weight w_i (sum 1): integral of f dz = t sum w_i f_i.
   const double t = blk.thick[e];
   const int nq = blk.inPlanePoints();

@@ -102,6 +102,11 @@ bool isRigid(const LawParams& p) {
       p);
 }
 
+int historyCountOf(const LawParams& p) {
+  return std::visit([](const auto& l) { return historyOf<UnitOf<std::decay_t<decltype(l)>>>(); },
+                    p);
+}
+
 bool usesEos(const LawParams& p) {
   return std::visit(
       [](const auto& l) {

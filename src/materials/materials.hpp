@@ -94,6 +94,8 @@ Cost costOf(const LawParams& p);
 // False for spring and damper laws, which have no density field.
 bool hasDensity(const LawParams& p);
 bool isRigid(const LawParams& p);
+// The number of history variables of the law's points (materials::historyOf of its unit).
+int historyCountOf(const LawParams& p);
 // Whether the law's solids take the part's equation of state (its unit declares kEos).
 bool usesEos(const LawParams& p);
 // Whether the law's shells and beams give mass only (its unit declares kMassOnlyStructures).

@@ -653,6 +653,7 @@ Model buildModel(const deck::Deck& deck, const std::filesystem::path& path,
   ctx.attempt([&] { finishRigid(ctx); });
   ctx.attempt([&] { finishConditions(ctx); });
   ctx.attempt([&] { finishControls(ctx); });
+  ctx.attempt([&] { finishPlanar(ctx); });
   inferUnits(ctx.model);
   ctx.attempt([&] { noteDegenerateSolids(ctx); });
   if (model.nodes.size() == 0)

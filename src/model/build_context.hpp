@@ -245,6 +245,10 @@ void readControlShell(Context&, const deck::Keyword&, const KeywordOptions&);
 void readControlSolid(Context&, const deck::Keyword&, const KeywordOptions&);
 // After every keyword: the degenerate solids that run as hexahedra, noted per part.
 void noteDegenerateSolids(Context&);
+// After every keyword (build_planar.cpp): the checks of 2D solids (*SECTION_SHELL ELFORM 13,
+// 15): their laws and hourglass types, a model of 2D solids only, radii x >= 0; their nodes'
+// z and rotational freedoms are held by SPCs.
+void finishPlanar(Context&);
 
 // build_materials.cpp: the reader of every law of materials/registry.hpp, by keyword name
 struct LawReader {

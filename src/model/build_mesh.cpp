@@ -348,6 +348,11 @@ void finishParts(Context& ctx) {
     const Part& p = parts[i];
     if (p.section == kNone || p.material == kNone) continue;
     const Material& m = ctx.model.materials[static_cast<std::size_t>(p.material)];
+    // 2D solids (*SECTION_SHELL ELFORM 13, 15) take the solid update: finishPlanar checks them.
+    if (p.section_kind == SectionKind::Shell &&
+        (ctx.model.shell_sections[static_cast<std::size_t>(p.section)].elform == 13 ||
+         ctx.model.shell_sections[static_cast<std::size_t>(p.section)].elform == 15))
+      continue;
     if (!materials::supports(m.law, lawFamily(p.section_kind)))
       ctx.fail(p.where.str() + ": *PART card 2 field 3 (MID): part " + std::to_string(p.id) +
                " has " + sectionName(p.section_kind) + " section but material " +

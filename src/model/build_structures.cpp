@@ -64,7 +64,8 @@ void checkShellThickness(const Context& ctx, const Card& c, const Context::Eleme
   const Part& p = ctx.model.parts[static_cast<std::size_t>(e.part)];
   if (p.section == kNone || p.section_kind != SectionKind::Shell) return;
   const SectionShell& s = ctx.model.shell_sections[static_cast<std::size_t>(p.section)];
-  if (s.t[0] > 0) return;
+  // 2D solids (ELFORM 13, 15) have no thickness (src/elements/solid2d.hpp).
+  if (s.t[0] > 0 || s.elform == 13 || s.elform == 15) return;
   c.fail("EID", "shell " + std::to_string(e.id) + " has no thickness: section " +
                     std::to_string(s.id) + " gives T1 = 0 and the element none (" +
                     "*ELEMENT_SHELL_THICKNESS)");
@@ -152,21 +153,25 @@ void readSectionShell(Context& ctx, const deck::Keyword& kw, const KeywordOption
     s.where = c.where();
     const auto elform = c.integer("ELFORM");
     // ELFORM (Keyword Manual, *SECTION_SHELL): 2 Belytschko-Tsay, 4 C0 triangle, 10
-    // Belytschko-Wong-Chiang (BT with the warping correction), 16 fully integrated. Others are
-    // refused on use.
-    if (elform != 2 && elform != 4 && elform != 10 && elform != 16) {
+    // Belytschko-Wong-Chiang (BT with the warping correction), 16 fully integrated; the 2D
+    // solids 13 (plane strain) and 15 (axisymmetric, volume weighted; src/elements/solid2d.hpp).
+    // Others (14, the area-weighted axisymmetric form, among them) are refused on use.
+    const bool planar = elform == 13 || elform == 15;
+    if (elform != 2 && elform != 4 && elform != 10 && elform != 16 && !planar) {
       ctx.define(Kind::Section, s.id, c, "SECID");
       ctx.defineUnsupported(Kind::Section, s.id, kw.name + " ELFORM=" + std::to_string(elform),
                             c.where());
-      ctx.reportUnsupported(
-          kw, "ELFORM " + std::to_string(elform) + " not supported (2, 4, 10 and 16 are)", false);
+      ctx.reportUnsupported(kw,
+                            "ELFORM " + std::to_string(elform) +
+                                " not supported (2, 4, 10, 16 and the 2D solids 13 and 15 are)",
+                            false);
       ctx.collect(cur);
       continue;
     }
     s.elform = static_cast<int>(elform);
     s.shrf = c.real("SHRF");
     if (!(s.shrf > 0)) c.fail("SHRF", "the shear factor must be positive");
-    const int64_t nip = c.integer("NIP");
+    const int64_t nip = planar ? 1 : c.integer("NIP");
     if (nip < 1 || nip > 10) c.fail("NIP", "must be 1 to 10 through-thickness points");
     s.nip = static_cast<int>(nip);
     c.real("PROPT");  // printout only
@@ -184,7 +189,17 @@ void readSectionShell(Context& ctx, const deck::Keyword& kw, const KeywordOption
     if (!(s.t[0] >= 0)) c2.fail("T1", "the shell thickness must not be negative");
     for (auto& t : s.t)
       if (t <= 0) t = s.t[0];
-    if (c2.real("NLOC") != 0)
+    // A 2D solid has no thickness: plane strain is per unit depth, the axisymmetric element per
+    // radian (src/elements/solid2d.hpp).
+    if (planar && s.t[0] != 0.0 && s.t[0] != 1.0)
+      ctx.ignore(kw.name, "T1",
+                 "2D solids (ELFORM 13, 15) have no thickness: masses and forces are per unit "
+                 "depth (13) or per radian (15)",
+                 c2.where());
+    if (c2.real("NLOC") != 0 && planar)
+      ctx.ignore(kw.name, "NLOC", "a 2D solid (ELFORM 13, 15) has no reference surface",
+                 c2.where());
+    else if (c2.real("NLOC") != 0)
       ctx.reject(c2, "NLOC", "reference surfaces off the mid-surface are not supported");
     ctx.define(Kind::Section, s.id, c, "SECID");
     ctx.model.shell_sections.push_back(s);

@@ -12,6 +12,7 @@
 #include "elements/beam.hpp"
 #include "elements/discrete.hpp"
 #include "elements/shell.hpp"
+#include "elements/solid2d.hpp"
 #include "util/error.hpp"
 #include "util/timer.hpp"
 
@@ -183,7 +184,10 @@ Solver::InitialSteps Solver::initializeElements() {
   for (std::size_t ib = 0; ib < sd_.shell_blocks.size(); ++ib) {
     auto& blk = sd_.shell_blocks[ib];
     elements::resizeShellBlock(blk, blk.size());
-    const auto st = elements::initializeShells(blk, sd_.x0, sd_.slots.data(), steps.shell[ib]);
+    const auto st =
+        blk.planar()
+            ? elements::initializeSolid2D(blk, sd_.x0, sd_.slots.data(), steps.shell[ib], bv_)
+            : elements::initializeShells(blk, sd_.x0, sd_.slots.data(), steps.shell[ib]);
     if (blk.rigid) std::fill(steps.shell[ib].begin(), steps.shell[ib].end(), 0.0);
     noteBad(model::Family::Shell, st.bad_elem);
     if (!blk.rigid && st.dt_elem >= 0)
