@@ -159,9 +159,14 @@ def parts(curves, system, args):
     return [("parts", fig)]
 
 
+def contact_ids(curves):
+    """The contact interfaces of rcforc keys 'rcforc.contact<id>.slave.fx', ascending."""
+    return sorted({int(k.split(".")[1][7:]) for k in curves
+                   if k.startswith("rcforc.contact") and k.endswith(".slave.fx")})
+
+
 def contact(curves, system, args):
-    ids = sorted({int(k.split(".")[1][7:]) for k in curves
-                  if k.startswith("rcforc.contact") and k.endswith(".slave.fx")})
+    ids = contact_ids(curves)
     if not ids:
         return []
     fig, (ax,) = _figure()

@@ -243,9 +243,7 @@ def _forces(curves, system):
     for key, c in sorted(curves.items()):
         if key.startswith("rwforc.wall") and key.endswith(".fn"):
             rows.append((f"wall {key.split('.')[1][4:]} (normal)", *_peak(c.t, c.y)))
-    contact_ids = sorted({k.split(".")[1][7:] for k in curves
-                          if k.startswith("rcforc.contact") and k.endswith(".slave.fx")})
-    for cid in contact_ids:
+    for cid in plot.contact_ids(curves):
         t, f = plot._resultant(curves, "rcforc.contact", f"{cid}.slave", ("fx", "fy", "fz"))
         rows.append((f"contact {cid} (resultant on SURFA)", *_peak(t, f)))
     rows.sort(key=lambda r: -abs(r[3]))

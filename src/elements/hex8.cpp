@@ -492,10 +492,7 @@ BlockStatus initializeSolids(domain::SolidBlock& blk, const domain::NodeVector& 
       double dte = solidTimeStep(vol[l] / area[l], c, 0.0, bv);
       if (!blk.dt_scale.empty()) dte *= blk.dt_scale[e];
       element_dt[e] = dte;
-      if (dte < st.dt_min) {
-        st.dt_min = dte;
-        st.dt_elem = blk.elem[e];
-      }
+      st.observeStep(dte, blk.elem[e]);
     }
   }
   return st;

@@ -35,6 +35,14 @@ struct BlockStatus {
   int32_t dt_elem = -1;   // model index of the controlling element
   int32_t bad_elem = -1;  // model index of an element with volume <= 0
   int32_t eroded = 0;     // elements eroded in this pass
+
+  // An element's stable step: kept with the element when it is the smallest so far.
+  void observeStep(double dte, int32_t elem) {
+    if (dte < dt_min) {
+      dt_min = dte;
+      dt_elem = elem;
+    }
+  }
 };
 
 // One cycle for a block of one-point solids, hexahedra (ELFORM 1) or tetrahedra (ELFORM 10,

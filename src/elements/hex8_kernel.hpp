@@ -192,10 +192,7 @@ inline void finishElement(domain::SolidBlock& blk, std::size_t e, int l, const N
   }
   for (int a = 0; a < 8; ++a)
     for (int i = 0; i < 3; ++i) slot[3 * a + i] = f[i][a][l];
-  if (dte < st.dt_min) {
-    st.dt_min = dte;
-    st.dt_elem = blk.elem[e];
-  }
+  st.observeStep(dte, blk.elem[e]);
 }
 
 // Per-batch results merged in batch order: the result does not depend on the thread count.

@@ -607,10 +607,7 @@ BlockStatus initializeShells(domain::ShellBlock& blk, const domain::NodeVector& 
     }
     const double dte = shellTimeStep(area, std::sqrt(m2), triangle, mc.wave_speed);
     element_dt[e] = dte;
-    if (dte < st.dt_min) {
-      st.dt_min = dte;
-      st.dt_elem = blk.elem[e];
-    }
+    st.observeStep(dte, blk.elem[e]);
   }
   return st;
 }

@@ -368,10 +368,7 @@ inline void writeSlots(const ShellParams& p, domain::ShellBlock& blk, const Shel
         slot[3 * a + c] = s.fg[c][a][l];
         slot[12 + 3 * a + c] = s.mg[c][a][l];
       }
-    if (o.dte[l] < st.dt_min) {
-      st.dt_min = o.dte[l];
-      st.dt_elem = blk.elem[e];
-    }
+    st.observeStep(o.dte[l], blk.elem[e]);
   }
 }
 // The stored drilling moments of the batch, copied to the stack (no aliasing with the stores:

@@ -250,10 +250,7 @@ void storeBatch(domain::ShellBlock& blk, const BulkViscosity& bv, const Batch2D&
     std::fill(slot, slot + 24, 0.0);
     for (int a = 0; a < 4; ++a)
       for (int i = 0; i < 2; ++i) slot[3 * a + i] = s.f[i][a][l];
-    if (dte < st.dt_min) {
-      st.dt_min = dte;
-      st.dt_elem = blk.elem[e];
-    }
+    st.observeStep(dte, blk.elem[e]);
   }
 }
 
@@ -355,10 +352,7 @@ BlockStatus initializeSolid2D(domain::ShellBlock& blk, const domain::NodeVector&
     }
     const double dte = solidTimeStep(area / diag, c, 0.0, bv);
     element_dt[e] = dte;
-    if (dte < st.dt_min) {
-      st.dt_min = dte;
-      st.dt_elem = blk.elem[e];
-    }
+    st.observeStep(dte, blk.elem[e]);
   }
   return st;
 }
