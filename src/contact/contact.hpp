@@ -128,6 +128,8 @@ class Contact {
   bool sortIfDue();
   void sortAll();  // the buckets of every pass, and x_sorted_
   void buildCandidateLists();
+  // The check partition's first cut, weighed by each check's candidates (collective).
+  void cutByCandidates();
   // Owned nodes' current positions into x_owned_prev_ (sent with the next full gather).
   void recordOwnedPositions();
   // Moves a contact node before the first cycle (initial penetration, tie), on every rank.

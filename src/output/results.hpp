@@ -4,6 +4,7 @@
 
 #include <array>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <utility>
@@ -52,6 +53,7 @@ class ResultsWriter {
   // forces a final sample of everything (end of run or error).
   void write(const solver::Solver& s, bool last = false);
   void writeSummary(const solver::Solver& s, const RunInfo& info) const;
+  nlohmann::json timingByRank(const solver::Solver& s) const;
   // SHA-256 of x then v of every node in ascending global id (collective; valid on rank 0).
   std::string stateDigestGlobal(const solver::Solver& s) const;
   double seconds() const { return seconds_; }
