@@ -65,6 +65,41 @@ partition::CycleCosts timeSerialCycle(const model::Model& m, int& cycles) {
   return c;
 }
 
+// The serial cycle averaged over a whole run made before (its summary.json): the contact of a
+// crash grows as it folds, and a sample of the first cycles sees little of it
+// (docs/parallel.md, "How many ranks"). One rank of one thread, so every second is work.
+partition::CycleCosts runCycleCosts(const std::string& dir, int& cycles) {
+  const std::filesystem::path path = std::filesystem::path(dir) / "summary.json";
+  std::ifstream f(path);
+  if (!f) throw std::runtime_error("--from-run: cannot read " + path.string());
+  nlohmann::json s;
+  try {
+    s = nlohmann::json::parse(f);
+    const int ranks = s.at("ranks").get<int>(), threads = s.at("threads").get<int>();
+    if (ranks != 1 || threads != 1)
+      throw std::runtime_error(fmt::format(
+          "--from-run: {} is a run on {} rank(s) of {} thread(s); the serial cycle needs a run "
+          "on 1 rank of 1 thread (crumple run DECK --threads 1)",
+          path.string(), ranks, threads));
+    const auto n = s.at("cycles").get<double>();
+    if (!(n > 0)) throw std::runtime_error("--from-run: " + path.string() + " ran no cycles");
+    const auto& t = s.at("timing");
+    partition::CycleCosts c;
+    c.elements_s = t.at("elements").get<double>() / n;
+    const double contact = t.at("contact").get<double>() / n;
+    const double search = s.contains("contact") ? s["contact"].at("search_s").get<double>() / n : 0;
+    c.contact_split_s = std::min(contact, search);
+    c.contact_replicated_s = contact - c.contact_split_s;
+    const double loop =
+        s.at("wall_s").get<double>() - s.at("setup_s").get<double>() - t.at("output").get<double>();
+    c.nodes_s = std::max(0.0, loop / n - c.elements_s - contact);
+    cycles = int(n);
+    return c;
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error("--from-run: " + path.string() + ": " + e.what());
+  }
+}
+
 std::vector<partition::Prediction> predictAll(const model::Model& m, const AdviseOptions& opt,
                                               const partition::CycleCosts& serial,
                                               const partition::Network& net) {
@@ -162,19 +197,24 @@ int adviseCommand(const AdviseOptions& opt, std::FILE* out) {
     if (link.measured) net = {link.latency_s, link.bandwidth_bytes_per_s, true};
     const model::Model m = model::readModel(opt.deck);
     int cycles = opt.sample_cycles;
-    const partition::CycleCosts serial = timeSerialCycle(m, cycles);
+    const partition::CycleCosts serial =
+        opt.from_run.empty() ? timeSerialCycle(m, cycles) : runCycleCosts(opt.from_run, cycles);
     const auto preds = predictAll(m, opt, serial, net);
     const int best = partition::recommend(preds);
     fmt::print(out,
                "deck: {}\n{} elements, {} nodes; serial cycle {:.1f} us on one thread "
-               "(elements {:.1f}, nodes {:.1f}, contact {:.1f}; {} cycles timed)\n",
+               "(elements {:.1f}, nodes {:.1f}, contact {:.1f}; {} cycles {})\n",
                m.deck_path, m.numElements(), m.nodes.size(), 1e6 * serial.total(),
                1e6 * serial.elements_s, 1e6 * serial.nodes_s,
-               1e6 * (serial.contact_split_s + serial.contact_replicated_s), cycles);
+               1e6 * (serial.contact_split_s + serial.contact_replicated_s), cycles,
+               opt.from_run.empty() ? "timed" : "of the run in " + opt.from_run);
     printAdvice(out, preds, best, net);
     const auto path = outputFolder(opt) / "advise.json";
     std::ofstream f(path);
-    f << adviceJson(preds, best, serial, net, cycles).dump(2) << "\n";
+    auto j = adviceJson(preds, best, serial, net, cycles);
+    j["serial_cycle"]["source"] = opt.from_run.empty() ? "sample" : "run";
+    if (!opt.from_run.empty()) j["serial_cycle"]["run"] = opt.from_run;
+    f << j.dump(2) << "\n";
     if (!f) throw std::runtime_error("cannot write " + path.string());
     fmt::print(out, "wrote {}\n", path.string());
     return 0;

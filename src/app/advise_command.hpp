@@ -15,6 +15,7 @@ struct AdviseOptions {
   std::string method = "metis";
   int max_ranks = 64;
   int sample_cycles = 100;  // serial cycles timed, after kWarmUpCycles
+  std::string from_run;     // a serial run's folder: its whole-run costs instead of a sample
 };
 
 // Every rank calls it (the ping-pong is collective); rank 0 reads the deck, times its serial

@@ -113,6 +113,14 @@ int dispatch(int argc, char** argv) {
   part_cmd->add_option("--sample-cycles", advise.sample_cycles, "Serial cycles timed (--advise)")
       ->check(CLI::Range(1, 100000))
       ->needs(advise_opt);
+  auto* from_run_opt =
+      part_cmd
+          ->add_option("--from-run", advise.from_run,
+                       "A run of this deck on 1 rank, 1 thread: take its whole-run costs per "
+                       "cycle instead of timing a sample (--advise)")
+          ->check(CLI::ExistingDirectory)
+          ->needs(advise_opt);
+  from_run_opt->excludes("--sample-cycles");
   parts_opt->excludes(advise_opt);
   part_cmd->callback([&] {
     if (!advise_flag && part_count == 0) throw CLI::RequiredError("-n,--parts (or --advise)");

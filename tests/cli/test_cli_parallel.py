@@ -97,6 +97,42 @@ class Advise(TempDirTest):
         self.assertGreater(j["network"]["bandwidth_bytes_per_s"], 1e7)
         self.assertEqual(p.stdout.count("advice:"), 1, describe(p))
 
+    def test_costs_from_a_serial_run(self):
+        # The whole run's seconds per cycle, split as the sample splits them: the prediction
+        # for one rank is the run's own cycle loop.
+        run = os.path.join(self.tmp, "serial")
+        deck = example("bar_impact", "bar_impact.k")
+        p = crumple("run", deck, "-q", "--threads", 1, "--cycles", 40, "-o", run)
+        self.assertEqual(p.returncode, 0, describe(p))
+        with open(os.path.join(run, "summary.json"), encoding="utf-8") as f:
+            s = json.load(f)
+        p, j = self.advise_from(run)
+        serial = j["serial_cycle"]
+        self.assertEqual(serial["source"], "run")
+        self.assertEqual(serial["cycles_timed"], s["cycles"])
+        self.assertAlmostEqual(serial["elements_s"], s["timing"]["elements"] / s["cycles"])
+        loop = s["wall_s"] - s["setup_s"] - s["timing"]["output"]
+        self.assertAlmostEqual(j["predictions"][0]["cycle_s"], loop / s["cycles"])
+        self.assertIn("of the run in", p.stdout)
+
+    def test_costs_from_a_threaded_run_are_refused(self):
+        run = os.path.join(self.tmp, "threaded")
+        p = crumple("run", example("bar_impact", "bar_impact.k"), "-q", "--threads", 2,
+                    "--cycles", 5, "-o", run)
+        self.assertEqual(p.returncode, 0, describe(p))
+        p = crumple("partition", example("bar_impact", "bar_impact.k"), "--advise",
+                    "--from-run", run, "-o", os.path.join(self.tmp, "a"))
+        self.assertEqual(p.returncode, 1, describe(p))
+        self.assertIn("needs a run on 1 rank of 1 thread", p.stderr)
+
+    def advise_from(self, run):
+        out = os.path.join(self.tmp, "advice_run")
+        p = crumple("partition", example("bar_impact", "bar_impact.k"), "--advise", "--max", 4,
+                    "--from-run", run, "-o", out)
+        self.assertEqual(p.returncode, 0, describe(p))
+        with open(os.path.join(out, "advise.json"), encoding="utf-8") as f:
+            return p, json.load(f)
+
     def test_usage(self):
         deck = example("bar_impact", "bar_impact.k")
         for args in ((), ("--max", 4), ("-n", 4, "--advise")):
