@@ -9,8 +9,8 @@ Two predictions per deck: from a timed sample of the first cycles (`--advise`), 
 measured serial run's whole-run costs (`--advise --from-run`), which leaves only the scaling
 model to check at 2 ranks. The measured time per cycle is the cycle loop's (wall time less
 set-up and output) over the cycles run. With --runs DIR the runs are kept in DIR/NAME.1 and
-DIR/NAME.2 and, when already there, used instead of running again. Time it on a quiet machine: another job on the two cores makes both sides slow in
-different ways. Needs mpirun for the 2-rank column and the measured network.
+DIR/NAME.2 and, when already there, used instead of running again. Time it on a quiet
+machine: another job on the two cores makes both sides slow in different ways. Needs mpirun for the 2-rank column and the measured network.
 """
 
 import argparse

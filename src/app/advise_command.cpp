@@ -144,7 +144,7 @@ void printAdvice(std::FILE* out, const std::vector<partition::Prediction>& preds
 
 nlohmann::json adviceJson(const std::vector<partition::Prediction>& preds, int best,
                           const partition::CycleCosts& serial, const partition::Network& net,
-                          int cycles) {
+                          int cycles, const std::string& from_run) {
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& p : preds)
     rows.push_back({{"ranks", p.ranks},
@@ -162,7 +162,9 @@ nlohmann::json adviceJson(const std::vector<partition::Prediction>& preds, int b
   return {{"recommended_ranks", best},
           {"min_efficiency", 0.8},
           {"serial_cycle",
-           {{"cycles_timed", cycles},
+           {{"source", from_run.empty() ? "sample" : "run"},
+            {"run", from_run.empty() ? nlohmann::json() : nlohmann::json(from_run)},
+            {"cycles_timed", cycles},
             {"elements_s", serial.elements_s},
             {"nodes_s", serial.nodes_s},
             {"contact_split_s", serial.contact_split_s},
@@ -211,10 +213,7 @@ int adviseCommand(const AdviseOptions& opt, std::FILE* out) {
     printAdvice(out, preds, best, net);
     const auto path = outputFolder(opt) / "advise.json";
     std::ofstream f(path);
-    auto j = adviceJson(preds, best, serial, net, cycles);
-    j["serial_cycle"]["source"] = opt.from_run.empty() ? "sample" : "run";
-    if (!opt.from_run.empty()) j["serial_cycle"]["run"] = opt.from_run;
-    f << j.dump(2) << "\n";
+    f << adviceJson(preds, best, serial, net, cycles, opt.from_run).dump(2) << "\n";
     if (!f) throw std::runtime_error("cannot write " + path.string());
     fmt::print(out, "wrote {}\n", path.string());
     return 0;

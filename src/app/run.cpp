@@ -63,8 +63,7 @@ std::string timingTable(const solver::Timing& t, double output_s, double setup_s
     return fmt::format("  {:<14} {:10.3f} s {:6.1f}%\n", name, v,
                        wall > 0 ? 100.0 * v / wall : 0.0);
   };
-  const double other = std::max(
-      0.0, wall - setup_s - t.elements - t.contact - t.constraints - t.communication - output_s);
+  const double other = t.rest(wall, setup_s, output_s);
   return "timing:\n" + row("set-up", setup_s) + row("elements", t.elements) +
          row("contact", t.contact) + row("constraints", t.constraints) +
          row("communication", t.communication) + row("output", output_s) + row("other", other) +

@@ -495,8 +495,10 @@ void Contact::cutByCandidates() {
   // drop at 2 ranks: 499 us of checks against 1 us per cycle), with no sort to re-cut it. A
   // check with nothing near weighs almost nothing. Who computes a check does not change
   // its result: same bits (docs/parallel.md, "Contact").
-  partition_.cutEvenly(check_node_, x_);
-  if (!comm_.distributed()) return;
+  if (!comm_.distributed()) {
+    partition_.cutEvenly(check_node_, x_);  // one rank: every check is its own
+    return;
+  }
   std::vector<int32_t> all(static_cast<std::size_t>(num_checks_));
   std::iota(all.begin(), all.end(), 0);
   search_.buildCandidateLists(passes_, all, check_pass_, tie_seg_, x_);

@@ -673,6 +673,7 @@ nlohmann::json ResultsWriter::timingByRank(const solver::Solver& s) const {
                                     t.communication};
   const std::vector<double> all = comm_.allGather(mine);
   nlohmann::json out = nlohmann::json::array();
+  if (!comm_.isRoot()) return out;
   for (std::size_t r = 0; r < all.size(); r += mine.size())
     out.push_back({{"elements", all[r]},
                    {"contact", all[r + 1]},
@@ -713,13 +714,10 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
   const double loop_s = info.wall_s - info.setup_s;
   j["element_cycles_per_s"] = loop_s > 0.0 ? element_cycles / loop_s : 0.0;
   j["setup_s"] = info.setup_s;
-  const double accounted = t.elements + t.contact + t.constraints + t.communication + seconds_;
-  j["timing"] = {{"elements", t.elements},
-                 {"contact", t.contact},
-                 {"constraints", t.constraints},
-                 {"communication", t.communication},
-                 {"output", seconds_},
-                 {"other", std::max(0.0, info.wall_s - info.setup_s - accounted)}};
+  j["timing"] = {
+      {"elements", t.elements},       {"contact", t.contact},
+      {"constraints", t.constraints}, {"communication", t.communication},
+      {"output", seconds_},           {"other", t.rest(info.wall_s, info.setup_s, seconds_)}};
   j["timing_by_rank"] = by_rank;
   j["counts"] = {{"nodes", sd.global_nodes},
                  {"solids", sd.global_solids},
