@@ -1,6 +1,7 @@
 #include "elements/hex8.hpp"
 
 #include "elements/hex8_kernel.hpp"
+#include "materials/erosion.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -163,6 +164,29 @@ inline void updateStress(const Law& law, const SolidParams& p, const domain::Sol
     sp.trace_d[l] = L[0][0][l] + L[1][1][l] + L[2][2][l];
   }
   detail::updateMaterial(law, w, dt);
+}
+
+// The block's erosion criteria (materials/erosion.hpp) at the batch's points after the law:
+// the stored total strain turned with the stress and advanced by de, and a point that meets
+// them flagged failed, so that finishElement deletes its element as it deletes one the law
+// failed.
+inline void erodeSolidPoints(domain::SolidBlock& blk, std::size_t first, BatchScratch& w,
+                             const SolidSpin& sp) {
+  double e[6][kBatch] = {};
+  if (!blk.strain.empty()) {
+    double* strain_batch = blk.strain.data() + first * 6;
+    for (int k = 0; k < 6; ++k)
+      for (int l = 0; l < kBatch; ++l) e[k][l] = strain_batch[k * kBatch + l];
+    for (int l = 0; l < kBatch; ++l)
+      rotateJaumann(e, l, sp.spin_xy[l], sp.spin_yz[l], sp.spin_zx[l]);
+    for (int k = 0; k < 6; ++k)
+      for (int l = 0; l < kBatch; ++l) strain_batch[k * kBatch + l] = e[k][l] += w.de[k][l];
+  }
+  for (int l = 0; l < kBatch; ++l) {
+    const materials::Voigt s{w.s[0][l], w.s[1][l], w.s[2][l], w.s[3][l], w.s[4][l], w.s[5][l]};
+    const materials::Voigt eps{e[0][l], e[1][l], e[2][l], e[3][l], e[4][l], e[5][l]};
+    if (materials::pointFails(blk.erosion, s, eps, blk.time)) w.failed[l] = 1;
+  }
 }
 
 // Geometry at x(n): volume, volume gradient, characteristic length, bulk viscosity.
@@ -376,6 +400,7 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
       midStepGradient<Shape>(p, w, r);
       SolidSpin sp;
       updateStress(law, p, blk, first, sig_batch, alpha_batch, w, r, sp);
+      if (blk.erosion.any()) erodeSolidPoints(blk, first, w, sp);
       SolidGeometry g;
       currentGeometry<Shape>(p, blk, first, bv, w, sp, g);
       LaneArray de_int, de_hg;
