@@ -189,6 +189,19 @@ inline void erodeSolidPoints(domain::SolidBlock& blk, std::size_t first, BatchSc
   }
 }
 
+// A failing element (the law's flag or the erosion criteria) is deleted at the end of this
+// pass and gives its nodes no force in it (finishElement): its stress and bulk viscosity are
+// zero in the pass, so that its internal energy books only the old half of the step's
+// trapezoid, the work its last applied force did (docs/theory.md, "Energy balance"), as the
+// shells' failed points do.
+inline void dropFailedStress(BatchScratch& w, SolidGeometry& g) {
+  for (int l = 0; l < kBatch; ++l) {
+    const double keep = w.failed[l] ? 0.0 : 1.0;
+    for (int k = 0; k < 6; ++k) w.s[k][l] *= keep;
+    g.q[l] *= keep;
+  }
+}
+
 // Geometry at x(n): volume, volume gradient, characteristic length, bulk viscosity.
 template <class Shape>
 inline void currentGeometry(const SolidParams& p, const domain::SolidBlock& blk, std::size_t first,
@@ -311,7 +324,9 @@ inline void hourglassForces(const SolidParams& p, domain::SolidBlock& blk, std::
       double* stored = hgq_batch + (3 * alpha + i) * kBatch;
       for (int l = 0; l < kBatch; ++l) {
         const double old = stored[l];
-        fq[l] = (stiffness_hg ? old : 0.0) + coef[l] * qdot[l];
+        // A failing element gives no force in its last pass (finishElement): its resistance
+        // ends, and only the old half of the trapezoid is work.
+        fq[l] = w.failed[l] ? 0.0 : (stiffness_hg ? old : 0.0) + coef[l] * qdot[l];
         mean_force[l] = 0.5 * (old + fq[l]);
         stored[l] = fq[l];
       }
@@ -403,6 +418,7 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
       if (blk.erosion.any()) erodeSolidPoints(blk, first, w, sp);
       SolidGeometry g;
       currentGeometry<Shape>(p, blk, first, bv, w, sp, g);
+      dropFailedStress(w, g);
       LaneArray de_int, de_hg;
       stressDivergence(p, blk, first, w, r, sp, g, de_int);
       for (int l = 0; l < kBatch; ++l) de_hg[l] = 0.0;
