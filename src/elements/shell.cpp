@@ -428,6 +428,7 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
           p.erosion ? blk.erosion_state.data() + first * std::size_t(blk.erosionFields()) : nullptr;
       pointStresses(law, p, s, sig_batch, ep_batch, alpha_batch, ln, r, work, failed_points,
                     ero_batch);
+      dropDeletedPoints(p, s, failed_points);
       ShellResultants q;
       resultantsOf(p, s, sig_batch, ln, r, work, q);
       ShellForcesOut o;

@@ -325,6 +325,20 @@ inline void pointStresses(const Law& law, const ShellParams& p, ShellScratch& s,
   }
 }
 
+// An element deleted at the end of this pass (writeSlots: NUMFIP of its points failed) gives
+// no force in it: the stresses of its remaining points are dropped too, so that its internal
+// energy books only the old half of the step's trapezoid, the work its last applied force did
+// (as a one-point solid's, hex8.cpp dropFailedStress). One in-plane point (ELFORM 2, 4).
+inline void dropDeletedPoints(const ShellParams& p, ShellScratch& s, const Lanes& failed_points) {
+  constexpr int B = kShellBatch;
+  if (!p.can_fail) return;
+  for (int ip = 0; ip < p.nip; ++ip)
+    for (int l = 0; l < B; ++l) {
+      const double keep = failed_points[l] >= static_cast<double>(p.fail_points) ? 0.0 : 1.0;
+      for (int k = 0; k < 3; ++k) s.s[k][ip * B + l] *= keep;
+    }
+}
+
 // Transverse shear (elastic), the step's internal energy (work holds the points' s_old half),
 // the thickness update and the resultants N, M, Q.
 inline void resultantsOf(const ShellParams& p, const ShellScratch& s, const double* sig_batch,
