@@ -24,6 +24,11 @@
                       (N5-N8 blank), block b degenerate hexahedra (N4 repeated) under ELFORM 1
                       sorted to ELFORM 10 by *CONTROL_SOLID ESORT = 1, with an elastic-plastic
                       law so that a part's history variables travel with its tetrahedra.
+  erosion.k           elements deleted during the run across ranks: a steel bar (hexes,
+                      *MAT_024 with *MAT_ADD_EROSION EFFEPS and MXPRES) and a strip of shells
+                      (*MAT_123 with EPSMAJ, NUMINT 1, and *MAT_ADD_EROSION SIGVM at NCS 1)
+                      each held at one end and pulled at the other, so that they fail
+                      element by element.
   axisym_rod.k        an axisymmetric (*SECTION_SHELL ELFORM 15) elastic-plastic rod with a
                       conical tip stopped on its SPC'd end face, with a radial velocity
                       component, the axis held in x: 2D solids across ranks.
@@ -446,6 +451,61 @@ block b (ELFORM 1, degenerate, sorted)
 """
 
 
+def erosion(nx: int = 16, n: int = 2, v: float = 20.0, end: float = 8e-5) -> str:
+    """SI units. A 40 x 5 x 5 mm bar of nx x n x n hexes and a 40 x 10 x 1 mm strip of nx x n
+    shells, both along x, held at x = 0, their nodes at x = 40 mm pulled along x at a speed
+    rising to v in 20 us."""
+    m = Mesh()
+    block(m, 1, (0, 0, 0), (0.04, 0.005, 0.005), (nx, n, n))
+    grid = {}
+    for j in range(n + 1):
+        for i in range(nx + 1):
+            grid[i, j] = m.add_node(0.04 * i / nx, 0.02 + 0.01 * j / n, 0.0)
+    for j in range(n):
+        for i in range(nx):
+            m.add_shell(2, [grid[i, j], grid[i + 1, j], grid[i + 1, j + 1], grid[i, j + 1]])
+    held = m.node_ids(lambda x, y, z: x <= 1e-9)
+    kicked = m.node_ids(lambda x, y, z: x >= 0.04 - 1e-9)
+    return f"""*KEYWORD
+*TITLE
+a bar and a strip kicked apart, eroding (*MAT_ADD_EROSION, *MAT_123)
+*CONTROL_TERMINATION
+{end:10.4g}
+*DATABASE_GLSTAT
+   1.0e-06
+*PART
+bar
+         1         1         1
+strip
+         2         2         2
+*SECTION_SOLID
+         1         1
+*SECTION_SHELL
+         2         2    0.8333         5
+     0.001     0.001     0.001     0.001
+*MAT_PIECEWISE_LINEAR_PLASTICITY
+         1    7850.0   2.0e+11       0.3   2.5e+08   1.0e+09
+*MAT_ADD_EROSION
+         1       0.0   5.0e+08       0.0      0.02
+*MAT_MODIFIED_PIECEWISE_LINEAR_PLASTICITY
+         2    7850.0   2.0e+11       0.3   2.5e+08   1.0e+09
+         0         0         0         0         0       0.0      0.02         1
+*MAT_ADD_EROSION
+         2       0.0
+       0.0       0.0   3.0e+08
+*DEFINE_CURVE
+         1
+       0.0       0.0
+   2.0e-05{v:10.4g}
+       1.0{v:10.4g}
+{node_set(1, held)}{node_set(2, kicked)}*BOUNDARY_SPC_SET
+         1         0         1         1         1         1         1         1
+*BOUNDARY_PRESCRIBED_MOTION_SET
+         2         1         0         1       1.0
+{m.keyword_text()}*END
+"""
+
+
 def axisym_rod(nx: int = 6, ny: int = 30, radius: float = 5.0, length: float = 50.0,
                v: float = 200.0, end: float = 1.5e-2) -> str:
     """mm, ms, kg, GPa. A steel rod, x the radius and y the axis, its lower face tapered
@@ -510,9 +570,10 @@ def main() -> None:
     (out / "contact_cask.k").write_text(contact_decks.cask_drop(end=2.0e-4))
     (out / "tet_blocks.k").write_text(tet_blocks())
     (out / "axisym_rod.k").write_text(axisym_rod())
+    (out / "erosion.k").write_text(erosion())
     print("wrote tests/data/decks/mixed_conditions.k, structures.k, structures_shell16.k, "
           "rigid_welds.k, contact_blocks.k, contact_tube.k, contact_tied.k, contact_cask.k, "
-          "tet_blocks.k and axisym_rod.k")
+          "tet_blocks.k, axisym_rod.k and erosion.k")
 
 
 if __name__ == "__main__":

@@ -150,6 +150,23 @@ std::vector<KeywordSpec> makeTables() {
        {titleCard(),
         {"card 1", {I("EOSID"), R("C"), R("S1"), R("S2"), R("S3"), R("GAMAO"), R("A"), R("E0")}},
         {"card 2", {R("V0", 1, Z)}}}});
+  // *MAT_ADD_EROSION: Keyword Manual vol. II. Cards 3-5 (damage, forming limit, nonlocal and
+  // temperature criteria) are read only to refuse what they set (model/build_erosion.cpp).
+  t.push_back({"*MAT_ADD_EROSION",
+               {titleCard(),
+                {"card 1",
+                 {I("MID"), R("EXCL"), R("MXPRES"), R("MNEPS"), R("EFFEPS"), R("VOLEPS"),
+                  R("NUMFIP", 1), R("NCS", 1)}},
+                {"card 2",
+                 {R("MNPRES"), R("SIGP1"), R("SIGVM"), R("MXEPS"), R("EPSSH"), R("SIGTH"),
+                  R("IMPULSE"), R("FAILTM")}},
+                {"card 3",
+                 {I("IDAM"), I("DMGTYP"), R("LCSDG"), R("ECRIT"), R("DMGEXP"), R("DCRIT"),
+                  R("FADEXP"), I("LCREGD")}},
+                {"card 4",
+                 {I("LCFLD"), I("NSFF", 10), R("EPSTHIN"), R("ENGCRT"), R("RADCRT"), I("LCEPS12"),
+                  I("LCEPS13"), I("LCEPSMX")}},
+                {"card 5", {R("DTEFLT"), R("VOLFRAC", 0.5), R("MXTMP"), R("DTMIN")}}}});
   // ---- controls -------------------------------------------------------------------------------
   t.push_back(
       {"*CONTROL_TERMINATION",

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "materials/erosion.hpp"
 #include "materials/materials.hpp"
 #include "model/model.hpp"
 
@@ -45,6 +46,10 @@ struct BlockBase {
   // like a failed one (*CONTROL_TIMESTEP ERODE = 1 with DTMIN, *MAT_024 TDEL); 0 = never. Set
   // by the solver once the initial step is known.
   double erode_dt = 0.0;
+  // Solids and shells: the erosion criteria of the part's material (materials/erosion.hpp;
+  // none for most parts) and the time of the pass, t(n), set by the solver (FAILTM).
+  materials::Erosion erosion;
+  double time = 0.0;
   std::size_t size() const { return elem.size(); }
 };
 
@@ -101,6 +106,12 @@ struct ShellBlock : BlockBase {
   // 2 the bulk viscosity q of the last pass (both for their trapezoidal work); area0 the
   // initial volume (per radian for ELFORM 15, per unit thickness for 13), thick 1.
   std::vector<double> sig, eps_p, alpha, hgq, drill;
+  //   erosion_state: with erosion criteria (BlockBase::erosion), kErosionFields per point
+  //          through the thickness and in-plane point: the total strain in the element frame
+  //          (xx, yy, xy tensor shear, zz) and 1 once the point has failed; else empty
+  static constexpr int kErosionFields = 5;
+  std::vector<double> erosion_state;
+  int erosionFields() const { return inPlanePoints() * kErosionFields * nip; }
   static std::size_t blocked(int fields, int field, std::size_t e) {
     return (e / kShellBatch) * std::size_t(fields) * kShellBatch +
            std::size_t(field) * kShellBatch + e % kShellBatch;

@@ -35,6 +35,7 @@ void SolidBlock::resize(std::size_t n, bool plastic, bool kinematic, bool hourgl
   const auto h = static_cast<std::size_t>(history_count);
   hist.assign(gauss_points ? 0 : h * padded, 0.0);
   hist_ip.assign(h * points, 0.0);
+  strain.assign(erosion.needsStrain() ? 6 * padded : 0, 0.0);
 }
 
 namespace {
@@ -376,6 +377,7 @@ class SubdomainBuilder {
     b.law = lawOf(model, part, true);
     b.rho0 = mat.rho;
     b.rigid = isRigid(model, part);
+    b.erosion = mat.erosion.forSolids();
     b.hourglass = hourglassOf(model, part);
     const bool plastic = materials::isPlastic(b.law);
     const bool kinematic = materials::isKinematic(b.law);
@@ -396,6 +398,7 @@ class SubdomainBuilder {
     b.law = lawOf(model, part, false);
     b.rho0 = mat.rho;
     b.rigid = massOnly(model, part);
+    b.erosion = mat.erosion;
     // ELFORM 10 runs as 2 with the warping correction; the triangles of an ELFORM 16 part as
     // C0 triangles (sortTriangles).
     b.elform = sec.elform == 10 ? 2 : (triangles ? 4 : sec.elform);

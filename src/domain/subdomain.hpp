@@ -85,6 +85,10 @@ struct SolidBlock : BlockBase {
   std::array<std::vector<double>, 6> sig_ip, alpha_ip;
   std::vector<double> eps_p_ip;
   std::vector<double> hist_ip;  // variable k of point q of element e at (q history + k) padded + e
+  // With strain criteria in BlockBase::erosion (one-point solids): the total strain (Voigt,
+  // tensor shear), the rate of deformation integrated and turned with the stress, stored batch
+  // by batch like sig; else empty.
+  std::vector<double> strain;
 
   // Elements plus padding: a whole number of batches.
   std::size_t paddedSize() const {

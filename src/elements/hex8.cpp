@@ -1,6 +1,7 @@
 #include "elements/hex8.hpp"
 
 #include "elements/hex8_kernel.hpp"
+#include "materials/erosion.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -165,6 +166,42 @@ inline void updateStress(const Law& law, const SolidParams& p, const domain::Sol
   detail::updateMaterial(law, w, dt);
 }
 
+// The block's erosion criteria (materials/erosion.hpp) at the batch's points after the law:
+// the stored total strain turned with the stress and advanced by de, and a point that meets
+// them flagged failed, so that finishElement deletes its element as it deletes one the law
+// failed.
+inline void erodeSolidPoints(domain::SolidBlock& blk, std::size_t first, BatchScratch& w,
+                             const SolidSpin& sp) {
+  double e[6][kBatch] = {};
+  if (!blk.strain.empty()) {
+    double* strain_batch = blk.strain.data() + first * 6;
+    for (int k = 0; k < 6; ++k)
+      for (int l = 0; l < kBatch; ++l) e[k][l] = strain_batch[k * kBatch + l];
+    for (int l = 0; l < kBatch; ++l)
+      rotateJaumann(e, l, sp.spin_xy[l], sp.spin_yz[l], sp.spin_zx[l]);
+    for (int k = 0; k < 6; ++k)
+      for (int l = 0; l < kBatch; ++l) strain_batch[k * kBatch + l] = e[k][l] += w.de[k][l];
+  }
+  for (int l = 0; l < kBatch; ++l) {
+    const materials::Voigt s{w.s[0][l], w.s[1][l], w.s[2][l], w.s[3][l], w.s[4][l], w.s[5][l]};
+    const materials::Voigt eps{e[0][l], e[1][l], e[2][l], e[3][l], e[4][l], e[5][l]};
+    if (materials::pointFails(blk.erosion, s, eps, blk.time)) w.failed[l] = 1;
+  }
+}
+
+// A failing element (the law's flag or the erosion criteria) is deleted at the end of this
+// pass and gives its nodes no force in it (finishElement): its stress and bulk viscosity are
+// zero in the pass, so that its internal energy books only the old half of the step's
+// trapezoid, the work its last applied force did (docs/theory.md, "Energy balance"), as the
+// shells' failed points do.
+inline void dropFailedStress(BatchScratch& w, SolidGeometry& g) {
+  for (int l = 0; l < kBatch; ++l) {
+    const double keep = w.failed[l] ? 0.0 : 1.0;
+    for (int k = 0; k < 6; ++k) w.s[k][l] *= keep;
+    g.q[l] *= keep;
+  }
+}
+
 // Geometry at x(n): volume, volume gradient, characteristic length, bulk viscosity.
 template <class Shape>
 inline void currentGeometry(const SolidParams& p, const domain::SolidBlock& blk, std::size_t first,
@@ -287,7 +324,9 @@ inline void hourglassForces(const SolidParams& p, domain::SolidBlock& blk, std::
       double* stored = hgq_batch + (3 * alpha + i) * kBatch;
       for (int l = 0; l < kBatch; ++l) {
         const double old = stored[l];
-        fq[l] = (stiffness_hg ? old : 0.0) + coef[l] * qdot[l];
+        // A failing element gives no force in its last pass (finishElement): its resistance
+        // ends, and only the old half of the trapezoid is work.
+        fq[l] = w.failed[l] ? 0.0 : (stiffness_hg ? old : 0.0) + coef[l] * qdot[l];
         mean_force[l] = 0.5 * (old + fq[l]);
         stored[l] = fq[l];
       }
@@ -376,8 +415,10 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
       midStepGradient<Shape>(p, w, r);
       SolidSpin sp;
       updateStress(law, p, blk, first, sig_batch, alpha_batch, w, r, sp);
+      if (blk.erosion.any()) erodeSolidPoints(blk, first, w, sp);
       SolidGeometry g;
       currentGeometry<Shape>(p, blk, first, bv, w, sp, g);
+      dropFailedStress(w, g);
       LaneArray de_int, de_hg;
       stressDivergence(p, blk, first, w, r, sp, g, de_int);
       for (int l = 0; l < kBatch; ++l) de_hg[l] = 0.0;

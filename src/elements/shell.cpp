@@ -424,7 +424,11 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
       ShellRates r;
       midStepRates(p, s, ln, r);
       Lanes work, failed_points;
-      pointStresses(law, p, s, sig_batch, ep_batch, alpha_batch, ln, r, work, failed_points);
+      double* ero_batch =
+          p.erosion ? blk.erosion_state.data() + first * std::size_t(blk.erosionFields()) : nullptr;
+      pointStresses(law, p, s, sig_batch, ep_batch, alpha_batch, ln, r, work, failed_points,
+                    ero_batch);
+      dropDeletedPoints(p, s, failed_points);
       ShellResultants q;
       resultantsOf(p, s, sig_batch, ln, r, work, q);
       ShellForcesOut o;
@@ -547,6 +551,10 @@ void resizeShellBlock(domain::ShellBlock& blk, std::size_t n) {
     blk.hgq.clear();
   }
   blk.drill.assign(padded * 4, 0.0);
+  blk.erosion_state.assign(blk.erosion.any() && !blk.planar()
+                               ? padded * static_cast<std::size_t>(blk.erosionFields())
+                               : 0,
+                           0.0);
 }
 
 double shellTimeStep(double area, double longest_side, bool triangle, double wave_speed) {

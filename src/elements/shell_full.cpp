@@ -287,7 +287,11 @@ inline void fullPointStresses(const Law& law, const ShellParams& p, domain::Shel
     double* ep_q = Law::kPlastic ? ep_batch + q * p.nip * B : nullptr;
     double* alpha_q = Law::kKinematic ? alpha_batch + q * 3 * p.nip * B : nullptr;
     Lanes failed_q;
-    pointStresses(law, p, s, sig_q, ep_q, alpha_q, ln, fb.r[q], fb.work, failed_q);
+    double* ero_q = p.erosion
+                        ? blk.erosion_state.data() + first * std::size_t(blk.erosionFields()) +
+                              std::size_t(q * domain::ShellBlock::kErosionFields * p.nip * B)
+                        : nullptr;
+    pointStresses(law, p, s, sig_q, ep_q, alpha_q, ln, fb.r[q], fb.work, failed_q, ero_q);
     resultantsOf(p, s, sig_q, ln, fb.r[q], fb.work, fb.q[q]);
     storePoints<Law>(p, s, alive, sig_q, ep_q, alpha_q, fb.q[q]);
     for (int l = 0; l < B; ++l) {

@@ -14,6 +14,7 @@
 #include "domain/subdomain.hpp"
 #include "elements/hex8.hpp"
 #include "elements/shell.hpp"
+#include "materials/erosion.hpp"
 #include "materials/plane_stress.hpp"
 
 namespace crumple::elements::shell_detail {
@@ -152,7 +153,11 @@ struct ShellParams {
   double hg_dt = 0, hg_visc = 0;
   double bwc = 0, drill_coef = 0;
   bool thickness_update = false, scaled_mass = false, can_fail = false;
-  int fail_points = 0;  // failed points that erode an element: all of them (nip x in-plane)
+  // Failed points that erode an element: all of them (nip x in-plane), or NUMFIP / NUMINT of
+  // the erosion criteria.
+  int fail_points = 0;
+  const materials::Erosion* erosion = nullptr;  // the block's criteria; null when it has none
+  double time = 0;
   double zeta[kMaxShellPoints] = {}, weight[kMaxShellPoints] = {};
 };
 
@@ -175,8 +180,13 @@ inline ShellParams shellParamsOf(const Law& law, const domain::ShellBlock& blk, 
   p.drill_coef = kDrillStiffness * p.mc.E * (1.0 / 12.0);
   p.thickness_update = blk.thickness_update;
   p.scaled_mass = !blk.mass_scale.empty();
-  p.can_fail = law.failureStrain() > 0.0;
+  p.can_fail = law.failureStrain() > 0.0 || blk.erosion.any();
   p.fail_points = p.nip * blk.inPlanePoints();
+  if (blk.erosion.any()) {
+    p.erosion = &blk.erosion;
+    p.time = blk.time;
+    if (blk.erosion.numfip > 0) p.fail_points = std::min(p.fail_points, blk.erosion.numfip);
+  }
   for (int i = 0; i < p.nip; ++i) {
     p.zeta[i] = blk.zeta[static_cast<std::size_t>(i)];
     p.weight[i] = blk.weight[static_cast<std::size_t>(i)];
@@ -226,14 +236,40 @@ inline void loadBatch(const domain::ShellBlock& blk, const domain::NodeVector& x
   for (int l = 0; l < B; ++l) ln.thick[l] = blk.thick[ln.first + static_cast<std::size_t>(l)];
 }
 
+// The erosion criteria at every point through the thickness after the law (ero_batch: the
+// points' records of ShellBlock::erosion_state): the total strain advanced by the step's
+// in-plane and thickness increments, and a point flagged failed, for good, once a criterion
+// holds or the law has failed it.
+inline void erodeShellPoints(const ShellParams& p, ShellScratch& s, double* ero_batch) {
+  constexpr int B = kShellBatch;
+  constexpr int F = domain::ShellBlock::kErosionFields;
+  for (int ip = 0; ip < p.nip; ++ip) {
+    double* rec = ero_batch + F * ip * B;
+    for (int l = 0; l < B; ++l) {
+      const int i = ip * B + l;
+      const double exx = rec[l] += s.de[0][i];
+      const double eyy = rec[B + l] += s.de[1][i];
+      const double exy = rec[2 * B + l] += s.de[2][i];
+      const double ezz = rec[3 * B + l] += s.dzz[i];
+      const bool failed =
+          rec[4 * B + l] != 0.0 || s.failed[i] != 0 ||
+          materials::pointFails(*p.erosion, {s.s[0][i], s.s[1][i], 0.0, s.s[2][i], 0.0, 0.0},
+                                {exx, eyy, ezz, exy, 0.0, 0.0}, p.time);
+      rec[4 * B + l] = failed ? 1.0 : 0.0;
+      s.failed[i] = failed ? 1 : 0;
+    }
+  }
+}
+
 // The plane-stress update at every point through the thickness. The stress work is the
 // midpoint rule, (s_old + s) / 2 : de summed over the points: its s_old half is taken here into
 // work, as the stresses are loaded. A failed point carries no stress; failed_points counts them.
+// ero_batch: the points' erosion records (null without erosion criteria).
 template <class Law>
 inline void pointStresses(const Law& law, const ShellParams& p, ShellScratch& s,
                           const double* sig_batch, const double* ep_batch,
                           const double* alpha_batch, const ShellLanes& ln, const ShellRates& r,
-                          Lanes& work, Lanes& failed_points) {
+                          Lanes& work, Lanes& failed_points, double* ero_batch = nullptr) {
   constexpr int B = kShellBatch;
   const int nip = p.nip, npts = p.npts;
   const double dt = p.dt;
@@ -274,8 +310,10 @@ inline void pointStresses(const Law& law, const ShellParams& p, ShellScratch& s,
     pts.de_zz = s.dzz;
     pts.eps_p = Law::kPlastic ? s.ep : nullptr;
     pts.failed = p.can_fail ? s.failed : nullptr;
+    if (p.can_fail) std::fill(s.failed, s.failed + npts, uint8_t{0});
     law.updatePlaneStress(pts);
   }
+  if (ero_batch != nullptr) erodeShellPoints(p, s, ero_batch);
   for (int l = 0; l < B; ++l) failed_points[l] = 0.0;
   if (p.can_fail) {
     for (int i = 0; i < npts; ++i) {
@@ -285,6 +323,20 @@ inline void pointStresses(const Law& law, const ShellParams& p, ShellScratch& s,
     for (int ip = 0; ip < nip; ++ip)
       for (int l = 0; l < B; ++l) failed_points[l] += s.failed[ip * B + l] != 0 ? 1.0 : 0.0;
   }
+}
+
+// An element deleted at the end of this pass (writeSlots: NUMFIP of its points failed) gives
+// no force in it: the stresses of its remaining points are dropped too, so that its internal
+// energy books only the old half of the step's trapezoid, the work its last applied force did
+// (as a one-point solid's, hex8.cpp dropFailedStress). One in-plane point (ELFORM 2, 4).
+inline void dropDeletedPoints(const ShellParams& p, ShellScratch& s, const Lanes& failed_points) {
+  constexpr int B = kShellBatch;
+  if (!p.can_fail) return;
+  for (int ip = 0; ip < p.nip; ++ip)
+    for (int l = 0; l < B; ++l) {
+      const double keep = failed_points[l] >= static_cast<double>(p.fail_points) ? 0.0 : 1.0;
+      for (int k = 0; k < 3; ++k) s.s[k][ip * B + l] *= keep;
+    }
 }
 
 // Transverse shear (elastic), the step's internal energy (work holds the points' s_old half),
@@ -351,7 +403,7 @@ inline void writeSlots(const ShellParams& p, domain::ShellBlock& blk, const Shel
     }
     if (!(o.area[l] > 0.0) && (st.bad_elem < 0 || blk.elem[e] < st.bad_elem))
       st.bad_elem = blk.elem[e];
-    const bool failed = p.can_fail && failed_points[l] == static_cast<double>(p.fail_points);
+    const bool failed = p.can_fail && failed_points[l] >= static_cast<double>(p.fail_points);
     if (failed || o.dte[l] < blk.erode_dt) {
       blk.active[e] = 0;
       if (failed) blk.failed[e] = 1;

@@ -43,6 +43,7 @@
 
 namespace crumple::deck {
 class Card;
+struct FieldSpec;
 struct KeywordSpec;
 }  // namespace crumple::deck
 

@@ -7,6 +7,7 @@
 #include "materials/laws/crushable_foam.hpp"
 #include "materials/laws/elastic.hpp"
 #include "materials/laws/johnson_cook.hpp"
+#include "materials/laws/modified_piecewise_linear.hpp"
 #include "materials/laws/null.hpp"
 #include "materials/laws/piecewise_linear.hpp"
 #include "materials/laws/plastic_kinematic.hpp"
@@ -25,6 +26,6 @@ struct LawList {};
 // append new laws at the end.
 using AllLaws = LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic,
                         DamperViscous, SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam,
-                        JohnsonCook, PowerLaw, StrainRatePlasticity>;
+                        JohnsonCook, PowerLaw, StrainRatePlasticity, ModifiedPiecewiseLinear>;
 
 }  // namespace crumple::materials

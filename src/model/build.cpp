@@ -318,6 +318,7 @@ const std::vector<Meaning>& meanings() {
       {"*EOS_GRUNEISEN", 1, readEosGruneisen, {"TITLE"}, U::Definition, Kind::Eos},
       {"*EOS_004", 1, readEosGruneisen, {"TITLE"}, U::Definition, Kind::Eos},
       {"*PART", 2, readParts, {"INERTIA", "CONTACT"}, U::Reject},
+      {"*MAT_ADD_EROSION", 2, readAddErosion, {"TITLE"}, U::Reject},
       {"*ELEMENT_SOLID", 3, readSolids, {}, U::Reject},
       {"*ELEMENT_SHELL", 3, readShells, {"THICKNESS"}, U::Reject},
       {"*ELEMENT_BEAM", 3, readBeams, {}, U::Reject},

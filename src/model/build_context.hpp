@@ -263,6 +263,10 @@ void readEosGruneisen(Context&, const deck::Keyword&, const KeywordOptions&);
 // The equation of state a part names and its law (solids only): the law must take one exactly
 // when its unit declares kEos (InputError naming the part's EOSID or MID field otherwise).
 void checkPartEos(Context& ctx, const Part& p);
+// *MAT_ADD_EROSION (build_erosion.cpp), and the check that a part's elements can honour its
+// material's erosion criteria.
+void readAddErosion(Context&, const deck::Keyword&, const KeywordOptions&);
+void checkPartErosion(Context& ctx, std::size_t part);
 
 // build_contact.cpp
 void readContact(Context&, const deck::Keyword&, const KeywordOptions&);

@@ -79,7 +79,9 @@ void readLaw(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) 
   LawCards in(ctx, kw, cur, spec);
   Material m = readMaterialBase(ctx, in.card("card 1"), std::move(title), U::kDensity);
   in.setMaterialId(m.id);
-  m.law = U::read(in);
+  const auto params = U::read(in);
+  if constexpr (requires { U::addErosion(params, m.erosion); }) U::addErosion(params, m.erosion);
+  m.law = params;
   ctx.model.materials.push_back(std::move(m));
   ctx.collect(cur);
 }

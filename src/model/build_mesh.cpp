@@ -348,6 +348,7 @@ void finishParts(Context& ctx) {
     const Part& p = parts[i];
     if (p.section == kNone || p.material == kNone) continue;
     const Material& m = ctx.model.materials[static_cast<std::size_t>(p.material)];
+    checkPartErosion(ctx, i);
     // 2D solids (*SECTION_SHELL ELFORM 13, 15) take the solid update: finishPlanar checks them.
     if (p.section_kind == SectionKind::Shell &&
         (ctx.model.shell_sections[static_cast<std::size_t>(p.section)].elform == 13 ||

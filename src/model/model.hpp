@@ -15,6 +15,7 @@
 #include <variant>
 #include <vector>
 
+#include "materials/erosion.hpp"
 #include "materials/materials.hpp"
 #include "model/contact.hpp"
 #include "model/rigid.hpp"
@@ -68,6 +69,8 @@ struct Material {
   double rho = 0;
   MaterialLaw law;
   util::SourceLoc where;
+  // Erosion criteria: the law's own (*MAT_123 EPSTHIN, EPSMAJ, NUMINT) and *MAT_ADD_EROSION's.
+  materials::Erosion erosion;
 };
 
 // *EOS_LINEAR_POLYNOMIAL, *EOS_GRUNEISEN: the pressure of the solids of the parts that name it

@@ -118,12 +118,13 @@ void fields(A& a, M& m) {
   a.count(
       m.materials.size(),
       [&](auto& mat) {
-        util::fieldCount<5>(mat);
+        util::fieldCount<6>(mat);
         a(mat.id);
         a(mat.title);
         a(mat.rho);
         a.variant(mat.law);
         loc(a, mat.where);
+        a(mat.erosion);
       },
       m.materials);
   a.count(

@@ -434,6 +434,7 @@ void Solver::computeElementGroup(Group group, ElementPass& pass) {
     using Block = std::decay_t<decltype(blk)>;
     const auto [first, last] = range(blk);
     if (first >= last || blk.rigid) return;
+    blk.time = time_;  // the erosion criterion FAILTM
     merge(elements::TraitsOf<Block>::forces(blk, in, first, last), Block::kFamily);
     // A spring's step depends on its (tangent) stiffness and its nodes' masses.
     if constexpr (Block::kFamily == model::Family::Discrete)

@@ -46,6 +46,8 @@ void visitSolid(B& b, std::size_t e, F&& f) {
   points(b.eps_p_ip);
   for (std::size_t q = 0; q < 8 * std::size_t(b.history) && !b.hist_ip.empty(); ++q)
     f(b.hist_ip[q * padded + e]);
+  if (!b.strain.empty())
+    for (int k = 0; k < 6; ++k) f(b.strain[b.blocked(6, k, e)]);
 }
 
 template <class B, class F>
@@ -63,6 +65,9 @@ void visitShell(B& b, std::size_t e, F&& f) {
   if (!b.hgq.empty())
     for (int k = 0; k < 5; ++k) f(b.hgq[b.blocked(5, k, e)]);
   for (int k = 0; k < 4; ++k) f(b.drill[b.blocked(4, k, e)]);
+  if (!b.erosion_state.empty())
+    for (int k = 0; k < b.erosionFields(); ++k)
+      f(b.erosion_state[b.blocked(b.erosionFields(), k, e)]);
 }
 
 template <class B, class F>

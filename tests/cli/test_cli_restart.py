@@ -82,6 +82,7 @@ class RestartEquality(RestartCase):
             (data_deck("contact_blocks.k"), [], 150),
             (data_deck("tet_blocks.k"), [], 150),
             (data_deck("axisym_rod.k"), [], 80),
+            (data_deck("erosion.k"), ["--endtime", "2.5e-5"], 40),
         ]
 
     def test_restart_from_mid_run_dump_is_bitwise(self):

@@ -112,6 +112,49 @@ std::string brickNodeSet(int set_id, int nx, int ny, int nz, Pred pred) {
   return s;
 }
 
+// A unit cube pulled along x at the constant velocity v to the strain `strain` (face x = 1
+// prescribed), on rollers on the faces x = 0, y = 0, z = 0 and otherwise free: uniaxial stress,
+// the lateral faces contracting as the material lets them (the wave transit, 2e-7 s for steel,
+// is short beside the pull, 1.2e-4 s to 12 % at 1000 /s, so inertia leaves the lateral stress
+// negligible).
+inline std::string uniaxialPull(const std::string& material, double v, double strain = 0.12) {
+  const double t_end = strain / v;
+  std::string s = material + termination(t_end);
+  s += fmt::format("*DEFINE_CURVE\n{:10d}\n{:20.12g}{:20.12g}\n{:20.12g}{:20.12g}\n", 90, 0.0, v,
+                   2.0 * t_end, v);
+  s += brickNodeSet(1, 1, 1, 1, [](int i, int, int) { return i == 1; });
+  s += fmt::format("*BOUNDARY_PRESCRIBED_MOTION_SET\n{:10d}{:10d}{:10d}{:10d}{:10.1f}\n", 1, 1, 0,
+                   90, 1.0);
+  for (int d = 0; d < 3; ++d) {
+    s += brickNodeSet(4 + d, 1, 1, 1, [d](int i, int j, int k) {
+      return (d == 0 ? i : d == 1 ? j : k) == 0;
+    });
+    s += fmt::format("*BOUNDARY_SPC_SET\n{:10d}{:10d}{:10d}{:10d}{:10d}\n", 4 + d, 0,
+                     d == 0 ? 1 : 0, d == 1 ? 1 : 0, d == 2 ? 1 : 0);
+  }
+  return brickDeck(1, 1, 1, 1.0, 1.0, 1.0, s);
+}
+
+// A unit cube whose faces x = 1, y = 1, z = 1 move by -a(t) along their normals (a from curve
+// 1) and whose faces x = 0, y = 0, z = 0 are held: V/V0 = (1 - a)^3, no shear.
+inline std::string triaxialCompression(const std::string& material, double t_end) {
+  std::string s = material + termination(t_end);
+  for (int d = 0; d < 3; ++d) {
+    s += brickNodeSet(1 + d, 1, 1, 1, [d](int i, int j, int k) {
+      return (d == 0 ? i : d == 1 ? j : k) == 1;
+    });
+    s += brickNodeSet(4 + d, 1, 1, 1, [d](int i, int j, int k) {
+      return (d == 0 ? i : d == 1 ? j : k) == 0;
+    });
+    s += fmt::format("*BOUNDARY_PRESCRIBED_MOTION_SET\n{:10d}{:10d}{:10d}{:10d}{:10.1f}\n", 1 + d,
+                     d + 1, 2, 1, -1.0);
+    const int dof = d + 1;
+    s += fmt::format("*BOUNDARY_SPC_SET\n{:10d}{:10d}{:10d}{:10d}{:10d}\n", 4 + d, 0,
+                     dof == 1 ? 1 : 0, dof == 2 ? 1 : 0, dof == 3 ? 1 : 0);
+  }
+  return brickDeck(1, 1, 1, 1.0, 1.0, 1.0, s);
+}
+
 // A wall force history (time, normal force) of a body striking a wall: how long the force
 // stays above 5% of `reference` and its mean over the middle 60% of the expected contact
 // `duration` (the front is smeared over a few elements, so the plateau is measured away from

@@ -14,6 +14,8 @@ using crumple::testing::brickDeck;
 using crumple::testing::brickNodeSet;
 using crumple::testing::Simulation;
 using crumple::testing::termination;
+using crumple::testing::triaxialCompression;
+using crumple::testing::uniaxialPull;
 
 namespace {
 
@@ -26,26 +28,6 @@ double misesOf(const Block& blk) {
   return std::sqrt(1.5 * ((sig[0] - p) * (sig[0] - p) + (sig[1] - p) * (sig[1] - p) +
                           (sig[2] - p) * (sig[2] - p)) +
                    3.0 * (sig[3] * sig[3] + sig[4] * sig[4] + sig[5] * sig[5]));
-}
-
-// A unit cube whose faces x = 1, y = 1, z = 1 move by -a(t) along their normals (a from curve
-// 1) and whose faces x = 0, y = 0, z = 0 are held: V/V0 = (1 - a)^3, no shear.
-std::string triaxialCompression(const std::string& material, double t_end) {
-  std::string s = material + termination(t_end);
-  for (int d = 0; d < 3; ++d) {
-    s += brickNodeSet(1 + d, 1, 1, 1, [d](int i, int j, int k) {
-      return (d == 0 ? i : d == 1 ? j : k) == 1;
-    });
-    s += brickNodeSet(4 + d, 1, 1, 1, [d](int i, int j, int k) {
-      return (d == 0 ? i : d == 1 ? j : k) == 0;
-    });
-    s += fmt::format("*BOUNDARY_PRESCRIBED_MOTION_SET\n{:10d}{:10d}{:10d}{:10d}{:10.1f}\n", 1 + d,
-                     d + 1, 2, 1, -1.0);
-    const int dof = d + 1;
-    s += fmt::format("*BOUNDARY_SPC_SET\n{:10d}{:10d}{:10d}{:10d}{:10d}\n", 4 + d, 0,
-                     dof == 1 ? 1 : 0, dof == 2 ? 1 : 0, dof == 3 ? 1 : 0);
-  }
-  return brickDeck(1, 1, 1, 1.0, 1.0, 1.0, s);
 }
 
 }  // namespace
@@ -397,28 +379,6 @@ const std::string kJohnsonCook =
     "*MAT_JOHNSON_COOK\n1,7.83e-9,80000.0\n792.0,510.0,0.26,0.014,1.03,1793.0,294.0,1.0\n"
     "4.77e8,-1.0e9,1.0,0,0.01,0.1,-2.12,0.002\n0.61\n"
     "*EOS_LINEAR_POLYNOMIAL\n1,0.0,160000.0\n";
-
-// A unit cube pulled along x at the constant velocity v to 12 % strain (face x = 1 prescribed),
-// on rollers on the faces x = 0, y = 0, z = 0 and otherwise free: uniaxial stress, the lateral
-// faces contracting as the material lets them (the wave transit, 2e-7 s, is short beside the
-// pull, 1.2e-4 s at 1000 /s, so inertia leaves the lateral stress negligible).
-std::string uniaxialPull(const std::string& material, double v) {
-  const double t_end = 0.12 / v;
-  std::string s = material + termination(t_end);
-  s += fmt::format("*DEFINE_CURVE\n{:10d}\n{:20.12g}{:20.12g}\n{:20.12g}{:20.12g}\n", 90, 0.0, v,
-                   2.0 * t_end, v);
-  s += brickNodeSet(1, 1, 1, 1, [](int i, int, int) { return i == 1; });
-  s += fmt::format("*BOUNDARY_PRESCRIBED_MOTION_SET\n{:10d}{:10d}{:10d}{:10d}{:10.1f}\n", 1, 1, 0,
-                   90, 1.0);
-  for (int d = 0; d < 3; ++d) {
-    s += brickNodeSet(4 + d, 1, 1, 1, [d](int i, int j, int k) {
-      return (d == 0 ? i : d == 1 ? j : k) == 0;
-    });
-    s += fmt::format("*BOUNDARY_SPC_SET\n{:10d}{:10d}{:10d}{:10d}{:10d}\n", 4 + d, 0,
-                     d == 0 ? 1 : 0, d == 1 ? 1 : 0, d == 2 ? 1 : 0);
-  }
-  return brickDeck(1, 1, 1, 1.0, 1.0, 1.0, s);
-}
 
 // The Johnson-Cook flow stress and fracture strain (Johnson & Cook 1983 eq. 1, 1985 eq. 2)
 // written out for the constants above, at rate r (EPSO 1 /s) and temperature rise dT.

@@ -10,18 +10,25 @@
 
 namespace crumple::materials {
 
-const deck::KeywordSpec& PiecewiseLinear::cards() {
+deck::KeywordSpec PiecewiseLinear::cardsOf(std::string_view keyword,
+                                           std::vector<deck::FieldSpec> card2_extra) {
   using deck::I;
   using deck::R;
-  static const deck::KeywordSpec spec{
-      kKeywords[0],
+  std::vector<deck::FieldSpec> card2{R("C"), R("P"), I("LCSS"), I("LCSR"), R("VP")};
+  card2.insert(card2.end(), card2_extra.begin(), card2_extra.end());
+  return {
+      keyword,
       {deck::titleCard(),
        {"card 1", {I("MID"), R("RO"), R("E"), R("PR"), R("SIGY"), R("ETAN"), R("FAIL"), R("TDEL")}},
-       {"card 2", {R("C"), R("P"), I("LCSS"), I("LCSR"), R("VP")}},
+       {"card 2", std::move(card2)},
        {"card 3",
         {R("EPS1"), R("EPS2"), R("EPS3"), R("EPS4"), R("EPS5"), R("EPS6"), R("EPS7"), R("EPS8")}},
        {"card 4",
         {R("ES1"), R("ES2"), R("ES3"), R("ES4"), R("ES5"), R("ES6"), R("ES7"), R("ES8")}}}};
+}
+
+const deck::KeywordSpec& PiecewiseLinear::cards() {
+  static const deck::KeywordSpec spec = cardsOf(kKeywords[0], {});
   return spec;
 }
 

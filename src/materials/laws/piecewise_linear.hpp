@@ -41,6 +41,10 @@ struct PiecewiseLinear {
     int32_t table = -1;   // LCSS naming a *DEFINE_TABLE: model table index; -1 = none
   };
   static const deck::KeywordSpec& cards();
+  // The cards of *MAT_024 under another keyword, with fields added at the end of card 2 (the
+  // laws built on this one: *MAT_123).
+  static deck::KeywordSpec cardsOf(std::string_view keyword,
+                                   std::vector<deck::FieldSpec> card2_extra);
   static Params read(LawInput& in);
   static PiecewiseLinear make(const Params& p, const CurveAt& curves, const std::string& at);
 
