@@ -57,8 +57,8 @@ class RealDecks(clitest.TempDirTest):
         self.assertTrue(math.isfinite(dt) and dt > 0.0, describe(p))
         return dt
 
-    def short_run(self, path, end_time):
-        out = os.path.join(self.tmp, "out")
+    def short_run(self, path, end_time, name="out"):
+        out = os.path.join(self.tmp, name)
         p = crumple("run", path, "--endtime", f"{end_time:.6g}", "-o", out, "-q", cwd=self.tmp)
         self.assertEqual(p.returncode, 0, describe(p))
         s = read_summary(out)
@@ -81,7 +81,7 @@ class RealDecks(clitest.TempDirTest):
         # The initial step is a pentahedron's (V / A_max is half a hexahedron's of its cell).
         self.assertRegex(p.stdout, r"initial time step: \S+ \(solid element 5601 ", describe(p))
         dt = self.initial_step(p)
-        s = self.short_run(self.deck(BLOCK), 20 * dt)
+        s = self.short_run(self.deck(BLOCK), 20 * dt, "out_esort1")
         self.assertEqual(s["counts"]["solids"], 5680)
         # The same deck with ESORT = 0 runs, the pentahedra as collapsed hexahedra, and says so.
         with open(self.deck(BLOCK)) as f:

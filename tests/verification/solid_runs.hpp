@@ -69,6 +69,31 @@ inline std::vector<double> finalState(const std::string& name, const std::string
   return out;
 }
 
+// ESORT: the decks of `sorted` (degenerate hexahedra under *CONTROL_SOLID ESORT = 1) end in
+// the same state as `native` bit for bit; `unsorted` (ESORT = 0: collapsed one-point
+// hexahedra) gives another answer.
+inline void expectSortedRunsAsNative(const std::string& name, const std::string& native,
+                                     const std::vector<std::string>& sorted,
+                                     const std::string& unsorted) {
+  const auto reference = finalState(name + "_native", native);
+  for (std::size_t k = 0; k < sorted.size(); ++k)
+    EXPECT_TRUE(finalState(name + "_sorted" + std::to_string(k), sorted[k]) == reference) << k;
+  const auto other = finalState(name + "_unsorted", unsorted);
+  EXPECT_EQ(other.size(), reference.size());
+  double diff = 0.0;
+  for (std::size_t i = 0; i < reference.size() && i < other.size(); ++i)
+    diff = std::max(diff, std::abs(reference[i] - other[i]));
+  EXPECT_GT(diff, 1e-6);
+}
+
+// The ESORT note of a deck's reading ("read but not honoured"), empty when there is none.
+inline std::string esortNote(const std::string& name, const std::string& deck) {
+  auto sim = Simulation::fromText(name, deck);
+  for (const auto& i : sim->model.ignored)
+    if (i.field == "ESORT") return i.reason;
+  return "";
+}
+
 // A 100 x 10 x 10 mm steel cantilever of 20 x 2 x 2 cells, clamped at x = 0, tip load P along
 // `dof` (2: y, 3: z) ramped over 4 beam-theory periods and held for 2; the mean tip deflection
 // over the hold against Timoshenko beam theory.
