@@ -85,7 +85,6 @@ TEST(VerificationTets, FreeVibrationConservesEnergy) {
   EXPECT_LT(crumple::testing::freeBarEnergyDrift(write, "tet_vibration"), 3e-3);
 }
 
-
 std::string esortDeck(TetInput input, const std::string& control) {
   return tetDeck(4, 2, 2, 40.0, 10.0, 10.0, input,
                  kSteel + control + termination(0.05) + vibratingBar(4, 5.0));
