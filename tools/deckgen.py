@@ -103,6 +103,25 @@ def tetrahedralize(mesh: Mesh, parts=None, blank: bool = False) -> None:
     mesh.solids = solids
 
 
+def prismatize(mesh: Mesh, parts=None, manual: bool = False) -> None:
+    """Cuts the hexahedra of `parts` (all when None) along the bottom diagonal N1-N3 into two
+    prisms each (triangles N1 N2 N3 and N1 N3 N4 below the ones above them), written as
+    N1 N2 N3 N3 N5 N6 N7 N7, or in the Keyword Manual's form N1 N2 N3 N4 N5 N5 N6 N6 (triangles
+    N1 N5 N2 and N4 N6 N3) when `manual`."""
+    solids = []
+    for part, ns in mesh.solids:
+        if parts is not None and part not in parts:
+            solids.append((part, ns))
+            continue
+        for a, b, c in ((0, 1, 2), (0, 2, 3)):
+            lo, hi = [ns[a], ns[b], ns[c]], [ns[a + 4], ns[b + 4], ns[c + 4]]
+            if manual:
+                solids.append((part, [lo[0], lo[2], hi[2], hi[0], lo[1], lo[1], hi[1], hi[1]]))
+            else:
+                solids.append((part, lo + [lo[2]] + hi + [hi[2]]))
+    mesh.solids = solids
+
+
 def quarter_cylinder(mesh: Mesh, part: int, radius: float, length: float, n_core: int,
                      n_ring: int, n_axial: int) -> None:
     """A quarter cylinder (x >= 0, y >= 0, 0 <= z <= length) as a butterfly (O-grid) mesh:

@@ -19,6 +19,8 @@
   contact_blocks.k, contact_tube.k, contact_tied.k, contact_cask.k
                       contact decks of tools/contact_decks.py (two-surface, single-surface
                       with rigid plates, tied).
+  prism_blocks.k      the tet_blocks collision meshed in prisms (two per hex cell), ELFORM 15
+                      native and sorted by ESORT
   tet_blocks.k        two colliding blocks meshed in tetrahedra (six per hex cell) with
                       two-surface contact on their triangular faces: block a native ELFORM 10
                       (N5-N8 blank), block b degenerate hexahedra (N4 repeated) under ELFORM 1
@@ -40,7 +42,7 @@ import pathlib
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from deckgen import Mesh, block, node_set, tetrahedralize  # noqa: E402
+from deckgen import Mesh, block, node_set, prismatize, tetrahedralize  # noqa: E402
 import contact_decks  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
@@ -409,21 +411,23 @@ def structures_shell16() -> str:
     return text
 
 
-def tet_blocks(n1: int = 3, n2: int = 4, v: float = 10.0, end: float = 6e-5) -> str:
-    """SI units. Two 10 mm steel cubes (n1^3 and n2^3 cells of six tetrahedra) flying at each
-    other at +-v along z across a 0.5 mm gap, offset sideways by 1 mm."""
+def solid_blocks(cut, title: str, elform_a: int, n1: int, n2: int, v: float, end: float) -> str:
+    """SI units. Two 10 mm steel cubes (n1^3 and n2^3 cells, each cut by `cut(mesh, part)`)
+    flying at each other at +-v along z across a 0.5 mm gap, offset sideways by 1 mm; block a
+    under ELFORM `elform_a`, block b degenerate hexahedra under ELFORM 1 that *CONTROL_SOLID
+    ESORT = 1 sorts, with an elastic-plastic law."""
     m = Mesh()
     block(m, 1, (0, 0, 0), (0.01, 0.01, 0.01), (n1, n1, n1))
     block(m, 2, (0.001, 0.001, 0.0105), (0.01, 0.01, 0.01), (n2, n2, n2))
-    tetrahedralize(m, parts={1}, blank=True)
-    tetrahedralize(m, parts={2})
+    cut(m, 1)
+    cut(m, 2)
     a = m.node_ids(lambda x, y, z: z <= 0.0100001)
     b = m.node_ids(lambda x, y, z: z >= 0.0104)
     vel = "".join(f"{i:10d}{0:10.4g}{0:10.4g}{v:10.4g}\n" for i in a)
     vel += "".join(f"{i:10d}{0:10.4g}{0:10.4g}{-v:10.4g}\n" for i in b)
     return f"""*KEYWORD
 *TITLE
-two tetrahedral blocks colliding (ELFORM 10 native and sorted by ESORT)
+{title}
 *CONTROL_TERMINATION
 {end:10.4g}
 *CONTROL_SOLID
@@ -431,12 +435,12 @@ two tetrahedral blocks colliding (ELFORM 10 native and sorted by ESORT)
 *DATABASE_GLSTAT
    1.0e-06
 *PART
-block a (ELFORM 10)
+block a (ELFORM {elform_a})
          1         1         1
 block b (ELFORM 1, degenerate, sorted)
          2         2         2
 *SECTION_SOLID
-         1        10
+         1{elform_a:10d}
 *SECTION_SOLID
          2         1
 *MAT_ELASTIC
@@ -506,6 +510,21 @@ strip
 """
 
 
+def tet_blocks(n1: int = 3, n2: int = 4, v: float = 10.0, end: float = 6e-5) -> str:
+    """Cells of six tetrahedra: block a native ELFORM 10 (N5-N8 blank), block b N4 repeated."""
+    return solid_blocks(lambda m, p: tetrahedralize(m, parts={p}, blank=p == 1),
+                        "two tetrahedral blocks colliding (ELFORM 10 native and sorted by ESORT)",
+                        10, n1, n2, v, end)
+
+
+def prism_blocks(n1: int = 3, n2: int = 4, v: float = 10.0, end: float = 6e-5) -> str:
+    """Cells of two prisms: block a native ELFORM 15 (N3 = N4, N7 = N8), block b the Keyword
+    Manual's pentahedron (N5 = N6, N7 = N8)."""
+    return solid_blocks(lambda m, p: prismatize(m, parts={p}, manual=p == 2),
+                        "two prism blocks colliding (ELFORM 15 native and sorted by ESORT)",
+                        15, n1, n2, v, end)
+
+
 def axisym_rod(nx: int = 6, ny: int = 30, radius: float = 5.0, length: float = 50.0,
                v: float = 200.0, end: float = 1.5e-2) -> str:
     """mm, ms, kg, GPa. A steel rod, x the radius and y the axis, its lower face tapered
@@ -571,9 +590,10 @@ def main() -> None:
     (out / "tet_blocks.k").write_text(tet_blocks())
     (out / "axisym_rod.k").write_text(axisym_rod())
     (out / "erosion.k").write_text(erosion())
+    (out / "prism_blocks.k").write_text(prism_blocks())
     print("wrote tests/data/decks/mixed_conditions.k, structures.k, structures_shell16.k, "
           "rigid_welds.k, contact_blocks.k, contact_tube.k, contact_tied.k, contact_cask.k, "
-          "tet_blocks.k, axisym_rod.k and erosion.k")
+          "tet_blocks.k, axisym_rod.k, erosion.k and prism_blocks.k")
 
 
 if __name__ == "__main__":

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <set>
 
@@ -13,11 +14,18 @@ namespace crumple::app {
 
 namespace {
 
-// Per part, the solids that run as tetrahedra (ELFORM 10, native or sorted by ESORT).
-std::map<int32_t, std::size_t> tetrahedraPerPart(const model::Model& m) {
-  std::map<int32_t, std::size_t> out;
-  for (std::size_t e = 0; e < m.solids.size(); ++e)
-    if (m.solidFormulation(e) == 10) ++out[m.solids.part[e]];
+// Per part, the solids that run as tetrahedra (ELFORM 10) and as pentahedra (ELFORM 15),
+// native or sorted by ESORT, as the note the summary adds to the part's line.
+std::map<int32_t, std::string> shapesPerPart(const model::Model& m) {
+  std::map<int32_t, std::array<std::size_t, 2>> count;
+  for (std::size_t e = 0; e < m.solids.size(); ++e) {
+    const int form = m.solidFormulation(e);
+    if (form == 10 || form == 15) ++count[m.solids.part[e]][form == 10 ? 0 : 1];
+  }
+  std::map<int32_t, std::string> out;
+  for (const auto& [part, n] : count)
+    out[part] = (n[0] > 0 ? fmt::format(", {} as ELFORM 10 tetrahedra", n[0]) : "") +
+                (n[1] > 0 ? fmt::format(", {} as ELFORM 15 pentahedra", n[1]) : "");
   return out;
 }
 
@@ -48,17 +56,16 @@ std::string modelSummary(const model::Model& m, const solver::Solver& s) {
     ++per_part[{m.elementPart(g), int(m.element(g).first)}];
   static constexpr const char* kPlural[] = {"solids", "shells", "beams", "discretes"};
   static constexpr const char* kSingular[] = {"solid", "shell", "beam", "discrete"};
-  const auto tets = tetrahedraPerPart(m);
+  const auto shapes = shapesPerPart(m);
   for (const auto& [key, count] : per_part) {
     const auto& part = m.parts[static_cast<std::size_t>(key.first)];
     const auto& mat = m.materials[static_cast<std::size_t>(part.material)];
-    const auto t = key.second == int(model::Family::Solid) ? tets.find(key.first) : tets.end();
+    const auto t = key.second == int(model::Family::Solid) ? shapes.find(key.first) : shapes.end();
     out += fmt::format("  part {}{}: {} {}, {} {} (density {:g}){}\n", part.id,
                        part.title.empty() ? "" : " \"" + part.title + "\"", count,
                        count == 1 ? kSingular[key.second] : kPlural[key.second],
                        model::materialKeyword(mat.law), mat.id, mat.rho,
-                       t == tets.end() ? planarNote(m, part)
-                                       : fmt::format(", {} as ELFORM 10 tetrahedra", t->second));
+                       t == shapes.end() ? planarNote(m, part) : t->second);
   }
   out += fmt::format("total mass: {:.6g}\n", s.totalMass());
   if (s.addedMass() > 0.0)

@@ -13,7 +13,7 @@
 namespace crumple::domain {
 
 void SolidBlock::resize(std::size_t n, bool plastic, bool kinematic, bool hourglass_state,
-                        bool gauss_points, int history_count) {
+                        int gauss_points, int history_count) {
   const std::size_t padded = (n + kSolidBatch - 1) / kSolidBatch * kSolidBatch;
   sig.assign(6 * padded, 0.0);
   eps_p.assign(plastic ? padded : 0, 0.0);
@@ -27,14 +27,15 @@ void SolidBlock::resize(std::size_t n, bool plastic, bool kinematic, bool hourgl
   e_hg.assign(padded, 0.0);
   active.assign(padded, 1);
   failed.assign(padded, 0);
-  const std::size_t points = gauss_points ? 8 * padded : 0;
-  for (auto& s : sig_ip) s.assign(points, 0.0);
-  for (auto& s : alpha_ip) s.assign(kinematic ? points : 0, 0.0);
-  eps_p_ip.assign(plastic ? points : 0, 0.0);
+  points = gauss_points;
+  const std::size_t point_values = std::size_t(gauss_points) * padded;
+  for (auto& s : sig_ip) s.assign(point_values, 0.0);
+  for (auto& s : alpha_ip) s.assign(kinematic ? point_values : 0, 0.0);
+  eps_p_ip.assign(plastic ? point_values : 0, 0.0);
   history = history_count;
   const auto h = static_cast<std::size_t>(history_count);
-  hist.assign(gauss_points ? 0 : h * padded, 0.0);
-  hist_ip.assign(h * points, 0.0);
+  hist.assign(gauss_points > 0 ? 0 : h * padded, 0.0);
+  hist_ip.assign(h * point_values, 0.0);
   strain.assign(erosion.needsStrain() ? 6 * padded : 0, 0.0);
 }
 
@@ -383,8 +384,8 @@ class SubdomainBuilder {
     const bool kinematic = materials::isKinematic(b.law);
     b.elform = elform;
     // A fully integrated element has no hourglass modes to control.
-    b.resize(b.size(), plastic, kinematic, b.elform == 1 && b.hourglass.qm > 0.0, b.elform == 2,
-             materials::historyCount(b.law));
+    b.resize(b.size(), plastic, kinematic, b.elform == 1 && b.hourglass.qm > 0.0,
+             b.elform == 2 ? 8 : (b.elform == 15 ? 2 : 0), materials::historyCount(b.law));
     return b;
   }
 

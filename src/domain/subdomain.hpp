@@ -37,7 +37,8 @@ struct SolidBlock : BlockBase {
   double rho0 = 0.0;
   HourglassParams hourglass;
   // The formulation its elements run (model::Model::solidFormulation): 1 one-point
-  // hexahedron, 2 fully integrated (8 points), 10 one-point tetrahedron.
+  // hexahedron, 2 fully integrated (8 points), 10 one-point tetrahedron, 15 two-point
+  // pentahedron.
   int elform = 1;
 
   // BlockBase::elem: elements with a node shared with another rank come first (ascending),
@@ -80,8 +81,10 @@ struct SolidBlock : BlockBase {
   std::vector<uint8_t> failed;      // material reports failure this cycle
   std::vector<double> mass_scale;   // mass scaling factor (>= 1), padded; empty if none
   std::vector<double> dt_scale;     // stable-step factor (<= 1), padded; empty if none
-  // ELFORM 2 only: the state of the 8 Gauss points, point-major (point q of element e at
-  // q * paddedSize() + e). sig and eps_p above then hold the means over the points.
+  // ELFORM 2 and 15 only: the state of the `points` Gauss points (8 and 2), point-major (point
+  // q of element e at q * paddedSize() + e). sig and eps_p above then hold the means over the
+  // points.
+  int points = 0;
   std::array<std::vector<double>, 6> sig_ip, alpha_ip;
   std::vector<double> eps_p_ip;
   std::vector<double> hist_ip;  // variable k of point q of element e at (q history + k) padded + e
@@ -94,8 +97,10 @@ struct SolidBlock : BlockBase {
   std::size_t paddedSize() const {
     return (elem.size() + kSolidBatch - 1) / kSolidBatch * kSolidBatch;
   }
+  // gauss_points: the integration points that keep their own state (0, or 8 for ELFORM 2 and
+  // 2 for ELFORM 15).
   void resize(std::size_t n, bool plastic, bool kinematic, bool hourglass_state,
-              bool gauss_points = false, int history_count = 0);
+              int gauss_points = 0, int history_count = 0);
 };
 
 // Corner slots this rank sends to, and receives from, one neighbour each cycle (the solver's

@@ -499,7 +499,11 @@ BlockStatus initializeSolids(domain::SolidBlock& blk, const domain::NodeVector& 
   BlockStatus st;
   NodalBatch xb, bb;
   const bool tet = blk.elform == 10;
-  const int corners = tet ? 4 : 8;
+  // The corners that carry mass: a tetrahedron's N1-N4, a pentahedron's six distinct nodes
+  // (N1 N2 N3 N4 N5 N5 N6 N6: slots 5 and 7 repeat 4 and 6), a hexahedron's eight.
+  const bool prism = blk.elform == 15;
+  const int corners = tet ? 4 : (prism ? 6 : 8);
+  auto carries = [&](int a) { return tet ? a < 4 : !(prism && (a == 5 || a == 7)); };
   const std::size_t ne = blk.size();
   element_dt.assign(ne, 0.0);
   for (std::size_t first = 0; first < ne; first += kBatch) {
@@ -522,12 +526,14 @@ BlockStatus initializeSolids(domain::SolidBlock& blk, const domain::NodeVector& 
         if (st.bad_elem < 0) st.bad_elem = blk.elem[e];
         continue;
       }
-      // A quarter of the tetrahedron's mass at each of its nodes (the repeated corners get
-      // none), an eighth of the hexahedron's at each corner.
+      // A quarter of the tetrahedron's mass at each of its nodes, a sixth of the
+      // pentahedron's (the repeated corners get none), an eighth of the hexahedron's at each
+      // corner. The pentahedron's length is the hexahedron's V / A_max over its five faces
+      // (the collapsed face has no area).
       const double corner_mass = blk.rho0 * vol[l] / corners;
       double* slot = slots + 3 * (blk.slot_offset + 8 * e);
       for (int a = 0; a < 8; ++a) {
-        slot[3 * a] = a < corners ? corner_mass : 0.0;
+        slot[3 * a] = carries(a) ? corner_mass : 0.0;
         slot[3 * a + 1] = slot[3 * a + 2] = 0.0;
       }
       double dte = solidTimeStep(vol[l] / area[l], c, 0.0, bv);

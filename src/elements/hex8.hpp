@@ -62,6 +62,7 @@ inline BlockStatus computeSolidForces(domain::SolidBlock& block, const domain::N
 
 // The fully integrated hexahedron (ELFORM 2) over elements [first, last): 2x2x2 Gauss points
 // with the element-mean dilatation (B-bar); no hourglass control (src/elements/hex8_full.cpp).
+// Blocks of ELFORM 15 (pentahedra, N1 N2 N3 N4 N5 N5 N6 N6) run the same with 2 points.
 BlockStatus computeFullSolidForces(domain::SolidBlock& block, const domain::NodeVector& x,
                                    const domain::NodeVector& v, double dt, const BulkViscosity& bv,
                                    double* slots, std::size_t first, std::size_t last);

@@ -4,6 +4,7 @@
 // selective integration procedures to anisotropic and nonlinear media", IJNME 15 (1980)
 // 1413-1418). The mean is the exact volume-averaged dilatation of Flanagan & Belytschko, so
 // the element does not lock in near-incompressible plastic flow; it needs no hourglass control.
+// The same kernel runs the two-point pentahedron (ELFORM 15) with its own rule (PrismRule).
 #include <cmath>
 
 #include "elements/hex8.hpp"
@@ -16,15 +17,17 @@ namespace {
 using detail::BatchScratch;
 using detail::LaneArray;
 
+// 1/sqrt(3) to double precision (std::sqrt is not constexpr here).
+constexpr double kGauss = 0.57735026918962576451;
+
 // Derivatives of the trilinear shape functions at the Gauss points: kShape[q][a][i] =
 // dN_a / dxi_i at xi = kNatural[q] / sqrt(3).
-struct ShapeDerivatives {
+struct HexDerivatives {
   double d[8][8][3];
-  constexpr ShapeDerivatives() : d{} {
+  constexpr HexDerivatives() : d{} {
     constexpr int n[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                              {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
-    // 1/sqrt(3) to double precision (std::sqrt is not constexpr here).
-    constexpr double g = 0.57735026918962576451;
+    constexpr double g = kGauss;
     for (int q = 0; q < 8; ++q)
       for (int a = 0; a < 8; ++a) {
         const double xi = n[q][0] * g, eta = n[q][1] * g, zeta = n[q][2] * g;
@@ -34,10 +37,51 @@ struct ShapeDerivatives {
       }
   }
 };
-constexpr ShapeDerivatives kShape;
 
-// Gradients dN_a/dx_j of the 8 shape functions at Gauss point q on geometry x, and det(J).
+// The 6-node pentahedron (ELFORM 15) in the canonical slots N1 N2 N3 N4 N5 N5 N6 N6
+// (model/solid_shape.hpp): triangle (N1 N5 N2) at t = -1, (N4 N6 N3) at t = +1, with
+// N_a = L_i(r, s) (1 -+ t) / 2, L = (1 - r - s, r, s). Two points on the axis through the
+// triangles' centroids, r = s = 1/3, t = -+1/sqrt(3), each of weight 1/2 (the triangle's area
+// in r, s times the Gauss weight 1): the "2 point pentahedron" of the Keyword Manual
+// (*SECTION_SOLID ELFORM 15). The repeated slots 5 and 7 get no derivative.
+struct PrismDerivatives {
+  double d[2][8][3];
+  constexpr PrismDerivatives() : d{} {
+    // Slot of prism node (bottom b0 b1 b2, top t0 t1 t2), and the node's dL/dr, dL/ds.
+    constexpr int slot[6] = {0, 4, 1, 3, 6, 2};
+    constexpr double dl[3][2] = {{-1, -1}, {1, 0}, {0, 1}};
+    for (int q = 0; q < 2; ++q) {
+      const double t = q == 0 ? -kGauss : kGauss;
+      for (int k = 0; k < 6; ++k) {
+        const int i = k % 3;
+        const double side = k < 3 ? -1.0 : 1.0;
+        const double ft = (1 + side * t) / 2;
+        d[q][slot[k]][0] = dl[i][0] * ft;
+        d[q][slot[k]][1] = dl[i][1] * ft;
+        d[q][slot[k]][2] = side / 3.0 / 2.0;  // L_i = 1/3 at the centroid
+      }
+    }
+  }
+};
+
+// An integration rule of the multi-point kernel: its points, their weight in the natural
+// coordinates, and the shape-function derivatives there.
+struct HexRule {
+  static constexpr int kPoints = 8;
+  static constexpr double kWeight = 1.0;
+  static constexpr HexDerivatives kShape{};
+};
+struct PrismRule {
+  static constexpr int kPoints = 2;
+  static constexpr double kWeight = 0.5;
+  static constexpr PrismDerivatives kShape{};
+};
+
+// Gradients dN_a/dx_j of the 8 slots' shape functions at point q on geometry x, and the
+// point's volume weight det(J) times the rule's weight.
+template <class Rule>
 void gradientsAt(int q, const NodalBatch& x, NodalBatch& grad, LaneArray& det) {
+  constexpr const auto& kShape = Rule::kShape;
   for (int l = 0; l < kBatch; ++l) {
     double J[3][3];  // J[i][j] = d x_j / d xi_i
     for (int i = 0; i < 3; ++i)
@@ -50,7 +94,7 @@ void gradientsAt(int q, const NodalBatch& x, NodalBatch& grad, LaneArray& det) {
     const double c01 = J[1][2] * J[2][0] - J[1][0] * J[2][2];
     const double c02 = J[1][0] * J[2][1] - J[1][1] * J[2][0];
     const double d = J[0][0] * c00 + J[0][1] * c01 + J[0][2] * c02;
-    det[l] = d;
+    det[l] = Rule::kWeight * d;
     const double r = d != 0.0 ? 1.0 / d : 0.0;
     // inverse: inv[j][i] with dN/dx_j = sum_i inv[j][i] dN/dxi_i
     const double inv[3][3] = {{c00 * r, (J[0][2] * J[2][1] - J[0][1] * J[2][2]) * r,
@@ -125,15 +169,16 @@ inline void pointRates(double dt, const NodalBatch& grad, const LaneArray& trace
 
 // Stress update at each Gauss point (loaded from and stored to the point records), summed
 // into the element-level view.
-template <class Law>
+template <class Law, class Rule>
 inline void gaussPointStresses(const Law& law, domain::SolidBlock& blk, std::size_t first,
                                double dt, const LaneArray& trace_mean, BatchScratch& w,
                                NodalBatch& grad, FullPointSums& sums) {
   const std::size_t padded = blk.paddedSize();
   for (int l = 0; l < kBatch; ++l) sums.de_int[l] = sums.eps_mean[l] = 0.0;
-  for (int q = 0; q < 8; ++q) {
+  constexpr double share = 1.0 / Rule::kPoints;
+  for (int q = 0; q < Rule::kPoints; ++q) {
     LaneArray det;
-    gradientsAt(q, w.xm, grad, det);
+    gradientsAt<Rule>(q, w.xm, grad, det);
     const std::size_t at = static_cast<std::size_t>(q) * padded + first;
     for (int k = 0; k < 6; ++k)
       for (int l = 0; l < kBatch; ++l) w.s[k][l] = blk.sig_ip[k][at + l];
@@ -149,18 +194,18 @@ inline void gaussPointStresses(const Law& law, domain::SolidBlock& blk, std::siz
     pointRates<Law>(dt, grad, trace_mean, w);
     detail::updateMaterial(law, w, dt);
     for (int l = 0; l < kBatch; ++l) {
-      sums.de_int[l] += detail::stressWork(w, l) * det[l];  // unit Gauss weights
+      sums.de_int[l] += detail::stressWork(w, l) * det[l];
       sums.any_failed[l] |= w.failed[l];
     }
     for (int k = 0; k < 6; ++k)
       for (int l = 0; l < kBatch; ++l) {
         blk.sig_ip[k][at + l] = w.s[k][l];
-        sums.sig_mean[k][l] += 0.125 * w.s[k][l];
+        sums.sig_mean[k][l] += share * w.s[k][l];
       }
     if constexpr (Law::kPlastic)
       for (int l = 0; l < kBatch; ++l) {
         blk.eps_p_ip[at + l] = w.eps_p[l];
-        sums.eps_mean[l] += 0.125 * w.eps_p[l];
+        sums.eps_mean[l] += share * w.eps_p[l];
       }
     if constexpr (Law::kKinematic)
       for (int k = 0; k < 6; ++k)
@@ -200,6 +245,7 @@ inline void fullGeometry(domain::SolidBlock& blk, std::size_t first, double lam2
 // Forces: deviatoric stress at each point on its own gradients; the mean pressure (plus bulk
 // viscosity) on the exact volume gradient, which the Gauss sum of det(J) grad N reproduces
 // exactly.
+template <class Rule>
 inline void fullForces(const domain::SolidBlock& blk, std::size_t first, const FullGeometry& g,
                        BatchScratch& w, NodalBatch& grad) {
   const std::size_t padded = blk.paddedSize();
@@ -208,9 +254,9 @@ inline void fullForces(const domain::SolidBlock& blk, std::size_t first, const F
       for (int l = 0; l < kBatch; ++l) w.f[c3][a][l] = 0.0;
   LaneArray pbar;
   for (int l = 0; l < kBatch; ++l) pbar[l] = 0.0;
-  for (int q = 0; q < 8; ++q) {
+  for (int q = 0; q < Rule::kPoints; ++q) {
     LaneArray det;
-    gradientsAt(q, w.x, grad, det);
+    gradientsAt<Rule>(q, w.x, grad, det);
     const std::size_t at = static_cast<std::size_t>(q) * padded + first;
     for (int l = 0; l < kBatch; ++l) {
       const double s0 = blk.sig_ip[0][at + l], s1 = blk.sig_ip[1][at + l],
@@ -261,7 +307,7 @@ inline void storeFullBatch(domain::SolidBlock& blk, std::size_t first, int n,
   }
 }
 
-template <class Law>
+template <class Law, class Rule>
 BlockStatus fullBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVector& x,
                             const domain::NodeVector& v, double dt, const BulkViscosity& bv,
                             double* slots, std::size_t range_first, std::size_t range_last) {
@@ -283,10 +329,10 @@ BlockStatus fullBlockForces(const Law& law, domain::SolidBlock& blk, const domai
       LaneArray vol_mid, trace_mean;
       meanDilatation(dt, w, vol_mid, trace_mean);
       FullPointSums sums;
-      gaussPointStresses(law, blk, first, dt, trace_mean, w, grad, sums);
+      gaussPointStresses<Law, Rule>(law, blk, first, dt, trace_mean, w, grad, sums);
       FullGeometry g;
       fullGeometry(blk, first, lam2mu, dt, bv, trace_mean, vol_mid, w, g, sums.de_int);
-      fullForces(blk, first, g, w, grad);
+      fullForces<Rule>(blk, first, g, w, grad);
       storeFullBatch<Law>(blk, first, n, bv, trace_mean, sums, g, w, slots, status[ib]);
     }
   }
@@ -300,8 +346,11 @@ BlockStatus computeFullSolidForces(domain::SolidBlock& block, const domain::Node
                                    double* slots, std::size_t first, std::size_t last) {
   return std::visit(
       [&](const auto& law) -> BlockStatus {
-        if constexpr (materials::SolidLaw<std::decay_t<decltype(law)>>)
-          return fullBlockForces(law, block, x, v, dt, bv, slots, first, last);
+        using Law = std::decay_t<decltype(law)>;
+        if constexpr (materials::SolidLaw<Law>)
+          return block.elform == 15
+                     ? fullBlockForces<Law, PrismRule>(law, block, x, v, dt, bv, slots, first, last)
+                     : fullBlockForces<Law, HexRule>(law, block, x, v, dt, bv, slots, first, last);
         else
           materials::noUpdateFor(materials::Family::Solid);
       },

@@ -37,6 +37,14 @@ std::vector<int32_t> nodesOf(Context& ctx, const Card& c, std::string_view field
   return {ctx.node(c, field, id)};
 }
 
+// A vector given by its components in a local system: sum_i v_i e_i.
+Vec3 toGlobal(const Frame& f, const Vec3& v) {
+  Vec3 g{};
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) g[k] += v[i] * f.axis[std::size_t(i)][std::size_t(k)];
+  return g;
+}
+
 void checkNoLocalSystem(Context& ctx, const Card& c, std::string_view field) {
   if (c.integer(field) != 0)
     ctx.reject(c, field, "a local coordinate system is not supported here");
@@ -183,13 +191,14 @@ void readInitialVelocityNode(Context& ctx, const deck::Keyword& kw, const Keywor
 }
 
 // v = (VX, VY, VZ) + OMEGA n x (x - xc), n the unit axis through (XC, YC, ZC)
-// (Keyword Manual, *INITIAL_VELOCITY_GENERATION); STYP 1 part set, 2 part, 3 node set.
+// (Keyword Manual, *INITIAL_VELOCITY_GENERATION); STYP 1 part set, 2 part, 3 node set. With
+// ICID the velocity (VX, VY, VZ) and the axis direction (NX, NY, NZ) are components in that
+// *DEFINE_COORDINATE_SYSTEM; the centre (XC, YC, ZC) stays global (Keyword Manual, ICID).
 void readInitialVelocityGeneration(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
   const auto& spec = keywordSpec("*INITIAL_VELOCITY_GENERATION");
   CardCursor cur(kw, ctx.deck);
   const Card& c = cur.read(spec.card("card 1"));
   const Card& c2 = cur.readOptional(spec.card("card 2"));
-  checkNoLocalSystem(ctx, c, "ICID");
   const int64_t id = c.integer("ID");
   std::vector<int32_t> nodes;
   switch (c.integer("STYP")) {
@@ -209,9 +218,15 @@ void readInitialVelocityGeneration(Context& ctx, const deck::Keyword& kw, const 
       c.fail("STYP", "must be 1 (part set), 2 (part) or 3 (node set)");
   }
   const double omega = c.real("OMEGA");
-  const Vec3 vt{c.real("VX"), c.real("VY"), c.real("VZ")};
+  Vec3 vt{c.real("VX"), c.real("VY"), c.real("VZ")};
   const Vec3 xc{c2.real("XC"), c2.real("YC"), c2.real("ZC")};
-  const Vec3 axis = unit({c2.real("NX"), c2.real("NY"), c2.real("NZ")});
+  Vec3 dir{c2.real("NX"), c2.real("NY"), c2.real("NZ")};
+  if (const int64_t icid = c.integer("ICID"); icid != 0) {
+    const Frame& f = ctx.frame(c, "ICID", icid);
+    vt = toGlobal(f, vt);
+    dir = toGlobal(f, dir);
+  }
+  const Vec3 axis = unit(dir);
   if (omega != 0.0 && dot(axis, axis) == 0.0)
     c2.fail("NX", "the rotation axis (NX, NY, NZ) is zero");
   for (int32_t n : nodes) {

@@ -240,8 +240,8 @@ void readSectionBeam(Context&, const deck::Keyword&, const KeywordOptions&);
 void readSectionDiscrete(Context&, const deck::Keyword&, const KeywordOptions&);
 
 void readControlShell(Context&, const deck::Keyword&, const KeywordOptions&);
-// *CONTROL_SOLID: ESORT sorts tetrahedra written as hexahedra into ELFORM 10 (and refuses
-// pentahedra, whose ELFORM 15 Crumple lacks); the other fields are reported when set.
+// *CONTROL_SOLID: ESORT sorts tetrahedra and pentahedra written as hexahedra into ELFORM 10
+// and 15; the other fields are reported when set.
 void readControlSolid(Context&, const deck::Keyword&, const KeywordOptions&);
 // After every keyword: the degenerate solids that run as hexahedra, noted per part.
 void noteDegenerateSolids(Context&);

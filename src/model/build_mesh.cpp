@@ -176,6 +176,17 @@ std::array<int32_t, 8> tetrahedronNodes(const Card& c, const std::array<int32_t,
   return canonicalTet(n);
 }
 
+// An element of an ELFORM 15 section: a pentahedron written as a hexahedron with two opposite
+// faces collapsed to triangles, stored as N1 N2 N3 N4 N5 N5 N6 N6 (model/solid_shape.hpp).
+std::array<int32_t, 8> pentahedronNodes(const Card& c, const std::array<int32_t, 8>& n) {
+  std::array<int32_t, 8> out{};
+  if (!canonicalPrism(n, out))
+    c.fail("N1",
+           "a pentahedron (*SECTION_SOLID ELFORM 15) needs 6 distinct nodes with two opposite "
+           "faces collapsed to triangles (N1 N2 N3 N4 N5 N5 N6 N6, or N3 = N4 and N7 = N8)");
+  return out;
+}
+
 }  // namespace
 
 void readSolids(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
@@ -212,6 +223,7 @@ void readSolids(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
       s.nodes[i] = ctx.node(*nc, kN[i], ids[i]);
     }
     if (sectionElform(ctx, part) == 10) s.nodes = tetrahedronNodes(*nc, s.nodes);
+    if (sectionElform(ctx, part) == 15) s.nodes = pentahedronNodes(*nc, s.nodes);
     ctx.solid_input.push_back(s);
     ctx.collect(cur);
   }
@@ -376,11 +388,11 @@ void readSectionSolid(Context& ctx, const deck::Keyword& kw, const KeywordOption
     s.where = c.where();
     const auto elform = c.integer("ELFORM");
     // ELFORM (Keyword Manual, *SECTION_SOLID): 1 constant stress (default), 2 fully integrated
-    // selective-reduced, 10 one-point tetrahedron; 0 is the one-point corotational form of
-    // *MAT_MODIFIED_HONEYCOMB, run here as 1 with a note. -1 and -2 (fully integrated forms
-    // for poor aspect ratios), 13 (nodal-pressure tetrahedron), 15 (pentahedron) and the rest
-    // are refused rather than silently run as something else.
-    if (elform == 1 || elform == 2 || elform == 10) {
+    // selective-reduced, 10 one-point tetrahedron, 15 two-point pentahedron; 0 is the
+    // one-point corotational form of *MAT_MODIFIED_HONEYCOMB, run here as 1 with a note. -1
+    // and -2 (fully integrated forms for poor aspect ratios), 13 (nodal-pressure tetrahedron)
+    // and the rest are refused rather than silently run as something else.
+    if (elform == 1 || elform == 2 || elform == 10 || elform == 15) {
       s.elform = static_cast<int>(elform);
     } else if (elform == 0) {
       s.elform = 1;
@@ -390,10 +402,10 @@ void readSectionSolid(Context& ctx, const deck::Keyword& kw, const KeywordOption
       ctx.define(Kind::Section, s.id, c, "SECID");
       ctx.defineUnsupported(Kind::Section, s.id, kw.name + " ELFORM=" + std::to_string(elform),
                             c.where());
-      ctx.reportUnsupported(
-          kw,
-          "ELFORM " + std::to_string(elform) + " not supported yet (1, 2 and 10 are; 0 runs as 1)",
-          false);
+      ctx.reportUnsupported(kw,
+                            "ELFORM " + std::to_string(elform) +
+                                " not supported yet (1, 2, 10 and 15 are; 0 runs as 1)",
+                            false);
       ctx.collect(cur);
       continue;
     }
@@ -469,9 +481,11 @@ Degenerate degenerateShape(const std::array<int32_t, 8>& n) {
       return Degenerate::None;
     case 4:
       return Degenerate::Tetrahedron;
-    case 6:
-      // N1 N2 N3 N4 N5 N5 N6 N6: the two triangles (N1 N2 N5), (N4 N3 N6).
-      return n[4] == n[5] && n[6] == n[7] ? Degenerate::Pentahedron : Degenerate::Other;
+    case 6: {
+      // N1 N2 N3 N4 N5 N5 N6 N6 (triangles N1 N5 N2 and N4 N6 N3), or N3 = N4 and N7 = N8.
+      std::array<int32_t, 8> prism{};
+      return canonicalPrism(n, prism) ? Degenerate::Pentahedron : Degenerate::Other;
+    }
     default:
       return Degenerate::Other;
   }
@@ -486,28 +500,24 @@ void readControlSolid(Context& ctx, const deck::Keyword& kw, const KeywordOption
   if (!cur.atEnd()) cur.read(spec.card("card 2"));
   const int64_t esort = c.integer("ESORT");
   if (esort != 0 && esort != 1)
-    ctx.reject(c, "ESORT", "only 0 (no sorting) and 1 (tetrahedra to ELFORM 10) are supported");
+    ctx.reject(c, "ESORT",
+               "only 0 (no sorting) and 1 (tetrahedra to ELFORM 10, pentahedra to ELFORM 15) are "
+               "supported");
   ctx.model.controls.solid_esort = esort == 1;
   ctx.collect(cur);
   if (esort != 1) return;
   // ESORT = 1 (Keyword Manual, *CONTROL_SOLID): degenerate hexahedra of the one-point and
   // fully integrated forms run as the tetrahedron (ELFORM 10) and the pentahedron (ELFORM 15).
+  // The nodes are rewritten in the canonical forms (model/solid_shape.hpp), which
+  // Model::solidFormulation recognises.
   Solids& s = ctx.model.solids;
-  std::size_t pentahedra = 0, first = 0;
   for (std::size_t e = 0; e < s.size(); ++e) {
     const int form = sectionElform(ctx, s.part[e]);
     if (form != 1 && form != 2) continue;
     const Degenerate shape = degenerateShape(s.nodes[e]);
     if (shape == Degenerate::Tetrahedron) s.nodes[e] = canonicalTet(s.nodes[e]);
-    if (shape == Degenerate::Pentahedron && pentahedra++ == 0) first = e;
+    if (shape == Degenerate::Pentahedron) canonicalPrism(s.nodes[e], s.nodes[e]);
   }
-  if (pentahedra > 0)
-    ctx.reject(c, "ESORT",
-               "sorts pentahedra into ELFORM 15, which Crumple does not have: " +
-                   std::to_string(pentahedra) + " solid(s) are pentahedra (first: element " +
-                   std::to_string(s.id[first]) +
-                   "); ESORT = 0 runs them as degenerate hexahedra (poor)",
-               "*CONTROL_SOLID ESORT=1 pentahedra (ELFORM 15)");
 }
 
 void noteDegenerateSolids(Context& ctx) {
@@ -516,7 +526,8 @@ void noteDegenerateSolids(Context& ctx) {
   std::map<int32_t, std::array<std::size_t, 3>> count;
   for (std::size_t e = 0; e < m.solids.size(); ++e) {
     const Degenerate shape = degenerateShape(m.solids.nodes[e]);
-    if (shape == Degenerate::None || m.solidFormulation(e) == 10) continue;
+    const int form = m.solidFormulation(e);
+    if (shape == Degenerate::None || form == 10 || form == 15) continue;
     ++count[m.solids.part[e]][static_cast<std::size_t>(shape) - 1];
   }
   for (const auto& [part, n] : count) {
@@ -528,8 +539,9 @@ void noteDegenerateSolids(Context& ctx) {
                     "run as ELFORM {} hexahedra with collapsed nodes, a poor element (too stiff "
                     "or too soft, lumped mass piled on the repeated node){}",
                     p.id, n[0] + n[1] + n[2], n[0], n[1], n[2], form,
-                    n[0] > 0 && !m.controls.solid_esort
-                        ? "; *CONTROL_SOLID ESORT = 1 runs the tetrahedra as ELFORM 10"
+                    n[0] + n[1] > 0 && !m.controls.solid_esort
+                        ? "; *CONTROL_SOLID ESORT = 1 runs the tetrahedra as ELFORM 10 and the "
+                          "pentahedra as ELFORM 15"
                         : ""),
         p.where);
   }

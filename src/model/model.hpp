@@ -86,7 +86,8 @@ struct EquationOfState {
 struct SectionSolid {
   int64_t id = 0;
   // 1 = constant stress (one point); 2 = selective-reduced (8 points); 10 = constant-strain
-  // tetrahedron (its elements stored as N1 N2 N3 N4 N4 N4 N4 N4, model/solid_shape.hpp)
+  // tetrahedron (its elements stored as N1 N2 N3 N4 N4 N4 N4 N4, model/solid_shape.hpp);
+  // 15 = two-point pentahedron (stored as N1 N2 N3 N4 N5 N5 N6 N6)
   int elform = 1;
   util::SourceLoc where;
 };
@@ -289,8 +290,8 @@ struct Controls {
   bool hourglass_energy = false;  // *CONTROL_ENERGY HGEN == 2
   bool rigidwall_energy = true;   // RWEN == 2 (default)
   bool erode_on_dtmin = false;    // ERODE = 1 with DTMIN: erode solids and shells
-  // *CONTROL_SOLID ESORT = 1: tetrahedra written as degenerate hexahedra under ELFORM 1 or 2
-  // run as ELFORM 10 (Model::solidFormulation).
+  // *CONTROL_SOLID ESORT = 1: tetrahedra and pentahedra written as degenerate hexahedra
+  // under ELFORM 1 or 2 run as ELFORM 10 and 15 (Model::solidFormulation).
   bool solid_esort = false;
   double energy_ratio_min = 0.0;        // `crumple run --energy-band LO,HI`; 0 = no check
   double energy_ratio_max = 0.0;        // HI of --energy-band
@@ -423,8 +424,9 @@ struct Model {
   int elementNodes(std::size_t g, int32_t out[8]) const;
   int32_t elementPart(std::size_t g) const;
   int64_t elementId(std::size_t g) const;
-  // The formulation solid e runs: its section's ELFORM (1, 2 or 10), or 10 for a tetrahedron
-  // under ELFORM 1 or 2 when *CONTROL_SOLID ESORT = 1 (the reader made its nodes canonical).
+  // The formulation solid e runs: its section's ELFORM (1, 2, 10 or 15), or 10 for a
+  // tetrahedron and 15 for a pentahedron under ELFORM 1 or 2 when *CONTROL_SOLID ESORT = 1
+  // (the reader made their nodes canonical).
   int solidFormulation(std::size_t e) const;
   // "shell element 12" for messages.
   std::string elementName(std::size_t g) const;

@@ -43,6 +43,72 @@ inline std::array<int32_t, 8> canonicalTet(const std::array<int32_t, 8>& n) {
   return {d[0], d[1], d[2], d[3], d[3], d[3], d[3], d[3]};
 }
 
+// The pentahedron with bottom triangle (b0 b1 b2), its right-hand normal towards the top
+// triangle (t0 t1 t2), t_i across the axial edge from b_i, in the Keyword Manual's form
+// N1 N2 N3 N4 N5 N5 N6 N6 (*ELEMENT_SOLID): triangles (N1 N5 N2) and (N4 N6 N3), axial edges
+// N1-N4, N5-N6, N2-N3; for a positive hexahedron (N1 N5 N2) points at the other triangle.
+inline std::array<int32_t, 8> prismAsHex(const int32_t b[3], const int32_t t[3]) {
+  return {b[0], b[2], t[2], t[0], b[1], b[1], t[1], t[1]};
+}
+
+// Of the six ways to write one prism (either triangle first, three turns each, all with the
+// same orientation), the one with the lexicographically smallest node indices: every input
+// convention of the same element gives the same canonical nodes, hence the same bits.
+inline std::array<int32_t, 8> smallestPrism(const int32_t b[3], const int32_t t[3]) {
+  std::array<int32_t, 8> best{};
+  bool first = true;
+  for (int end = 0; end < 2; ++end)
+    for (int turn = 0; turn < 3; ++turn) {
+      int32_t lo[3], hi[3];
+      for (int i = 0; i < 3; ++i) {
+        // Seen from the other end the triangle runs the other way round.
+        const int k = end == 0 ? (i + turn) % 3 : (3 - i + turn) % 3;
+        lo[i] = end == 0 ? b[k] : t[k];
+        hi[i] = end == 0 ? t[k] : b[k];
+      }
+      const auto cand = prismAsHex(lo, hi);
+      if (first || cand < best) best = cand;
+      first = false;
+    }
+  return best;
+}
+
+// The prism of an element with six distinct nodes whose repeats collapse two opposite faces of
+// the hexahedron into triangles (both conventions in use: N5 = N6 and N7 = N8, the Keyword
+// Manual's; N3 = N4 and N7 = N8), in canonical form (smallestPrism); false for any other
+// collapse. For each hexahedron axis the lower face is listed with its right-hand normal
+// towards the upper one and upper[i] is the node across the edge from lower[i]; a positive
+// hexahedron so gives a positive prism whichever faces collapse.
+inline bool canonicalPrism(const std::array<int32_t, 8>& n, std::array<int32_t, 8>& out) {
+  int32_t d[8];
+  if (distinctNodes(n, d) != 6) return false;
+  constexpr int kAxes[3][2][4] = {{{0, 1, 2, 3}, {4, 5, 6, 7}},   // zeta: bottom to top
+                                  {{0, 4, 5, 1}, {3, 7, 6, 2}},   // eta
+                                  {{0, 3, 7, 4}, {1, 2, 6, 5}}};  // xi
+  for (const auto& axis : kAxes) {
+    for (int i = 0; i < 4; ++i) {
+      const int j = (i + 1) % 4;  // the collapsed edge of both faces: lower[i] = lower[j]
+      const auto at = [&](int face, int k) { return n[std::size_t(axis[face][k])]; };
+      if (at(0, i) != at(0, j) || at(1, i) != at(1, j)) continue;
+      const int k1 = (j + 1) % 4, k2 = (j + 2) % 4;
+      const int32_t b[3] = {at(0, j), at(0, k1), at(0, k2)};
+      const int32_t t[3] = {at(1, j), at(1, k1), at(1, k2)};
+      const auto prism = prismAsHex(b, t);
+      int32_t c[8];
+      if (distinctNodes(prism, c) != 6) continue;
+      out = smallestPrism(b, t);
+      return true;
+    }
+  }
+  return false;
+}
+
+// A pentahedron in the canonical form the ELFORM 15 kernel reads.
+inline bool isCanonicalPrism(const std::array<int32_t, 8>& n) {
+  std::array<int32_t, 8> c{};
+  return canonicalPrism(n, c) && c == n;
+}
+
 // The faces of a solid as lists of 3 or 4 distinct node indices (sizes[f]); returns their
 // count. Collapsing nodes turns a hex face into a triangle (kept), an edge or a point
 // (dropped); this gives the right faces for the LS-DYNA pentahedron (n5=n6, n7=n8) and

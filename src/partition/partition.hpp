@@ -64,6 +64,8 @@ inline constexpr int32_t kWeightStiffnessHourglass = 4;
 // The fully integrated hex (ELFORM 2) runs 8 Gauss points: measured 2.4x the one-point
 // element's cost on the bar impact example (1.17 M against 2.8 M element-cycles per second).
 inline constexpr int32_t kWeightFullyIntegratedFactor = 24;  // in tenths
+// ELFORM 15 (2 points): 1 + (2.4 - 1) / 4, not measured apart.
+inline constexpr int32_t kWeightPentahedronFactor = 14;  // in tenths
 // Shells, beams, springs and rigid elements, in the same units (docs/parallel.md). Shells from
 // the kernel benchmarks: a plastic Belytschko-Tsay shell with 5 points costs 0.93 of the
 // plastic hex (167-184 against 180-199 ns), an elastic one 124 ns. Beams and springs are

@@ -39,12 +39,12 @@ void visitSolid(B& b, std::size_t e, F&& f) {
   const std::size_t padded = b.paddedSize();
   auto points = [&](auto& v) {
     if (!v.empty())
-      for (std::size_t q = 0; q < 8; ++q) f(v[q * padded + e]);
+      for (std::size_t q = 0; q < std::size_t(b.points); ++q) f(v[q * padded + e]);
   };
   for (auto& s : b.sig_ip) points(s);
   for (auto& s : b.alpha_ip) points(s);
   points(b.eps_p_ip);
-  for (std::size_t q = 0; q < 8 * std::size_t(b.history) && !b.hist_ip.empty(); ++q)
+  for (std::size_t q = 0; q < std::size_t(b.points * b.history) && !b.hist_ip.empty(); ++q)
     f(b.hist_ip[q * padded + e]);
   if (!b.strain.empty())
     for (int k = 0; k < 6; ++k) f(b.strain[b.blocked(6, k, e)]);

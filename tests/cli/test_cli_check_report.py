@@ -81,6 +81,18 @@ class CheckReport(clitest.TempDirTest):
                          describe(p))
         self.assertNotIn("degenerate solid", p.stdout, describe(p))
 
+    def test_pentahedra_counted_per_part(self):
+        # prism_blocks.k: part 1 native ELFORM 15, part 2 degenerate hexahedra sorted by ESORT.
+        deck = os.path.join(clitest.SOURCE_DIR, "tests", "data", "decks", "prism_blocks.k")
+        p = crumple("check", deck, cwd=self.tmp)
+        self.assertEqual(p.returncode, 0, describe(p))
+        self.assertRegex(p.stdout, r"(?m)^  part 1 .*: 54 solids, .*, 54 as ELFORM 15 pentahedra$",
+                         describe(p))
+        self.assertRegex(p.stdout,
+                         r"(?m)^  part 2 .*: 128 solids, .*, 128 as ELFORM 15 pentahedra$",
+                         describe(p))
+        self.assertNotIn("degenerate solid", p.stdout, describe(p))
+
     def test_implicit_deck_refused_unless_run_explicitly_on_request(self):
         self.write("imp.k", IMPLICIT)
         p = crumple("check", "imp.k", "--json", cwd=self.tmp)

@@ -57,8 +57,8 @@ class RealDecks(clitest.TempDirTest):
         self.assertTrue(math.isfinite(dt) and dt > 0.0, describe(p))
         return dt
 
-    def short_run(self, path, end_time):
-        out = os.path.join(self.tmp, "out")
+    def short_run(self, path, end_time, name="out"):
+        out = os.path.join(self.tmp, name)
         p = crumple("run", path, "--endtime", f"{end_time:.6g}", "-o", out, "-q", cwd=self.tmp)
         self.assertEqual(p.returncode, 0, describe(p))
         s = read_summary(out)
@@ -69,17 +69,20 @@ class RealDecks(clitest.TempDirTest):
         return s
 
     def test_block_check_and_run(self):
-        # *CONTROL_SOLID ESORT = 1 asks for its 80 pentahedra to run as ELFORM 15, which
-        # Crumple lacks: refused, named; --ignore-unsupported runs them as hexahedra.
-        p = self.check(BLOCK, 1)
-        self.assertIn("*CONTROL_SOLID ESORT=1 pentahedra (ELFORM 15)", p.stdout, describe(p))
-        self.assertIn("80 solid(s) are pentahedra", p.stdout, describe(p))
+        # *CONTROL_SOLID ESORT = 1 runs its 80 pentahedra as ELFORM 15.
+        p = self.check(BLOCK, 0)
+        self.assertNotIn("ESORT", p.stdout, describe(p))
         self.assertRegex(p.stdout, r"(?m)^nodes: 6724$", describe(p))
         self.assertRegex(p.stdout, r"(?m)^solid elements: 5680$", describe(p))
         table = unsupported_table(p.stdout)
         self.assertIn("*DATABASE_ELOUT", table, describe(p))
         self.assertIn("output not written yet", table["*DATABASE_ELOUT"])
         self.assertIn("*DATABASE_SPCFORC", table, describe(p))
+        # The initial step is a pentahedron's (V / A_max is half a hexahedron's of its cell).
+        self.assertRegex(p.stdout, r"initial time step: \S+ \(solid element 5601 ", describe(p))
+        dt = self.initial_step(p)
+        s = self.short_run(self.deck(BLOCK), 20 * dt, "out_esort1")
+        self.assertEqual(s["counts"]["solids"], 5680)
         # The same deck with ESORT = 0 runs, the pentahedra as collapsed hexahedra, and says so.
         with open(self.deck(BLOCK)) as f:
             lines = f.read().split("\n")

@@ -596,15 +596,12 @@ TEST(BuildRealDecks, ReadToTheEnd) {
   EXPECT_DOUBLE_EQ(p.initial_velocity[node][0], 0.1246);
   EXPECT_DOUBLE_EQ(p.initial_velocity[node][2], -0.03339);
 
-  // Its *CONTROL_SOLID ESORT = 1 would run its 80 pentahedra as ELFORM 15, which Crumple
-  // lacks: refused (a run needs --ignore-unsupported, and then runs them as hexahedra).
-  const Model w = readModel(block, lenient);
-  const auto penta = std::find_if(w.unsupported.begin(), w.unsupported.end(), [](const auto& u) {
-    return u.feature == "*CONTROL_SOLID ESORT=1 pentahedra (ELFORM 15)";
-  });
-  ASSERT_NE(penta, w.unsupported.end());
-  EXPECT_TRUE(penta->changes_answer);
-  EXPECT_NE(penta->reason.find("80 solid(s) are pentahedra"), std::string::npos);
+  // Its *CONTROL_SOLID ESORT = 1 runs its 80 pentahedra (N5 = N6, N7 = N8) as ELFORM 15.
+  const Model w = readModel(block);
+  for (const auto& u : w.unsupported) EXPECT_EQ(u.feature.find("ESORT"), std::string::npos);
+  std::size_t pentahedra = 0;
+  for (std::size_t e = 0; e < w.solids.size(); ++e) pentahedra += w.solidFormulation(e) == 15;
+  EXPECT_EQ(pentahedra, 80u);
   EXPECT_EQ(w.solids.size(), 5680u);
   EXPECT_EQ(w.nodes.size(), 6724u);
   EXPECT_EQ(w.prescribed.size(), 3u * w.node_sets.at(1).size());

@@ -16,6 +16,7 @@
 #include "gather.hpp"
 #include "model/model.hpp"
 #include "model/solid_shape.hpp"
+#include "patch_field.hpp"
 
 namespace {
 
@@ -172,17 +173,10 @@ TEST(Tet4, InternalForceIsBtDBVOfASmallDisplacement) {
   }
 }
 
-// The patch-test field: linear velocity v = G x (stretch, shear and spin), over a step dt.
-constexpr double G[3][3] = {{1e-3, 4e-4, -2e-4}, {-1e-4, -3e-4, 5e-4}, {3e-4, 2e-4, 6e-4}};
-
 TEST(Tet4Patch, UniformStrainIsExactAndInteriorForcesBalance) {
   crumple::testing::BrickOptions opt;
   // Interior nodes moved off the grid: every tetrahedron is distorted.
-  opt.position = [](int i, int j, int k) {
-    const bool inner = i == 1 || j == 1 || k == 1;
-    const double s = inner ? 0.13 : 0.0;
-    return Vec3{i + s * std::sin(3.0 * j + k), j + s * std::cos(2.0 * i + k), k + s * 0.7};
-  };
+  opt.position = crumple::testing::distortedPatchNode;
   const auto m = tetBrick(2, 2, 2, opt);
   auto sd = crumple::domain::buildSerialSubdomain(m);
   auto& blk = sd.solid_blocks.at(0);
@@ -190,23 +184,12 @@ TEST(Tet4Patch, UniformStrainIsExactAndInteriorForcesBalance) {
   std::vector<double> dt_e;
   crumple::elements::initializeSolids(blk, sd.x0, sd.slots.data(), dt_e, {});
   const double dt = 1e-2;
-  for (std::size_t n = 0; n < sd.numNodes(); ++n)
-    for (int i = 0; i < 3; ++i) {
-      double v = 0.0;
-      for (int j = 0; j < 3; ++j) v += G[i][j] * sd.x0[3 * n + std::size_t(j)];
-      sd.v[3 * n + std::size_t(i)] = v;
-    }
-  for (std::size_t i = 0; i < sd.x.size(); ++i) sd.x[i] = sd.x0[i] + 0.5 * dt * sd.v[i];
+  crumple::testing::setPatchVelocity(sd, dt);
   crumple::elements::computeSolidForces(blk, sd.x, sd.v, dt, {0.0, 0.0}, sd.slots.data());
-  // Expected stress: lambda tr(D dt) I + 2 mu D dt (no Jaumann term from zero stress).
-  const double lambda = kE * kNu / ((1 + kNu) * (1 - 2 * kNu)), mu = kE / (2 * (1 + kNu));
-  const double tr = (G[0][0] + G[1][1] + G[2][2]) * dt;
-  const double expect[6] = {
-      lambda * tr + 2 * mu * G[0][0] * dt, lambda * tr + 2 * mu * G[1][1] * dt,
-      lambda * tr + 2 * mu * G[2][2] * dt, mu * (G[0][1] + G[1][0]) * dt,
-      mu * (G[1][2] + G[2][1]) * dt,       mu * (G[2][0] + G[0][2]) * dt};
+  const auto expect = crumple::testing::patchStress(kE, kNu, dt);
   for (std::size_t e = 0; e < blk.size(); ++e)
-    for (int k = 0; k < 6; ++k) EXPECT_NEAR(blk.sigAt(k, e), expect[k], 1e-13) << e << " " << k;
+    for (int k = 0; k < 6; ++k)
+      EXPECT_NEAR(blk.sigAt(k, e), expect[std::size_t(k)], 1e-13) << e << " " << k;
   EXPECT_EQ(blk.e_hg[0], 0.0);
   // The centre node (1,1,1), index 13, is interior: its forces balance.
   const auto f = crumple::testing::gatheredForces(sd);
