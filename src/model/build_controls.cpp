@@ -185,6 +185,10 @@ void readDatabaseAscii(Context& ctx, const deck::Keyword& kw, const KeywordOptio
       {"*DATABASE_RCFORC", {&k.rcforc_dt, &k.ascii.rcforc}},
       {"*DATABASE_SLEOUT", {&k.sleout_dt, &k.ascii.sleout}},
       {"*DATABASE_SECFORC", {&k.secforc_dt, &k.ascii.secforc}},
+      {"*DATABASE_SPCFORC", {&k.spcforc_dt, &k.ascii.spcforc}},
+      {"*DATABASE_BNDOUT", {&k.bndout_dt, &k.ascii.bndout}},
+      {"*DATABASE_RBDOUT", {&k.rbdout_dt, &k.ascii.rbdout}},
+      {"*DATABASE_DEFORC", {&k.deforc_dt, &k.ascii.deforc}},
   };
   for (const auto& [name, target] : files)
     if (kw.name == name) {
