@@ -175,8 +175,9 @@ void ReactionHistories::writeDeforc(const solver::Solver& s) {
       const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
       // The axial force pulls the second node back towards the first in tension.
       const double f = b.force[k], scale = len > 0.0 ? -f / len : 0.0;
-      local.insert(local.end(), {double(b.elem_id[k]), f, b.elongation[k], scale * d[0],
-                                 scale * d[1], scale * d[2]});
+      // + 0.0: no negative zeros in the files.
+      local.insert(local.end(), {double(b.elem_id[k]), f, b.elongation[k], scale * d[0] + 0.0,
+                                 scale * d[1] + 0.0, scale * d[2] + 0.0});
     }
   const auto rows = gatherById(comm_, local, 6);
   if (!comm_.isRoot()) return;
