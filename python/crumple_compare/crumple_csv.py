@@ -84,6 +84,14 @@ def read_folder(folder):
         "rcforc.csv": _rcforc,
         "secforc.csv": lambda p: _series(p, ["section"], mapping.CRUMPLE_SECFORC,
                                          lambda i, q: f"secforc.section{i[0]}.{q}"),
+        "spcforc.csv": lambda p: _series(p, ["node"], mapping.CRUMPLE_SPCFORC,
+                                         lambda i, q: f"spcforc.node{i[0]}.{q}"),
+        "bndout.csv": lambda p: _series(p, ["node"], mapping.CRUMPLE_BNDOUT,
+                                        lambda i, q: f"bndout.node{i[0]}.{q}"),
+        "rbdout.csv": lambda p: _series(p, ["body"], mapping.CRUMPLE_RBDOUT,
+                                        lambda i, q: f"rbdout.body{i[0]}.{q}"),
+        "deforc.csv": lambda p: _series(p, ["element"], mapping.CRUMPLE_DEFORC,
+                                        lambda i, q: f"deforc.element{i[0]}.{q}"),
     }
     curves = {}
     for name, reader in readers.items():

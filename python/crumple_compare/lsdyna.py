@@ -1,5 +1,5 @@
 """Readers of LS-DYNA's ASCII output files (glstat, matsum, nodout, rcforc, rwforc, secforc,
-sleout), in the layouts LS-DYNA R13 writes them (the samples are the bolted-joint results in
+sleout, spcforc, bndout, rbdout, deforc), in the layouts LS-DYNA R13 writes them (the samples are the bolted-joint results in
 ../shared/decks/bolted_joint_lsdyna/Bolt_B_Explicit). Each reader returns {key: Curve} with
 the keys of mapping.py. rwforc and secforc have no sample here: their readers take both a
 table (a header row of names, then rows of numbers) and labelled values ('x-force= 1.0E+00'),
@@ -21,7 +21,8 @@ _NUM_RE = re.compile(NUM)
 _DOTTED = re.compile(r"^\s*(\S.*?)\s*\.{2,}\s*(" + NUM + r")\s*$")
 _PAIR = re.compile(r"([A-Za-z][A-Za-z0-9_\-#\.]*)\s*=?\s*(" + NUM + r")(?![\w.])")
 _PAIR_EQ = re.compile(r"([A-Za-z][A-Za-z0-9_\-#\.]*)\s*=\s*(" + NUM + r")")
-FILES = ("glstat", "matsum", "nodout", "rcforc", "rwforc", "secforc", "sleout")
+FILES = ("glstat", "matsum", "nodout", "rcforc", "rwforc", "secforc", "sleout", "spcforc",
+         "bndout", "rbdout", "deforc")
 
 
 _ID_ROW = re.compile(r"^\s*(\d+)(?=[\s+-])(.*)$")
@@ -252,9 +253,130 @@ def read_secforc(path):
     return _read_entity_file(path, "secforc", "section")
 
 
+def _timed_lines(path, time_re):
+    """(line number, line, time) of the lines after the first block title that `time_re`
+    matches (its group 1 is the time); a title itself is yielded with line None."""
+    t = None
+    for no, line in enumerate(_lines(path), 1):
+        m = time_re.search(line)
+        if m:
+            t = float(m.group(1))
+            yield no, None, t
+        elif t is not None:
+            yield no, line, t
+
+
+_SPC_TIME = re.compile(r"output at time\s*=\s*(" + NUM + r")")
+_SPC_ROW = re.compile(r"^\s*node=\s*(\d+)\s+local x,y,z (forces|moments)\s*=\s*(.*?)\s+setid")
+
+
+def read_spcforc(path):
+    """Blocks 'output at time = T'; rows ' node= ID local x,y,z forces = FX FY FZ   setid S'
+    (and 'moments='); the 'force resultants =' (and 'moment resultants=') line."""
+    out = _Series(path)
+    for no, line, t in _timed_lines(path, _SPC_TIME):
+        m = _SPC_ROW.match(line or "")
+        what = None
+        if m:
+            what, values, base = m.group(2), numbers(m.group(3)), f"spcforc.node{m.group(1)}."
+        elif "resultants" in (line or ""):
+            what = "forces" if "force" in line else "moments"
+            values, base = numbers(line.split("=", 1)[1]), "spcforc.total."
+        if what is None:
+            continue
+        if len(values) != 3:
+            raise CompareError("an spcforc row without three numbers", path, no)
+        for axis, value in zip("xyz", values):
+            out.add(base + ("f" if what == "forces" else "m") + axis, t, value, no)
+    return out.curves()
+
+
+_BND_TIME = re.compile(r"o u t p u t\s+t=\s*(" + NUM + r")")
+_BND_FIELDS = {"xforce": "fx", "yforce": "fy", "zforce": "fz", "energy": "energy",
+               "xmoment": "mx", "ymoment": "my", "zmoment": "mz", "xtotal": "fx",
+               "ytotal": "fy", "ztotal": "fz", "etotal": "energy"}
+
+
+def read_bndout(path):
+    """Blocks 'n o d a l   f o r c e/e n e r g y    o u t p u t  t= T'; rows ' nd# ID
+    xforce= .. yforce= .. zforce= .. energy= .. setid = .. xmoment= ..' and the totals line."""
+    out = _Series(path)
+    for no, line, t in _timed_lines(path, _BND_TIME):
+        row = re.match(r"^\s*nd#\s*(\d+)", line or "")
+        if not row and "xtotal" not in (line or ""):
+            continue
+        base = f"bndout.node{row.group(1)}." if row else "bndout.total."
+        for name, value in _PAIR_EQ.findall(line):
+            if name in _BND_FIELDS:
+                out.add(base + _BND_FIELDS[name], t, float(value), no)
+    return out.curves()
+
+
+_RBD_TIME = re.compile(r"r i g i d   b o d y   m o t i o n.*time=\s*(" + NUM + r")")
+_RBD_ROWS = {"coordinates:": ("x", "y", "z"),
+             "displacements:": ("dx", "dy", "dz", "rx", "ry", "rz"),
+             "velocities:": ("vx", "vy", "vz", "wx", "wy", "wz"),
+             "accelerations:": ("ax", "ay", "az", "alphax", "alphay", "alphaz")}
+
+
+def read_rbdout(path):
+    """Blocks 'r i g i d   b o d y   m o t i o n   a t  cycle= N   time= T'; per body
+    ' rigid body ID' (or ' nodal rigid body ID'), its global 'coordinates:', 'displacements:',
+    'velocities:', 'accelerations:' rows (translations then rotations), the principal
+    directions and the same rows in them (read as '.local.' keys)."""
+    out, body, local = _Series(path), None, False
+    for no, line, t in _timed_lines(path, _RBD_TIME):
+        if line is None:
+            body = None
+            continue
+        m = re.match(r"^\s*(?:nodal )?rigid body\s+(\d+)\s*$", line)
+        if m:
+            body, local = m.group(1), False
+            continue
+        if "output in principal" in line:
+            local = True
+            continue
+        label = line.split(":")[0].strip() + ":" if ":" in line else None
+        if body is None or label not in _RBD_ROWS:
+            continue
+        values, names = numbers(line.split(":", 1)[1]), _RBD_ROWS[label]
+        if len(values) != len(names):
+            raise CompareError(f"rigid body {body}: {len(values)} numbers in '{label}'", path, no)
+        base = f"rbdout.body{body}." + ("local." if local else "")
+        for name, value in zip(names, values):
+            out.add(base + name, t, value, no)
+    return out.curves()
+
+
+_DEF_TIME = re.compile(r"a t   t i m e\s*(" + NUM + r")")
+_DEF_FIELDS = {"x-force": "fx", "y-force": "fy", "z-force": "fz", "resultant": "force",
+               "length": "elongation"}
+
+
+def read_deforc(path):
+    """Blocks 'd i s c r e t e   e l e m e n t   f o r c e s   a t   t i m e T'; per element
+    ' element# ID  x-force= ..  y-force= ..  z-force= ..' and 'resultant= ..  change in
+    length= ..'."""
+    out, element = _Series(path), None
+    for no, line, t in _timed_lines(path, _DEF_TIME):
+        if line is None:
+            element = None
+            continue
+        m = re.match(r"^\s*element#\s*(\d+)", line)
+        if m:
+            element = m.group(1)
+        if element is None or "=" not in line:
+            continue
+        for name, value in _PAIR_EQ.findall(line):
+            if name in _DEF_FIELDS:
+                out.add(f"deforc.element{element}.{_DEF_FIELDS[name]}", t, float(value), no)
+    return out.curves()
+
+
 READERS = {"glstat": read_glstat, "matsum": read_matsum, "nodout": read_nodout,
            "rcforc": read_rcforc, "rwforc": read_rwforc, "secforc": read_secforc,
-           "sleout": read_sleout}
+           "sleout": read_sleout, "spcforc": read_spcforc, "bndout": read_bndout,
+           "rbdout": read_rbdout, "deforc": read_deforc}
 
 
 def read_folder(folder):

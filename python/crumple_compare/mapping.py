@@ -65,6 +65,11 @@ CRUMPLE_NODOUT = NODOUT_TRANSLATION
 CRUMPLE_RWFORC = ["fn", "fx", "fy", "fz"]
 CRUMPLE_SECFORC = ["fx", "fy", "fz", "mx", "my", "mz", "cx", "cy", "cz", "area"]
 CRUMPLE_RCFORC_SIDES = {1: "slave", 2: "master"}
+CRUMPLE_SPCFORC = ["fx", "fy", "fz", "mx", "my", "mz"]
+CRUMPLE_BNDOUT = ["fx", "fy", "fz", "energy"]
+CRUMPLE_RBDOUT = ["x", "y", "z", "dx", "dy", "dz", "vx", "vy", "vz", "ax", "ay", "az", "rx", "ry",
+                  "rz", "wx", "wy", "wz", "alphax", "alphay", "alphaz"]
+CRUMPLE_DEFORC = ["force", "elongation", "fx", "fy", "fz"]
 
 
 def glstat_quantity(label):

@@ -78,6 +78,17 @@ Boundary::Boundary(const model::Model& m, const domain::Subdomain& sd) {
     if (n != model::kNone)
       motion_.push_back({n, p.dof, p.kind, curveOf(m, p.curve), p.sf, p.birth, p.death});
   }
+  // One reaction entry per constrained node, whichever constraints name it.
+  auto entry = [](std::vector<NodeReaction>& list, int32_t n) {
+    const auto it =
+        std::find_if(list.begin(), list.end(), [&](const auto& r) { return r.node == n; });
+    if (it != list.end()) return std::size_t(it - list.begin());
+    list.push_back({n, {}, {}, 0.0});
+    return list.size() - 1;
+  };
+  for (const auto& [n, mask] : spc_) spc_at_.push_back(entry(spc_reaction_, n));
+  for (const auto& [n, mask] : spc_rot_) spc_rot_at_.push_back(entry(spc_reaction_, n));
+  for (const auto& mo : motion_) motion_at_.push_back(entry(motion_reaction_, mo.node));
   for (const auto& l : m.nodal_loads) {
     const int32_t n = sd.localNode(l.node);
     if (n != model::kNone) loads_.push_back({n, l.dof, curveOf(m, l.curve), l.sf});
@@ -143,28 +154,45 @@ void Boundary::externalForces(double t, const domain::Subdomain& sd,
 }
 
 double Boundary::applyKinematics(double t, double dt_n, double dt_half, domain::Subdomain& sd,
-                                 const domain::NodeVector& v_old) const {
+                                 const domain::NodeVector& v_old) {
   double work = 0.0;
+  for (auto* list : {&spc_reaction_, &motion_reaction_})
+    for (auto& r : *list) r.force = r.moment = {};
   // Reaction work: the velocity change a constraint imposes is an impulse m dv acting while
-  // the node moves at the mean of its old and new velocities over dt_n.
-  auto impose = [&](std::size_t i, double v_new) {
+  // the node moves at the mean of its old and new velocities over dt_n. The impulse over dt_n
+  // is the constraint's force on the node (-(the residual) when the node is held at rest).
+  auto impose = [&](std::size_t i, double v_new, NodeReaction& r) {
     const double m = sd.mass[i / 3];
     const double dv = v_new - sd.v[i];
-    if (sd.node_owned[i / 3]) work += m * dv * 0.5 * (v_old[i] + v_new);
+    const double w = m * dv * 0.5 * (v_old[i] + v_new);
+    if (sd.node_owned[i / 3]) work += w;
+    r.work += w;
+    if (dt_n > 0.0) r.force[i % 3] += m * dv / dt_n;
     sd.v[i] = v_new;
   };
-  for (const auto& [n, mask] : spc_)
+  for (std::size_t k = 0; k < spc_.size(); ++k) {
+    const auto [n, mask] = spc_[k];
     for (int c = 0; c < 3; ++c)
       if (mask & (1u << c)) {
-        impose(3 * static_cast<std::size_t>(n) + c, 0.0);
+        impose(3 * static_cast<std::size_t>(n) + c, 0.0, spc_reaction_[spc_at_[k]]);
         sd.a[3 * static_cast<std::size_t>(n) + c] = 0.0;
       }
-  for (const auto& [n, mask] : spc_rot_)
+  }
+  for (std::size_t k = 0; k < spc_rot_.size(); ++k) {
+    const auto [n, mask] = spc_rot_[k];
     for (int c = 0; c < 3; ++c)
-      if (mask & (1u << c)) sd.w[3 * static_cast<std::size_t>(n) + c] = 0.0;
+      if (mask & (1u << c)) {
+        const std::size_t i = 3 * static_cast<std::size_t>(n) + c;
+        // The moment that stops the rotation: I (0 - w) / dt(n) about the global axis.
+        if (dt_n > 0.0)
+          spc_reaction_[spc_rot_at_[k]].moment[c] -= sd.inertia[i / 3] * sd.w[i] / dt_n;
+        sd.w[i] = 0.0;
+      }
+  }
   const double t_half = t + 0.5 * dt_half;
   const double t_next = t + dt_half;
-  for (const auto& m : motion_) {
+  for (std::size_t k = 0; k < motion_.size(); ++k) {
+    const Motion& m = motion_[k];
     if (t_half < m.birth || t_half > m.death) continue;
     const std::size_t i = 3 * static_cast<std::size_t>(m.node) + m.dof;
     double v_new = sd.v[i];
@@ -181,7 +209,7 @@ double Boundary::applyKinematics(double t, double dt_n, double dt_half, domain::
         break;
       }
     }
-    impose(i, v_new);
+    impose(i, v_new, motion_reaction_[motion_at_[k]]);
     sd.a[i] = dt_n > 0.0 ? (v_new - v_old[i]) / dt_n : 0.0;
   }
   return work;
@@ -321,14 +349,45 @@ void visitWall(W& w, F&& f) {
 }
 }  // namespace
 
-void Boundary::saveState(util::ArchiveWriter& out) const {
-  out.put<uint64_t>(walls_.size());
-  for (const auto& w : walls_) visitWall(w, [&](const auto& v) { out.put(v); });
+std::vector<double> Boundary::ownedMotionWork(const domain::Subdomain& sd) const {
+  std::vector<double> out;
+  for (const auto& r : motion_reaction_)
+    if (sd.node_owned[std::size_t(r.node)])
+      out.insert(out.end(), {double(sd.node_id[std::size_t(r.node)]), r.work});
+  return out;
 }
 
-void Boundary::loadState(util::ArchiveReader& in) {
+void Boundary::saveState(util::ArchiveWriter& out, const std::vector<double>& motion_work) const {
+  out.put<uint64_t>(walls_.size());
+  for (const auto& w : walls_) visitWall(w, [&](const auto& v) { out.put(v); });
+  // The work of the prescribed motions so far (bndout), gathered from every rank by the
+  // caller, in ascending node id (the same bytes at any rank count).
+  std::vector<std::pair<double, double>> pairs;
+  for (std::size_t k = 0; k + 1 < motion_work.size(); k += 2)
+    pairs.emplace_back(motion_work[k], motion_work[k + 1]);
+  std::sort(pairs.begin(), pairs.end());
+  std::vector<double> sorted;
+  for (const auto& [id, w] : pairs) sorted.insert(sorted.end(), {id, w});
+  out.put(sorted);
+}
+
+void Boundary::loadState(util::ArchiveReader& in, const domain::Subdomain& sd) {
   util::expectCount(in, walls_.size(), "rigid walls");
   for (auto& w : walls_) visitWall(w, [&](auto& v) { in.get(v); });
+  std::vector<double> work;  // (global node id, work) pairs, ascending id
+  in.get(work);
+  for (auto& r : motion_reaction_) {
+    const double id = double(sd.node_id[std::size_t(r.node)]);
+    std::size_t lo = 0, hi = work.size() / 2;
+    while (lo < hi) {  // binary search of the pair with this id
+      const std::size_t mid = (lo + hi) / 2;
+      if (work[2 * mid] < id)
+        lo = mid + 1;
+      else
+        hi = mid;
+    }
+    if (lo < work.size() / 2 && work[2 * lo] == id) r.work = work[2 * lo + 1];
+  }
 }
 
 }  // namespace crumple::constraints

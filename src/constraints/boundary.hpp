@@ -12,6 +12,16 @@
 
 namespace crumple::constraints {
 
+// The force a kinematic constraint exerted on one node in the last step (spcforc, bndout): the
+// impulse it imposed over the step, m (v_imposed - v_predicted) / dt(n), and for the
+// rotational SPCs I (0 - w_predicted) / dt(n); `work` sums the impulse times the mean velocity
+// over every step so far (prescribed motion only).
+struct NodeReaction {
+  int32_t node = 0;  // local
+  model::Vec3 force{}, moment{};
+  double work = 0.0;
+};
+
 struct WallState {
   const model::RigidWallPlanar* def = nullptr;
   std::vector<int32_t> nodes;  // local slave nodes
@@ -36,8 +46,9 @@ class Boundary {
   // Enforces SPCs and prescribed motion on v(n+1/2) = sd.v, given v(n-1/2) in v_old;
   // t is t(n), dt_n the step centred on t(n), dt_half = dt(n+1/2). Returns the reaction work
   // of the nodes this rank owns.
+  // Keeps the reactions of the SPCs and prescribed motions (spcReactions, motionReactions).
   double applyKinematics(double t, double dt_n, double dt_half, domain::Subdomain& sd,
-                         const domain::NodeVector& v_old) const;
+                         const domain::NodeVector& v_old);
 
   // Stonewalls: no slave node ends the step behind a wall (DYNA3D stonewall: the normal
   // velocity is corrected so the node lands on the plane; Coulomb friction acts on the
@@ -48,9 +59,16 @@ class Boundary {
                          const domain::NodeVector& v_old, const comm::Communicator& comm);
 
   const std::vector<WallState>& walls() const { return walls_; }
-  // Restart: the walls' motion and last forces (the same on every rank).
-  void saveState(util::ArchiveWriter& out) const;
-  void loadState(util::ArchiveReader& in);
+  // The reactions of the last step at this rank's constrained nodes (every local node that has
+  // one, owned or not), one entry per node in the order the deck's constraints first name them.
+  const std::vector<NodeReaction>& spcReactions() const { return spc_reaction_; }
+  const std::vector<NodeReaction>& motionReactions() const { return motion_reaction_; }
+  // Restart: the walls' motion and last forces (the same on every rank), and the work of the
+  // prescribed motions: (global node id, work) pairs of every rank's owned nodes, gathered by
+  // the caller from ownedMotionWork; loadState takes this rank's nodes from them.
+  std::vector<double> ownedMotionWork(const domain::Subdomain& sd) const;
+  void saveState(util::ArchiveWriter& out, const std::vector<double>& motion_work) const;
+  void loadState(util::ArchiveReader& in, const domain::Subdomain& sd);
   // Kinetic energy of moving walls (part of the system's kinetic energy).
   double wallKineticEnergy() const;
   // Whether any external force (nodal, pressure, gravity) exists anywhere in the model; the
@@ -91,6 +109,9 @@ class Boundary {
   std::vector<std::pair<int32_t, model::DofMask>> spc_;
   std::vector<std::pair<int32_t, model::DofMask>> spc_rot_;  // rotational SPC (bits: rx, ry, rz)
   std::vector<Motion> motion_;
+  // Reactions per constrained node; spc_at_ / motion_at_ give each constraint's entry.
+  std::vector<NodeReaction> spc_reaction_, motion_reaction_;
+  std::vector<std::size_t> spc_at_, spc_rot_at_, motion_at_;
   std::vector<NodalLoad> loads_;
   std::vector<Pressure> pressure_;
   std::vector<Body> body_;

@@ -660,6 +660,8 @@ double RigidBodies::advance(Body& b, const Vec3& F, const Vec3& M, double t, dou
   const Vec3 dV = sub(b.V, V_free), dL = sub(b.L, L_free);
   b.reaction_f = dt_n > 0.0 ? scaled(dV, b.mass / dt_n) : Vec3{};
   b.reaction_m = dt_n > 0.0 ? scaled(dL, 1.0 / dt_n) : Vec3{};
+  b.acc = dt_n > 0.0 ? scaled(sub(b.V, b.V_prev), 1.0 / dt_n) : Vec3{};
+  b.angular_acc = dt_n > 0.0 ? scaled(sub(b.omega, omega_prev), 1.0 / dt_n) : Vec3{};
   // The constraint impulse times the mean velocity over dt_n.
   return b.mass * dot(dV, scaled(add(b.V_prev, b.V), 0.5)) +
          dot(dL, scaled(add(omega_prev, b.omega), 0.5));
@@ -824,8 +826,14 @@ double RigidBodies::kineticEnergy() const {
 
 std::vector<RigidBodyState> RigidBodies::states() const {
   std::vector<RigidBodyState> out;
-  for (const Body& b : bodies_)
-    out.push_back({b.id, b.kind, b.mass, b.x_cm, b.V, b.omega, b.L, b.reaction_f, b.reaction_m});
+  for (const Body& b : bodies_) {
+    double r[3][3];
+    matrix(b.q, r);  // body to global: its columns are the principal axes
+    std::array<Vec3, 3> axes;
+    for (std::size_t k = 0; k < 3; ++k) axes[k] = {r[0][k], r[1][k], r[2][k]};
+    out.push_back({b.id, b.kind, b.mass, b.x_cm, b.V, b.omega, b.L, b.reaction_f, b.reaction_m,
+                   sub(b.x_cm, b.x_cm0), b.angle, b.acc, b.angular_acc, axes});
+  }
   return out;
 }
 
@@ -843,7 +851,7 @@ void RigidBodies::visitState(B& b, F&& f) {
   f(b.q);
   f(b.q_prev);
   for (auto* v : {&b.x_cm, &b.x_cm_prev, &b.V, &b.V_prev, &b.L, &b.L_prev, &b.omega, &b.angle,
-                  &b.reaction_f, &b.reaction_m})
+                  &b.reaction_f, &b.reaction_m, &b.acc, &b.angular_acc})
     f(*v);
   f(b.active);
   f(b.failure_time);

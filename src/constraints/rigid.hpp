@@ -58,6 +58,11 @@ struct RigidBodyState {
   Vec3 angular_momentum{};  // about the centre, global axes, at (n+1/2)
   // Force and moment of the constraints (CMO, prescribed motion) on the body in the last step.
   Vec3 reaction_force{}, reaction_moment{};
+  // rbdout: the centre's displacement from t = 0, the rotation accumulated about the global
+  // axes, and the accelerations of the last step, (V(n+1/2) - V(n-1/2)) / dt(n) and the same of
+  // the angular velocity.
+  Vec3 displacement{}, rotation{}, acceleration{}, angular_acceleration{};
+  std::array<Vec3, 3> axes{};  // the principal axes at t(n+1), in global components
 };
 
 struct WeldState {
@@ -135,6 +140,7 @@ class RigidBodies {
     Vec3 V{}, V_prev{}, L{}, L_prev{}, omega{};
     Vec3 angle{};  // accumulated rotation about the global axes (prescribed rotations)
     Vec3 reaction_f{}, reaction_m{};
+    Vec3 acc{}, angular_acc{};  // of the last step (rbdout)
     uint8_t fixed = 0;
     std::vector<Motion> motions;
     std::vector<int32_t> local;  // local nodes of the body held here

@@ -185,6 +185,10 @@ void readDatabaseAscii(Context& ctx, const deck::Keyword& kw, const KeywordOptio
       {"*DATABASE_RCFORC", {&k.rcforc_dt, &k.ascii.rcforc}},
       {"*DATABASE_SLEOUT", {&k.sleout_dt, &k.ascii.sleout}},
       {"*DATABASE_SECFORC", {&k.secforc_dt, &k.ascii.secforc}},
+      {"*DATABASE_SPCFORC", {&k.spcforc_dt, &k.ascii.spcforc}},
+      {"*DATABASE_BNDOUT", {&k.bndout_dt, &k.ascii.bndout}},
+      {"*DATABASE_RBDOUT", {&k.rbdout_dt, &k.ascii.rbdout}},
+      {"*DATABASE_DEFORC", {&k.deforc_dt, &k.ascii.deforc}},
   };
   for (const auto& [name, target] : files)
     if (kw.name == name) {
@@ -330,6 +334,20 @@ void readHistoryNodeSet(Context& ctx, const deck::Keyword& kw, const KeywordOpti
   }
 }
 
+// What spcforc and bndout leave out (src/output/reactions.hpp): the constraints of rigid
+// bodies act on the body's centre, not on nodes, and their reactions are not reported.
+static void noteUnwrittenReactions(Context& ctx) {
+  const Controls& k = ctx.model.controls;
+  for (const auto& b : ctx.model.rigid.bodies) {
+    if (k.ascii.spcforc && b.fixed != 0)
+      ctx.ignore("*DATABASE_SPCFORC", "rigid body " + std::to_string(b.id),
+                 "its constraints (CMO, SPCs of its nodes) are not in spcforc", b.where);
+    if (k.ascii.bndout && !b.motions.empty())
+      ctx.ignore("*DATABASE_BNDOUT", "rigid body " + std::to_string(b.id),
+                 "its prescribed motion is not in bndout", b.where);
+  }
+}
+
 void finishControls(Context& ctx) {
   Controls& k = ctx.model.controls;
   if (k.d3plot_dt == 0.0 && ctx.d3plot_npltc > 0 && k.end_time > 0)
@@ -337,6 +355,7 @@ void finishControls(Context& ctx) {
   // Solids and shells are eroded when their step falls below DTMIN with ERODE=1
   // (*CONTROL_TIMESTEP); a material's TDEL (*MAT_024) is applied per part by the solver.
   k.erode_on_dtmin = ctx.erode_flag == 1 && k.dt_min_ratio > 0;
+  noteUnwrittenReactions(ctx);
 }
 
 }  // namespace crumple::model::build

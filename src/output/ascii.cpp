@@ -225,3 +225,129 @@ std::string secforcBlock(double time, const std::vector<SectionRecord>& sections
 }
 
 }  // namespace crumple::output::ascii
+
+namespace crumple::output::ascii {
+
+namespace {
+std::string e134(const Vec3& v) {
+  return scientific(v[0], 13, 4) + scientific(v[1], 13, 4) + scientific(v[2], 13, 4);
+}
+}  // namespace
+
+std::string spcforcHeader(std::string_view title) {
+  return banner(title) + "\n s i n g l e   p o i n t   c o n s t r a i n t   f o r c e s\n";
+}
+
+std::string spcforcBlock(double time, const std::vector<SpcRecord>& nodes) {
+  std::string s = fmt::format("\n output at time ={}\n", scientific(time, 13, 5));
+  Vec3 force{}, moment{};
+  bool rotations = false;
+  for (const auto& n : nodes) {
+    s += fmt::format(" node={:10d} local x,y,z forces ={}   setid {:8d}\n", n.id, e134(n.force),
+                     n.set);
+    if (n.rotations)
+      s += fmt::format(" node={:10d} local x,y,z moments={}   setid {:8d}\n", n.id, e134(n.moment),
+                       n.set);
+    for (int c = 0; c < 3; ++c) {
+      force[std::size_t(c)] += n.force[std::size_t(c)];
+      moment[std::size_t(c)] += n.moment[std::size_t(c)];
+    }
+    rotations = rotations || n.rotations;
+  }
+  if (rotations) s += fmt::format("{:12}moment resultants={}\n", "", e134(moment));
+  return s + fmt::format("{:12}force resultants ={}\n", "", e134(force));
+}
+
+std::string bndoutBlock(double time, const std::vector<BndoutRecord>& nodes) {
+  std::string s = fmt::format(
+      "\n n o d a l   f o r c e/e n e r g y    o u t p u t  t={}\n\n"
+      " velocity boundary condition forces/rigid body moments \n\n",
+      scientific(time, 14, 5));
+  Vec3 total{};
+  double energy = 0;
+  for (const auto& n : nodes) {
+    s += fmt::format(
+        " nd#{:8d}  xforce={}   yforce={}  zforce={}   energy={}   setid ={:8d} xmoment={} "
+        "ymoment={} zmoment={}\n",
+        n.id, scientific(n.force[0], 13, 4), scientific(n.force[1], 13, 4),
+        scientific(n.force[2], 13, 4), scientific(n.energy, 13, 4), n.set,
+        scientific(n.moment[0], 13, 4), scientific(n.moment[1], 13, 4),
+        scientific(n.moment[2], 13, 4));
+    for (int c = 0; c < 3; ++c) total[std::size_t(c)] += n.force[std::size_t(c)];
+    energy += n.energy;
+  }
+  return s + fmt::format("{:14}xtotal={}   ytotal={}  ztotal={}   etotal={}\n", "",
+                         scientific(total[0], 13, 4), scientific(total[1], 13, 4),
+                         scientific(total[2], 13, 4), scientific(energy, 13, 4));
+}
+
+namespace {
+// Three rows "label" + translation and rotation triples (E12.4), as rbdout's global and local
+// blocks.
+std::string motionRows(const Vec3* d, const Vec3* dr, const Vec3* v, const Vec3* vr, const Vec3* a,
+                       const Vec3* ar) {
+  auto six = [](const Vec3& x, const Vec3& y) {
+    std::string s;
+    for (double q : x) s += scientific(q, 12, 4);
+    for (double q : y) s += scientific(q, 12, 4);
+    return s;
+  };
+  return " displacements:" + six(*d, *dr) + "\n    velocities:" + six(*v, *vr) +
+         "\n accelerations:" + six(*a, *ar) + "\n";
+}
+Vec3 toLocal(const std::array<Vec3, 3>& axes, const Vec3& g) {
+  Vec3 out{};
+  for (std::size_t k = 0; k < 3; ++k)
+    out[k] = axes[k][0] * g[0] + axes[k][1] * g[1] + axes[k][2] * g[2];
+  return out;
+}
+}  // namespace
+
+std::string rbdoutBlock(int64_t cycle, double time, const std::vector<RigidBodyRecord>& bodies) {
+  std::string s =
+      fmt::format("\n  r i g i d   b o d y   m o t i o n   a t  cycle={:8d}   time= {}\n", cycle,
+                  scientific(time, 12, 5));
+  for (const auto& b : bodies) {
+    s += fmt::format("\n {}rigid body{:8d}\n", b.nodal ? "nodal " : "", b.id);
+    s +=
+        "   global             x           y           z           x-rot       y-rot       z-rot\n";
+    s += "   coordinates:";
+    for (double q : b.coordinates) s += scientific(q, 12, 4);
+    s += "\n" + motionRows(&b.displacement, &b.rotation, &b.velocity, &b.angular_velocity,
+                           &b.acceleration, &b.angular_acceleration);
+    s += " principal or user defined local coordinate direction vectors\n";
+    s += "     a           b           c\n";
+    for (std::size_t r = 0; r < 3; ++r) {
+      s += fmt::format("   row {}", r + 1);
+      for (std::size_t c = 0; c < 3; ++c) s += scientific(b.axes[c][r], 12, 4);
+      s += "\n";
+    }
+    s += " output in principal or user defined local coordinate directions\n";
+    s += "     a           b           c    a-rot  b-rot  c-rot\n";
+    const Vec3 d = toLocal(b.axes, b.displacement), dr = toLocal(b.axes, b.rotation);
+    const Vec3 v = toLocal(b.axes, b.velocity), vr = toLocal(b.axes, b.angular_velocity);
+    const Vec3 a = toLocal(b.axes, b.acceleration), ar = toLocal(b.axes, b.angular_acceleration);
+    s += motionRows(&d, &dr, &v, &vr, &a, &ar);
+  }
+  return s;
+}
+
+std::string deforcHeader(std::string_view title, const std::vector<LegendEntry>& elements) {
+  return banner(title) + "\n" + legend(elements, 6, 68) + "\n";
+}
+
+std::string deforcBlock(double time, const std::vector<DiscreteRecord>& elements) {
+  std::string s =
+      fmt::format("\n d i s c r e t e   e l e m e n t   f o r c e s   a t   t i m e {}\n",
+                  scientific(time, 13, 5));
+  for (const auto& e : elements) {
+    s += fmt::format(" element#{:9d}  x-force={}  y-force={}  z-force={}\n", e.id,
+                     scientific(e.force[0], 12, 4), scientific(e.force[1], 12, 4),
+                     scientific(e.force[2], 12, 4));
+    s += fmt::format("{:18}resultant={}  change in length={}\n", "", scientific(e.resultant, 12, 4),
+                     scientific(e.elongation, 12, 4));
+  }
+  return s;
+}
+
+}  // namespace crumple::output::ascii

@@ -101,3 +101,46 @@ struct SectionRecord {
 std::string secforcBlock(double time, const std::vector<SectionRecord>& sections);
 
 }  // namespace crumple::output::ascii
+
+namespace crumple::output::ascii {
+
+// ---- spcforc --------------------------------------------------------------------------------
+// One constrained node: the force (and, at nodes with rotations, the moment) the SPCs exert.
+struct SpcRecord {
+  int64_t id = 0, set = 0;  // node id; the *BOUNDARY_SPC_SET's set id (0: a node's own card)
+  Vec3 force{}, moment{};
+  bool rotations = false;  // the node has rotational freedoms: a moment line
+};
+std::string spcforcHeader(std::string_view title);
+std::string spcforcBlock(double time, const std::vector<SpcRecord>& nodes);
+
+// ---- bndout ---------------------------------------------------------------------------------
+// One node of *BOUNDARY_PRESCRIBED_MOTION: the force imposing the motion and its work so far.
+struct BndoutRecord {
+  int64_t id = 0, set = 0;
+  Vec3 force{}, moment{};
+  double energy = 0;
+};
+std::string bndoutBlock(double time, const std::vector<BndoutRecord>& nodes);
+
+// ---- rbdout ---------------------------------------------------------------------------------
+struct RigidBodyRecord {
+  int64_t id = 0;
+  bool nodal = false;  // *CONSTRAINED_NODAL_RIGID_BODY ("nodal rigid body")
+  Vec3 coordinates{}, displacement{}, rotation{}, velocity{}, angular_velocity{};
+  Vec3 acceleration{}, angular_acceleration{};
+  std::array<Vec3, 3> axes{};  // rows: the principal axes a, b, c in global components
+};
+std::string rbdoutBlock(int64_t cycle, double time, const std::vector<RigidBodyRecord>& bodies);
+
+// ---- deforc ---------------------------------------------------------------------------------
+struct DiscreteRecord {
+  int64_t id = 0;
+  Vec3 force{};           // the force on the second node, along the element
+  double resultant = 0;   // the axial force, tension positive
+  double elongation = 0;  // change in length from the initial one (OFFSET not included)
+};
+std::string deforcHeader(std::string_view title, const std::vector<LegendEntry>& elements);
+std::string deforcBlock(double time, const std::vector<DiscreteRecord>& elements);
+
+}  // namespace crumple::output::ascii

@@ -70,6 +70,22 @@ class CsvWriter : public HistoryFile {
   std::size_t columns_ = 0;
 };
 
+// When a history falls due: every `interval` from 0 (0: never), and once more at the end.
+struct HistorySchedule {
+  double interval = 0.0;
+  double next = 0.0;
+  // The time of the last row written: the end of a run whose last cycle was also a sample
+  // time writes it once (not kept in a dump: a restart starts after the dump's time).
+  double written = -1.0e300;
+  bool due(double t, bool last) const {
+    return interval > 0.0 && t != written && (last || t >= next * (1 - 1e-9));
+  }
+  void advance(double t) {
+    written = t;
+    while (next <= t * (1 + 1e-9)) next += interval;
+  }
+};
+
 // SHA-256 of raw bytes (the checksum of restart dumps: with the CPU's SHA extensions it is
 // faster than a byte-wise FNV, and it catches any corruption).
 using Sha256 = std::array<unsigned char, 32>;

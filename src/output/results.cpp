@@ -93,6 +93,7 @@ ResultsWriter::ResultsWriter(std::filesystem::path dir, const model::Model& mode
     secforc_.interval = intervalOr(ctl.secforc_dt, end, kDefaultSamples);
     sections_.emplace(model, sd);
   }
+  reactions_.emplace(model, s, comm);
   // On restart the files are opened by loadState, which knows where the dump left them.
   if (comm.isRoot() && !restart) openStreams();
   if (comm.isRoot()) std::filesystem::create_directories(dir_ / kStatesFolder);
@@ -112,19 +113,21 @@ std::vector<ResultsWriter::Stream> ResultsWriter::streams() {
   const auto& ascii = model_.controls.ascii;
   const bool nodes = history_count_ > 0, walls = !model_.rigid_walls.empty();
   const bool contacts = !model_.contacts.empty(), sections = !model_.cross_sections.empty();
-  return {{"glstat.csv", &glstat_csv_, &kGlstatColumns, true},
-          {"matsum.csv", &matsum_csv_, &kMatsumColumns, true},
-          {"nodout.csv", &nodout_csv_, &kNodoutColumns, nodes},
-          {"rwforc.csv", &rwforc_csv_, &kRwforcColumns, walls},
-          {"rcforc.csv", &rcforc_csv_, &kRcforcColumns, contacts},
-          {"secforc.csv", &secforc_csv_, &kSecforcColumns, sections},
-          {"glstat", &glstat_txt_, nullptr, ascii.glstat},
-          {"matsum", &matsum_txt_, nullptr, ascii.matsum},
-          {"nodout", &nodout_txt_, nullptr, ascii.nodout && nodes},
-          {"rwforc", &rwforc_txt_, nullptr, ascii.rwforc && walls},
-          {"rcforc", &rcforc_txt_, nullptr, ascii.rcforc && contacts},
-          {"sleout", &sleout_txt_, nullptr, ascii.sleout && contacts},
-          {"secforc", &secforc_txt_, nullptr, ascii.secforc && sections}};
+  std::vector<Stream> out = {{"glstat.csv", &glstat_csv_, &kGlstatColumns, true},
+                             {"matsum.csv", &matsum_csv_, &kMatsumColumns, true},
+                             {"nodout.csv", &nodout_csv_, &kNodoutColumns, nodes},
+                             {"rwforc.csv", &rwforc_csv_, &kRwforcColumns, walls},
+                             {"rcforc.csv", &rcforc_csv_, &kRcforcColumns, contacts},
+                             {"secforc.csv", &secforc_csv_, &kSecforcColumns, sections},
+                             {"glstat", &glstat_txt_, nullptr, ascii.glstat},
+                             {"matsum", &matsum_txt_, nullptr, ascii.matsum},
+                             {"nodout", &nodout_txt_, nullptr, ascii.nodout && nodes},
+                             {"rwforc", &rwforc_txt_, nullptr, ascii.rwforc && walls},
+                             {"rcforc", &rcforc_txt_, nullptr, ascii.rcforc && contacts},
+                             {"sleout", &sleout_txt_, nullptr, ascii.sleout && contacts},
+                             {"secforc", &secforc_txt_, nullptr, ascii.secforc && sections}};
+  for (const auto& f : reactions_->files()) out.push_back({f.name, f.file, f.columns, f.wanted});
+  return out;
 }
 
 void ResultsWriter::openStreams() {
@@ -148,7 +151,8 @@ void ResultsWriter::openStreams() {
     if (st.columns)
       *static_cast<CsvWriter*>(st.file) = CsvWriter(dir_ / st.name, *st.columns);
     else
-      *st.file = HistoryFile(dir_ / st.name, headers.at(st.name));
+      *st.file = HistoryFile(dir_ / st.name, headers.count(st.name) ? headers.at(st.name)
+                                                                    : reactions_->header(st.name));
   }
 }
 
@@ -178,6 +182,7 @@ std::vector<char> ResultsWriter::saveState() const {
     w.put(st.file->position());
   }
   w.put(d3plot_ ? d3plot_->save() : std::vector<char>());  // empty: no d3plot
+  reactions_->saveState(w);
   return std::move(w.bytes());
 }
 
@@ -215,6 +220,7 @@ void ResultsWriter::loadState(const std::vector<char>& bytes, double time) {
   }
   std::vector<char> d3plot;
   r.get(d3plot);
+  reactions_->loadState(r, time);
   if (!r.atEnd() || times.size() != names.size())
     throw util::InputError("restart dump: the output section is inconsistent");
   // A dump of a run without d3plot, restarted with *DATABASE_BINARY_D3PLOT: a new family.
@@ -289,6 +295,7 @@ void ResultsWriter::write(const solver::Solver& s, bool last) {
     writeSecforc(s);
     secforc_.advance(t);
   }
+  reactions_->write(s, last);
   if ((s.cycle() == 0 || plot_.due(t, last)) && t != last_plot_time_) {
     writePlotState(s);
     plot_.advance(t);

@@ -14,6 +14,7 @@
 #include "output/d3plot.hpp"
 #include "output/energy_audit.hpp"
 #include "output/files.hpp"
+#include "output/reactions.hpp"
 #include "output/sections.hpp"
 #include "output/vtk.hpp"
 #include "solver/solver.hpp"
@@ -62,20 +63,7 @@ class ResultsWriter {
   const EnergyAudit& energyAudit() const { return audit_; }
 
  private:
-  struct Schedule {
-    double interval = 0.0;
-    double next = 0.0;
-    // The time of the last row written: the end of a run whose last cycle was also a sample
-    // time writes it once (not kept in a dump: a restart starts after the dump's time).
-    double written = -1.0e300;
-    bool due(double t, bool last) const {
-      return interval > 0.0 && t != written && (last || t >= next * (1 - 1e-9));
-    }
-    void advance(double t) {
-      written = t;
-      while (next <= t * (1 + 1e-9)) next += interval;
-    }
-  };
+  using Schedule = HistorySchedule;
   void writePlotState(const solver::Solver& s);
   // One history each, when due (collective where their sums are).
   void writeGlstat(const solver::Solver& s);
@@ -110,6 +98,7 @@ class ResultsWriter {
   HistoryFile glstat_txt_, matsum_txt_, nodout_txt_, rwforc_txt_, rcforc_txt_, sleout_txt_,
       secforc_txt_;
   std::optional<SectionForces> sections_;                   // when the deck has cross sections
+  std::optional<ReactionHistories> reactions_;              // spcforc, bndout, rbdout, deforc
   std::vector<std::pair<int32_t, int32_t>> history_local_;  // (deck order, local node), owned
   std::size_t history_count_ = 0;
   PvdWriter pvd_;

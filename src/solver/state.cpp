@@ -251,12 +251,14 @@ std::vector<char> Solver::saveState(StateSection which) const {
       return std::move(w.bytes());
     }
     case StateSection::Constraints: {
-      // Rigid bodies and walls hold the same state on every rank: rank 0's copy is the state.
+      // Rigid bodies and walls hold the same state on every rank: rank 0's copy is the state;
+      // the prescribed motions' work is gathered from the ranks that own the nodes.
+      const auto motion_work = comm_.allGather(boundary_.ownedMotionWork(sd_));
       if (!comm_.isRoot()) return {};
       util::ArchiveWriter w;
       w.put<uint8_t>(rigid_ ? 1 : 0);
       if (rigid_) rigid_->saveState(w);
-      boundary_.saveState(w);
+      boundary_.saveState(w, motion_work);
       return std::move(w.bytes());
     }
   }
@@ -381,7 +383,7 @@ void Solver::loadState(StateSection which, const std::vector<char>& bytes) {
       if ((has_rigid != 0) != (rigid_ != nullptr))
         mismatch("rigid bodies in one and not in the other");
       if (rigid_) rigid_->loadState(r);
-      boundary_.loadState(r);
+      boundary_.loadState(r, sd_);
       break;
     }
   }

@@ -200,7 +200,7 @@ class Check(clitest.TempDirTest):
 
     def test_check_lists_unsupported_keywords(self):
         text = one_brick_deck().replace(
-            "*END\n", "*DATABASE_ELOUT\n      0.01\n*DATABASE_SPCFORC\n      0.01\n"
+            "*END\n", "*DATABASE_ELOUT\n      0.01\n*DATABASE_BINARY_D3THDT\n      0.01\n"
             "*CONTROL_PARALLEL\n         1\n*END\n")
         self.write("unsup.k", text)
         lines = text.splitlines()
@@ -211,7 +211,7 @@ class Check(clitest.TempDirTest):
         self.assertRegex(p.stdout, r"(?m)^total mass: 7\.85e-0?6$", describe(p))
         self.assertRegex(p.stdout, r"(?m)^initial time step: \S+ \(solid element 1 \(part \d+\), TSSFAC 0\.9\)$")
         for keyword, reason in (("*DATABASE_ELOUT", "output not written yet"),
-                                ("*DATABASE_SPCFORC", "output not written yet"),
+                                ("*DATABASE_BINARY_D3THDT", "output not written yet"),
                                 ("*CONTROL_PARALLEL", "MPP/SMP")):
             line = lines.index(keyword) + 1
             self.assertRegex(p.stdout, rf"(?m)^{re.escape(keyword)}\s+1\s+unsup\.k:{line}\s+.*"
