@@ -487,7 +487,10 @@ Solver::StableStep Solver::stableTimeStep(const ElementPass& pass) const {
 void Solver::computeExternalForces() {
   util::ScopedTimer timer(timing_.constraints);
   boundary_.externalForces(time_, sd_, sd_.f_ext);
-  if (rigid_) rigid_->addJointForces(dt_next_, sd_, comm_);
+  if (rigid_) {
+    rigid_->addJointForces(dt_next_, sd_, comm_);
+    rigid_->computeBodyLoads(time_);
+  }
 }
 
 void Solver::computeContactForces() {

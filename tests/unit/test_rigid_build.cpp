@@ -245,13 +245,13 @@ TEST(RigidBuild, SphericalAndRevoluteJoints) {
   const auto& j = m.rigid.joints;
   ASSERT_EQ(j.size(), 2u);
   EXPECT_EQ(j[0].id, 1);
-  EXPECT_FALSE(j[0].revolute);
+  EXPECT_EQ(j[0].kind, crumple::model::JointKind::Spherical);
   ASSERT_EQ(j[0].pairs.size(), 1u);
   EXPECT_EQ(j[0].pairs[0], (std::array<int32_t, 2>{m.nodeIndex(8), m.nodeIndex(40)}));
   EXPECT_EQ(j[0].rps, 1.0);
   EXPECT_EQ(j[0].damp, 1.0);
   EXPECT_EQ(j[1].id, 9);
-  EXPECT_TRUE(j[1].revolute);
+  EXPECT_EQ(j[1].kind, crumple::model::JointKind::Revolute);
   ASSERT_EQ(j[1].pairs.size(), 2u);
   EXPECT_EQ(j[1].pairs[1], (std::array<int32_t, 2>{m.nodeIndex(4), m.nodeIndex(41)}));
   EXPECT_EQ(j[1].rps, 2.0);
@@ -266,10 +266,10 @@ TEST(RigidBuild, SphericalAndRevoluteJoints) {
             apart.string() +
                 ":61: *CONSTRAINED_JOINT_SPHERICAL card 1 field 2 (N2): the joint's nodes N1 and "
                 "N2 must coincide");
-  const auto other = t.write("o.k", mesh() + "*CONSTRAINED_JOINT_CYLINDRICAL\n8,40\n");
+  const auto other = t.write("o.k", mesh() + "*CONSTRAINED_JOINT_UNIVERSAL\n8,40\n");
   EXPECT_EQ(
       errorOf([&] { readModel(other); }),
-      other.string() + ":57: *CONSTRAINED_JOINT_CYLINDRICAL: option _CYLINDRICAL is not supported");
+      other.string() + ":57: *CONSTRAINED_JOINT_UNIVERSAL: option _UNIVERSAL is not supported");
 }
 
 TEST(RigidBuild, ErrorsNameTheConflict) {
