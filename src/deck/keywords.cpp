@@ -258,7 +258,7 @@ std::vector<KeywordSpec> makeTables() {
   // ---- database -----------------------------------------------------------------------------
   for (std::string_view name :
        {"*DATABASE_GLSTAT", "*DATABASE_MATSUM", "*DATABASE_NODOUT", "*DATABASE_RWFORC",
-        "*DATABASE_RCFORC", "*DATABASE_SLEOUT", "*DATABASE_SECFORC"})
+        "*DATABASE_RCFORC", "*DATABASE_SLEOUT", "*DATABASE_SECFORC", "*DATABASE_JNTFORC"})
     t.push_back({name, asciiDatabase()});
   // Keyword Manual Vol. I, *DATABASE_CROSS_SECTION_PLANE: the cut's tail (XCT..) and the
   // normal's head (XCH..), the edge vector's head (XHEV..), its lengths; ID/ITYPE name a local

@@ -401,6 +401,7 @@ const std::vector<Meaning>& meanings() {
       {"*DATABASE_RCFORC", 6, readDatabaseAscii, {}},
       {"*DATABASE_SLEOUT", 6, readDatabaseAscii, {}},
       {"*DATABASE_SECFORC", 6, readDatabaseAscii, {}},
+      {"*DATABASE_JNTFORC", 6, readDatabaseAscii, {}},
       {"*DATABASE_CROSS_SECTION_PLANE", 6, readCrossSectionPlane, {"ID"}},
       {"*DATABASE_BINARY_D3PLOT", 6, readDatabaseD3plot, {}},
       {"*DATABASE_BINARY_D3DUMP", 6, readDatabaseD3dump, {}},

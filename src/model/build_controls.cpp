@@ -185,6 +185,7 @@ void readDatabaseAscii(Context& ctx, const deck::Keyword& kw, const KeywordOptio
       {"*DATABASE_RCFORC", {&k.rcforc_dt, &k.ascii.rcforc}},
       {"*DATABASE_SLEOUT", {&k.sleout_dt, &k.ascii.sleout}},
       {"*DATABASE_SECFORC", {&k.secforc_dt, &k.ascii.secforc}},
+      {"*DATABASE_JNTFORC", {&k.jntforc_dt, &k.ascii.jntforc}},
   };
   for (const auto& [name, target] : files)
     if (kw.name == name) {
