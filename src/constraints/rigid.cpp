@@ -508,6 +508,7 @@ void RigidBodies::addJointForces(double dt, domain::Subdomain& sd, const comm::C
       keys, values, 2 * joints_.size(), [](int32_t) { return 6; }, comm, all);
   double stored = 0.0;
   for (JointState& js : joint_states_) js = {js.id, {}, {}, 0.0};
+  joint_nodal_.clear();
   for (std::size_t p = 0; p < joints_.size(); ++p) {
     JointPair& jp = joints_[p];
     const std::size_t a = recs[2 * p].at(0), b = recs[2 * p + 1].at(0);
@@ -543,6 +544,7 @@ void RigidBodies::addJointForces(double dt, domain::Subdomain& sd, const comm::C
       if (n == model::kNone) continue;
       const double sign = s == 0 ? 1.0 : -1.0;
       for (int c = 0; c < 3; ++c) sd.f_ext[3 * std::size_t(n) + std::size_t(c)] += sign * f[c];
+      joint_nodal_.emplace_back(n, scaled(f, sign));
     }
   }
   joint_energy_ = stored + joint_dissipated_;

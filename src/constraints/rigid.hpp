@@ -36,6 +36,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "comm/communicator.hpp"
@@ -110,6 +111,10 @@ class RigidBodies {
   // (omega dt <= sqrt(RPS / 2)), as LS-DYNA scales its joint penalty with the masses and the
   // time step (Theory Manual, "Rigid Body Joints"). Damping is 10% of critical, times DAMP.
   void addJointForces(double dt, domain::Subdomain& sd, const comm::Communicator& comm);
+  // The joints' forces on this rank's copies of their nodes in the last addJointForces, as
+  // (local node, force): they sit in f_ext, and the solver takes their work back out of the
+  // external work (their energy is internal, jointEnergy()).
+  const std::vector<std::pair<int32_t, Vec3>>& jointNodeForces() const { return joint_nodal_; }
   // Energy stored in the joint springs plus what their dampers dissipated, and the work of
   // the joint stiffnesses (every rank).
   double jointEnergy() const { return joint_energy_ + stiffness_work_; }
@@ -237,6 +242,7 @@ class RigidBodies {
   double stiffness_work_ = 0.0;
   std::vector<JointState> joint_states_;  // per joint of the model
   std::vector<int32_t> pair_joint_;       // per entry of joints_: its joint
+  std::vector<std::pair<int32_t, Vec3>> joint_nodal_;
 
   std::vector<Body> bodies_;  // part and nodal bodies, then welds
   std::vector<TiedSet> sets_;
