@@ -31,6 +31,11 @@
                       (*MAT_123 with EPSMAJ, NUMINT 1, and *MAT_ADD_EROSION SIGVM at NCS 1)
                       each held at one end and pulled at the other, so that they fail
                       element by element.
+  joints.k            rigid-body joints across ranks: a rigid bar swinging under gravity on a
+                      revolute joint (with a *CONSTRAINED_JOINT_STIFFNESS_GENERALIZED friction
+                      spring on a *DEFINE_COORDINATE_NODE frame) from a fixed rigid frame, an
+                      elastic block hanging from the bar by a spherical joint, and a rigid
+                      slider on a translational joint pushed by *LOAD_RIGID_BODY.
   axisym_rod.k        an axisymmetric (*SECTION_SHELL ELFORM 15) elastic-plastic rod with a
                       conical tip stopped on its SPC'd end face, with a radial velocity
                       component, the axis held in x: 2D solids across ranks.
@@ -525,6 +530,79 @@ def prism_blocks(n1: int = 3, n2: int = 4, v: float = 10.0, end: float = 6e-5) -
                         15, n1, n2, v, end)
 
 
+def joints(w0: float = 0.05, end: float = 0.5) -> str:
+    """mm, ms, kg, GPa. Frame (part 1, fixed rigid), bar (part 2, rigid) hinged to it on the
+    y axis and turning at w0 about it, elastic block (part 3) ball-jointed under the bar, slider
+    (part 4, rigid) on a translational joint along x on top of the frame."""
+    mesh = Mesh()
+    frame = block(mesh, 1, (0.0, 0.0, 0.0), (20.0, 10.0, 10.0), (2, 1, 1))
+    bar = block(mesh, 2, (0.0, 0.0, -30.0), (10.0, 10.0, 30.0), (2, 2, 3))
+    hang = block(mesh, 3, (0.0, 0.0, -50.0), (10.0, 10.0, 20.0), (4, 4, 8))
+    slider = block(mesh, 4, (0.0, 0.0, 10.0), (10.0, 10.0, 5.0), (2, 2, 1))
+    moving = sorted(set(bar.values()) | set(hang.values()))
+    vel = "".join(f"{n:10d}{w0 * mesh.nodes[n - 1][2]:10.5g}{0.0:10.5g}"
+                  f"{-w0 * mesh.nodes[n - 1][0]:10.5g}\n" for n in moving)
+    return f"""*KEYWORD
+*TITLE
+joints: revolute with friction spring, spherical, translational with a rigid-body load
+*CONTROL_TERMINATION
+{end:10.4g}
+*DATABASE_GLSTAT
+      0.05
+*DATABASE_JNTFORC
+      0.05
+*PART
+frame
+         1         1         1
+*PART
+bar
+         2         1         2
+*PART
+hanging elastic block
+         3         1         3
+*PART
+slider
+         4         1         4
+*SECTION_SOLID
+         1         1
+*MAT_RIGID
+         1   7.85e-6     210.0       0.3
+       1.0       7.0       7.0
+*MAT_RIGID
+         2   7.85e-6     210.0       0.3
+*MAT_ELASTIC
+         3   7.85e-6     210.0       0.3
+*MAT_RIGID
+         4   7.85e-6     210.0       0.3
+*DEFINE_CURVE
+         1
+       0.0       1.0
+     100.0       1.0
+*LOAD_BODY_Z
+         1      0.01
+*LOAD_RIGID_BODY
+$      pid       dof      lcid        sf
+         4         1         1    0.0005
+         4         3         1    0.0003
+*CONSTRAINED_JOINT_REVOLUTE
+{frame[0, 0, 0]:10d}{bar[0, 0, 3]:10d}{frame[0, 1, 0]:10d}{bar[0, 2, 3]:10d}
+*DEFINE_COORDINATE_NODE
+         7{frame[0, 0, 0]:10d}{frame[0, 1, 0]:10d}{frame[1, 0, 0]:10d}
+*CONSTRAINED_JOINT_STIFFNESS_GENERALIZED
+         1         1         2         7
+$   lcidph
+         0
+$     esph      fmph
+       0.2     0.001
+*CONSTRAINED_JOINT_SPHERICAL
+{bar[1, 1, 0]:10d}{hang[2, 2, 4 * 2]:10d}
+*CONSTRAINED_JOINT_TRANSLATIONAL
+{frame[0, 0, 1]:10d}{slider[0, 0, 0]:10d}{frame[1, 0, 1]:10d}{slider[2, 0, 0]:10d}{frame[0, 1, 1]:10d}{slider[0, 2, 0]:10d}
+*INITIAL_VELOCITY_NODE
+{vel}{mesh.keyword_text()}*END
+"""
+
+
 def axisym_rod(nx: int = 6, ny: int = 30, radius: float = 5.0, length: float = 50.0,
                v: float = 200.0, end: float = 1.5e-2) -> str:
     """mm, ms, kg, GPa. A steel rod, x the radius and y the axis, its lower face tapered
@@ -591,9 +669,10 @@ def main() -> None:
     (out / "axisym_rod.k").write_text(axisym_rod())
     (out / "erosion.k").write_text(erosion())
     (out / "prism_blocks.k").write_text(prism_blocks())
+    (out / "joints.k").write_text(joints())
     print("wrote tests/data/decks/mixed_conditions.k, structures.k, structures_shell16.k, "
           "rigid_welds.k, contact_blocks.k, contact_tube.k, contact_tied.k, contact_cask.k, "
-          "tet_blocks.k, axisym_rod.k, erosion.k and prism_blocks.k")
+          "tet_blocks.k, axisym_rod.k, erosion.k, prism_blocks.k and joints.k")
 
 
 if __name__ == "__main__":

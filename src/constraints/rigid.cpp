@@ -253,6 +253,7 @@ RigidBodies::RigidBodies(const model::Model& m, const domain::Subdomain& sd,
   makeGroups(m, sd);
   initBodies(m, sd, comm);
   initJoints(m, sd, comm);
+  initLoads(m);
 }
 
 // The bodies, welds and tied sets of the model, and the group (body or set) of every local
@@ -439,15 +440,21 @@ void RigidBodies::initJoints(const model::Model& m, const domain::Subdomain& sd,
   const std::size_t nb = bodies_.size();
   std::vector<int64_t> keys;
   std::vector<double> values, all;
-  for (const auto& j : m.rigid.joints)
+  for (const auto& j : m.rigid.joints) {
+    const std::size_t first = joints_.size();
     for (const auto& pair : j.pairs) {
       JointPair jp;
       jp.node = pair;
       for (int s = 0; s < 2; ++s) jp.local[std::size_t(s)] = sd.localNode(pair[std::size_t(s)]);
       jp.rps = j.rps;
       jp.damp = j.damp;
+      jp.across = j.slides();
+      jp.axis = first;
+      pair_joint_.push_back(int32_t(joint_states_.size()));
       joints_.push_back(jp);
     }
+    joint_states_.push_back({j.id, {}, {}, 0.0});
+  }
   if (joints_.empty()) return;
   for (std::size_t p = 0; p < joints_.size(); ++p)
     for (int s = 0; s < 2; ++s) {
@@ -500,22 +507,138 @@ void RigidBodies::addJointForces(double dt, domain::Subdomain& sd, const comm::C
   const auto recs = gatherRecords(
       keys, values, 2 * joints_.size(), [](int32_t) { return 6; }, comm, all);
   double stored = 0.0;
+  for (JointState& js : joint_states_) js = {js.id, {}, {}, 0.0};
+  joint_nodal_.clear();
   for (std::size_t p = 0; p < joints_.size(); ++p) {
-    const JointPair& jp = joints_[p];
+    JointPair& jp = joints_[p];
     const std::size_t a = recs[2 * p].at(0), b = recs[2 * p + 1].at(0);
-    const Vec3 gap = sub(at(all, b), at(all, a)), dv = sub(at(all, b + 3), at(all, a + 3));
+    Vec3 gap = sub(at(all, b), at(all, a)), dv = sub(at(all, b + 3), at(all, a + 3));
+    if (jp.across) {
+      // Free along the axis N1 -> N3 (body A's, as it is now): only the rest pulls.
+      const Vec3 axis =
+          sub(at(all, recs[2 * (jp.axis + 1)].at(0)), at(all, recs[2 * jp.axis].at(0)));
+      const Vec3 e = scaled(axis, 1.0 / std::sqrt(dot(axis, axis)));
+      gap = sub(gap, scaled(e, dot(gap, e)));
+      dv = sub(dv, scaled(e, dot(dv, e)));
+    }
     // The spring and the damper pull a towards b and b towards a.
     const Vec3 f = add(scaled(gap, jp.k), scaled(dv, jp.c));
-    stored += 0.5 * jp.k * dot(gap, gap);
-    joint_dissipated_ += jp.c * dot(dv, dv) * dt;
+    // The damper's work over the last step, c dv(n-1/2) . (dv(n-1/2) + dv(n+1/2)) / 2 dt, once
+    // the new relative velocity is known (c dv(n-1/2)^2 dt overstates it when a joint snaps
+    // shut on a fast relative motion).
+    const double spring = 0.5 * jp.k * dot(gap, gap);
+    const double damped = dot(jp.damper, scaled(add(jp.dv_last, dv), 0.5)) * jp.dt_last;
+    jp.damper = scaled(dv, jp.c);
+    jp.dv_last = dv;
+    jp.dt_last = dt;
+    stored += spring;
+    joint_dissipated_ += damped;
+    jp.dissipated += damped;
+    JointState& js = joint_states_[std::size_t(pair_joint_[p])];
+    const std::size_t n2 = recs[2 * jp.axis + 1].at(0);  // the joint's N2
+    js.force = sub(js.force, f);
+    js.moment = sub(js.moment, cross(sub(at(all, b), at(all, n2)), f));
+    js.energy += spring + jp.dissipated;
     for (int s = 0; s < 2; ++s) {
       const int32_t n = jp.local[std::size_t(s)];
       if (n == model::kNone) continue;
       const double sign = s == 0 ? 1.0 : -1.0;
       for (int c = 0; c < 3; ++c) sd.f_ext[3 * std::size_t(n) + std::size_t(c)] += sign * f[c];
+      joint_nodal_.emplace_back(n, scaled(f, sign));
     }
   }
   joint_energy_ = stored + joint_dissipated_;
+}
+
+// *LOAD_RIGID_BODY and *CONSTRAINED_JOINT_STIFFNESS_GENERALIZED: their bodies, and each
+// stiffness frame in its body's principal coordinates (it turns with the body).
+void RigidBodies::initLoads(const model::Model& m) {
+  for (const auto& l : m.rigid.loads) loads_.push_back({l.body, l.dof, curveOf(m, l.curve), l.sf});
+  for (const auto& d : m.rigid.joint_stiffness) {
+    Stiffness st;
+    st.a = d.body_a;
+    st.b = d.body_b;
+    double ra[3][3], rb[3][3];
+    matrix(bodies_[std::size_t(d.body_a)].q, ra);
+    matrix(bodies_[std::size_t(d.body_b)].q, rb);
+    for (std::size_t i = 0; i < 3; ++i) {
+      st.axes_a[i] = matTVec(ra, d.frame_a[i]);
+      st.axes_b[i] = matTVec(rb, d.frame_b[i]);
+    }
+    st.es = d.stiffness;
+    st.fm = d.friction;
+    stiffness_.push_back(st);
+  }
+  if (loads_.empty() && stiffness_.empty()) return;
+  load_f_.assign(bodies_.size(), Vec3{});
+  load_m_.assign(bodies_.size(), Vec3{});
+  joint_m_.assign(bodies_.size(), Vec3{});
+}
+
+void RigidBodies::computeBodyLoads(double t) {
+  if (load_f_.empty()) return;
+  std::fill(load_f_.begin(), load_f_.end(), Vec3{});
+  std::fill(load_m_.begin(), load_m_.end(), Vec3{});
+  for (const BodyLoad& l : loads_) {
+    const double value = l.sf * (l.curve ? l.curve->value(t) : 1.0);
+    Vec3& target = l.dof < 3 ? load_f_[std::size_t(l.body)] : load_m_[std::size_t(l.body)];
+    target[std::size_t(l.dof % 3)] += value;
+  }
+  addJointStiffness();
+}
+
+// Euler-type angles of B's frame relative to A's: phi = atan2(b_y . a_z, b_y . a_y) (the turn
+// about a_x that carries a_y to b_y), theta = atan2(b_z . a_x, b_z . a_z) about a_y, psi =
+// atan2(b_x . a_y, b_x . a_x) about a_z. Exact for a turn about one local axis (a revolute
+// joint), first order for turns about several.
+Vec3 RigidBodies::relativeAngles(const Stiffness& s, std::array<Vec3, 3>& a) const {
+  double ra[3][3], rb[3][3];
+  matrix(bodies_[std::size_t(s.a)].q, ra);
+  matrix(bodies_[std::size_t(s.b)].q, rb);
+  std::array<Vec3, 3> b;
+  for (std::size_t i = 0; i < 3; ++i) {
+    a[i] = matVec(ra, s.axes_a[i]);
+    b[i] = matVec(rb, s.axes_b[i]);
+  }
+  return {std::atan2(dot(b[1], a[2]), dot(b[1], a[1])),
+          std::atan2(dot(b[2], a[0]), dot(b[2], a[2])),
+          std::atan2(dot(b[0], a[1]), dot(b[0], a[0]))};
+}
+
+// Friction springs (Keyword Manual, *CONSTRAINED_JOINT_STIFFNESS_GENERALIZED ESPH, FMPH):
+// elastic-plastic, M += ES d(angle) capped at +-FM, on each axis with ES > 0 and FM > 0
+// (ES alone serves stop angles, which are refused). The moment acts on B against its turn
+// relative to A and on A the opposite way; its work (stored and slipped) is internal energy.
+void RigidBodies::addJointStiffness() {
+  std::fill(joint_m_.begin(), joint_m_.end(), Vec3{});
+  for (Stiffness& s : stiffness_) {
+    std::array<Vec3, 3> axes;
+    const Vec3 raw = relativeAngles(s, axes);
+    Vec3 m{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      // The change since the last step, wrapped to (-pi, pi]: the angle goes on past a turn.
+      const double d = std::remainder(raw[k] - std::remainder(s.angle[k], 2 * M_PI), 2 * M_PI);
+      s.angle[k] += d;
+      if (!(s.es[k] > 0.0 && s.fm[k] > 0.0)) continue;
+      const double before = s.moment[k];
+      s.moment[k] = std::clamp(before + s.es[k] * d, -s.fm[k], s.fm[k]);
+      stiffness_work_ += 0.5 * (before + s.moment[k]) * d;
+      m = add(m, scaled(axes[k], s.moment[k]));
+    }
+    joint_m_[std::size_t(s.b)] = sub(joint_m_[std::size_t(s.b)], m);
+    joint_m_[std::size_t(s.a)] = add(joint_m_[std::size_t(s.a)], m);
+  }
+}
+
+double RigidBodies::loadWork(std::size_t g, const Vec3& v_prev, const Vec3& w_prev,
+                             double dt_n) const {
+  const Body& b = bodies_[g];
+  return dt_n * (dot(load_f_[g], scaled(add(v_prev, b.V), 0.5)) +
+                 dot(load_m_[g], scaled(add(w_prev, b.omega), 0.5)));
+}
+
+std::vector<JointState> RigidBodies::joints() const {
+  return joint_states_;
 }
 
 void RigidBodies::setInitialVelocities(domain::Subdomain& sd) const {
@@ -724,7 +847,14 @@ double RigidBodies::apply(double t, double dt_n, double dt_half, domain::Subdoma
       F = add(F, at(all, off));
       M = add(M, at(all, off + 3));
     }
+    const bool loaded = g < load_f_.size();
+    if (loaded) {
+      F = add(F, load_f_[g]);
+      M = add(M, add(load_m_[g], joint_m_[g]));
+    }
+    const Vec3 v_prev = b.V, w_prev = b.omega;
     work += advance(b, F, M, t, dt_n, dt_half);
+    if (loaded) work += loadWork(g, v_prev, w_prev, dt_n);
     if (!b.weld) continue;
     // The weld's force on each node: the change of the node's momentum the weld made, less
     // the force the node felt, F_c = m (v_rigid - v(n-1/2)) / dt_n - f; normal along the
@@ -870,6 +1000,13 @@ void RigidBodies::saveState(util::ArchiveWriter& out) const {
   out.put(joint_dissipated_);
   out.put(joint_energy_);
   out.put(stepped_);
+  for (const JointPair& j : joints_)
+    for (const auto& v : {Vec3{j.dissipated, j.dt_last, 0.0}, j.damper, j.dv_last}) out.put(v);
+  for (const Stiffness& st : stiffness_) {
+    out.put(st.angle);
+    out.put(st.moment);
+  }
+  out.put(stiffness_work_);
 }
 
 void RigidBodies::loadState(util::ArchiveReader& in) {
@@ -888,6 +1025,19 @@ void RigidBodies::loadState(util::ArchiveReader& in) {
   in.get(joint_dissipated_);
   in.get(joint_energy_);
   in.get(stepped_);
+  for (JointPair& j : joints_) {
+    Vec3 d{};
+    in.get(d);
+    j.dissipated = d[0];
+    j.dt_last = d[1];
+    in.get(j.damper);
+    in.get(j.dv_last);
+  }
+  for (Stiffness& st : stiffness_) {
+    in.get(st.angle);
+    in.get(st.moment);
+  }
+  in.get(stiffness_work_);
 }
 
 }  // namespace crumple::constraints

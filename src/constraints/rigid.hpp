@@ -36,6 +36,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "comm/communicator.hpp"
@@ -65,6 +66,15 @@ struct RigidBodyState {
   std::array<Vec3, 3> axes{};  // the principal axes at t(n+1), in global components
 };
 
+// One joint's resultants for jntforc, from the last addJointForces: the force the joint's
+// springs exert on body B (the N2 side), their moment about N2, and the energy of the joint
+// (stored in its springs plus what its dampers dissipated).
+struct JointState {
+  int64_t id = 0;
+  Vec3 force{}, moment{};
+  double energy = 0.0;
+};
+
 struct WeldState {
   int64_t id = 0;
   bool failed = false;
@@ -81,7 +91,10 @@ class RigidBodies {
   RigidBodies(const model::Model& model, const domain::Subdomain& sd,
               const comm::Communicator& comm);
 
-  bool empty() const { return bodies_.empty() && sets_.empty() && joints_.empty(); }
+  bool empty() const {
+    return bodies_.empty() && sets_.empty() && joints_.empty() && loads_.empty() &&
+           stiffness_.empty();
+  }
 
   // The bodies' initial velocity fields on their nodes (v, and w with rotations).
   void setInitialVelocities(domain::Subdomain& sd) const;
@@ -103,8 +116,20 @@ class RigidBodies {
   // (omega dt <= sqrt(RPS / 2)), as LS-DYNA scales its joint penalty with the masses and the
   // time step (Theory Manual, "Rigid Body Joints"). Damping is 10% of critical, times DAMP.
   void addJointForces(double dt, domain::Subdomain& sd, const comm::Communicator& comm);
-  // Energy stored in the joint springs plus what their dampers dissipated (every rank).
-  double jointEnergy() const { return joint_energy_; }
+  // The joints' forces on this rank's copies of their nodes in the last addJointForces, as
+  // (local node, force): they sit in f_ext, and the solver takes their work back out of the
+  // external work (their energy is internal, jointEnergy()).
+  const std::vector<std::pair<int32_t, Vec3>>& jointNodeForces() const { return joint_nodal_; }
+  // Energy stored in the joint springs plus what their dampers dissipated, and the work of
+  // the joint stiffnesses (every rank).
+  double jointEnergy() const { return joint_energy_ + stiffness_work_; }
+
+  // Once per cycle, after addJointForces (no communication: the bodies' states are the same
+  // on every rank): the *LOAD_RIGID_BODY forces and moments at time t(n), and the moments of
+  // the *CONSTRAINED_JOINT_STIFFNESS_GENERALIZED friction springs from the bodies'
+  // orientations at t(n). apply() adds them to the bodies' force and moment sums.
+  void computeBodyLoads(double t);
+  std::vector<JointState> joints() const;
 
   // Kinetic energy of the bodies at t(n) (translation and rotation, from the mean of the
   // half-step momenta, like the solver's nodal sum); the same on every rank. The solver
@@ -184,7 +209,46 @@ class RigidBodies {
     std::array<int32_t, 2> local{};            // local copies, or model::kNone
     double rps = 1.0, damp = 1.0, mass = 0.0;  // mass: m_a m_b / (m_a + m_b)
     double k = 0.0, c = 0.0;
+    // Cylindrical and translational joints: only the gap across the axis counts, the axis
+    // running from the A node of pair `axis` to that of pair `axis` + 1 (N1 -> N3).
+    bool across = false;
+    std::size_t axis = 0;
+    double dissipated = 0.0;
+    // The damper's force and the relative velocity of the last call, and its step: the
+    // damper's work over that step at the mean of that and the new relative velocity.
+    Vec3 damper{}, dv_last{};
+    double dt_last = 0.0;
   };
+
+  // *LOAD_RIGID_BODY components and *CONSTRAINED_JOINT_STIFFNESS_GENERALIZED springs.
+  struct BodyLoad {
+    int32_t body;
+    int dof;
+    const model::Curve* curve;
+    double sf;
+  };
+  struct Stiffness {
+    int32_t a = 0, b = 0;                    // bodies
+    std::array<Vec3, 3> axes_a{}, axes_b{};  // local axes in body (principal) coordinates
+    Vec3 es{}, fm{};
+    Vec3 angle{};   // phi, theta, psi, followed continuously through +-pi
+    Vec3 moment{};  // the springs' moments about A's local axes
+  };
+  void initLoads(const model::Model& m);
+  // The three relative angles of B's local frame to A's (phi about A's x, theta about y, psi
+  // about z) and A's current axes.
+  Vec3 relativeAngles(const Stiffness& s, std::array<Vec3, 3>& axes_a) const;
+  // The external work of the body loads over dt_n on body g (velocities before and after).
+  double loadWork(std::size_t g, const Vec3& v_prev, const Vec3& w_prev, double dt_n) const;
+  void addJointStiffness();
+
+  std::vector<BodyLoad> loads_;
+  std::vector<Stiffness> stiffness_;
+  std::vector<Vec3> load_f_, load_m_, joint_m_;  // per body, this cycle
+  double stiffness_work_ = 0.0;
+  std::vector<JointState> joint_states_;  // per joint of the model
+  std::vector<int32_t> pair_joint_;       // per entry of joints_: its joint
+  std::vector<std::pair<int32_t, Vec3>> joint_nodal_;
 
   std::vector<Body> bodies_;  // part and nodal bodies, then welds
   std::vector<TiedSet> sets_;

@@ -276,7 +276,7 @@ std::vector<KeywordSpec> makeTables() {
   for (std::string_view name :
        {"*DATABASE_GLSTAT", "*DATABASE_MATSUM", "*DATABASE_NODOUT", "*DATABASE_RWFORC",
         "*DATABASE_RCFORC", "*DATABASE_SLEOUT", "*DATABASE_SECFORC", "*DATABASE_SPCFORC",
-        "*DATABASE_BNDOUT", "*DATABASE_RBDOUT", "*DATABASE_DEFORC"})
+        "*DATABASE_BNDOUT", "*DATABASE_RBDOUT", "*DATABASE_DEFORC", "*DATABASE_JNTFORC"})
     t.push_back({name, asciiDatabase()});
   // Keyword Manual Vol. I, *DATABASE_CROSS_SECTION_PLANE: the cut's tail (XCT..) and the
   // normal's head (XCH..), the edge vector's head (XHEV..), its lengths; ID/ITYPE name a local
@@ -329,6 +329,9 @@ std::vector<KeywordSpec> makeTables() {
       {"*DEFINE_VECTOR",
        {titleCard(),
         {"card 1", {I("VID"), R("XT"), R("YT"), R("ZT"), R("XH"), R("YH"), R("ZH"), I("CID")}}}});
+  t.push_back(
+      {"*DEFINE_COORDINATE_NODE",
+       {titleCard(), {"card 1", {I("CID"), I("N1"), I("N2"), I("N3"), I("FLAG"), A("DIR")}}}});
   t.push_back(
       {"*DEFINE_COORDINATE_SYSTEM",
        {titleCard(),
@@ -450,6 +453,16 @@ std::vector<KeywordSpec> makeTables() {
                 {"card 1",
                  {I("N1"), I("N2"), I("N3"), I("N4"), I("N5"), I("N6"), R("RPS", 1, Z),
                   R("DAMP", 1, Z)}}}});
+  t.push_back(
+      {"*CONSTRAINED_JOINT_STIFFNESS",
+       {{"card 1", {I("JSID"), I("PIDA"), I("PIDB"), I("CIDA"), I("CIDB"), I("JID")}},
+        {"card 2", {I("LCIDPH"), I("LCIDT"), I("LCIDPS"), I("DLCIDPH"), I("DLCIDT"), I("DLCIDPS")}},
+        {"card 3", {R("ESPH"), R("FMPH"), R("EST"), R("FMT"), R("ESPS"), R("FMPS")}},
+        {"card 4", {R("NSAPH"), R("PSAPH"), R("NSAT"), R("PSAT"), R("NSAPS"), R("PSAPS")}}}});
+  t.push_back(
+      {"*LOAD_RIGID_BODY",
+       {{"card 1",
+         {I("PID"), I("DOF"), I("LCID"), R("SF", 1, Z), I("CID"), I("M1"), I("M2"), I("M3")}}}});
   t.push_back({"*CONSTRAINED_NODE_SET",
                {{"id card", {I("CNSID")}}, {"card 1", {I("NSID"), I("DOF"), R("TF", 1e20, Z)}}}});
   // The id of a definition Crumple does not support (*MAT_RIGID, *SECTION_SHELL, ...): the

@@ -293,6 +293,7 @@ Material readMaterialBase(Context& ctx, const deck::Card& c, std::string title,
 void readCurve(Context&, const deck::Keyword&, const KeywordOptions&);
 void readBox(Context&, const deck::Keyword&, const KeywordOptions&);
 void readCoordinateSystem(Context&, const deck::Keyword&, const KeywordOptions&);
+void readCoordinateNode(Context&, const deck::Keyword&, const KeywordOptions&);
 void readVector(Context&, const deck::Keyword&, const KeywordOptions&);
 void readNodeSetList(Context&, const deck::Keyword&, const KeywordOptions&);
 void readNodeSetGeneral(Context&, const deck::Keyword&, const KeywordOptions&);
@@ -345,6 +346,8 @@ void readSpotweld(Context&, const deck::Keyword&, const KeywordOptions&);
 void readGeneralizedWeld(Context&, const deck::Keyword&, const KeywordOptions&);
 void readConstrainedNodeSet(Context&, const deck::Keyword&, const KeywordOptions&);
 void readJoint(Context&, const deck::Keyword&, const KeywordOptions&);
+void readJointStiffness(Context&, const deck::Keyword&, const KeywordOptions&);
+void readLoadRigidBody(Context&, const deck::Keyword&, const KeywordOptions&);
 void finishRigid(Context&);
 
 // build_controls.cpp

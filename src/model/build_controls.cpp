@@ -189,6 +189,7 @@ void readDatabaseAscii(Context& ctx, const deck::Keyword& kw, const KeywordOptio
       {"*DATABASE_BNDOUT", {&k.bndout_dt, &k.ascii.bndout}},
       {"*DATABASE_RBDOUT", {&k.rbdout_dt, &k.ascii.rbdout}},
       {"*DATABASE_DEFORC", {&k.deforc_dt, &k.ascii.deforc}},
+      {"*DATABASE_JNTFORC", {&k.jntforc_dt, &k.ascii.jntforc}},
   };
   for (const auto& [name, target] : files)
     if (kw.name == name) {

@@ -14,12 +14,23 @@
 
 #include "model/build_context.hpp"
 #include "util/error.hpp"
+#include "util/vec3.hpp"
 
 namespace crumple::model::build {
 
 using deck::Card;
 using deck::CardCursor;
 using deck::keywordSpec;
+using util::cross;
+using util::norm;
+using util::sub;
+
+// *CONSTRAINED_JOINT_STIFFNESS before its parts' bodies are known.
+struct JointStiffnessInput {
+  JointStiffnessDef def;
+  int64_t pid_a = 0, pid_b = 0;
+  std::string context_a, context_b;
+};
 
 // What the readers collect before the bodies can be formed (parts, sets and merges must all
 // be known first).
@@ -55,6 +66,13 @@ struct RigidInput {
   };
   std::vector<Motion> motions;
   std::vector<bool> weld_explicit_id;
+  std::vector<JointStiffnessInput> stiffness;
+  struct Load {
+    int64_t pid;
+    RigidLoad load;
+    std::string context;
+  };
+  std::vector<Load> loads;
 };
 
 namespace {
@@ -353,12 +371,65 @@ void readConstrainedNodeSet(Context& ctx, const deck::Keyword& kw, const Keyword
   }
 }
 
-// *CONSTRAINED_JOINT_SPHERICAL: N1, N2; _REVOLUTE: N1, N2 and N3, N4 on the axis. Each pair
-// must coincide (Keyword Manual, *CONSTRAINED_JOINT: the joint's node pairs are coincident).
+namespace {
+
+// The joint's node pairs (N1-N2, N3-N4, N5-N6 as its kind uses them), each pair coincident
+// (Keyword Manual, *CONSTRAINED_JOINT: the joint's node pairs are coincident).
+void readJointPairs(Context& ctx, const Card& c, JointDef& j) {
+  static constexpr const char* kN[6] = {"N1", "N2", "N3", "N4", "N5", "N6"};
+  const int used = j.kind == JointKind::Spherical ? 2 : j.kind == JointKind::Translational ? 6 : 4;
+  for (int p = 0; p < used; p += 2) {
+    const int32_t a = ctx.node(c, kN[p], c.integer(kN[p]));
+    const int32_t b = ctx.node(c, kN[p + 1], c.integer(kN[p + 1]));
+    if (a == b) c.fail(kN[p + 1], "a joint joins two different nodes");
+    const Vec3& xa = ctx.model.nodes.x[static_cast<std::size_t>(a)];
+    const Vec3& xb = ctx.model.nodes.x[static_cast<std::size_t>(b)];
+    const double scale = std::max({1.0, std::abs(xa[0]), std::abs(xa[1]), std::abs(xa[2])});
+    if (std::hypot(xa[0] - xb[0], xa[1] - xb[1], xa[2] - xb[2]) > 1e-6 * scale)
+      c.fail(kN[p + 1],
+             "the joint's nodes " + std::string(kN[p]) + " and " + kN[p + 1] + " must coincide");
+    j.pairs.push_back({a, b});
+  }
+  if (used >= 4) {
+    const Vec3& x1 = ctx.model.nodes.x[static_cast<std::size_t>(j.pairs[0][0])];
+    const Vec3& x3 = ctx.model.nodes.x[static_cast<std::size_t>(j.pairs[1][0])];
+    if (x1 == x3) c.fail("N3", "the joint's axis N1-N3 has no length");
+  }
+  if (j.kind == JointKind::Translational) {
+    // N5 off the axis: otherwise nothing holds the bodies against turning about it.
+    const auto x = [&](int p) {
+      return ctx.model.nodes.x[std::size_t(j.pairs[std::size_t(p)][0])];
+    };
+    const Vec3 e = sub(x(1), x(0)), r = sub(x(2), x(0));
+    if (norm(cross(e, r)) <= 1e-6 * norm(e) * norm(r))
+      c.fail("N5", "N5 lies on the axis N1-N3: it cannot hold the turn about the axis");
+  }
+  for (int p = used; p < 6; ++p)
+    if (c.integer(kN[p]) != 0)
+      ctx.reject(c, kN[p], std::string(kN[p]) + " is not used by this joint");
+}
+
+}  // namespace
+
+// *CONSTRAINED_JOINT_SPHERICAL, _REVOLUTE, _CYLINDRICAL, _TRANSLATIONAL (Keyword Manual vol.
+// I, *CONSTRAINED_JOINT): N1..N6 (nodes of body A odd, body B even), RPS, DAMP.
 void readJoint(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
-  const bool revolute = opts.has("REVOLUTE");
-  if (revolute == opts.has("SPHERICAL")) {
-    ctx.rejectKeyword(kw, "give one of _SPHERICAL or _REVOLUTE (other joints are not supported)");
+  static constexpr std::pair<const char*, JointKind> kKinds[] = {
+      {"SPHERICAL", JointKind::Spherical},
+      {"REVOLUTE", JointKind::Revolute},
+      {"CYLINDRICAL", JointKind::Cylindrical},
+      {"TRANSLATIONAL", JointKind::Translational}};
+  int given = 0;
+  JointKind kind = JointKind::Spherical;
+  for (const auto& [word, k] : kKinds)
+    if (opts.has(word)) {
+      ++given;
+      kind = k;
+    }
+  if (given != 1) {
+    ctx.rejectKeyword(kw,
+                      "give one of _SPHERICAL, _REVOLUTE, _CYLINDRICAL or _TRANSLATIONAL (other "
+                      "joints are not supported)");
     return;
   }
   const auto& spec = keywordSpec("*CONSTRAINED_JOINT");
@@ -369,33 +440,111 @@ void readJoint(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts
     if (opts.has("ID")) j.id = positiveId(cur.read(spec.card("id card")), "ID");
     const Card& c = cur.read(spec.card("card 1"));
     j.where = c.where();
-    j.revolute = revolute;
-    static constexpr const char* kN[4] = {"N1", "N2", "N3", "N4"};
-    const int used = revolute ? 4 : 2;
-    for (int p = 0; p < used; p += 2) {
-      const int32_t a = ctx.node(c, kN[p], c.integer(kN[p]));
-      const int32_t b = ctx.node(c, kN[p + 1], c.integer(kN[p + 1]));
-      if (a == b) c.fail(kN[p + 1], "a joint joins two different nodes");
-      const Vec3& xa = ctx.model.nodes.x[static_cast<std::size_t>(a)];
-      const Vec3& xb = ctx.model.nodes.x[static_cast<std::size_t>(b)];
-      const double scale = std::max({1.0, std::abs(xa[0]), std::abs(xa[1]), std::abs(xa[2])});
-      if (std::hypot(xa[0] - xb[0], xa[1] - xb[1], xa[2] - xb[2]) > 1e-6 * scale)
-        c.fail(kN[p + 1],
-               "the joint's nodes " + std::string(kN[p]) + " and " + kN[p + 1] + " must coincide");
-      j.pairs.push_back({a, b});
-    }
-    if (revolute) {
-      const Vec3& x1 = ctx.model.nodes.x[static_cast<std::size_t>(j.pairs[0][0])];
-      const Vec3& x3 = ctx.model.nodes.x[static_cast<std::size_t>(j.pairs[1][0])];
-      if (x1 == x3) c.fail("N3", "the revolute axis N1-N3 has no length");
-    }
-    for (auto f : {"N5", "N6"})
-      if (c.integer(f) != 0) ctx.reject(c, f, "N5 and N6 belong to joints not supported here");
+    j.kind = kind;
+    readJointPairs(ctx, c, j);
     j.rps = c.real("RPS");
     j.damp = c.real("DAMP");
     if (!(j.rps > 0)) c.fail("RPS", "must be positive");
     if (j.damp < 0) c.fail("DAMP", "must not be negative");
     ctx.model.rigid.joints.push_back(std::move(j));
+    ctx.collect(cur);
+  }
+}
+
+namespace {
+
+// A local frame of *CONSTRAINED_JOINT_STIFFNESS (CIDA, CIDB).
+std::array<Vec3, 3> jointFrame(Context& ctx, const Card& c, std::string_view field, int64_t cid) {
+  if (cid == 0) c.fail(field, "a coordinate system is required");
+  return ctx.frame(c, field, cid).axis;
+}
+
+// Card 2 (moment and damping curves) and card 4 (stop angles): refused by field name.
+void rejectStiffnessCurves(Context& ctx, const Card& c2, const Card& c4) {
+  for (auto f : {"LCIDPH", "LCIDT", "LCIDPS"})
+    if (c2.integer(f) != 0)
+      ctx.reject(c2, f, "a moment-rotation curve of a joint stiffness is not supported");
+  for (auto f : {"DLCIDPH", "DLCIDT", "DLCIDPS"})
+    if (c2.integer(f) != 0)
+      ctx.reject(c2, f, "a damping curve of a joint stiffness is not supported");
+  for (auto f : {"NSAPH", "PSAPH", "NSAT", "PSAT", "NSAPS", "PSAPS"})
+    if (c4.real(f) != 0.0) ctx.reject(c4, f, "stop angles of a joint stiffness are not supported");
+}
+
+}  // namespace
+
+// *CONSTRAINED_JOINT_STIFFNESS_GENERALIZED (Keyword Manual vol. I): JSID PIDA PIDB CIDA CIDB
+// JID; curves LCIDPH.. DLCIDPS; ESPH FMPH EST FMT ESPS FMPS; stop angles NSAPH..PSAPS. Built:
+// the friction springs (ES, FM > 0) about the three local axes; the rest is refused by name.
+void readJointStiffness(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  if (!opts.has("GENERALIZED")) {
+    ctx.rejectKeyword(kw, "only _GENERALIZED joint stiffness is supported");
+    return;
+  }
+  const auto& spec = keywordSpec("*CONSTRAINED_JOINT_STIFFNESS");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c1 = cur.read(spec.card("card 1"));
+    const Card& c2 = cur.readOptional(spec.card("card 2"));
+    const Card& c3 = cur.readOptional(spec.card("card 3"));
+    const Card& c4 = cur.readOptional(spec.card("card 4"));
+    JointStiffnessInput in;
+    in.def.id = positiveId(c1, "JSID");
+    in.def.where = c1.where();
+    in.pid_a = c1.integer("PIDA");
+    in.pid_b = c1.integer("PIDB");
+    in.context_a = c1.context("PIDA");
+    in.context_b = c1.context("PIDB");
+    const int64_t cida = c1.integer("CIDA");
+    in.def.frame_a = jointFrame(ctx, c1, "CIDA", cida);
+    in.def.frame_b =
+        c1.integer("CIDB") == 0 ? in.def.frame_a : jointFrame(ctx, c1, "CIDB", c1.integer("CIDB"));
+    if (c1.integer("JID") != 0)
+      ctx.reject(c1, "JID", "a joint stiffness tied to one joint (JID) is not supported");
+    rejectStiffnessCurves(ctx, c2, c4);
+    static constexpr const char* kEs[3] = {"ESPH", "EST", "ESPS"};
+    static constexpr const char* kFm[3] = {"FMPH", "FMT", "FMPS"};
+    for (int k = 0; k < 3; ++k) {
+      in.def.stiffness[std::size_t(k)] = c3.real(kEs[k]);
+      in.def.friction[std::size_t(k)] = c3.real(kFm[k]);
+      if (in.def.stiffness[std::size_t(k)] < 0) c3.fail(kEs[k], "must not be negative");
+      if (in.def.friction[std::size_t(k)] < 0)
+        ctx.reject(c3, kFm[k], "a friction moment curve (FM < 0) is not supported");
+    }
+    input(ctx).stiffness.push_back(std::move(in));
+    ctx.collect(cur);
+  }
+}
+
+// *LOAD_RIGID_BODY (Keyword Manual vol. I): PID DOF (1-3 force along x, y, z; 5-7 moment about
+// x, y, z; of CID's axes when given, fixed in space) LCID SF CID M1 M2 M3.
+void readLoadRigidBody(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*LOAD_RIGID_BODY").card("card 1");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec);
+    const int64_t dof = c.integer("DOF");
+    if (dof < 1 || dof > 7 || dof == 4) {
+      ctx.reject(c, "DOF", "DOF " + std::to_string(dof) + " is not supported (1-3, 5-7 are)");
+      ctx.collect(cur);
+      continue;
+    }
+    for (auto f : {"M1", "M2", "M3"})
+      if (c.integer(f) != 0) ctx.reject(c, f, "a follower load (M1, M2, M3) is not supported");
+    const int axis = static_cast<int>(dof <= 3 ? dof - 1 : dof - 5);
+    Vec3 dir{};
+    dir[std::size_t(axis)] = 1.0;
+    if (const int64_t cid = c.integer("CID"); cid != 0)
+      dir = ctx.frame(c, "CID", cid).axis[std::size_t(axis)];
+    RigidLoad load;
+    load.curve = ctx.curve(c, "LCID", c.integer("LCID"));
+    load.where = c.where();
+    for (int i = 0; i < 3; ++i)
+      if (dir[std::size_t(i)] != 0.0) {
+        load.dof = (dof <= 3 ? 0 : 3) + i;
+        load.sf = c.real("SF") * dir[std::size_t(i)];
+        input(ctx).loads.push_back({c.integer("PID"), load, c.context("PID")});
+      }
     ctx.collect(cur);
   }
 }
@@ -577,23 +726,41 @@ void dropEmptyBodies(RigidDefinitions& rd, std::vector<int32_t>& part_body) {
     if (b != kNone) b = renumber[std::size_t(b)];
 }
 
-// Prescribed rigid motion: by part (the part's body) or nodal rigid body id.
+// The body of a rigid part or nodal rigid body named by `pid` (prescribed motion, loads,
+// joint stiffness).
+int32_t bodyOf(const Model& m, int64_t pid, const std::vector<int32_t>& part_body,
+               const std::string& context) {
+  const RigidDefinitions& rd = m.rigid;
+  if (const int32_t p = m.partIndex(pid); p != kNone) {
+    if (!isRigidPart(m, p))
+      failAt(context, "part " + std::to_string(pid) + " is not rigid (*MAT_RIGID)");
+    return part_body[std::size_t(p)];
+  }
+  for (std::size_t k = 0; k < rd.bodies.size(); ++k)
+    if (rd.bodies[k].nodal && rd.bodies[k].id == pid) return int32_t(k);
+  failAt(context, "part or nodal rigid body " + std::to_string(pid) + " is not defined");
+}
+
+// Prescribed rigid motion, body loads and joint stiffnesses find their bodies.
 void attachMotions(Model& m, const RigidInput& in, const std::vector<int32_t>& part_body) {
   RigidDefinitions& rd = m.rigid;
-  for (const auto& mo : in.motions) {
-    int32_t body = kNone;
-    if (const int32_t p = m.partIndex(mo.pid); p != kNone) {
-      if (!isRigidPart(m, p))
-        failAt(mo.context, "part " + std::to_string(mo.pid) + " is not rigid (*MAT_RIGID)");
-      body = part_body[std::size_t(p)];
-    } else {
-      for (std::size_t k = 0; k < rd.bodies.size(); ++k)
-        if (rd.bodies[k].nodal && rd.bodies[k].id == mo.pid) body = int32_t(k);
-      if (body == kNone)
-        failAt(mo.context,
-               "part or nodal rigid body " + std::to_string(mo.pid) + " is not defined");
+  for (const auto& mo : in.motions)
+    if (const int32_t body = bodyOf(m, mo.pid, part_body, mo.context); body != kNone)
+      rd.bodies[std::size_t(body)].motions.push_back(mo.motion);
+  for (const auto& l : in.loads)
+    if (const int32_t body = bodyOf(m, l.pid, part_body, l.context); body != kNone) {
+      rd.loads.push_back(l.load);
+      rd.loads.back().body = body;
     }
-    if (body != kNone) rd.bodies[std::size_t(body)].motions.push_back(mo.motion);
+  for (const auto& s : in.stiffness) {
+    JointStiffnessDef d = s.def;
+    d.body_a = bodyOf(m, s.pid_a, part_body, s.context_a);
+    d.body_b = bodyOf(m, s.pid_b, part_body, s.context_b);
+    if (d.body_a == kNone || d.body_b == kNone)
+      failAt(d.body_a == kNone ? s.context_a : s.context_b, "the rigid part has no nodes");
+    if (d.body_a == d.body_b)
+      failAt(s.context_b, "PIDA and PIDB are the same rigid body: the joint turns nothing");
+    rd.joint_stiffness.push_back(d);
   }
 }
 
@@ -678,6 +845,22 @@ void checkPrescribedNodes(const Model& m, const std::vector<Owner>& owner) {
   }
 }
 
+// A cylindrical or translational joint carries its axis on body A and slides along it on
+// body B: both ends of every pair belong to rigid bodies (Keyword Manual, *CONSTRAINED_JOINT:
+// a joint between two rigid bodies); spherical and revolute joints also pull deformable nodes.
+void checkSlidingJoints(const Model& m, const std::vector<Owner>& owner) {
+  for (const JointDef& j : m.rigid.joints) {
+    if (!j.slides()) continue;
+    for (const auto& pair : j.pairs)
+      for (int32_t n : pair)
+        if (owner[std::size_t(n)].kind != Owner::Body)
+          throw util::InputError(j.where.str() + ": joint " + std::to_string(j.id) + ": node " +
+                                 std::to_string(m.nodes.id[std::size_t(n)]) +
+                                 " belongs to no rigid body; a cylindrical or translational "
+                                 "joint joins two rigid bodies");
+  }
+}
+
 }  // namespace
 
 void finishRigid(Context& ctx) {
@@ -692,6 +875,7 @@ void finishRigid(Context& ctx) {
   const std::vector<Owner> owner = claimNodes(m);
   convertSpcs(ctx, owner);
   checkPrescribedNodes(m, owner);
+  checkSlidingJoints(m, owner);
 }
 
 }  // namespace crumple::model::build

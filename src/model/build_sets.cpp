@@ -273,6 +273,40 @@ void readCoordinateSystem(Context& ctx, const deck::Keyword& kw, const KeywordOp
   ctx.collect(cur);
 }
 
+// *DEFINE_COORDINATE_NODE (Keyword Manual vol. I): local x along N1 -> N2, z normal to the
+// plane of N1, N2, N3, y = z x x, from the nodes' initial places. FLAG = 1 (the frame follows
+// its nodes during the run) is refused; a joint stiffness turns its frames with its bodies
+// whatever FLAG says.
+void readCoordinateNode(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*DEFINE_COORDINATE_NODE");
+  CardCursor cur(kw, ctx.deck);
+  if (opts.has("TITLE")) cur.read(spec.card("title card"));
+  const Card& c = cur.read(spec.card("card 1"));
+  const int64_t id = c.integer("CID");
+  if (id <= 0) c.fail("CID", "the coordinate system id must be a positive integer");
+  ctx.define(Kind::CoordinateSystem, id, c, "CID");
+  if (c.integer("FLAG") != 0)
+    ctx.reject(c, "FLAG", "a coordinate system that follows its nodes (FLAG = 1) is not supported");
+  if (const std::string dir = c.text("DIR"); !dir.empty() && dir != "X" && dir != "x")
+    ctx.reject(c, "DIR", "only DIR = X (local x along N1 -> N2) is supported");
+  const auto at = [&](std::string_view f) {
+    return ctx.model.nodes.x[std::size_t(ctx.node(c, f, c.integer(f)))];
+  };
+  const Vec3 o = at("N1");
+  const Vec3 ex = sub(at("N2"), o);
+  const Vec3 ez = cross(ex, sub(at("N3"), o));
+  if (norm(ex) == 0.0) c.fail("N2", "N2 coincides with N1: the local x axis has no direction");
+  if (norm(ez) == 0.0) c.fail("N3", "N3 lies on the local x axis N1-N2");
+  Frame f;
+  for (int i = 0; i < 3; ++i) {
+    f.axis[0][i] = ex[i] / norm(ex);
+    f.axis[2][i] = ez[i] / norm(ez);
+  }
+  f.axis[1] = cross(f.axis[2], f.axis[0]);
+  ctx.frames.emplace(id, f);
+  ctx.collect(cur);
+}
+
 void readNodeSetList(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const auto& spec = keywordSpec("*SET_NODE_LIST");
   CardCursor cur(kw, ctx.deck);

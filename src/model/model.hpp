@@ -311,11 +311,12 @@ struct Controls {
   double sleout_dt = 0.0;
   double secforc_dt = 0.0;
   double spcforc_dt = 0.0, bndout_dt = 0.0, rbdout_dt = 0.0, deforc_dt = 0.0;
+  double jntforc_dt = 0.0;  // *DATABASE_JNTFORC (jntforc.csv and jntforc)
   // The *DATABASE_<file> keywords present: Crumple writes those files in LS-DYNA's ASCII
   // layout (src/output/ascii.hpp) beside its CSV histories.
   struct AsciiFiles {
     bool glstat = false, matsum = false, nodout = false, rwforc = false, rcforc = false;
-    bool sleout = false, secforc = false;
+    bool sleout = false, secforc = false, jntforc = false;
     bool spcforc = false, bndout = false, rbdout = false, deforc = false;
   } ascii;
   int64_t d3dump_cycles = 0;  // *DATABASE_BINARY_D3DUMP CYCL; 0 = no cycle-driven dumps

@@ -7,8 +7,10 @@
 //   spot welds     *CONSTRAINED_SPOTWELD and *CONSTRAINED_GENERALIZED_WELD_SPOT: a small nodal
 //                  rigid body that fails on a force criterion or at a time
 //   tied node sets *CONSTRAINED_NODE_SET: a common velocity in some global directions
-//   joints         *CONSTRAINED_JOINT_SPHERICAL and _REVOLUTE: penalty springs between
-//                  coincident node pairs (the one exception to the rule below)
+//   joints         *CONSTRAINED_JOINT_SPHERICAL, _REVOLUTE, _CYLINDRICAL, _TRANSLATIONAL:
+//                  penalty springs between coincident node pairs (the one exception to the
+//                  rule below), with *CONSTRAINED_JOINT_STIFFNESS_GENERALIZED on their bodies
+//   body loads     *LOAD_RIGID_BODY: a force or moment on a body's centre of mass
 //
 // Every node list holds model node indices, ascending and without repeats. A node belongs to
 // at most one of all these (LS-DYNA Keyword Manual, *CONSTRAINED_SPOTWELD remarks: nodes may
@@ -81,14 +83,42 @@ struct TiedNodeSet {
   util::SourceLoc where;
 };
 
-// *CONSTRAINED_JOINT_SPHERICAL (one pair N1-N2) and _REVOLUTE (pairs N1-N2 and N3-N4 on the
-// axis): penalty springs pull each pair of coincident nodes back together.
+// *CONSTRAINED_JOINT_: penalty springs pull each pair of coincident nodes (N1-N2, N3-N4,
+// N5-N6) back together. Spherical: N1-N2; revolute: N1-N2 and N3-N4 on the axis; cylindrical:
+// the same pairs, free to slide along the axis N1 -> N3; translational: as cylindrical, plus
+// N5-N6 off the axis against turning about it.
+enum class JointKind : uint8_t { Spherical, Revolute, Cylindrical, Translational };
 struct JointDef {
   int64_t id = 0;
-  bool revolute = false;
+  JointKind kind = JointKind::Spherical;
   std::vector<std::array<int32_t, 2>> pairs;
   double rps = 1.0;   // relative penalty stiffness
   double damp = 1.0;  // scale of the default damping
+  util::SourceLoc where;
+  // Pairs whose gap counts only across the axis (cylindrical and translational joints).
+  bool slides() const { return kind == JointKind::Cylindrical || kind == JointKind::Translational; }
+};
+
+// *CONSTRAINED_JOINT_STIFFNESS_GENERALIZED: about the axes of a local frame of body A (phi
+// about x, theta about y, psi about z), an elastic-plastic (friction) spring of stiffness
+// ES and limit moment FM resists the rotation of body B's frame relative to A's.
+struct JointStiffnessDef {
+  int64_t id = 0;
+  int32_t body_a = -1, body_b = -1;  // indices into RigidDefinitions::bodies
+  // Local axes (rows, global components) at time 0; they turn with their bodies.
+  std::array<std::array<double, 3>, 3> frame_a{}, frame_b{};
+  std::array<double, 3> stiffness{};  // ESPH, ESTH, ESPS
+  std::array<double, 3> friction{};   // FMPH, FMTH, FMPS (0: elastic)
+  util::SourceLoc where;
+};
+
+// *LOAD_RIGID_BODY: a force along a global axis (dof 0-2) or a moment about one (dof 3-5) on
+// a body's centre of mass, SF times a curve of time.
+struct RigidLoad {
+  int32_t body = -1;
+  int dof = 0;
+  int32_t curve = -1;  // index into Model::curves
+  double sf = 1.0;
   util::SourceLoc where;
 };
 
@@ -98,8 +128,11 @@ struct RigidDefinitions {
   std::vector<SpotweldDef> welds;  // in deck order
   std::vector<TiedNodeSet> node_sets;
   std::vector<JointDef> joints;  // in deck order
+  std::vector<JointStiffnessDef> joint_stiffness;
+  std::vector<RigidLoad> loads;
   bool empty() const {
-    return bodies.empty() && welds.empty() && node_sets.empty() && joints.empty();
+    return bodies.empty() && welds.empty() && node_sets.empty() && joints.empty() &&
+           joint_stiffness.empty() && loads.empty();
   }
 };
 

@@ -259,13 +259,38 @@ void fields(A& a, M& m) {
       [&](auto& j) {
         util::fieldCount<6>(j);
         a(j.id);
-        a(j.revolute);
+        a(j.kind);
         a(j.pairs);
         a(j.rps);
         a(j.damp);
         loc(a, j.where);
       },
       m.rigid.joints);
+  a.count(
+      m.rigid.joint_stiffness.size(),
+      [&](auto& j) {
+        util::fieldCount<8>(j);
+        a(j.id);
+        a(j.body_a);
+        a(j.body_b);
+        a(j.frame_a);
+        a(j.frame_b);
+        a(j.stiffness);
+        a(j.friction);
+        loc(a, j.where);
+      },
+      m.rigid.joint_stiffness);
+  a.count(
+      m.rigid.loads.size(),
+      [&](auto& l) {
+        util::fieldCount<5>(l);
+        a(l.body);
+        a(l.dof);
+        a(l.curve);
+        a(l.sf);
+        loc(a, l.where);
+      },
+      m.rigid.loads);
   auto surface = [&](auto& sf) {
     util::fieldCount<7>(sf);
     a(sf.nodes);

@@ -201,10 +201,11 @@ namespace {
 // results.pvd.tmp is what a run killed while rewriting the collection leaves (vtk.cpp writes
 // through a temporary file); it is ours as much as results.pvd.
 // The LS-DYNA ASCII files (ascii.hpp) are written under LS-DYNA's names, without extension.
-constexpr std::array<const char*, 18> kResultFiles = {
-    "summary.json", "results.pvd", "glstat.csv",  "run.log",        "matsum.csv",      "nodout.csv",
-    "rcforc.csv",   "rwforc.csv",  "secforc.csv", "partition.json", "results.pvd.tmp", "glstat",
-    "matsum",       "nodout",      "rcforc",      "rwforc",         "sleout",          "secforc"};
+constexpr std::array<const char*, 20> kResultFiles = {
+    "summary.json",    "results.pvd", "glstat.csv", "run.log",     "matsum.csv",
+    "nodout.csv",      "rcforc.csv",  "rwforc.csv", "secforc.csv", "partition.json",
+    "results.pvd.tmp", "glstat",      "matsum",     "nodout",      "rcforc",
+    "rwforc",          "sleout",      "secforc",    "jntforc.csv", "jntforc"};
 
 // A piece, or the temporary file of a piece whose writing was interrupted.
 bool isPieceFile(fs::path p) {

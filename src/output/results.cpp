@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "elements/shell.hpp"
+#include "output/jntforc.hpp"
 #include "util/archive.hpp"
 #include "util/error.hpp"
 #include "util/timer.hpp"
@@ -89,6 +90,8 @@ ResultsWriter::ResultsWriter(std::filesystem::path dir, const model::Model& mode
     rcforc_.interval = intervalOr(ctl.rcforc_dt, end, kDefaultSamples);
     if (ctl.ascii.sleout) sleout_.interval = intervalOr(ctl.sleout_dt, end, kDefaultSamples);
   }
+  if (!model.rigid.joints.empty())
+    jntforc_.interval = intervalOr(ctl.jntforc_dt, end, kDefaultSamples);
   if (!model.cross_sections.empty()) {
     secforc_.interval = intervalOr(ctl.secforc_dt, end, kDefaultSamples);
     sections_.emplace(model, sd);
@@ -113,6 +116,7 @@ std::vector<ResultsWriter::Stream> ResultsWriter::streams() {
   const auto& ascii = model_.controls.ascii;
   const bool nodes = history_count_ > 0, walls = !model_.rigid_walls.empty();
   const bool contacts = !model_.contacts.empty(), sections = !model_.cross_sections.empty();
+  const bool joints = !model_.rigid.joints.empty();
   std::vector<Stream> out = {{"glstat.csv", &glstat_csv_, &kGlstatColumns, true},
                              {"matsum.csv", &matsum_csv_, &kMatsumColumns, true},
                              {"nodout.csv", &nodout_csv_, &kNodoutColumns, nodes},
@@ -125,7 +129,9 @@ std::vector<ResultsWriter::Stream> ResultsWriter::streams() {
                              {"rwforc", &rwforc_txt_, nullptr, ascii.rwforc && walls},
                              {"rcforc", &rcforc_txt_, nullptr, ascii.rcforc && contacts},
                              {"sleout", &sleout_txt_, nullptr, ascii.sleout && contacts},
-                             {"secforc", &secforc_txt_, nullptr, ascii.secforc && sections}};
+                             {"secforc", &secforc_txt_, nullptr, ascii.secforc && sections},
+                             {"jntforc.csv", &jntforc_csv_, &jntforcColumns(), joints},
+                             {"jntforc", &jntforc_txt_, nullptr, ascii.jntforc && joints}};
   for (const auto& f : reactions_->files()) out.push_back({f.name, f.file, f.columns, f.wanted});
   return out;
 }
@@ -145,7 +151,8 @@ void ResultsWriter::openStreams() {
       {"rwforc", ascii::rwforcHeader(title)},
       {"rcforc", ascii::entityHeader(title, contacts)},
       {"sleout", ascii::entityHeader(title, contacts)},
-      {"secforc", ascii::entityHeader(title, sections)}};
+      {"secforc", ascii::entityHeader(title, sections)},
+      {"jntforc", ascii::banner(title)}};
   for (const Stream& st : streams()) {
     if (!st.wanted) continue;
     if (st.columns)
@@ -294,6 +301,10 @@ void ResultsWriter::write(const solver::Solver& s, bool last) {
   if (sections_ && secforc_.due(t, last)) {
     writeSecforc(s);
     secforc_.advance(t);
+  }
+  if (jntforc_.interval > 0.0 && jntforc_.due(t, last)) {
+    writeJntforc(s);
+    jntforc_.advance(t);
   }
   reactions_->write(s, last);
   if ((s.cycle() == 0 || plot_.due(t, last)) && t != last_plot_time_) {
@@ -492,6 +503,17 @@ void ResultsWriter::writeSecforc(const solver::Solver& s) {
   if (secforc_txt_.isOpen()) {
     secforc_txt_.write(ascii::secforcBlock(s.time(), sections));
     secforc_txt_.flush();
+  }
+}
+
+void ResultsWriter::writeJntforc(const solver::Solver& s) {
+  if (!comm_.isRoot() || !s.rigidBodies()) return;  // the same on every rank
+  const auto joints = s.rigidBodies()->joints();
+  for (const auto& row : jntforcRows(s.time(), joints)) jntforc_csv_.row(row);
+  jntforc_csv_.flush();
+  if (jntforc_txt_.isOpen()) {
+    jntforc_txt_.write(ascii::jntforcBlock(s.time(), joints));
+    jntforc_txt_.flush();
   }
 }
 

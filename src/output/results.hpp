@@ -72,6 +72,7 @@ class ResultsWriter {
   void writeRwforc(const solver::Solver& s);
   void writeContact(const solver::Solver& s, bool rcforc, bool sleout);
   void writeSecforc(const solver::Solver& s);
+  void writeJntforc(const solver::Solver& s);  // src/output/jntforc.hpp
   // The glstat record of LS-DYNA's layout (collective).
   ascii::GlstatSample glstatSample(const solver::Solver& s, const solver::Energies& e) const;
   // Every history file, CSV and LS-DYNA ASCII: its name, the file and whether this run writes
@@ -97,6 +98,11 @@ class ResultsWriter {
   // LS-DYNA's ASCII files, for the *DATABASE_<file> keywords of the deck.
   HistoryFile glstat_txt_, matsum_txt_, nodout_txt_, rwforc_txt_, rcforc_txt_, sleout_txt_,
       secforc_txt_;
+  // Joint forces (*DATABASE_JNTFORC, or by default when the deck has joints); its schedule
+  // is not in restart dumps: a restarted run writes it from its first cycle on.
+  Schedule jntforc_;
+  CsvWriter jntforc_csv_;
+  HistoryFile jntforc_txt_;
   std::optional<SectionForces> sections_;                   // when the deck has cross sections
   std::optional<ReactionHistories> reactions_;              // spcforc, bndout, rbdout, deforc
   std::vector<std::pair<int32_t, int32_t>> history_local_;  // (deck order, local node), owned

@@ -488,7 +488,10 @@ Solver::StableStep Solver::stableTimeStep(const ElementPass& pass) const {
 void Solver::computeExternalForces() {
   util::ScopedTimer timer(timing_.constraints);
   boundary_.externalForces(time_, sd_, sd_.f_ext);
-  if (rigid_) rigid_->addJointForces(dt_next_, sd_, comm_);
+  if (rigid_) {
+    rigid_->addJointForces(dt_next_, sd_, comm_);
+    rigid_->computeBodyLoads(time_);
+  }
 }
 
 void Solver::computeContactForces() {
@@ -562,6 +565,16 @@ void Solver::addExternalWork(double dt_n, double work) {
     chunk_work[ch] = w;
   }
   for (double w : chunk_work) work += w;
+  // The joints' penalty forces sit in f_ext too, but their energy is internal (the springs'
+  // and dampers', RigidBodies::jointEnergy): their work comes back out.
+  if (nchunk > 0 && rigid_)
+    for (const auto& [n, f] : rigid_->jointNodeForces()) {
+      if (!sd_.node_owned[std::size_t(n)]) continue;
+      for (int c = 0; c < 3; ++c) {
+        const std::size_t i = 3 * std::size_t(n) + std::size_t(c);
+        work -= f[std::size_t(c)] * 0.5 * (v_old_[i] + sd_.v[i]) * dt_n;
+      }
+    }
   external_work_ += work;
 }
 

@@ -245,13 +245,13 @@ TEST(RigidBuild, SphericalAndRevoluteJoints) {
   const auto& j = m.rigid.joints;
   ASSERT_EQ(j.size(), 2u);
   EXPECT_EQ(j[0].id, 1);
-  EXPECT_FALSE(j[0].revolute);
+  EXPECT_EQ(j[0].kind, crumple::model::JointKind::Spherical);
   ASSERT_EQ(j[0].pairs.size(), 1u);
   EXPECT_EQ(j[0].pairs[0], (std::array<int32_t, 2>{m.nodeIndex(8), m.nodeIndex(40)}));
   EXPECT_EQ(j[0].rps, 1.0);
   EXPECT_EQ(j[0].damp, 1.0);
   EXPECT_EQ(j[1].id, 9);
-  EXPECT_TRUE(j[1].revolute);
+  EXPECT_EQ(j[1].kind, crumple::model::JointKind::Revolute);
   ASSERT_EQ(j[1].pairs.size(), 2u);
   EXPECT_EQ(j[1].pairs[1], (std::array<int32_t, 2>{m.nodeIndex(4), m.nodeIndex(41)}));
   EXPECT_EQ(j[1].rps, 2.0);
@@ -266,10 +266,58 @@ TEST(RigidBuild, SphericalAndRevoluteJoints) {
             apart.string() +
                 ":61: *CONSTRAINED_JOINT_SPHERICAL card 1 field 2 (N2): the joint's nodes N1 and "
                 "N2 must coincide");
-  const auto other = t.write("o.k", mesh() + "*CONSTRAINED_JOINT_CYLINDRICAL\n8,40\n");
+  const auto other = t.write("o.k", mesh() + "*CONSTRAINED_JOINT_UNIVERSAL\n8,40\n");
   EXPECT_EQ(
       errorOf([&] { readModel(other); }),
-      other.string() + ":57: *CONSTRAINED_JOINT_CYLINDRICAL: option _CYLINDRICAL is not supported");
+      other.string() + ":57: *CONSTRAINED_JOINT_UNIVERSAL: option _UNIVERSAL is not supported");
+}
+
+TEST(RigidBuild, TranslationalJointStiffnessAndBodyLoads) {
+  TempDir t;
+  // Nodes 40-42 sit on nodes 2 (1, 0, 0), 4 (1, 1, 0) and 6 (1, 0, 1) of rigid part 1; 40 and 41
+  // join part 2's body, 42 does so only in the second deck.
+  const std::string nodes =
+      "*NODE\n40,1,0,0\n41,1,1,0\n42,1,0,1\n*CONSTRAINED_EXTRA_NODES_NODE\n2,40\n2,41\n";
+  const std::string joint = "*CONSTRAINED_JOINT_TRANSLATIONAL_ID\n5\n2,40,4,41,6,42\n";
+  const auto loose = t.write("l.k", mesh() + nodes + joint);
+  const std::string why = errorOf([&] { readModel(loose); });
+  EXPECT_NE(why.find("joint 5: node 42 belongs to no rigid body"), std::string::npos) << why;
+  EXPECT_NE(why.find("l.k:66: joint 5"), std::string::npos) << why;  // names the joint line
+
+  const Model m = build(t, nodes + "*CONSTRAINED_EXTRA_NODES_NODE\n2,42\n" + joint +
+                               "*DEFINE_COORDINATE_NODE\n5,1,2,3\n"
+                               "*CONSTRAINED_JOINT_STIFFNESS_GENERALIZED\n3,1,2,5\n0,0\n10.0,2.0\n"
+                               "*LOAD_RIGID_BODY\n2,5,9,3.0\n");
+  ASSERT_EQ(m.rigid.joints.size(), 1u);
+  EXPECT_EQ(m.rigid.joints[0].kind, crumple::model::JointKind::Translational);
+  EXPECT_TRUE(m.rigid.joints[0].slides());
+  ASSERT_EQ(m.rigid.joints[0].pairs.size(), 3u);
+  ASSERT_EQ(m.rigid.joint_stiffness.size(), 1u);
+  const auto& js = m.rigid.joint_stiffness[0];
+  EXPECT_EQ(m.rigid.bodies[std::size_t(js.body_a)].id, 1);
+  EXPECT_EQ(m.rigid.bodies[std::size_t(js.body_b)].id, 2);
+  EXPECT_EQ(js.frame_a[0], (std::array<double, 3>{1, 0, 0}));  // N1 -> N2
+  EXPECT_EQ(js.frame_a[2], (std::array<double, 3>{0, 0, 1}));
+  EXPECT_EQ(js.frame_b, js.frame_a);  // CIDB 0: CIDA
+  EXPECT_EQ(js.stiffness, (std::array<double, 3>{10, 0, 0}));
+  EXPECT_EQ(js.friction, (std::array<double, 3>{2, 0, 0}));
+  ASSERT_EQ(m.rigid.loads.size(), 1u);
+  EXPECT_EQ(m.rigid.bodies[std::size_t(m.rigid.loads[0].body)].id, 2);
+  EXPECT_EQ(m.rigid.loads[0].dof, 3);  // DOF 5: moment about x
+  EXPECT_EQ(m.rigid.loads[0].sf, 3.0);
+  const Model r = crumple::model::deserialize(crumple::model::serialize(m));
+  EXPECT_EQ(r.rigid.joint_stiffness[0].friction, js.friction);
+  EXPECT_EQ(r.rigid.loads[0].curve, m.rigid.loads[0].curve);
+
+  // What is not built is refused by field name.
+  const auto curve =
+      t.write("c.k", mesh() +
+                         "*DEFINE_COORDINATE_NODE\n5,1,2,3\n"
+                         "*CONSTRAINED_JOINT_STIFFNESS_GENERALIZED\n3,1,2,5\n9,0\n10.0,2.0\n");
+  EXPECT_NE(errorOf([&] { readModel(curve); }).find("field 1 (LCIDPH)"), std::string::npos);
+  const auto follower = t.write("f.k", mesh() + "*LOAD_RIGID_BODY\n2,4,9,3.0\n");
+  EXPECT_NE(errorOf([&] { readModel(follower); }).find("(DOF): DOF 4 is not supported"),
+            std::string::npos);
 }
 
 TEST(RigidBuild, ErrorsNameTheConflict) {

@@ -552,6 +552,215 @@ TEST(VerificationRigid, RevoluteJointHingesADoor) {
 
 namespace {
 
+// A rigid bar (10 x 10 x 40, lumped nodal masses) hangs from a fixed rigid block by a
+// revolute joint on the y axis through (0, 0, 0) and swings under gravity, started at the
+// bottom with angular velocity w0 about y. Returns the simulation and fills the compound
+// pendulum's data from the nodal masses: m, m d (first moment below the pivot), I_pivot.
+struct Pendulum {
+  std::unique_ptr<Simulation> sim;
+  double m = 0.0, md = 0.0, i_pivot = 0.0, g = 10.0;
+};
+Pendulum revolutePendulum(const std::string& name, double w0, double t_end) {
+  Mesh mesh;
+  const auto frame = mesh.block(1, {-5, -5, 0}, {10, 10, 10}, 2, 2, 1);
+  const auto bar = mesh.block(2, {-5, -5, -40}, {10, 10, 40}, 2, 2, 4);
+  Pendulum p;
+  std::string vel = "*INITIAL_VELOCITY_NODE\n";
+  for (int k = 0; k <= 4; ++k)
+    for (int j = 0; j <= 2; ++j)
+      for (int i = 0; i <= 2; ++i) {
+        const Vec3& x = mesh.x(bar(i, j, k));
+        vel += fmt::format("{},{:.17g},0,{:.17g}\n", bar(i, j, k), w0 * x[2], -w0 * x[0]);
+      }
+  p.sim = Simulation::fromText(
+      name, mesh.text("*MAT_RIGID\n1,7.85e-6,210.0,0.3\n1.0,7.0,7.0\n*MAT_RIGID\n2,7.85e-6,210.0,"
+                      "0.3\n" +
+                      kSection + part(1, 1) + part(2, 2) + termination(t_end) + constantCurve(1) +
+                      fmt::format("*LOAD_BODY_Z\n1,{}\n", p.g) +
+                      fmt::format("*CONSTRAINED_JOINT_REVOLUTE\n{},{},{},{}\n", frame(1, 0, 0),
+                                  bar(1, 0, 4), frame(1, 2, 0), bar(1, 2, 4)) +
+                      vel));
+  for (int k = 0; k <= 4; ++k)
+    for (int j = 0; j <= 2; ++j)
+      for (int i = 0; i <= 2; ++i) {
+        const int n = bar(i, j, k);
+        const double mi = p.sim->sd.mass[p.sim->local(n)];
+        const Vec3& x = mesh.x(n);
+        p.m += mi;
+        p.md += -mi * x[2];
+        p.i_pivot += mi * (x[0] * x[0] + x[2] * x[2]);
+      }
+  return p;
+}
+
+// Small swings: the period of the compound pendulum, T = 2 pi sqrt(I_pivot / (m g d)), within
+// 1 %, and the energy (kinetic + joint springs against the work of gravity) kept to 0.1 % of
+// the swing's.
+TEST(VerificationRigid, RevoluteJointPendulumPeriod) {
+  Pendulum p = revolutePendulum("revolute_pendulum", 0.05, 25.0);
+  const double period = 2 * M_PI * std::sqrt(p.i_pivot / (p.md * p.g));
+  std::vector<double> up;  // times omega_y crosses zero upwards
+  double prev = 0.05, worst_ratio = 0.0;
+  p.sim->run([&](const crumple::solver::Solver& s) {
+    const double w = s.rigidBodies()->states()[1].angular_velocity[1];
+    if (prev < 0.0 && w >= 0.0) up.push_back(s.time() - s.dt() * w / (w - prev));
+    prev = w;
+    // Kinetic and potential energy trade places: the balance is measured against the swing's
+    // energy (the ratio to initial + external work passes 0 / 0 at the top of each swing).
+    const auto e = s.energies();
+    worst_ratio =
+        std::max(worst_ratio, std::abs(e.total - e.initial - e.external_work) / e.initial);
+  });
+  ASSERT_GE(up.size(), 2u);
+  const double measured = (up.back() - up.front()) / double(up.size() - 1);
+  EXPECT_NEAR(measured, period, 0.01 * period);
+  EXPECT_LT(worst_ratio, 1e-3);  // 2.1e-4 measured
+  RecordProperty("period_error", std::to_string(measured / period - 1));
+  RecordProperty("energy_ratio_worst", std::to_string(worst_ratio));
+}
+
+// A full swing through the bottom at angular velocity w: the joint holds the bar up with
+// m g + m d w^2 (weight and centripetal force of the centre of mass), vertical.
+TEST(VerificationRigid, RevoluteJointReactionAtTheBottom) {
+  Pendulum p = revolutePendulum("revolute_reaction", 0.4, 12.0);
+  double best = 0.0, at_best = 0.0, w_best = 0.0, fx = 0.0;
+  int swings = 0;
+  double prev_angle = 0.0;
+  p.sim->run([&](const crumple::solver::Solver& s) {
+    const auto body = s.rigidBodies()->states()[1];
+    const auto joint = s.rigidBodies()->joints()[0];
+    // Passing under the pivot: the centre of mass crosses x = 0.
+    const double angle = body.cm[0];
+    if (s.cycle() > 1 && (prev_angle < 0.0) != (angle < 0.0)) {
+      ++swings;
+      w_best = body.angular_velocity[1];
+      best = joint.force[2];
+      fx = joint.force[0];
+      at_best = s.time();
+    }
+    prev_angle = angle;
+  });
+  ASSERT_GE(swings, 1);
+  const double expected = p.m * p.g + p.md * w_best * w_best;
+  RecordProperty("centripetal_share", std::to_string(p.md * w_best * w_best / expected));
+  EXPECT_NEAR(best, expected, 0.01 * expected);
+  EXPECT_LT(std::abs(fx), 0.02 * expected);
+  RecordProperty("reaction_error", std::to_string(best / expected - 1));
+  RecordProperty("bottom_time_ms", std::to_string(at_best));
+}
+
+// A slider on a translational joint along x over a fixed rigid rail, pushed by
+// *LOAD_RIGID_BODY at 30 degrees to the axis (DOF 1 along a *DEFINE_COORDINATE_SYSTEM x turned
+// 30 degrees towards z): it moves along x only, with a = F cos 30 / m, while the joint holds
+// the F sin 30 across the axis.
+TEST(VerificationRigid, TranslationalJointSlider) {
+  Mesh mesh;
+  const auto rail = mesh.block(1, {0, 0, 0}, {10, 10, 10}, 2, 2, 1);
+  const auto slider = mesh.block(2, {0, 0, 10}, {10, 10, 5}, 2, 2, 1);
+  const double F = 0.5, c30 = std::cos(M_PI / 6), s30 = std::sin(M_PI / 6), t_end = 3.0;
+  auto sim = Simulation::fromText(
+      "translational_joint",
+      mesh.text(
+          "*MAT_RIGID\n1,7.85e-6,210.0,0.3\n1.0,7.0,7.0\n*MAT_RIGID\n2,7.85e-6,210.0,0.3\n" +
+          kSection + part(1, 1) + part(2, 2) + termination(t_end) + constantCurve(1) +
+          fmt::format("*DEFINE_COORDINATE_SYSTEM\n9,0,0,0,{:.17g},0,{:.17g}\n0,1,0\n", c30, s30) +
+          fmt::format("*LOAD_RIGID_BODY\n2,1,1,{},9\n", F) +
+          fmt::format("*CONSTRAINED_JOINT_TRANSLATIONAL\n{},{},{},{},{},{}\n", rail(0, 1, 1),
+                      slider(0, 1, 0), rail(2, 1, 1), slider(2, 1, 0), rail(0, 0, 1),
+                      slider(0, 0, 0))));
+  sim->run();
+  const auto body = sim->solver->rigidBodies()->states()[1];
+  const double t = sim->solver->time(), a = F * c30 / body.mass;
+  EXPECT_NEAR(body.cm[0] - 5.0, 0.5 * a * t * t, 0.01 * 0.5 * a * t * t);
+  EXPECT_NEAR(body.velocity[0], a * t, 0.01 * a * t);
+  EXPECT_LT(std::abs(body.cm[2] - 12.5), 1e-4 * 0.5 * a * t * t);
+  EXPECT_LT(std::abs(body.cm[1] - 5.0), 1e-4 * 0.5 * a * t * t);
+  const auto joint = sim->solver->rigidBodies()->joints()[0];
+  EXPECT_NEAR(joint.force[2], -F * s30, 0.01 * F * s30);
+  EXPECT_LT(std::abs(joint.force[0]), 1e-9);
+  const auto e = sim->solver->energies();
+  EXPECT_NEAR(e.external_work, 0.5 * body.mass * a * a * t * t, 0.01 * e.external_work);
+  EXPECT_NEAR(e.ratio, 1.0, 1e-3);
+  RecordProperty("displacement_error",
+                 std::to_string((body.cm[0] - 5.0) / (0.5 * a * t * t) - 1.0));
+}
+
+// A spherical joint between a fixed rigid block and a free one that *LOAD_RIGID_BODY pulls
+// away: the joint holds it, its gap (F / k with the penalty k = m / (2 dt^2)) far below the
+// block's size.
+TEST(VerificationRigid, SphericalJointHoldsAPull) {
+  Mesh mesh;
+  const auto base = mesh.block(1, {-5, -5, 0}, {10, 10, 10}, 2, 2, 1);
+  const auto ball = mesh.block(2, {-5, -5, -10}, {10, 10, 10}, 2, 2, 1);
+  const double F = 2.0;
+  auto sim = Simulation::fromText(
+      "spherical_pull",
+      mesh.text(
+          "*MAT_RIGID\n1,7.85e-6,210.0,0.3\n1.0,7.0,7.0\n*MAT_RIGID\n2,7.85e-6,210.0,0.3\n" +
+          kSection + part(1, 1) + part(2, 2) + termination(2.0) + constantCurve(1) +
+          fmt::format("*LOAD_RIGID_BODY\n2,3,1,{}\n", -F) +
+          fmt::format("*CONSTRAINED_JOINT_SPHERICAL\n{},{}\n", base(1, 1, 0), ball(1, 1, 1))));
+  double gap = 0.0;
+  sim->run([&](const crumple::solver::Solver&) {
+    gap = std::max(gap, distance(*sim, base(1, 1, 0), ball(1, 1, 1)));
+  });
+  EXPECT_LT(gap, 1e-3 * 10.0);
+  const auto joint = sim->solver->rigidBodies()->joints()[0];
+  EXPECT_NEAR(joint.force[2], F, 0.01 * F);
+  RecordProperty("joint_gap_mm", std::to_string(gap));
+}
+
+// *CONSTRAINED_JOINT_STIFFNESS_GENERALIZED on a hinge: a rigid door on a revolute joint (the
+// global z axis) to a fixed frame, turned by a *LOAD_RIGID_BODY moment M = M1 t / T about z,
+// against a friction spring about the local x axis of a *DEFINE_COORDINATE_NODE frame laid
+// along the hinge (ESPH, FMPH). Slow loading: while M < FMPH the door stands at M / ESPH; after
+// it slips the moment FMPH holds back, so at T the door turns at
+// w = integral (M - FMPH) dt / I_hinge.
+TEST(VerificationRigid, JointStiffnessFrictionSpring) {
+  Mesh mesh;
+  const auto frame = mesh.block(1, {-10, 0, 0}, {10, 10, 20}, 2, 2, 4);
+  const auto door = mesh.block(2, {0, 0, 0}, {30, 2, 20}, 3, 1, 4);
+  const double es = 100.0, fm = 6.0, m1 = 8.0, t_end = 20.0;
+  auto sim = Simulation::fromText(
+      "joint_stiffness",
+      mesh.text(
+          "*MAT_RIGID\n1,7.85e-6,0.21,0.3\n1.0,7.0,7.0\n*MAT_RIGID\n2,7.85e-6,0.21,0.3\n" +
+          kSection + part(1, 1) + part(2, 2) + termination(t_end) +
+          fmt::format("*DEFINE_CURVE\n5\n0,0\n{},{}\n", t_end, m1) + "*LOAD_RIGID_BODY\n2,7,5\n" +
+          fmt::format("*CONSTRAINED_JOINT_REVOLUTE\n{},{},{},{}\n", frame(2, 0, 0), door(0, 0, 0),
+                      frame(2, 0, 4), door(0, 0, 4)) +
+          fmt::format("*DEFINE_COORDINATE_NODE\n3,{},{},{}\n", frame(2, 0, 0), frame(2, 0, 4),
+                      frame(2, 2, 0)) +
+          fmt::format("*CONSTRAINED_JOINT_STIFFNESS_GENERALIZED\n1,2,1,3\n\n{},{}\n", es, fm)));
+  double i_hinge = 0.0;
+  for (int k = 0; k <= 4; ++k)
+    for (int j = 0; j <= 1; ++j)
+      for (int i = 0; i <= 3; ++i) {
+        const Vec3& x = mesh.x(door(i, j, k));
+        i_hinge += sim->sd.mass[sim->local(door(i, j, k))] * (x[0] * x[0] + x[1] * x[1]);
+      }
+  const double t_check = 0.5 * t_end;  // elastic: M = 4 < FMPH
+  double angle_check = 0.0;
+  sim->run([&](const crumple::solver::Solver& s) {
+    if (angle_check == 0.0 && s.time() >= t_check)
+      angle_check = std::atan2(sim->x(door(3, 0, 0), 1), sim->x(door(3, 0, 0), 0));
+  });
+  // The door's angle turns B (the door) positive about z; the spring holds it with M / ES.
+  EXPECT_NEAR(angle_check, m1 * t_check / t_end / es, 0.03 * m1 * t_check / t_end / es);
+  const double t_slip = fm / m1 * t_end;
+  const double w_end = 0.5 * (m1 - fm) * (t_end - t_slip) / i_hinge;
+  const double w = sim->solver->rigidBodies()->states()[1].angular_velocity[2];
+  EXPECT_NEAR(w, w_end, 0.02 * w_end);
+  EXPECT_NEAR(sim->solver->energies().ratio, 1.0, 1e-2);
+  RecordProperty("elastic_angle_error",
+                 std::to_string(angle_check / (m1 * t_check / t_end / es) - 1.0));
+  RecordProperty("slip_rate_error", std::to_string(w / w_end - 1.0));
+}
+
+}  // namespace
+
+namespace {
+
 // The parallel determinism deck (tests/data/decks/rigid_welds.k, tools/make_test_decks.py)
 // must exercise what it is there for: welds failing by force during the run while others hold,
 // the generalized weld failing at its TFAIL, and every kind of body present.
