@@ -28,14 +28,14 @@ def _velocities(ids, v) -> str:
 
 
 def colliding_blocks(kind: str = "SURFACE_TO_SURFACE", n1: int = 4, n2: int = 5,
-                     offset: float = 0.001, v: float = 10.0, end: float = 8e-5) -> str:
+                     offset: float = 0.001, v: float = 10.0, end: float = 8e-5,
+                     gap: float = 0.0005) -> str:
     """Two elastic steel cubes (10 mm, meshes n1^3 and n2^3, the second shifted sideways by
-    `offset`) flying at each other at +-v along z across a 0.5 mm gap."""
+    `offset`) flying at each other at +-v along z across a gap (negative: the second starts
+    inside the first)."""
     m = Mesh()
-    block(m, 1, (0, 0, 0), (0.01, 0.01, 0.01), (n1, n1, n1))
-    block(m, 2, (offset, offset, 0.0105), (0.01, 0.01, 0.01), (n2, n2, n2))
-    a = m.node_ids(lambda x, y, z: z <= 0.0100001)
-    b = m.node_ids(lambda x, y, z: z >= 0.0104)
+    a = sorted(block(m, 1, (0, 0, 0), (0.01, 0.01, 0.01), (n1, n1, n1)).values())
+    b = sorted(block(m, 2, (offset, offset, 0.01 + gap), (0.01, 0.01, 0.01), (n2, n2, n2)).values())
     return f"""*KEYWORD
 *TITLE
 two elastic blocks colliding ({kind})

@@ -153,9 +153,9 @@ void Boundary::externalForces(double t, const domain::Subdomain& sd,
   }
 }
 
-double Boundary::applyKinematics(double t, double dt_n, double dt_half, domain::Subdomain& sd,
-                                 const domain::NodeVector& v_old) {
-  double work = 0.0;
+StepWork Boundary::applyKinematics(double t, double dt_n, double dt_half, domain::Subdomain& sd,
+                                   const domain::NodeVector& v_old) {
+  StepWork work;
   for (auto* list : {&spc_reaction_, &motion_reaction_})
     for (auto& r : *list) r.force = r.moment = {};
   // Reaction work: the velocity change a constraint imposes is an impulse m dv acting while
@@ -164,9 +164,9 @@ double Boundary::applyKinematics(double t, double dt_n, double dt_half, domain::
   auto impose = [&](std::size_t i, double v_new, NodeReaction& r) {
     const double m = sd.mass[i / 3];
     const double dv = v_new - sd.v[i];
-    const double w = m * dv * 0.5 * (v_old[i] + v_new);
+    const StepWork w = impulseWork(m * dv, v_old[i], v_new);
     if (sd.node_owned[i / 3]) work += w;
-    r.work += w;
+    r.work += w.total();
     if (dt_n > 0.0) r.force[i % 3] += m * dv / dt_n;
     sd.v[i] = v_new;
   };

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "comm/communicator.hpp"
+#include "constraints/step_work.hpp"
 #include "domain/subdomain.hpp"
 #include "model/model.hpp"
 #include "util/archive.hpp"
@@ -45,10 +46,10 @@ class Boundary {
 
   // Enforces SPCs and prescribed motion on v(n+1/2) = sd.v, given v(n-1/2) in v_old;
   // t is t(n), dt_n the step centred on t(n), dt_half = dt(n+1/2). Returns the reaction work
-  // of the nodes this rank owns.
+  // of the nodes this rank owns, in its halves (step_work.hpp).
   // Keeps the reactions of the SPCs and prescribed motions (spcReactions, motionReactions).
-  double applyKinematics(double t, double dt_n, double dt_half, domain::Subdomain& sd,
-                         const domain::NodeVector& v_old);
+  StepWork applyKinematics(double t, double dt_n, double dt_half, domain::Subdomain& sd,
+                           const domain::NodeVector& v_old);
 
   // Stonewalls: no slave node ends the step behind a wall (DYNA3D stonewall: the normal
   // velocity is corrected so the node lands on the plane; Coulomb friction acts on the

@@ -95,6 +95,13 @@ void eigenSymmetric(double a[3][3], Vec3& values, double e[3][3]) {
 
 namespace {
 
+// The work of a body's impulse (momentum change p, angular momentum change l) over a step in
+// its halves (step_work.hpp): translation at V before and after, rotation at omega.
+StepWork bodyWork(const Vec3& p, const Vec3& l, const Vec3& v_before, const Vec3& v_after,
+                  const Vec3& w_before, const Vec3& w_after) {
+  return {0.5 * (dot(p, v_before) + dot(l, w_before)), 0.5 * (dot(p, v_after) + dot(l, w_after))};
+}
+
 using Quat = std::array<double, 4>;  // w, x, y, z: q = (cos(a/2), sin(a/2) n)
 
 Quat mul(const Quat& a, const Quat& b) {
@@ -630,11 +637,10 @@ void RigidBodies::addJointStiffness() {
   }
 }
 
-double RigidBodies::loadWork(std::size_t g, const Vec3& v_prev, const Vec3& w_prev,
-                             double dt_n) const {
+StepWork RigidBodies::loadWork(std::size_t g, const Vec3& v_prev, const Vec3& w_prev,
+                               double dt_n) const {
   const Body& b = bodies_[g];
-  return dt_n * (dot(load_f_[g], scaled(add(v_prev, b.V), 0.5)) +
-                 dot(load_m_[g], scaled(add(w_prev, b.omega), 0.5)));
+  return bodyWork(scaled(load_f_[g], dt_n), scaled(load_m_[g], dt_n), v_prev, b.V, w_prev, b.omega);
 }
 
 std::vector<JointState> RigidBodies::joints() const {
@@ -654,8 +660,8 @@ void RigidBodies::setInitialVelocities(domain::Subdomain& sd) const {
   }
 }
 
-double RigidBodies::advance(Body& b, const Vec3& F, const Vec3& M, double t, double dt_n,
-                            double dt_half) {
+StepWork RigidBodies::advance(Body& b, const Vec3& F, const Vec3& M, double t, double dt_n,
+                              double dt_half) {
   b.V_prev = b.V;
   b.L_prev = b.L;
   b.q_prev = b.q;
@@ -786,13 +792,12 @@ double RigidBodies::advance(Body& b, const Vec3& F, const Vec3& M, double t, dou
   b.acc = dt_n > 0.0 ? scaled(sub(b.V, b.V_prev), 1.0 / dt_n) : Vec3{};
   b.angular_acc = dt_n > 0.0 ? scaled(sub(b.omega, omega_prev), 1.0 / dt_n) : Vec3{};
   // The constraint impulse times the mean velocity over dt_n.
-  return b.mass * dot(dV, scaled(add(b.V_prev, b.V), 0.5)) +
-         dot(dL, scaled(add(omega_prev, b.omega), 0.5));
+  return bodyWork(scaled(dV, b.mass), dL, b.V_prev, b.V, omega_prev, b.omega);
 }
 
-double RigidBodies::apply(double t, double dt_n, double dt_half, domain::Subdomain& sd,
-                          const domain::NodeVector& v_old, const comm::Communicator& comm) {
-  if (empty()) return 0.0;
+StepWork RigidBodies::apply(double t, double dt_n, double dt_half, domain::Subdomain& sd,
+                            const domain::NodeVector& v_old, const comm::Communicator& comm) {
+  if (empty()) return {};
   const std::size_t nb = bodies_.size(), groups = nb + sets_.size();
   // Welds reach their failure time.
   for (Body& b : bodies_)
@@ -838,7 +843,7 @@ double RigidBodies::apply(double t, double dt_n, double dt_half, domain::Subdoma
   const auto recs = gatherRecords(
       keys, values, groups, [&](int32_t g) { return width(g); }, comm, all);
 
-  double work = 0.0;
+  StepWork work;
   for (std::size_t g = 0; g < nb; ++g) {
     Body& b = bodies_[g];
     if (!b.active) continue;
@@ -938,18 +943,19 @@ double RigidBodies::apply(double t, double dt_n, double dt_half, domain::Subdoma
     }
   }
   stepped_ = true;
-  return comm.rank() == 0 ? work : 0.0;
+  return comm.rank() == 0 ? work : StepWork{};
 }
 
 double RigidBodies::kineticEnergy() const {
   double e = 0.0;
   for (const Body& b : bodies_) {
     if (!b.active) continue;
-    const Vec3 V = stepped_ ? scaled(add(b.V_prev, b.V), 0.5) : b.V;
+    // Translation: 1/2 m V(n-1/2) . V(n+1/2), the form central differences conserve, as for
+    // the nodes (Solver::energies). Rotation: at the mean angular momentum.
     const Vec3 L = stepped_ ? scaled(add(b.L_prev, b.L), 0.5) : b.L;
     double a[3][3];
     inverseInertia(b, stepped_ ? b.q_prev : b.q, a);
-    e += 0.5 * b.mass * dot(V, V) + 0.5 * dot(L, matVec(a, L));
+    e += 0.5 * b.mass * dot(stepped_ ? b.V_prev : b.V, b.V) + 0.5 * dot(L, matVec(a, L));
   }
   return e;
 }

@@ -40,6 +40,7 @@
 #include <vector>
 
 #include "comm/communicator.hpp"
+#include "constraints/step_work.hpp"
 #include "domain/subdomain.hpp"
 #include "model/model.hpp"
 #include "util/archive.hpp"
@@ -102,10 +103,10 @@ class RigidBodies {
   // Collective, once per cycle, right after v(n+1/2) = v(n-1/2) + dt_n a: moves the bodies,
   // welds and tied sets and writes their nodes' v, a (and w). t = t(n), dt_n the step centred
   // on t(n), dt_half = dt(n+1/2); v_old = v(n-1/2). Returns the work of the body constraints
-  // (CMO, prescribed rigid motion) on rank 0, and 0 elsewhere, so a sum over ranks counts it
-  // once.
-  double apply(double t, double dt_n, double dt_half, domain::Subdomain& sd,
-               const domain::NodeVector& v_old, const comm::Communicator& comm);
+  // (CMO, prescribed rigid motion) and body loads on rank 0, in its halves (step_work.hpp),
+  // and 0 elsewhere, so a sum over ranks counts it once.
+  StepWork apply(double t, double dt_n, double dt_half, domain::Subdomain& sd,
+                 const domain::NodeVector& v_old, const comm::Communicator& comm);
 
   // Collective, once per cycle, after the external forces and before the velocity update:
   // the penalty forces of the joints (*CONSTRAINED_JOINT_SPHERICAL / _REVOLUTE) from x(n) and
@@ -202,7 +203,7 @@ class RigidBodies {
   template <class B, class F>
   static void visitState(B& b, F&& f);
   // Step 2-3 for one body given F and M; returns the constraint work.
-  double advance(Body& b, const Vec3& F, const Vec3& M, double t, double dt_n, double dt_half);
+  StepWork advance(Body& b, const Vec3& F, const Vec3& M, double t, double dt_n, double dt_half);
 
   struct JointPair {
     std::array<int32_t, 2> node{};             // model nodes
@@ -239,7 +240,7 @@ class RigidBodies {
   // about z) and A's current axes.
   Vec3 relativeAngles(const Stiffness& s, std::array<Vec3, 3>& axes_a) const;
   // The external work of the body loads over dt_n on body g (velocities before and after).
-  double loadWork(std::size_t g, const Vec3& v_prev, const Vec3& w_prev, double dt_n) const;
+  StepWork loadWork(std::size_t g, const Vec3& v_prev, const Vec3& w_prev, double dt_n) const;
   void addJointStiffness();
 
   std::vector<BodyLoad> loads_;

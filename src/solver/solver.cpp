@@ -536,35 +536,36 @@ void Solver::updateVelocities(double dt_n) {
   non_finite_ = non_finite != 0;
 }
 
-double Solver::applyConstraints(double dt_n, double dt_half) {
+constraints::StepWork Solver::applyConstraints(double dt_n, double dt_half) {
   util::ScopedTimer timer(timing_.constraints);
   // Rigid bodies first: SPCs and prescribed motion act on free nodes only (build_rigid.cpp).
-  double work = rigid_ ? rigid_->apply(time_, dt_n, dt_half, sd_, v_old_, comm_) : 0.0;
+  constraints::StepWork work;
+  if (rigid_) work = rigid_->apply(time_, dt_n, dt_half, sd_, v_old_, comm_);
   work += boundary_.applyKinematics(time_, dt_n, dt_half, sd_, v_old_);
   rigidwall_energy_ += boundary_.applyRigidWalls(dt_n, dt_half, sd_, v_old_, comm_);
   return work;
 }
 
-void Solver::addExternalWork(double dt_n, double work) {
-  // Over dt_n at the mean of the old and the final (constrained) velocity, counted once per
-  // node, by the rank that owns it; in fixed chunks added in order.
+void Solver::addExternalWork(double dt_n, constraints::StepWork work) {
+  // Over dt_n at the old and the final (constrained) velocity, in halves (step_work.hpp),
+  // counted once per node, by the rank that owns it; in fixed chunks added in order.
   const std::size_t nn = sd_.numNodes();
   const std::size_t nchunk = boundary_.hasExternalForces() ? (nn + kNodeChunk - 1) / kNodeChunk : 0;
-  std::vector<double> chunk_work(nchunk, 0.0);
+  std::vector<constraints::StepWork> chunk_work(nchunk);
 #pragma omp parallel for schedule(static)
   for (std::size_t ch = 0; ch < nchunk; ++ch) {
     const std::size_t end = std::min(nn, (ch + 1) * kNodeChunk);
-    double w = 0.0;
+    constraints::StepWork w;
     for (std::size_t n = ch * kNodeChunk; n < end; ++n) {
       if (!sd_.node_owned[n]) continue;
       for (int c = 0; c < 3; ++c) {
         const std::size_t i = 3 * n + c;
-        w += sd_.f_ext[i] * 0.5 * (v_old_[i] + sd_.v[i]) * dt_n;
+        w += constraints::impulseWork(sd_.f_ext[i] * dt_n, v_old_[i], sd_.v[i]);
       }
     }
     chunk_work[ch] = w;
   }
-  for (double w : chunk_work) work += w;
+  for (const auto& w : chunk_work) work += w;
   // The joints' penalty forces sit in f_ext too, but their energy is internal (the springs'
   // and dampers', RigidBodies::jointEnergy): their work comes back out.
   if (nchunk > 0 && rigid_)
@@ -572,10 +573,13 @@ void Solver::addExternalWork(double dt_n, double work) {
       if (!sd_.node_owned[std::size_t(n)]) continue;
       for (int c = 0; c < 3; ++c) {
         const std::size_t i = 3 * std::size_t(n) + std::size_t(c);
-        work -= f[std::size_t(c)] * 0.5 * (v_old_[i] + sd_.v[i]) * dt_n;
+        const auto w = constraints::impulseWork(f[std::size_t(c)] * dt_n, v_old_[i], sd_.v[i]);
+        work.behind -= w.behind;
+        work.ahead -= w.ahead;
       }
     }
-  external_work_ += work;
+  external_work_ += work.total();
+  work_ahead_ = work.ahead;
 }
 
 void Solver::updatePositions(double dt_half) {
@@ -701,8 +705,9 @@ Energies Solver::energies() const {
     if (sd_.rotations)
       e.kinetic += 0.5 * sd_.inertia[n] * stepProduct(spun ? w_old_ : sd_.w, sd_.w, n);
   }
-  const auto sums =
-      comm_.sumOrdered({e.kinetic, e.internal, e.hourglass, external_work_, rigidwall_energy_});
+  // The work up to t(n): the last step's half at v(n+1/2) belongs to the next balance.
+  const auto sums = comm_.sumOrdered(
+      {e.kinetic, e.internal, e.hourglass, external_work_ - work_ahead_, rigidwall_energy_});
   e.kinetic = sums[0];
   e.internal = sums[1];
   e.hourglass = sums[2];

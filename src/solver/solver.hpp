@@ -147,9 +147,9 @@ class Solver {
   void updateVelocities(double dt_n);
   // Rigid bodies, spot welds, tied sets, SPC, prescribed motion and stonewalls correct
   // v(n+1/2); returns the work of the constraints over dt(n).
-  double applyConstraints(double dt_n, double dt_half);
+  constraints::StepWork applyConstraints(double dt_n, double dt_half);
   // Adds the work of the external forces over dt(n) to `work` and that to the total.
-  void addExternalWork(double dt_n, double work);
+  void addExternalWork(double dt_n, constraints::StepWork work);
   void updatePositions(double dt_half);
   // A non-finite velocity ends every rank (collective), naming the node and its source.
   void checkFiniteVelocities() const;
@@ -218,6 +218,9 @@ class Solver {
 
   // Work and wall energy of the nodes this rank owns; summed over ranks when reported.
   double external_work_ = 0.0, rigidwall_energy_ = 0.0, initial_energy_ = 0.0;
+  // This rank's share of the last step's external work at v(n+1/2) (step_work.hpp): reported
+  // energies leave it to the next balance.
+  double work_ahead_ = 0.0;
   domain::NodeVector v_old_, w_old_;
   // Element masses per shell / beam block (matsum).
   std::vector<std::vector<double>> shell_mass_, beam_mass_;

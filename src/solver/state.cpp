@@ -146,7 +146,8 @@ std::vector<char> Solver::saveState(StateSection which) const {
       // Per-rank accumulators are kept per rank: restarted at the same number of ranks each
       // continues its own partial sum, so the energy sums stay bitwise those of the
       // uninterrupted run (at another count rank 0 takes the total, docs/reliability.md).
-      const auto partials = comm_.allGather(std::vector<double>{external_work_, rigidwall_energy_});
+      const auto partials =
+          comm_.allGather(std::vector<double>{external_work_, rigidwall_energy_, work_ahead_});
       const long long eroded = comm_.sumAll(eroded_);
       if (!comm_.isRoot()) return {};
       util::ArchiveWriter w;
@@ -289,21 +290,31 @@ void Solver::loadState(StateSection which, const std::vector<char>& bytes) {
       if (dt_initial != dt_initial_)
         mismatch(fmt::format("its initial time step {:.17g} differs from this deck's {:.17g}",
                              dt_initial, dt_initial_));
-      if (partials.size() != 2 * static_cast<std::size_t>(ranks))
+      // Three accumulators per rank (two in dumps written before the work ahead was kept).
+      const auto per_rank = static_cast<std::size_t>(ranks) == 0
+                                ? std::size_t{0}
+                                : partials.size() / static_cast<std::size_t>(ranks);
+      if ((per_rank != 2 && per_rank != 3) || partials.size() != per_rank * std::size_t(ranks))
         throw util::InputError("restart dump: the solver section is inconsistent");
       initial_energy_ = initial_energy;
+      auto partial = [&](int k, std::size_t i) {
+        return i < per_rank ? partials[per_rank * static_cast<std::size_t>(k) + i] : 0.0;
+      };
       if (ranks == comm_.size()) {
-        external_work_ = partials[2 * static_cast<std::size_t>(comm_.rank())];
-        rigidwall_energy_ = partials[2 * static_cast<std::size_t>(comm_.rank()) + 1];
+        external_work_ = partial(comm_.rank(), 0);
+        rigidwall_energy_ = partial(comm_.rank(), 1);
+        work_ahead_ = partial(comm_.rank(), 2);
       } else {
         // Summed in rank order from zero, as Communicator::sumOrdered adds them.
-        double work = 0.0, wall = 0.0;
+        double work = 0.0, wall = 0.0, ahead = 0.0;
         for (int k = 0; k < ranks; ++k) {
-          work += partials[2 * static_cast<std::size_t>(k)];
-          wall += partials[2 * static_cast<std::size_t>(k) + 1];
+          work += partial(k, 0);
+          wall += partial(k, 1);
+          ahead += partial(k, 2);
         }
         external_work_ = comm_.isRoot() ? work : 0.0;
         rigidwall_energy_ = comm_.isRoot() ? wall : 0.0;
+        work_ahead_ = comm_.isRoot() ? ahead : 0.0;
       }
       eroded_ = comm_.isRoot() ? eroded : 0;
       if (stepped) v_old_.assign(sd_.v.size(), 0.0);

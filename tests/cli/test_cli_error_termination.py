@@ -198,10 +198,10 @@ class ErrorTermination(clitest.TempDirTest):
                              "non-finite velocity at node")
 
     def test_energy_band(self):
-        # mixed_conditions.k (erosion, walls, loads) is 1.3e-4 below its energy balance at
-        # cycle 64, the band's first check (it drifted 0.9 % above before an eroding element's
-        # last pass booked only the work its last force did): a band [0.9999, 1.005] stops it
-        # there, a band of +-50 % lets it finish.
+        # mixed_conditions.k (erosion, walls, loads) is 1.7e-4 below its energy balance at
+        # cycle 64, the band's first check: a band [0.9999, 1.005] stops it there, a band of
+        # +-50 % lets it finish, and it stays within [0.98, 1.02] throughout (it dipped to 0.967
+        # while the last step's work at v(n+1/2) was counted before its time, step_work.hpp).
         deck = os.path.join(os.path.dirname(example()), "tests", "data", "decks",
                             "mixed_conditions.k")
         out = os.path.join(self.tmp, "tight")
@@ -214,26 +214,43 @@ class ErrorTermination(clitest.TempDirTest):
         self.assertEqual(p.returncode, 0, describe(p))
         s = read_summary(out)
         self.assertEqual(s["termination"], "normal")
-        # Below 0.98 from about 7.7 ms to 19 ms (LS-DYNA-style load work on a coarse step): the
-        # energy audit lists each sample there with the change of every term, run.log closes
-        # with the verdict, summary.json counts them, and the terminal is told once.
         audit = s["energy_audit"]
         self.assertEqual(audit["band"], [0.98, 1.02])
-        self.assertGreater(audit["samples_outside"], 5)
-        self.assertLess(audit["min_ratio"], 0.98)
-        self.assertGreater(audit["first_outside_time"], 0.0)
-        with open(os.path.join(out, "run.log"), encoding="utf-8") as f:
-            log = f.read()
-        lines = [l for l in log.splitlines() if l.startswith("energy audit: ratio")]
-        self.assertEqual(len(lines), audit["samples_outside"], log)
-        self.assertIn("external work +", lines[0])
-        self.assertIn("largest change of a stored term:", lines[0])
-        self.assertIn("warning: energy ratio left [0.98, 1.02]", log)
-        self.assertEqual(p.stderr.count("the energy ratio left [0.98, 1.02]"), 1, p.stderr)
+        self.assertEqual(audit["samples_outside"], 0, audit)
+        self.assertGreater(audit["min_ratio"], 0.999, audit)
         p = crumple("run", deck, "-o", os.path.join(self.tmp, "bad"), "-q", "--energy-band", "1.1,0.9")
         self.assertEqual(p.returncode, 1, describe(p))
         self.assertIn("--energy-band LO,HI: needs 0 < LO < 1 < HI", p.stderr)
         self.assertFalse(os.path.exists(os.path.join(self.tmp, "bad")))
+
+    def test_energy_audit_of_a_run_outside_the_band(self):
+        # A run that leaves [0.98, 1.02]: the translational-joint deck of the corpus, whose
+        # penalty joint snaps shut on the plates' relative velocity across its axis and gains
+        # 2.8 % in its first 0.1 ms (an open defect, docs/theory.md "Joints"). The energy audit
+        # lists each sample outside the band with the change of every term, run.log closes with
+        # the verdict, summary.json counts them, and the terminal is told once.
+        decks = clitest.shared_decks()
+        if decks is None:
+            self.skipTest("../shared/decks is not present")
+        deck = os.path.join(decks, "dynakw_joint_translational", "test", "full_files",
+                            "joint_translational.k")
+        out = os.path.join(self.tmp, "joint")
+        p = crumple("run", deck, "-o", out, "--endtime", "0.002", "--threads", "1")
+        self.assertEqual(p.returncode, 0, describe(p))
+        s = read_summary(out)
+        audit = s["energy_audit"]
+        self.assertEqual(audit["band"], [0.98, 1.02])
+        self.assertGreater(audit["samples_outside"], 5, audit)
+        self.assertGreater(audit["max_ratio"], 1.02, audit)
+        self.assertGreater(audit["first_outside_time"], 0.0)
+        with open(os.path.join(out, "run.log"), encoding="utf-8") as f:
+            log = f.read()
+        lines = [l for l in log.splitlines() if l.startswith("energy audit: ratio")]
+        self.assertEqual(len(lines), min(audit["samples_outside"], 20), log)
+        self.assertIn("external work +", lines[0])
+        self.assertIn("largest change of a stored term: internal", lines[0])
+        self.assertIn("warning: energy ratio left [0.98, 1.02]", log)
+        self.assertEqual(p.stderr.count("the energy ratio left [0.98, 1.02]"), 1, p.stderr)
 
     def test_degenerate_shell_before_the_first_cycle(self):
         self.write("shell.k", degenerate_shell())

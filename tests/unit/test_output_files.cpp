@@ -1,4 +1,5 @@
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -21,7 +22,8 @@ namespace {
 fs::path freshDir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   const fs::path dir = fs::temp_directory_path() /
-                       ("crumple_" + std::string(info->test_suite_name()) + "_" + info->name());
+                       ("crumple_" + std::string(info->test_suite_name()) + "_" + info->name() +
+                        "_" + std::to_string(::getpid()));  // two suites at once do not collide
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

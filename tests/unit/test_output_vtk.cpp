@@ -1,6 +1,7 @@
 // VTU/PVTU/PVD files are checked by reading them back with VTK's own readers
 // (tests/tools/read_vtu.py), not by comparing bytes: what matters is that ParaView reads them.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -26,7 +27,8 @@ namespace {
 fs::path freshDir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   const fs::path dir = fs::temp_directory_path() /
-                       ("crumple_" + std::string(info->test_suite_name()) + "_" + info->name());
+                       ("crumple_" + std::string(info->test_suite_name()) + "_" + info->name() +
+                        "_" + std::to_string(::getpid()));  // two suites at once do not collide
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -31,7 +32,9 @@ class Simulation {
 
   // Writes `text` to a fresh file under the test temp folder and reads it.
   static std::unique_ptr<Simulation> fromText(const std::string& name, const std::string& text) {
-    const auto dir = std::filesystem::temp_directory_path() / "crumple_verification";
+    // One folder per process: two suites running at once (worktrees) do not share decks.
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("crumple_verification_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     const auto path = dir / (name + ".k");
     std::ofstream(path) << text;
