@@ -950,12 +950,13 @@ double RigidBodies::kineticEnergy() const {
   double e = 0.0;
   for (const Body& b : bodies_) {
     if (!b.active) continue;
-    // Translation: 1/2 m V(n-1/2) . V(n+1/2), the form central differences conserve, as for
-    // the nodes (Solver::energies). Rotation: at the mean angular momentum.
-    const Vec3 L = stepped_ ? scaled(add(b.L_prev, b.L), 0.5) : b.L;
+    // 1/2 m V(n-1/2) . V(n+1/2) and 1/2 L(n-1/2) . omega(n+1/2) (omega = A L with the inverse
+    // inertia of the old orientation), the products central differences conserve, as for the
+    // nodes (Solver::energies); the means overstate a body ringing on a stiff joint.
     double a[3][3];
     inverseInertia(b, stepped_ ? b.q_prev : b.q, a);
-    e += 0.5 * b.mass * dot(stepped_ ? b.V_prev : b.V, b.V) + 0.5 * dot(L, matVec(a, L));
+    e += 0.5 * b.mass * dot(stepped_ ? b.V_prev : b.V, b.V) +
+         0.5 * dot(stepped_ ? b.L_prev : b.L, matVec(a, b.L));
   }
   return e;
 }
