@@ -198,6 +198,10 @@ class Context {
   std::map<int32_t, DofMask> spc_masks;
   int64_t d3plot_npltc = 0;
   int64_t erode_flag = 0;  // *CONTROL_TIMESTEP ERODE
+  // Where IHQ 8 was given: *CONTROL_HOURGLASS, and *HOURGLASS by its Model::hourglass index
+  // (refused for parts that need hourglass control, finishControls).
+  const deck::Keyword* ihq8_control = nullptr;
+  std::map<std::size_t, const deck::Keyword*> ihq8_hourglass;
   int rigid_wall_count = 0;
   // What the rigid-body keywords collected (build_rigid.cpp), made into Model::rigid last.
   std::shared_ptr<RigidInput> rigid_input;

@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "model/build_context.hpp"
 #include "model/units.hpp"
@@ -135,6 +138,7 @@ void readControlHourglass(Context& ctx, const deck::Keyword& kw, const KeywordOp
     ctx.reject(c, "IHQ", "IHQ " + std::to_string(ihq) + " is not supported (1 to 5 and 8 are)");
   else
     k.hourglass_ihq = static_cast<int>(ihq);
+  ctx.ihq8_control = ihq == 8 ? &kw : nullptr;
   k.hourglass_qh = c.real("QH");
   if (k.hourglass_qh < 0) c.fail("QH", "must not be negative");
   ctx.collect(cur);
@@ -407,24 +411,33 @@ bool hasHourglassControl(const Model& m, const Part& p) {
 
 // IHQ 8 (Keyword Manual, *HOURGLASS / *CONTROL_HOURGLASS): "full projection warping stiffness
 // for shell formulations 16 and -16". For an element with hourglass control the manual gives
-// it no meaning we could check, so such a part is refused rather than run with another type.
+// it no meaning we could check, so such parts are refused (as a missing feature, at the
+// keyword that set IHQ 8) rather than run with another type.
 void refuseWarpingOnHourglassElements(Context& ctx) {
   const Model& m = ctx.model;
   std::vector<char> used(m.parts.size(), 0);
   for (int32_t p : m.solids.part) used[static_cast<std::size_t>(p)] = 1;
   for (int32_t p : m.shells.part) used[static_cast<std::size_t>(p)] = 1;
+  std::map<const deck::Keyword*, std::string> parts;  // the refused parts per keyword
   for (std::size_t i = 0; i < m.parts.size(); ++i) {
     const Part& p = m.parts[i];
-    const bool own = p.hourglass != kNone;
-    const int ihq =
-        own ? m.hourglass[static_cast<std::size_t>(p.hourglass)].ihq : m.controls.hourglass_ihq;
-    if (used[i] == 0 || ihq != 8 || !hasHourglassControl(m, p)) continue;
-    ctx.fail(fmt::format(
-        "{}: part {} takes hourglass type IHQ 8 (from {}), the warping stiffness of the fully "
-        "integrated shell ELFORM 16; its elements (one-point {}) need an hourglass control "
-        "IHQ 1-5: give the part a *HOURGLASS (HGID) of such a type",
-        p.where.str(), p.id, own ? "its *HOURGLASS" : "*CONTROL_HOURGLASS",
-        p.section_kind == SectionKind::Solid ? "hexahedra" : "shells"));
+    const deck::Keyword* kw = ctx.ihq8_control;
+    if (p.hourglass != kNone) {
+      const auto at = ctx.ihq8_hourglass.find(static_cast<std::size_t>(p.hourglass));
+      kw = at != ctx.ihq8_hourglass.end() ? at->second : nullptr;
+    }
+    if (used[i] == 0 || kw == nullptr || !hasHourglassControl(m, p)) continue;
+    parts[kw] += (parts[kw].empty() ? "" : ", ") + std::to_string(p.id);
+  }
+  for (const auto& [kw, ids] : parts) {
+    const std::string message = fmt::format(
+        "IHQ 8 (the warping stiffness of ELFORM 16 shells) is not supported on elements with "
+        "hourglass control (one-point hexahedra and shells): part(s) {}; give them a *HOURGLASS "
+        "of type 1-5",
+        ids);
+    if (!ctx.options.allow_unsupported)
+      throw util::InputError(ctx.deck.loc(*kw).str() + ": " + kw->name + ": " + message);
+    ctx.reportUnsupported(*kw, message, true, kw->name + " IHQ=8 on one-point elements");
   }
 }
 

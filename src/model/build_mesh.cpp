@@ -437,6 +437,7 @@ void readHourglass(Context& ctx, const deck::Keyword& kw, const KeywordOptions& 
       if (v != 0.0 && v != h.qm)
         ctx.ignore(kw.name, f, "value " + std::to_string(v) + " is read but QM is used", c.where());
     }
+    if (h.ihq == 8) ctx.ihq8_hourglass[ctx.model.hourglass.size()] = &kw;
     ctx.model.hourglass.push_back(h);
     ctx.collect(cur);
   }

@@ -336,7 +336,7 @@ TEST(BuildControls, ControlRigidAndWarpingHourglass) {
   EXPECT_EQ(m.ignored.back().field, "PLOTEL");
   EXPECT_NE(err(kMesh, "*CONTROL_RIGID\n1\n").find("LMF"), std::string::npos);
   EXPECT_NE(err(kMesh, "*CONTROL_RIGID\n0,1\n").find("JNTF"), std::string::npos);
-  EXPECT_NE(err(kMesh, "*CONTROL_HOURGLASS\n8\n").find("part 1 takes hourglass type IHQ 8"),
+  EXPECT_NE(err(kMesh, "*CONTROL_HOURGLASS\n8\n").find("IHQ 8 (the warping stiffness"),
             std::string::npos);
   std::string full = kMesh;
   const std::string one = "*SECTION_SOLID\n1,1\n";
