@@ -116,7 +116,7 @@ void checkPartErosion(Context& ctx, std::size_t part) {
   else if (p.section_kind == SectionKind::Shell)
     ok = ctx.model.shell_sections[idx].elform != 13 && ctx.model.shell_sections[idx].elform != 15;
   if (ok) return;
-  const std::string family = p.section_kind == SectionKind::Solid   ? "ELFORM 2, -1, -2 solids"
+  const std::string family = p.section_kind == SectionKind::Solid   ? "ELFORM 2 solids (and -1, -2)"
                              : p.section_kind == SectionKind::Shell ? "2D solids"
                                                                     : "beams and discretes";
   // Refused where an element uses the part (Context::checkPartUsable), as a missing feature.
