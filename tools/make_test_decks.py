@@ -530,6 +530,14 @@ def prism_blocks(n1: int = 3, n2: int = 4, v: float = 10.0, end: float = 6e-5) -
                         15, n1, n2, v, end)
 
 
+def shearfix_blocks(n1: int = 3, n2: int = 4, v: float = 10.0, end: float = 6e-5) -> str:
+    """Block a of ELFORM -1 hexahedra (the shear-corrected fully integrated form), block b of
+    ELFORM 1 (parallel determinism of the ELFORM -1 kernel)."""
+    text = solid_blocks(lambda m, p: None,
+                        "two blocks colliding (ELFORM -1 and ELFORM 1)", -1, n1, n2, v, end)
+    return text.replace("block b (ELFORM 1, degenerate, sorted)", "block b (ELFORM 1)", 1)
+
+
 def joints(w0: float = 0.05, end: float = 0.5) -> str:
     """mm, ms, kg, GPa. Frame (part 1, fixed rigid), bar (part 2, rigid) hinged to it on the
     y axis and turning at w0 about it, elastic block (part 3) ball-jointed under the bar, slider
@@ -670,9 +678,10 @@ def main() -> None:
     (out / "erosion.k").write_text(erosion())
     (out / "prism_blocks.k").write_text(prism_blocks())
     (out / "joints.k").write_text(joints())
+    (out / "shearfix_blocks.k").write_text(shearfix_blocks())
     print("wrote tests/data/decks/mixed_conditions.k, structures.k, structures_shell16.k, "
           "rigid_welds.k, contact_blocks.k, contact_tube.k, contact_tied.k, contact_cask.k, "
-          "tet_blocks.k, axisym_rod.k, erosion.k, prism_blocks.k and joints.k")
+          "tet_blocks.k, axisym_rod.k, erosion.k, prism_blocks.k, joints.k and shearfix_blocks.k")
 
 
 if __name__ == "__main__":

@@ -179,6 +179,12 @@ std::vector<KeywordSpec> makeTables() {
                 {"card 2",
                  {R("DT2MSF"), I("DT2MSLC"), I("IMSCL"), A("UNUSED1", 10, {}, Q),
                   A("UNUSED2", 10, {}, Q), R("RMSCL"), R("EMSCL"), I("IHDO")}}}});
+  t.push_back(
+      {"*CONTROL_RIGID",
+       {{"card 1",
+         {I("LMF"), I("JNTF"), I("ORTHMD"), I("PARTM"), I("SPARSE"), I("METALF"), I("PLOTEL"),
+          I("RBSMS")}},
+        {"card 2", {I("NORBIC"), R("GJADSTF"), R("GJADVSC"), R("TJADSTF"), R("TJADVSC")}}}});
   t.push_back({"*CONTROL_HOURGLASS", {{"card 1", {I("IHQ", 1, Z), R("QH", 0.1, Z)}}}});
   t.push_back({"*CONTROL_BULK_VISCOSITY",
                {{"card 1", {R("Q1", 1.5, Z), R("Q2", 0.06, Z), I("TYPE", 1, Z), I("BTYPE")}}}});

@@ -385,7 +385,8 @@ class SubdomainBuilder {
     b.elform = elform;
     // A fully integrated element has no hourglass modes to control.
     b.resize(b.size(), plastic, kinematic, b.elform == 1 && b.hourglass.qm > 0.0,
-             b.elform == 2 ? 8 : (b.elform == 15 ? 2 : 0), materials::historyCount(b.law));
+             model::isFullyIntegratedHex(b.elform) ? 8 : (b.elform == 15 ? 2 : 0),
+             materials::historyCount(b.law));
     return b;
   }
 

@@ -34,7 +34,7 @@ template <>
 struct FamilyTraits<domain::SolidBlock> {
   static BlockStatus forces(domain::SolidBlock& b, const KernelInputs& in, std::size_t first,
                             std::size_t last) {
-    return b.elform == 2 || b.elform == 15
+    return model::isFullyIntegratedHex(b.elform) || b.elform == 15
                ? computeFullSolidForces(b, in.x, in.v, in.dt, in.bv, in.slots, first, last)
                : computeSolidForces(b, in.x, in.v, in.dt, in.bv, in.slots, first, last);
   }

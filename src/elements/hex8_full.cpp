@@ -6,6 +6,7 @@
 // the element does not lock in near-incompressible plastic flow; it needs no hourglass control.
 // The same kernel runs the two-point pentahedron (ELFORM 15) with its own rule (PrismRule).
 #include <cmath>
+#include <memory>
 
 #include "elements/hex8.hpp"
 #include "elements/hex8_kernel.hpp"
@@ -20,13 +21,16 @@ using detail::LaneArray;
 // 1/sqrt(3) to double precision (std::sqrt is not constexpr here).
 constexpr double kGauss = 0.57735026918962576451;
 
+// The corners' natural coordinates (xi, eta, zeta); Gauss point q sits at kCorner[q] / sqrt(3).
+constexpr int kCorner[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                               {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+
 // Derivatives of the trilinear shape functions at the Gauss points: kShape[q][a][i] =
-// dN_a / dxi_i at xi = kNatural[q] / sqrt(3).
+// dN_a / dxi_i at xi = kCorner[q] / sqrt(3).
 struct HexDerivatives {
   double d[8][8][3];
   constexpr HexDerivatives() : d{} {
-    constexpr int n[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
-                             {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+    constexpr const auto& n = kCorner;
     constexpr double g = kGauss;
     for (int q = 0; q < 8; ++q)
       for (int a = 0; a < 8; ++a) {
@@ -66,15 +70,21 @@ struct PrismDerivatives {
 
 // An integration rule of the multi-point kernel: its points, their weight in the natural
 // coordinates, and the shape-function derivatives there.
+// kShearFix: the transverse shear correction of ELFORM -1 and -2 (shearCorrection below).
 struct HexRule {
   static constexpr int kPoints = 8;
   static constexpr double kWeight = 1.0;
   static constexpr HexDerivatives kShape{};
+  static constexpr bool kShearFix = false;
+};
+struct HexShearRule : HexRule {
+  static constexpr bool kShearFix = true;
 };
 struct PrismRule {
   static constexpr int kPoints = 2;
   static constexpr double kWeight = 0.5;
   static constexpr PrismDerivatives kShape{};
+  static constexpr bool kShearFix = false;
 };
 
 // Gradients dN_a/dx_j of the 8 slots' shape functions at point q on geometry x, and the
@@ -110,6 +120,148 @@ void gradientsAt(int q, const NodalBatch& x, NodalBatch& grad, LaneArray& det) {
   }
 }
 
+// ---- ELFORM -1, -2: the transverse shear correction ------------------------------------------
+// In natural coordinates the velocity derivative along xi_j carries, from each hourglass pattern
+// h_ij = xi_i xi_j (i != j, corner values kCorner[a][i] kCorner[a][j]), the term
+// q_ij xi_i / 8, q_ij = sum_a v_a h_ij,a. Its component along g_i (the natural direction i)
+// is the bending mode "v_i = xi_i xi_j": its strain along i, xi_j times it, is the bending strain
+// the element needs; its derivative along xi_j, xi_i times it, is a transverse shear that a
+// bent beam does not have, and at the Gauss points (xi_i = +-1/sqrt 3) it stiffens bending by
+// a factor of order (aspect ratio)^2 (shear locking). Here that term is taken out of every
+// dv/dxi_j before the strain rate:
+//   dv/dxi_j' = dv/dxi_j - sum_{i != j} g_i (r_i . q~_ij) xi_i,
+// with g_i = dx/dxi_i and r_i = d xi_i / dx of the centre (the element's affine part), and
+// q~_ij = sum_a v_a gamma_ij,a on the Flanagan-Belytschko vectors gamma = (h - (h . x_c) b_c /
+// V) / 8 (Flanagan & Belytschko, IJNME 17 (1981) 679-706), which vanish on every linear
+// velocity field: the uniform strain of the patch test is untouched and exact. The
+// other hourglass terms (twist v_i = xi_j xi_k, and xi eta zeta) keep their strains, so no
+// mode loses all its stiffness. For a rectangular brick this is the removal of the
+// "parasitic shear" of the bilinear element, which makes its pure bending exact (the result
+// of Wilson's incompatible modes on a rectangle: Cook, Malkus, Plesha & Witt, "Concepts and
+// Applications of FEA", 4th ed., 6.13). The internal forces are the transpose of the corrected
+// rate (work conjugate). As in Taylor's correction of incompatible modes (Taylor, Beresford &
+// Wilson, IJNME 10 (1976) 1211-1219), the correction at point q is taken on the centre's map,
+// g_i (x) r_j scaled by det J_0 / det J_q, so that it integrates to zero over any element:
+// a uniform stress then gives no correction forces, and the patch test holds on distorted
+// meshes in forces as well as in strains. It is the idea of LS-DYNA's -1 and -2 (Keyword Manual
+// *SECTION_SOLID; T. Borrvall, "A heuristic attempt to reduce transverse shear locking in
+// fully integrated hexahedra with poor aspect ratio", 7th European LS-DYNA Conference, 2009:
+// Jacobian terms of the spurious shear modes cancelled); LS-DYNA's exact expressions are not
+// public, so answers may differ from LS-DYNA's by a few per cent on coarse meshes.
+constexpr int kPair[3][2] = {{0, 1}, {1, 2}, {2, 0}};
+
+// The correction's geometry on one configuration: the pairs' gamma vectors, g_i, r_i.
+struct ShearGeometry {
+  double gam[3][8][kBatch];
+  double g[3][3][kBatch];  // g[i][c] = dx_c / dxi_i at the centre
+  double r[3][3][kBatch];  // r[i][c] = (G^-1)[i][c] = d xi_i / dx_c, G[c][i] = g[i][c]
+  double det0[kBatch];     // det G
+};
+
+// The inverse of m (cofactors over the determinant; zero for a singular m); returns det m.
+inline double invert3(const double (&m)[3][3], double (&out)[3][3]) {
+  const double c00 = m[1][1] * m[2][2] - m[1][2] * m[2][1];
+  const double c01 = m[1][2] * m[2][0] - m[1][0] * m[2][2];
+  const double c02 = m[1][0] * m[2][1] - m[1][1] * m[2][0];
+  const double det = m[0][0] * c00 + m[0][1] * c01 + m[0][2] * c02;
+  const double r = det != 0.0 ? 1.0 / det : 0.0;
+  out[0][0] = c00 * r;
+  out[1][0] = c01 * r;
+  out[2][0] = c02 * r;
+  out[0][1] = (m[0][2] * m[2][1] - m[0][1] * m[2][2]) * r;
+  out[1][1] = (m[0][0] * m[2][2] - m[0][2] * m[2][0]) * r;
+  out[2][1] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) * r;
+  out[0][2] = (m[0][1] * m[1][2] - m[0][2] * m[1][1]) * r;
+  out[1][2] = (m[0][2] * m[1][0] - m[0][0] * m[1][2]) * r;
+  out[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) * r;
+  return det;
+}
+
+// On geometry x with volume gradient b and volume vol.
+inline void shearGeometry(const NodalBatch& x, const NodalBatch& b, const LaneArray& vol,
+                          ShearGeometry& sg) {
+  for (int l = 0; l < kBatch; ++l) {
+    double G[3][3], Gi[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int c = 0; c < 3; ++c) {
+        double s = 0.0;
+        for (int a = 0; a < 8; ++a) s += kCorner[a][i] * x[c][a][l];
+        sg.g[i][c][l] = G[c][i] = s / 8.0;
+      }
+    sg.det0[l] = invert3(G, Gi);
+    for (int i = 0; i < 3; ++i)
+      for (int c = 0; c < 3; ++c) sg.r[i][c][l] = Gi[i][c];
+    const double rv = vol[l] != 0.0 ? 1.0 / vol[l] : 0.0;
+    for (int p = 0; p < 3; ++p) {
+      const int i = kPair[p][0], j = kPair[p][1];
+      double hx[3] = {0.0, 0.0, 0.0};
+      for (int c = 0; c < 3; ++c)
+        for (int a = 0; a < 8; ++a) hx[c] += kCorner[a][i] * kCorner[a][j] * x[c][a][l];
+      for (int a = 0; a < 8; ++a)
+        sg.gam[p][a][l] = (kCorner[a][i] * kCorner[a][j] -
+                           rv * (hx[0] * b[0][a][l] + hx[1] * b[1][a][l] + hx[2] * b[2][a][l])) /
+                          8.0;
+    }
+  }
+}
+
+// amp[p][k] = r_i . q~_ij for pair p, i = kPair[p][k]: the bending modes' amplitudes.
+using ShearAmplitudes = double[3][2][kBatch];
+inline void shearAmplitudes(const ShearGeometry& sg, const NodalBatch& v, ShearAmplitudes& amp) {
+  for (int p = 0; p < 3; ++p)
+    for (int k = 0; k < 2; ++k) {
+      const int i = kPair[p][k];
+      for (int l = 0; l < kBatch; ++l) {
+        double s = 0.0;
+        for (int a = 0; a < 8; ++a)
+          s += (sg.r[i][0][l] * v[0][a][l] + sg.r[i][1][l] * v[1][a][l] +
+                sg.r[i][2][l] * v[2][a][l]) *
+               sg.gam[p][a][l];
+        amp[p][k][l] = s;
+      }
+    }
+}
+
+// L += -(det J_0 / det J_q) sum xi_i amp_ij g_i (x) r_j at point q (weight det_q), lane l.
+inline void addShearRate(const ShearGeometry& sg, const ShearAmplitudes& amp, int q, double det_q,
+                         int l, double (&L)[3][3]) {
+  const double scale = det_q != 0.0 ? sg.det0[l] / det_q : 0.0;
+  for (int p = 0; p < 3; ++p)
+    for (int k = 0; k < 2; ++k) {
+      const int i = kPair[p][k], j = kPair[p][1 - k];
+      const double c = -kCorner[q][i] * kGauss * amp[p][k][l] * scale;
+      for (int m = 0; m < 3; ++m)
+        for (int n = 0; n < 3; ++n) L[m][n] += c * sg.g[i][m][l] * sg.r[j][n][l];
+    }
+}
+
+// The work conjugates of the amplitudes, summed over the points: coef[p][k] += det J_0 xi_i
+// (g_i . S r_j), S the point's deviatoric stress (sym[6]: xx yy zz xy yz zx).
+inline void addShearWork(const ShearGeometry& sg, int q, int l, const double (&S)[6],
+                         ShearAmplitudes& coef) {
+  const double M[3][3] = {{S[0], S[3], S[5]}, {S[3], S[1], S[4]}, {S[5], S[4], S[2]}};
+  for (int p = 0; p < 3; ++p)
+    for (int k = 0; k < 2; ++k) {
+      const int i = kPair[p][k], j = kPair[p][1 - k];
+      double s = 0.0;
+      for (int m = 0; m < 3; ++m)
+        for (int n = 0; n < 3; ++n) s += sg.g[i][m][l] * M[m][n] * sg.r[j][n][l];
+      coef[p][k][l] += sg.det0[l] * kCorner[q][i] * kGauss * s;
+    }
+}
+
+// f_a += sum coef_ij gamma_ij,a r_i: the transpose of the rate correction.
+inline void addShearForces(const ShearGeometry& sg, const ShearAmplitudes& coef, NodalBatch& f) {
+  for (int p = 0; p < 3; ++p)
+    for (int k = 0; k < 2; ++k) {
+      const int i = kPair[p][k];
+      for (int a = 0; a < 8; ++a)
+        for (int c = 0; c < 3; ++c)
+          for (int l = 0; l < kBatch; ++l)
+            f[c][a][l] += coef[p][k][l] * sg.gam[p][a][l] * sg.r[i][c][l];
+    }
+}
+
 // Sums over the eight Gauss points of one batch: the internal energy, any failed point, the
 // element-level mean stress and plastic strain.
 struct FullPointSums {
@@ -141,9 +293,16 @@ inline void meanDilatation(double dt, BatchScratch& w, LaneArray& vol_mid, LaneA
 
 // The Jaumann rotation of one point's stress (and back stress) and its B-bar strain increment:
 // the point's own deviatoric rate, the element's mean dilatation.
-template <class Law>
+// The correction's state for the rates (at the mid-step geometry) of ELFORM -1, -2.
+struct ShearRates {
+  ShearGeometry sg;
+  ShearAmplitudes amp;
+};
+
+// With kFix (ELFORM -1, -2) the velocity gradient of point q takes the shear correction of sr.
+template <class Law, bool kFix>
 inline void pointRates(double dt, const NodalBatch& grad, const LaneArray& trace_mean,
-                       BatchScratch& w) {
+                       BatchScratch& w, int q, const LaneArray& det, const ShearRates* sr) {
   for (int l = 0; l < kBatch; ++l) {
     double L[3][3];
     for (int i = 0; i < 3; ++i)
@@ -152,6 +311,7 @@ inline void pointRates(double dt, const NodalBatch& grad, const LaneArray& trace
         for (int a = 0; a < 8; ++a) s += w.v[i][a][l] * grad[j][a][l];
         L[i][j] = s;
       }
+    if constexpr (kFix) addShearRate(sr->sg, sr->amp, q, det[l], l, L);
     const double wxy = 0.5 * (L[0][1] - L[1][0]) * dt;
     const double wyz = 0.5 * (L[1][2] - L[2][1]) * dt;
     const double wzx = 0.5 * (L[2][0] - L[0][2]) * dt;
@@ -172,7 +332,7 @@ inline void pointRates(double dt, const NodalBatch& grad, const LaneArray& trace
 template <class Law, class Rule>
 inline void gaussPointStresses(const Law& law, domain::SolidBlock& blk, std::size_t first,
                                double dt, const LaneArray& trace_mean, BatchScratch& w,
-                               NodalBatch& grad, FullPointSums& sums) {
+                               NodalBatch& grad, FullPointSums& sums, const ShearRates* sr) {
   const std::size_t padded = blk.paddedSize();
   for (int l = 0; l < kBatch; ++l) sums.de_int[l] = sums.eps_mean[l] = 0.0;
   constexpr double share = 1.0 / Rule::kPoints;
@@ -191,7 +351,7 @@ inline void gaussPointStresses(const Law& law, domain::SolidBlock& blk, std::siz
     for (int k = 0; k < H; ++k)
       for (int l = 0; l < kBatch; ++l)
         w.hist[k][l] = blk.hist_ip[std::size_t(q * H + k) * padded + first + l];
-    pointRates<Law>(dt, grad, trace_mean, w);
+    pointRates<Law, Rule::kShearFix>(dt, grad, trace_mean, w, q, det, sr);
     detail::updateMaterial(law, w, dt);
     for (int l = 0; l < kBatch; ++l) {
       sums.de_int[l] += detail::stressWork(w, l) * det[l];
@@ -245,15 +405,18 @@ inline void fullGeometry(domain::SolidBlock& blk, std::size_t first, double lam2
 // Forces: deviatoric stress at each point on its own gradients; the mean pressure (plus bulk
 // viscosity) on the exact volume gradient, which the Gauss sum of det(J) grad N reproduces
 // exactly.
+// ELFORM -1, -2 add the transpose of the shear correction (on the geometry at x(n)).
 template <class Rule>
 inline void fullForces(const domain::SolidBlock& blk, std::size_t first, const FullGeometry& g,
-                       BatchScratch& w, NodalBatch& grad) {
+                       BatchScratch& w, NodalBatch& grad, ShearGeometry* sg) {
   const std::size_t padded = blk.paddedSize();
   for (int c3 = 0; c3 < 3; ++c3)
     for (int a = 0; a < 8; ++a)
       for (int l = 0; l < kBatch; ++l) w.f[c3][a][l] = 0.0;
   LaneArray pbar;
   for (int l = 0; l < kBatch; ++l) pbar[l] = 0.0;
+  ShearAmplitudes coef = {};
+  if constexpr (Rule::kShearFix) shearGeometry(w.x, w.b, g.vol, *sg);
   for (int q = 0; q < Rule::kPoints; ++q) {
     LaneArray det;
     gradientsAt<Rule>(q, w.x, grad, det);
@@ -273,8 +436,18 @@ inline void fullForces(const domain::SolidBlock& blk, std::size_t first, const F
         w.f[1][a][l] -= sxy * gx + dyy * gy + syz * gz;
         w.f[2][a][l] -= szx * gx + syz * gy + dzz * gz;
       }
+      if constexpr (Rule::kShearFix) {
+        const double S[6] = {s0 - mean,
+                             s1 - mean,
+                             s2 - mean,
+                             blk.sig_ip[3][at + l],
+                             blk.sig_ip[4][at + l],
+                             blk.sig_ip[5][at + l]};
+        addShearWork(*sg, q, l, S, coef);
+      }
     }
   }
+  if constexpr (Rule::kShearFix) addShearForces(*sg, coef, w.f);
   for (int l = 0; l < kBatch; ++l) {
     // pbar holds the volume integral of the mean normal stress; per unit volume:
     const double mean_stress = pbar[l] / (g.vol[l] != 0.0 ? g.vol[l] : 1.0) - g.qbv[l];
@@ -320,6 +493,8 @@ BlockStatus fullBlockForces(const Law& law, domain::SolidBlock& blk, const domai
   {
     BatchScratch w;
     NodalBatch grad;
+    // ELFORM -1, -2 only: the shear correction's scratch (on the heap: it is large).
+    auto sr = Rule::kShearFix ? std::make_unique<ShearRates>() : nullptr;
 #pragma omp for schedule(static)
     for (std::size_t ib = 0; ib < nbatch; ++ib) {
       const std::size_t first = range_first + ib * kBatch;
@@ -328,11 +503,15 @@ BlockStatus fullBlockForces(const Law& law, domain::SolidBlock& blk, const domai
       detail::gatherNodal(blk, first, n, v, w.v);
       LaneArray vol_mid, trace_mean;
       meanDilatation(dt, w, vol_mid, trace_mean);
+      if constexpr (Rule::kShearFix) {
+        shearGeometry(w.xm, w.b, vol_mid, sr->sg);
+        shearAmplitudes(sr->sg, w.v, sr->amp);
+      }
       FullPointSums sums;
-      gaussPointStresses<Law, Rule>(law, blk, first, dt, trace_mean, w, grad, sums);
+      gaussPointStresses<Law, Rule>(law, blk, first, dt, trace_mean, w, grad, sums, sr.get());
       FullGeometry g;
       fullGeometry(blk, first, lam2mu, dt, bv, trace_mean, vol_mid, w, g, sums.de_int);
-      fullForces<Rule>(blk, first, g, w, grad);
+      fullForces<Rule>(blk, first, g, w, grad, sr ? &sr->sg : nullptr);
       storeFullBatch<Law>(blk, first, n, bv, trace_mean, sums, g, w, slots, status[ib]);
     }
   }
@@ -350,7 +529,10 @@ BlockStatus computeFullSolidForces(domain::SolidBlock& block, const domain::Node
         if constexpr (materials::SolidLaw<Law>)
           return block.elform == 15
                      ? fullBlockForces<Law, PrismRule>(law, block, x, v, dt, bv, slots, first, last)
-                     : fullBlockForces<Law, HexRule>(law, block, x, v, dt, bv, slots, first, last);
+                 : block.elform == 2
+                     ? fullBlockForces<Law, HexRule>(law, block, x, v, dt, bv, slots, first, last)
+                     : fullBlockForces<Law, HexShearRule>(law, block, x, v, dt, bv, slots, first,
+                                                          last);
         else
           materials::noUpdateFor(materials::Family::Solid);
       },

@@ -382,6 +382,7 @@ const std::vector<Meaning>& meanings() {
       {"*CONTROL_TERMINATION", 6, readControlTermination, {}},
       {"*CONTROL_TIMESTEP", 6, readControlTimestep, {}},
       {"*CONTROL_HOURGLASS", 6, readControlHourglass, {}},
+      {"*CONTROL_RIGID", 6, readControlRigid, {}},
       {"*CONTROL_BULK_VISCOSITY", 6, readControlBulkViscosity, {}},
       {"*CONTROL_ENERGY", 6, readControlEnergy, {}},
       {"*CONTROL_SOLID", 6, readControlSolid, {}},

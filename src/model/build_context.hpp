@@ -198,6 +198,10 @@ class Context {
   std::map<int32_t, DofMask> spc_masks;
   int64_t d3plot_npltc = 0;
   int64_t erode_flag = 0;  // *CONTROL_TIMESTEP ERODE
+  // Where IHQ 8 was given: *CONTROL_HOURGLASS, and *HOURGLASS by its Model::hourglass index
+  // (refused for parts that need hourglass control, finishControls).
+  const deck::Keyword* ihq8_control = nullptr;
+  std::map<std::size_t, const deck::Keyword*> ihq8_hourglass;
   int rigid_wall_count = 0;
   // What the rigid-body keywords collected (build_rigid.cpp), made into Model::rigid last.
   std::shared_ptr<RigidInput> rigid_input;
@@ -281,6 +285,11 @@ void checkSectionKind(Context& ctx, const deck::Card& c, int32_t part, SectionKi
 // "General card format"). One that starts with a data card skips blank lines. Trailing blank
 // lines end the keyword either way.
 bool nextRecord(deck::CardCursor& cur, bool starts_with_heading);
+// Hourglass types Crumple runs (*HOURGLASS, *CONTROL_HOURGLASS IHQ): the viscous 1-3, the
+// stiffness 4-5, and 8, the warping stiffness of fully integrated shells (ELFORM 16).
+inline bool isSupportedIhq(int64_t ihq) {
+  return (ihq >= 1 && ihq <= 5) || ihq == 8;
+}
 int64_t positiveId(const deck::Card& c, std::string_view field);
 std::string readTitleCard(deck::CardCursor& cur, const deck::KeywordSpec& spec,
                           const KeywordOptions& opts);
@@ -355,6 +364,7 @@ void readTitle(Context&, const deck::Keyword&, const KeywordOptions&);
 void readControlTermination(Context&, const deck::Keyword&, const KeywordOptions&);
 void readControlTimestep(Context&, const deck::Keyword&, const KeywordOptions&);
 void readControlHourglass(Context&, const deck::Keyword&, const KeywordOptions&);
+void readControlRigid(Context&, const deck::Keyword&, const KeywordOptions&);
 void readControlBulkViscosity(Context&, const deck::Keyword&, const KeywordOptions&);
 void readControlEnergy(Context&, const deck::Keyword&, const KeywordOptions&);
 void readControlImplicitGeneral(Context&, const deck::Keyword&, const KeywordOptions&);

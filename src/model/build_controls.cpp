@@ -1,9 +1,14 @@
 // Meaning of *TITLE, the *CONTROL_ keywords and the *DATABASE_ output requests Crumple
 // honours (LS-DYNA Keyword Manual Vol. I). Keywords read only so that their non-default
 // fields can be reported go through readIgnoredControl.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "model/build_context.hpp"
 #include "model/units.hpp"
@@ -129,10 +134,11 @@ void readControlHourglass(Context& ctx, const deck::Keyword& kw, const KeywordOp
   const Card& c = cur.readOptional(keywordSpec("*CONTROL_HOURGLASS").card("card 1"));
   Controls& k = ctx.model.controls;
   const int64_t ihq = c.integer("IHQ");
-  if (ihq < 1 || ihq > 5)
-    ctx.reject(c, "IHQ", "IHQ " + std::to_string(ihq) + " is not supported (1 to 5 are)");
+  if (!isSupportedIhq(ihq))
+    ctx.reject(c, "IHQ", "IHQ " + std::to_string(ihq) + " is not supported (1 to 5 and 8 are)");
   else
     k.hourglass_ihq = static_cast<int>(ihq);
+  ctx.ihq8_control = ihq == 8 ? &kw : nullptr;
   k.hourglass_qh = c.real("QH");
   if (k.hourglass_qh < 0) c.fail("QH", "must not be negative");
   ctx.collect(cur);
@@ -146,6 +152,44 @@ void readControlBulkViscosity(Context& ctx, const deck::Keyword& kw, const Keywo
   k.q_linear = c.real("Q2");
   if (k.q_quadratic < 0) c.fail("Q1", "must not be negative");
   if (k.q_linear < 0) c.fail("Q2", "must not be negative");
+  ctx.collect(cur);
+}
+
+// *CONTROL_RIGID (Keyword Manual vol. I). Every field's default (0) is what Crumple does; a
+// value that would change the answer is refused by name:
+//  - LMF 1 (Lagrange multiplier joints): Crumple's joints are penalty springs (LMF 0);
+//  - JNTF 1, 2 (total formulations of the generalized joint stiffness): Crumple's joint
+//    stiffness springs are updated incrementally (JNTF 0);
+//  - METALF 1 (the metal-forming shortcut for rigid tools);
+//  - GJADSTF, GJADVSC, TJADSTF, TJADVSC (added joint stiffness and damping);
+// and accepted with a note where the value cannot matter here:
+//  - ORTHMD, PARTM, SPARSE: options of *PART_MODES, which Crumple does not read;
+//  - PLOTEL: *ELEMENT_PLOTEL for the output of nodal rigid bodies (output only);
+//  - RBSMS: rigid bodies in selective mass scaling, which Crumple does not do;
+//  - NORBIC: switches off an input check of rigid-body inertias; not the answer.
+void readControlRigid(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*CONTROL_RIGID");
+  CardCursor cur(kw, ctx.deck);
+  const Card& c1 = cur.readOptional(spec.card("card 1"));
+  const Card& c2 = cur.readOptional(spec.card("card 2"));
+  if (c1.integer("LMF") != 0)
+    ctx.reject(c1, "LMF", "Lagrange multiplier joints are not supported (LMF 0: penalty joints)");
+  if (c1.integer("JNTF") != 0)
+    ctx.reject(c1, "JNTF", "only the incremental joint stiffness update (JNTF 0) is supported");
+  if (c1.integer("METALF") != 0)
+    ctx.reject(c1, "METALF", "the metal-forming rigid body option is not supported");
+  for (auto f : {"GJADSTF", "GJADVSC", "TJADSTF", "TJADVSC"})
+    if (c2.real(f) != 0.0) ctx.reject(c2, f, "added joint stiffness and damping are not supported");
+  for (auto f : {"ORTHMD", "PARTM", "SPARSE"})
+    if (c1.integer(f) != 0)
+      ctx.ignore(kw.name, f, "no effect: an option of *PART_MODES, which Crumple does not read",
+                 c1.where());
+  if (c1.integer("PLOTEL") != 0)
+    ctx.ignore(kw.name, "PLOTEL", "output only: no *ELEMENT_PLOTEL are generated", c1.where());
+  if (c1.integer("RBSMS") != 0)
+    ctx.ignore(kw.name, "RBSMS", "no effect: Crumple has no selective mass scaling", c1.where());
+  if (c2.integer("NORBIC") != 0)
+    ctx.ignore(kw.name, "NORBIC", "no effect: an input check only", c2.where());
   ctx.collect(cur);
 }
 
@@ -349,6 +393,56 @@ static void noteUnwrittenReactions(Context& ctx) {
   }
 }
 
+namespace {
+
+// Whether a part's elements run an hourglass control: one-point hexahedra (ELFORM 1) and the
+// one-point shells (ELFORM 2, 4, 10). Fully integrated solids and shells, tetrahedra,
+// pentahedra, beams and discretes have none.
+bool hasHourglassControl(const Model& m, const Part& p) {
+  if (p.section == kNone) return false;
+  const auto s = static_cast<std::size_t>(p.section);
+  if (p.section_kind == SectionKind::Solid) return m.solid_sections[s].elform == 1;
+  if (p.section_kind == SectionKind::Shell) {
+    const int f = m.shell_sections[s].elform;
+    return f == 2 || f == 4 || f == 10;  // 2D solids (13, 15) are checked by finishPlanar
+  }
+  return false;
+}
+
+// IHQ 8 (Keyword Manual, *HOURGLASS / *CONTROL_HOURGLASS): "full projection warping stiffness
+// for shell formulations 16 and -16". For an element with hourglass control the manual gives
+// it no meaning we could check, so such parts are refused (as a missing feature, at the
+// keyword that set IHQ 8) rather than run with another type.
+void refuseWarpingOnHourglassElements(Context& ctx) {
+  const Model& m = ctx.model;
+  std::vector<char> used(m.parts.size(), 0);
+  for (int32_t p : m.solids.part) used[static_cast<std::size_t>(p)] = 1;
+  for (int32_t p : m.shells.part) used[static_cast<std::size_t>(p)] = 1;
+  std::map<const deck::Keyword*, std::string> parts;  // the refused parts per keyword
+  for (std::size_t i = 0; i < m.parts.size(); ++i) {
+    const Part& p = m.parts[i];
+    const deck::Keyword* kw = ctx.ihq8_control;
+    if (p.hourglass != kNone) {
+      const auto at = ctx.ihq8_hourglass.find(static_cast<std::size_t>(p.hourglass));
+      kw = at != ctx.ihq8_hourglass.end() ? at->second : nullptr;
+    }
+    if (used[i] == 0 || kw == nullptr || !hasHourglassControl(m, p)) continue;
+    parts[kw] += (parts[kw].empty() ? "" : ", ") + std::to_string(p.id);
+  }
+  for (const auto& [kw, ids] : parts) {
+    const std::string message = fmt::format(
+        "IHQ 8 (the warping stiffness of ELFORM 16 shells) is not supported on elements with "
+        "hourglass control (one-point hexahedra and shells): part(s) {}; give them a *HOURGLASS "
+        "of type 1-5",
+        ids);
+    if (!ctx.options.allow_unsupported)
+      throw util::InputError(ctx.deck.loc(*kw).str() + ": " + kw->name + ": " + message);
+    ctx.reportUnsupported(*kw, message, true, kw->name + " IHQ=8 on one-point elements");
+  }
+}
+
+}  // namespace
+
 void finishControls(Context& ctx) {
   Controls& k = ctx.model.controls;
   if (k.d3plot_dt == 0.0 && ctx.d3plot_npltc > 0 && k.end_time > 0)
@@ -357,6 +451,7 @@ void finishControls(Context& ctx) {
   // (*CONTROL_TIMESTEP); a material's TDEL (*MAT_024) is applied per part by the solver.
   k.erode_on_dtmin = ctx.erode_flag == 1 && k.dt_min_ratio > 0;
   noteUnwrittenReactions(ctx);
+  refuseWarpingOnHourglassElements(ctx);
 }
 
 }  // namespace crumple::model::build

@@ -388,11 +388,13 @@ void readSectionSolid(Context& ctx, const deck::Keyword& kw, const KeywordOption
     s.where = c.where();
     const auto elform = c.integer("ELFORM");
     // ELFORM (Keyword Manual, *SECTION_SOLID): 1 constant stress (default), 2 fully integrated
-    // selective-reduced, 10 one-point tetrahedron, 15 two-point pentahedron; 0 is the
-    // one-point corotational form of *MAT_MODIFIED_HONEYCOMB, run here as 1 with a note. -1
-    // and -2 (fully integrated forms for poor aspect ratios), 13 (nodal-pressure tetrahedron)
-    // and the rest are refused rather than silently run as something else.
-    if (elform == 1 || elform == 2 || elform == 10 || elform == 15) {
+    // selective-reduced, -1 and -2 the same for poor aspect ratios ("accurate" and "efficient";
+    // both run one formulation here, src/elements/hex8_full.cpp), 10 one-point tetrahedron,
+    // 15 two-point pentahedron; 0 is the one-point corotational form of
+    // *MAT_MODIFIED_HONEYCOMB, run here as 1 with a note. 13 (nodal-pressure tetrahedron) and
+    // the rest are refused rather than silently run as something else.
+    if (elform == 1 || isFullyIntegratedHex(static_cast<int>(elform)) || elform == 10 ||
+        elform == 15) {
       s.elform = static_cast<int>(elform);
     } else if (elform == 0) {
       s.elform = 1;
@@ -404,7 +406,7 @@ void readSectionSolid(Context& ctx, const deck::Keyword& kw, const KeywordOption
                             c.where());
       ctx.reportUnsupported(kw,
                             "ELFORM " + std::to_string(elform) +
-                                " not supported yet (1, 2, 10 and 15 are; 0 runs as 1)",
+                                " not supported yet (1, 2, -1, -2, 10 and 15 are; 0 runs as 1)",
                             false);
       ctx.collect(cur);
       continue;
@@ -425,8 +427,8 @@ void readHourglass(Context& ctx, const deck::Keyword& kw, const KeywordOptions& 
     h.id = positiveId(c, "HGID");
     ctx.define(Kind::Hourglass, h.id, c, "HGID");
     h.ihq = static_cast<int>(c.integer("IHQ"));
-    if (h.ihq < 1 || h.ihq > 5)
-      ctx.reject(c, "IHQ", "IHQ " + std::to_string(h.ihq) + " is not supported (1 to 5 are)");
+    if (!isSupportedIhq(h.ihq))
+      ctx.reject(c, "IHQ", "IHQ " + std::to_string(h.ihq) + " is not supported (1 to 5 and 8 are)");
     h.qm = c.real("QM");
     if (h.qm < 0) c.fail("QM", "must not be negative");
     // QB and QW default to QM (Keyword Manual, *HOURGLASS); Crumple uses QM throughout.
@@ -435,6 +437,7 @@ void readHourglass(Context& ctx, const deck::Keyword& kw, const KeywordOptions& 
       if (v != 0.0 && v != h.qm)
         ctx.ignore(kw.name, f, "value " + std::to_string(v) + " is read but QM is used", c.where());
     }
+    if (h.ihq == 8) ctx.ihq8_hourglass[ctx.model.hourglass.size()] = &kw;
     ctx.model.hourglass.push_back(h);
     ctx.collect(cur);
   }
@@ -513,7 +516,7 @@ void readControlSolid(Context& ctx, const deck::Keyword& kw, const KeywordOption
   Solids& s = ctx.model.solids;
   for (std::size_t e = 0; e < s.size(); ++e) {
     const int form = sectionElform(ctx, s.part[e]);
-    if (form != 1 && form != 2) continue;
+    if (form != 1 && !isFullyIntegratedHex(form)) continue;
     const Degenerate shape = degenerateShape(s.nodes[e]);
     if (shape == Degenerate::Tetrahedron) s.nodes[e] = canonicalTet(s.nodes[e]);
     if (shape == Degenerate::Pentahedron) canonicalPrism(s.nodes[e], s.nodes[e]);

@@ -139,7 +139,7 @@ int Model::solidFormulation(std::size_t e) const {
   const int form = part.section == kNone || part.section_kind != SectionKind::Solid
                        ? 1
                        : solid_sections[static_cast<std::size_t>(part.section)].elform;
-  if (!controls.solid_esort || (form != 1 && form != 2)) return form;
+  if (!controls.solid_esort || (form != 1 && !isFullyIntegratedHex(form))) return form;
   if (isCanonicalTet(solids.nodes[e])) return 10;
   return isCanonicalPrism(solids.nodes[e]) ? 15 : form;
 }

@@ -87,10 +87,16 @@ struct SectionSolid {
   int64_t id = 0;
   // 1 = constant stress (one point); 2 = selective-reduced (8 points); 10 = constant-strain
   // tetrahedron (its elements stored as N1 N2 N3 N4 N4 N4 N4 N4, model/solid_shape.hpp);
-  // 15 = two-point pentahedron (stored as N1 N2 N3 N4 N5 N5 N6 N6)
+  // 15 = two-point pentahedron (stored as N1 N2 N3 N4 N5 N5 N6 N6); -1, -2 = 2 with the
+  // transverse shear correction for poor aspect ratios (src/elements/hex8_full.cpp)
   int elform = 1;
   util::SourceLoc where;
 };
+
+// The 8-point hexahedra: ELFORM 2 and its variants -1 and -2 for poor aspect ratios.
+inline bool isFullyIntegratedHex(int elform) {
+  return elform == 2 || elform == -1 || elform == -2;
+}
 
 // *SECTION_SHELL: ELFORM 2 Belytschko-Tsay (default), 4 C0 triangle; NIP points through the
 // thickness, Gauss or (QR/IRID = -? / Lobatto) Lobatto; T1-T4 corner thicknesses.

@@ -65,9 +65,9 @@ std::vector<int32_t> elementWeights(const model::Model& model, const Options& op
         break;
     }
     const int32_t base = plastic ? kWeightSolidPlastic : kWeightSolidElastic;
-    const bool full = part.section != model::kNone &&
-                      std::size_t(part.section) < model.solid_sections.size() &&
-                      model.solid_sections[std::size_t(part.section)].elform == 2;
+    const bool full =
+        part.section != model::kNone && std::size_t(part.section) < model.solid_sections.size() &&
+        model::isFullyIntegratedHex(model.solid_sections[std::size_t(part.section)].elform);
     if (full) return base * kWeightFullyIntegratedFactor / 10;  // 8 points, no hourglass
     const int ihq =
         part.hourglass != model::kNone && std::size_t(part.hourglass) < model.hourglass.size()

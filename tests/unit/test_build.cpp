@@ -322,6 +322,30 @@ TEST(BuildErrors, ExactMessages) {
                 "or _DISCRETE)");
 }
 
+// *CONTROL_RIGID: defaults accepted; PLOTEL (output only) noted; LMF 1 (Lagrange multiplier
+// joints) refused by name. IHQ 8 (the warping stiffness of ELFORM 16 shells) on a part of
+// one-point hexahedra is refused; on fully integrated hexahedra (no hourglass control) it is
+// accepted; IHQ 9 is refused.
+TEST(BuildControls, ControlRigidAndWarpingHourglass) {
+  TempDir t;
+  auto err = [&](const std::string& mesh, const std::string& extra) {
+    return errorOf([&] { readModel(t.write("c.k", mesh + extra)); });
+  };
+  const Model m = build(t, "*CONTROL_RIGID\n0,0,0,0,0,0,1,0\n0\n");
+  ASSERT_FALSE(m.ignored.empty());
+  EXPECT_EQ(m.ignored.back().field, "PLOTEL");
+  EXPECT_NE(err(kMesh, "*CONTROL_RIGID\n1\n").find("LMF"), std::string::npos);
+  EXPECT_NE(err(kMesh, "*CONTROL_RIGID\n0,1\n").find("JNTF"), std::string::npos);
+  EXPECT_NE(err(kMesh, "*CONTROL_HOURGLASS\n8\n").find("IHQ 8 (the warping stiffness"),
+            std::string::npos);
+  std::string full = kMesh;
+  const std::string one = "*SECTION_SOLID\n1,1\n";
+  full.replace(full.find(one), one.size(), "*SECTION_SOLID\n1,-1\n");
+  EXPECT_EQ(err(full, "*CONTROL_HOURGLASS\n8\n"), "");
+  EXPECT_EQ(readModel(t.write("f.k", full + "*CONTROL_HOURGLASS\n8\n")).controls.hourglass_ihq, 8);
+  EXPECT_NE(err(full, "*CONTROL_HOURGLASS\n9\n").find("(1 to 5 and 8 are)"), std::string::npos);
+}
+
 TEST(BuildErrors, RigidPart) {
   TempDir t;
   const auto p = t.write("r.k", kMesh +

@@ -234,15 +234,18 @@ TEST(Hex8, StiffnessHourglassResistanceTurnsWithTheElement) {
   }
 }
 
-// The fully integrated element (ELFORM 2) passes the same patch test: with a linear velocity
-// field every Gauss point of every element carries the same stress, and the interior node of
-// the distorted block is in equilibrium.
-TEST(Hex8Full, UniformStrainIsExactAndInteriorForcesBalance) {
+// The fully integrated elements (ELFORM 2, and -1, -2 with the shear correction, which acts
+// on hourglass velocities only) pass the same patch test: with a linear velocity field every
+// Gauss point of every element carries the same stress, and the interior node of the distorted
+// block is in equilibrium.
+class Hex8Full : public ::testing::TestWithParam<int> {};
+
+TEST_P(Hex8Full, UniformStrainIsExactAndInteriorForcesBalance) {
   auto m = distortedBlock(1);
-  m.solid_sections[0].elform = 2;
+  m.solid_sections[0].elform = GetParam();
   auto sd = crumple::domain::buildSerialSubdomain(m);
   auto& blk = sd.solid_blocks.at(0);
-  ASSERT_EQ(blk.elform, 2);
+  ASSERT_EQ(blk.elform, GetParam());
   std::vector<double> dt_e;
   crumple::elements::initializeSolids(blk, sd.x0, sd.slots.data(), dt_e, {});
   const double dt = 1e-2;
@@ -263,9 +266,9 @@ TEST(Hex8Full, UniformStrainIsExactAndInteriorForcesBalance) {
 }
 
 // ... and a finite rigid rotation leaves every Gauss point unstressed.
-TEST(Hex8Full, FiniteRigidRotationProducesNoStress) {
+TEST_P(Hex8Full, FiniteRigidRotationProducesNoStress) {
   auto m = distortedBlock(1);
-  m.solid_sections[0].elform = 2;
+  m.solid_sections[0].elform = GetParam();
   auto sd = crumple::domain::buildSerialSubdomain(m);
   auto& blk = sd.solid_blocks.at(0);
   std::vector<double> dt_e;
@@ -290,6 +293,8 @@ TEST(Hex8Full, FiniteRigidRotationProducesNoStress) {
   for (const auto& comp : blk.sig_ip)
     for (double s : comp) EXPECT_NEAR(s, 0.0, 1e-11);
 }
+
+INSTANTIATE_TEST_SUITE_P(Forms, Hex8Full, ::testing::Values(2, -1, -2));
 
 TEST(Hex8, StableStepOfACubeIsEdgeOverWaveSpeed) {
   using crumple::elements::solidTimeStep;

@@ -94,12 +94,11 @@ inline std::string esortNote(const std::string& name, const std::string& deck) {
   return "";
 }
 
-// A 100 x 10 x 10 mm steel cantilever of 20 x 2 x 2 cells, clamped at x = 0, tip load P along
+// A 100 x 10 x 10 mm steel cantilever of nx x 2 x 2 cells, clamped at x = 0, tip load P along
 // `dof` (2: y, 3: z) ramped over 4 beam-theory periods and held for 2; the mean tip deflection
 // over the hold against Timoshenko beam theory.
 inline double cantileverTipRatio(const BrickWriter& write, const std::string& control, int dof,
-                                 const char* label) {
-  const int nx = 20;
+                                 const char* label, int nx = 20) {
   const double L = 100.0, h = 10.0, P = 1.0;
   const double I = h * h * h * h / 12.0, A = h * h, G = kSteelE / (2 * (1 + kSteelNu));
   const double theory = P * L * L * L / (3 * kSteelE * I) + P * L / (5.0 / 6.0 * G * A);
