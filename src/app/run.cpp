@@ -140,21 +140,38 @@ int Run::execute() {
 bool Run::setUp() {
   // Rank 0 reads and validates the deck (and the dump) and partitions it; the others receive
   // the result.
+  // Rank 0's phases are timed (the others wait in the first of distribute).
   const bool read = rootStep(comm_, [&] {
     readModel();
     if (restart_) readDump();
+    endSetupPhase("validate");
     if (elem_rank_.empty()) partitionElements();
   });
   if (!read) return false;
+  if (root_)
+    endSetupPhase("partition");
+  else  // the other ranks wait for rank 0 until distribute: their wait is counted there
+    info_.setup_phases = {{"read", 0.0}, {"validate", 0.0}, {"partition", 0.0}};
   distribute();
-  if (!initializeSolver() || !prepareFolder()) return false;
+  endSetupPhase("distribute");
+  if (!initializeSolver()) return false;
+  endSetupPhase("initialise");
+  if (!prepareFolder()) return false;
   openOutputs();
   return true;
 }
 
+void Run::endSetupPhase(const char* phase) {
+  const double now = util::secondsSince(wall0_);
+  info_.setup_phases.emplace_back(phase, now - setup_mark_);
+  setup_mark_ = now;
+}
+
 void Run::readModel() {
-  model_ = model::readModel(opt_.deck,
-                            model::ReadOptions{.implicit_as_explicit = opt_.implicit_as_explicit});
+  const model::ReadOptions options{.implicit_as_explicit = opt_.implicit_as_explicit};
+  const deck::Deck deck = deck::readDeck(opt_.deck, deck::ReadDeckOptions{options.collect_errors});
+  endSetupPhase("read");
+  model_ = model::buildModel(deck, opt_.deck, options);
   refuseUnsupported(model_, opt_);
   auto& ctl = model_.controls;
   if (opt_.cycles > 0) ctl.end_cycle = opt_.cycles;
@@ -350,7 +367,8 @@ void Run::start() {
   progress_.emplace(stdout, show_ && isatty(STDOUT_FILENO), s.endTime());
   // Set-up ends here: the first state's output is counted as output, so that set-up, the
   // timing rows and the wall time add up.
-  info_.setup_s = util::secondsSince(wall0_);
+  endSetupPhase("output");
+  info_.setup_s = setup_mark_;
   // The state at the dump was written by the dumped run.
   if (!restart_) writeResults();
   started_ = true;
@@ -477,6 +495,10 @@ int Run::finish() {
                     "{:.6g}\n",
                     er.elements, er.mass, er.internal, er.hourglass));
   log_.say(timingTable(s.timing(), output_s, info_.setup_s, info_.wall_s));
+  std::string phases;
+  for (const auto& [phase, seconds] : info_.setup_phases)
+    phases += fmt::format("{}{} {:.3f} s", phases.empty() ? "" : ", ", phase, seconds);
+  log_.say("set-up by phase (rank 0): " + phases + "\n");
   if (s.cycle() > info_.first_cycle && info_.wall_s > info_.setup_s)
     log_.say(fmt::format("set-up {:.3f} s; {:.3g} element-cycles per second in the cycle loop\n",
                          info_.setup_s,

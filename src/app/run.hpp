@@ -84,6 +84,9 @@ class Run {
 
   const RunOptions& opt_;
   util::Clock::time_point wall0_ = util::Clock::now();
+  double setup_mark_ = 0.0;  // seconds since wall0_ at the end of the last set-up phase
+  // Ends a set-up phase: its time since the previous mark joins info_.setup_phases.
+  void endSetupPhase(const char* phase);
   comm::Communicator& comm_;
   const bool root_;
   const bool restart_;

@@ -743,6 +743,8 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
   const double loop_s = info.wall_s - info.setup_s;
   j["element_cycles_per_s"] = loop_s > 0.0 ? element_cycles / loop_s : 0.0;
   j["setup_s"] = info.setup_s;
+  j["setup"] = nlohmann::json::object();
+  for (const auto& [phase, seconds] : info.setup_phases) j["setup"][phase] = seconds;
   j["timing"] = {
       {"elements", t.elements},       {"contact", t.contact},
       {"constraints", t.constraints}, {"communication", t.communication},

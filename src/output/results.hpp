@@ -28,7 +28,11 @@ struct RunInfo {
   std::string termination = "normal";  // "normal", "error", "signal"
   std::string message;                 // the error, if any
   double wall_s = 0.0;
-  double setup_s = 0.0;     // reading, partitioning, distributing and initialising
+  double setup_s = 0.0;  // reading, partitioning, distributing and initialising
+  // setup_s by phase, in order, adding up to it (summary.json "setup"): read (deck text to
+  // keywords), validate (keywords to the checked model), partition, distribute, initialise
+  // (subdomain and solver), output (results folder, log, writers; a restart's dump restored).
+  std::vector<std::pair<std::string, double>> setup_phases;
   int64_t first_cycle = 0;  // a restarted run's first cycle: the rate counts this run's cycles
   // --ignore-unsupported: the features left out (summary.json "ignored_unsupported").
   std::vector<std::string> ignored_unsupported;

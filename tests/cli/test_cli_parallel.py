@@ -72,7 +72,8 @@ class Advise(TempDirTest):
         serial = j["serial_cycle"]
         self.assertEqual(serial["cycles_timed"], 20)
         one = preds[0]
-        self.assertEqual(one["efficiency"], 1.0)
+        # One rank is the serial cycle, up to the rounding of sums taken in another order.
+        self.assertAlmostEqual(one["efficiency"], 1.0, places=12)
         self.assertAlmostEqual(one["cycle_s"], serial["elements_s"] + serial["nodes_s"] +
                                serial["contact_split_s"] + serial["contact_replicated_s"])
         self.assertGreater(preds[1]["speedup"], 1.0)

@@ -96,6 +96,12 @@ class BarImpactResults(unittest.TestCase):
         self.assertAlmostEqual(sum(timing.values()) + s["setup_s"], s["wall_s"],
                                delta=0.01 * s["wall_s"] + 1e-4,
                                msg="set-up and the timing parts do not add up to the wall time")
+        # Set-up by phase, in order, adding up to setup_s.
+        self.assertEqual(sorted(s["setup"]), sorted(["read", "validate", "partition",
+                                                     "distribute", "initialise", "output"]))
+        self.assertTrue(all(v >= 0.0 for v in s["setup"].values()), s["setup"])
+        self.assertAlmostEqual(sum(s["setup"].values()), s["setup_s"], delta=1e-9,
+                               msg="the set-up phases do not add up to setup_s")
         for key, value in (("nodes", NODES), ("solids", SOLIDS), ("shells", 0), ("beams", 0)):
             self.assertEqual(s["counts"].get(key), value, f"counts.{key}")
         energy = s["energy"]
