@@ -75,23 +75,35 @@ constexpr std::array<int[2], 12> kHexEdges = {{{0, 1},
                                                {3, 7}}};
 constexpr std::array<int[2], 4> kQuadEdges = {{{0, 1}, {1, 2}, {2, 3}, {3, 0}}};
 
-// The cut's area through element k of a block, from the initial coordinates.
+// The area of a cut through element k of a block: a solid's `solid_area`, a shell's cut length
+// (between the two points of `edge`) times its thickness, a beam's section area.
+template <class Block>
+double familyArea(const Block& b, std::size_t k, double solid_area, const std::vector<Vec3>& edge) {
+  if constexpr (std::is_same_v<Block, domain::SolidBlock>) {
+    return solid_area;
+  } else if constexpr (std::is_same_v<Block, domain::ShellBlock>) {
+    const double thick = b.thick.size() > k ? b.thick[k] : 0.0;
+    return edge.size() == 2 ? util::norm(sub(edge[1], edge[0])) * thick : 0.0;
+  } else if constexpr (std::is_same_v<Block, domain::BeamBlock>) {
+    return b.section.a;
+  } else {
+    return 0.0;
+  }
+}
+
+// The plane cut's area through element k of a block, from the initial coordinates.
 template <class Block>
 double cutArea(const Block& b, std::size_t k, const Vec3* x, const model::CrossSection& cs) {
   if constexpr (std::is_same_v<Block, domain::SolidBlock>) {
     std::array<Vec3, 8> corners;
     std::copy(x, x + 8, corners.begin());
-    return hexCutArea(corners, cs.center, cs.normal);
+    return familyArea(b, k, hexCutArea(corners, cs.center, cs.normal), {});
   } else if constexpr (std::is_same_v<Block, domain::ShellBlock>) {
     double d[4];
     for (int a = 0; a < 4; ++a) d[a] = dot(sub(x[a], cs.center), cs.normal);
-    const auto p = cutPoints(x, d, kQuadEdges);
-    const double thick = b.thick.size() > k ? b.thick[k] : 0.0;
-    return p.size() == 2 ? util::norm(sub(p[1], p[0])) * thick : 0.0;
-  } else if constexpr (std::is_same_v<Block, domain::BeamBlock>) {
-    return b.section.a;
+    return familyArea(b, k, 0.0, cutPoints(x, d, kQuadEdges));
   } else {
-    return 0.0;
+    return familyArea(b, k, 0.0, {});
   }
 }
 
@@ -128,26 +140,19 @@ bool planeCut(const Block& b, std::size_t k, const model::CrossSection& cs, cons
 }
 
 // The area of the face the cut nodes `on` of an element make, from the initial coordinates
-// (*DATABASE_CROSS_SECTION_SET): a solid's face (half the cross product of its diagonals, or
-// the triangle's), a shell's edge times its thickness, a beam's section area.
+// (*DATABASE_CROSS_SECTION_SET): a solid's face (the polygon of its cut nodes), a shell's edge
+// times its thickness, a beam's section area.
 template <class Block, int N>
 double setCutArea(const Block& b, std::size_t k, const Vec3 (&x)[N], const bool (&on)[N]) {
   std::vector<Vec3> p;
   for (int a = 0; a < N; ++a)
     if (on[a] && std::none_of(p.begin(), p.end(), [&](const Vec3& q) { return q == x[a]; }))
       p.push_back(x[a]);
-  if constexpr (std::is_same_v<Block, domain::SolidBlock>) {
-    if (p.size() == 3) return 0.5 * util::norm(cross(sub(p[1], p[0]), sub(p[2], p[0])));
-    if (p.size() == 4) return 0.5 * util::norm(cross(sub(p[2], p[0]), sub(p[3], p[1])));
-    return 0.0;
-  } else if constexpr (std::is_same_v<Block, domain::ShellBlock>) {
-    const double thick = b.thick.size() > k ? b.thick[k] : 0.0;
-    return p.size() == 2 ? util::norm(sub(p[1], p[0])) * thick : 0.0;
-  } else if constexpr (std::is_same_v<Block, domain::BeamBlock>) {
-    return b.section.a;
-  } else {
-    return 0.0;
-  }
+  // A solid's cut nodes are a face: its plane's normal from three of them.
+  const Vec3 n = p.size() >= 3 ? cross(sub(p[1], p[0]), sub(p[2], p[0])) : Vec3{};
+  const double length = util::norm(n);
+  const double solid = length > 0.0 ? polygonArea(p, scale(n, 1.0 / length)) : 0.0;
+  return familyArea(b, k, solid, p);
 }
 
 // A cut by sets: element k is in the section's set of its family and has nodes of the cut.
@@ -175,7 +180,10 @@ constexpr std::size_t kRecord = 14;
 double hexCutArea(const std::array<Vec3, 8>& x, const Vec3& c, const Vec3& n) {
   double d[8];
   for (int a = 0; a < 8; ++a) d[a] = dot(sub(x[std::size_t(a)], c), n);
-  const auto p = cutPoints(x.data(), d, kHexEdges);
+  return polygonArea(cutPoints(x.data(), d, kHexEdges), n);
+}
+
+double polygonArea(const std::vector<Vec3>& p, const Vec3& n) {
   if (p.size() < 3) return 0.0;
   // The points are the corners of a convex polygon in the plane: ordered by angle about their
   // mean, its area is half the sum of the cross products of successive corners.

@@ -18,16 +18,13 @@ src/output/sections.hpp):
 """
 
 import os
-import shutil
-import subprocess
 import sys
 import unittest
 
 sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import clitest  # noqa: E402
-from clitest import describe, main  # noqa: E402
-import test_cli_ascii  # noqa: E402
+from clitest import main  # noqa: E402
 from test_cli_ascii import Case, bar, cantilever, lsdyna_folder, mask, read_csv  # noqa: E402
 
 try:
@@ -62,16 +59,16 @@ def bar_with_elout(extra=""):
 
 
 def shell_strip(load):
-    """A cantilever strip of 8 x 1 Belytschko-Tsay shells, 80 x 10 mm, 2 mm thick, NIP 5
-    (Gauss), elastic steel, clamped at x = 0, a tip load `load` (kN) along +z on its two
-    x = 80 nodes ramped over 100 ms. The first bending mode, 1.875^2 sqrt(E t^2 / (12 rho)) /
-    L^2 = 1.64 rad/ms, makes the ramp quasi-static (dynamic error about 1 / (omega T) = 0.6%);
-    the tip deflects P L^3 / (3 E I) = 0.12 mm per 0.01 kN (I = b t^3 / 12)."""
-    s = "*KEYWORD\n*TITLE\nshell strip\n*CONTROL_TERMINATION\n     100.0\n"
-    s += "*DATABASE_ELOUT\n      25.0\n*DATABASE_HISTORY_SHELL_ID\n         3element three\n"
+    """A cantilever strip of 8 x 1 fully integrated shells (ELFORM 16), 80 x 10 mm, 4 mm thick,
+    NIP 5 (Gauss), elastic steel, clamped at x = 0, a tip load `load` (kN) along +z on its two
+    x = 80 nodes ramped over 50 ms. The first bending mode, 1.875^2 sqrt(E t^2 / (12 rho)) /
+    L^2 = 3.3 rad/ms, makes the ramp quasi-static (dynamic error about 1 / (omega T) = 0.6%);
+    the tip deflects P L^3 / (3 E I) = 0.61 mm for 0.04 kN (I = b t^3 / 12)."""
+    s = "*KEYWORD\n*TITLE\nshell strip\n*CONTROL_TERMINATION\n      50.0\n"
+    s += "*DATABASE_ELOUT\n      12.5\n*DATABASE_HISTORY_SHELL_ID\n         3element three\n"
     s += "*PART\nstrip\n         1         1         1\n"
-    s += "*SECTION_SHELL\n         1         2    0.8333         5\n"
-    s += "       2.0       2.0       2.0       2.0\n"
+    s += "*SECTION_SHELL\n         1        16    0.8333         5\n"
+    s += "       4.0       4.0       4.0       4.0\n"
     s += "*MAT_ELASTIC\n         1   7.85e-6     210.0       0.3\n*NODE\n"
     s += "".join(f"{1 + i + 9 * j:8d}{10.0 * i:16.6f}{10.0 * j:16.6f}{0.0:16.6f}\n"
                  for j in range(2) for i in range(9))
@@ -80,7 +77,7 @@ def shell_strip(load):
     s += "*BOUNDARY_SPC_NODE\n" + "".join(f"{n:10d}{0:10d}" + "         1" * 6 + "\n"
                                           for n in (1, 10))
     s += "*DEFINE_CURVE\n         1\n                 0.0                 0.0\n"
-    s += "               100.0                 1.0\n"
+    s += "                50.0                 1.0\n"
     s += "*LOAD_NODE_POINT\n" + "".join(f"{n:10d}         3         1{load / 2:10.4g}\n"
                                         for n in (9, 18))
     return s + "*END\n"
@@ -155,9 +152,9 @@ class EloutPhysics(Case):
         self.assertAlmostEqual(cut["my"], -load * (length - 50.0), delta=0.01 * load * length)
 
     def test_shell_bending_through_thickness(self):
-        load, b, t = 0.01, 10.0, 2.0
+        load, b, t = 0.04, 10.0, 4.0
         out = self.run_deck("strip.k", shell_strip(load))
-        rows = [r for r in elout_rows(out, 1) if r["time"] == 100.0]
+        rows = [r for r in elout_rows(out, 1) if r["time"] == 50.0]
         self.assertEqual([int(r["point"]) for r in rows], [1, 2, 3, 4, 5])
         # Element 3 spans x = 20..30: M = P (L - 25) at its centre; sigma_xx = -6 M / (b t^2)
         # zeta (the load bends the strip concave up: the bottom, zeta < 0, in tension).
@@ -165,7 +162,7 @@ class EloutPhysics(Case):
         zeta = [-0.9061798459, -0.5384693101, 0.0, 0.5384693101, 0.9061798459]
         for r, z in zip(rows, zeta):
             self.assertAlmostEqual(r["sxx"], -surface * z, delta=0.02 * surface, msg=z)
-            self.assertLess(abs(r["szz"]), 1e-6 * surface)
+            self.assertLess(abs(r["szz"]), 1e-3 * surface)
 
 
 class EloutFiles(Case):
@@ -183,7 +180,7 @@ class EloutFiles(Case):
                 np.testing.assert_allclose(c.y, [r[key] for r in mine], rtol=6e-4,
                                            atol=1e-4 * scale, err_msg=key)
         # Shells and beams too: every point of the strip and the Hughes-Liu beam's points.
-        out = self.run_deck("strip.k", shell_strip(0.01))
+        out = self.run_deck("strip.k", shell_strip(0.04))
         curves = lsdyna.read_elout(os.path.join(out, "elout"))
         self.assertEqual(len(curves["elout.shell3.ipt5.sxx"].t), 5)
         last = elout_rows(out, 1)[-1]
@@ -220,36 +217,12 @@ class EloutFiles(Case):
 
 class EloutRanksAndRestart(Case):
     def test_same_bytes_at_1_2_3_ranks(self):
-        exe = shutil.which("mpirun")
-        if exe is None:
-            self.skipTest("mpirun not found")
-        deck = self.write("bar.k", bar_with_elout())
-        outs = []
-        for n in (1, 2, 3):
-            out = os.path.join(self.tmp, f"out{n}")
-            p = subprocess.run([exe, "--oversubscribe", "-np", str(n), clitest.CRUMPLE, "run",
-                                deck, "-o", out, "-q", "--threads", "1"], capture_output=True,
-                               text=True, timeout=300, env=test_cli_ascii.MPI_ENV)
-            self.assertEqual(p.returncode, 0, describe(p))
-            outs.append(out)
-        for name in ("elout", "elout.csv", "secforc", "secforc.csv"):
-            data = [open(os.path.join(o, name), "rb").read() for o in outs]
-            self.assertEqual(data[0], data[1], name)
-            self.assertEqual(data[0], data[2], name)
+        self.assertSameBytesAtRanks(bar_with_elout(),
+                                    ("elout", "elout.csv", "secforc", "secforc.csv"))
 
     def test_restart_continues_elout(self):
-        deck = self.write("bar.k", bar_with_elout("*DATABASE_BINARY_D3DUMP\n     400.0\n"))
-        full = os.path.join(self.tmp, "full")
-        self.run_ok("run", deck, "-o", full, "-q")
-        part = os.path.join(self.tmp, "part")
-        self.run_ok("run", deck, "-o", part, "-q", "--cycles", "900")
-        dumps = sorted(f for f in os.listdir(part) if f.startswith("d3dump_"))
-        self.assertTrue(dumps, os.listdir(part))
-        self.run_ok("run", deck, "-o", part, "-q", "--restart", os.path.join(part, dumps[-1]))
-        for name in ("elout", "elout.csv", "secforc.csv"):
-            a = open(os.path.join(full, name), "rb").read()
-            b = open(os.path.join(part, name), "rb").read()
-            self.assertEqual(a, b, name)
+        self.assertRestartContinues(bar_with_elout("*DATABASE_BINARY_D3DUMP\n     400.0\n"),
+                                    ("elout", "elout.csv", "secforc.csv"))
 
 
 if __name__ == "__main__":
