@@ -181,14 +181,14 @@ class Case(TempDirTest):
             self.assertEqual(data[0], data[1], name)
             self.assertEqual(data[0], data[2], name)
 
-    def assertRestartContinues(self, text, names):
-        """A run of `text` (which asks for dumps) stopped after 900 cycles and restarted from
-        its last dump writes the files `names` as the uninterrupted run."""
+    def assertRestartContinues(self, text, names, cycles=900):
+        """A run of `text` (which asks for dumps) stopped after `cycles` cycles and restarted
+        from its last dump writes the files `names` as the uninterrupted run."""
         deck = self.write("deck.k", text)
         full = os.path.join(self.tmp, "full")
         self.run_ok("run", deck, "-o", full, "-q")
         part = os.path.join(self.tmp, "part")
-        self.run_ok("run", deck, "-o", part, "-q", "--cycles", "900")
+        self.run_ok("run", deck, "-o", part, "-q", "--cycles", str(cycles))
         dumps = sorted(f for f in os.listdir(part) if f.startswith("d3dump_"))
         self.assertTrue(dumps, os.listdir(part))
         self.run_ok("run", deck, "-o", part, "-q", "--restart", os.path.join(part, dumps[-1]))
