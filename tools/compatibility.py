@@ -372,7 +372,9 @@ def first_error(check: dict) -> str:
     if not errors:
         return check.get("stderr_line", "")
     e = errors[0]
-    return f"{e.get('where')}: {e.get('message')}" if e.get("where") else e.get("message", "")
+    where, message = e.get("where") or "", e.get("message", "")
+    # Crumple's messages already start with their file:line; do not name the place twice.
+    return f"{where}: {message}" if where and not message.startswith(where) else message
 
 
 def blocker(record: dict) -> str:

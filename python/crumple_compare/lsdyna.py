@@ -1,5 +1,5 @@
 """Readers of LS-DYNA's ASCII output files (glstat, matsum, nodout, rcforc, rwforc, secforc,
-sleout, spcforc, bndout, rbdout, deforc), in the layouts LS-DYNA R13 writes them (the samples are the bolted-joint results in
+sleout, spcforc, bndout, rbdout, deforc, elout), in the layouts LS-DYNA R13 writes them (the samples are the bolted-joint results in
 ../shared/decks/bolted_joint_lsdyna/Bolt_B_Explicit). Each reader returns {key: Curve} with
 the keys of mapping.py. rwforc and secforc have no sample here: their readers take both a
 table (a header row of names, then rows of numbers) and labelled values ('x-force= 1.0E+00'),
@@ -22,7 +22,7 @@ _DOTTED = re.compile(r"^\s*(\S.*?)\s*\.{2,}\s*(" + NUM + r")\s*$")
 _PAIR = re.compile(r"([A-Za-z][A-Za-z0-9_\-#\.]*)\s*=?\s*(" + NUM + r")(?![\w.])")
 _PAIR_EQ = re.compile(r"([A-Za-z][A-Za-z0-9_\-#\.]*)\s*=\s*(" + NUM + r")")
 FILES = ("glstat", "matsum", "nodout", "rcforc", "rwforc", "secforc", "sleout", "spcforc",
-         "bndout", "rbdout", "deforc")
+         "bndout", "rbdout", "deforc", "elout")
 
 
 _ID_ROW = re.compile(r"^\s*(\d+)(?=[\s+-])(.*)$")
@@ -373,10 +373,70 @@ def read_deforc(path):
     return out.curves()
 
 
+_ELO_TIME = re.compile(r"f o r   t i m e  s t e p\s*\d+\s*\(\s*at time\s*(" + NUM + r")")
+_ELO_SOLID = ("sxx", "syy", "szz", "sxy", "syz", "szx", "effsg", "yield")
+_ELO_BEAM = ("axial", "shear_s", "shear_t", "moment_s", "moment_t", "torsion", "eps_p")
+_ELO_BEAM_POINT = ("sigma11", "sigma12", "sigma31", "eps_p")
+
+
+def _elout_line(out, state, line, t, no):
+    """One line of an elout block; `state` holds the block's kind and the current element."""
+    if "ipt-shl" in line or re.match(r"^\s*ipt\s+stress", line):
+        state.update(kind="shell" if "ipt-shl" in line else "solid", element=None)
+        return
+    m = re.match(r"^\s*beam/truss # =\s*(\d+)", line)
+    element = re.match(r"^\s*(\d+)-\s*(\d+)\s*$", line)
+    if m or element:
+        state["element"] = (m or element).group(1)
+        return
+    kind, e = state.get("kind"), state.get("element")
+    if e is None:
+        return
+    solid = re.match(r"^\s*1 [a-z]+ ", line) if kind == "solid" else None
+    shell = re.match(r"^\s*(\d+)-\s*\d+ [a-z]+ ", line) if kind == "shell" else None
+    point = re.match(r"^\s*(\d+)\s{11}", line) if kind == "beam" else None
+    if solid:
+        names, base, rest = _ELO_SOLID, f"elout.solid{e}.", line[solid.end():]
+    elif shell:
+        names, base = _ELO_SOLID[:6] + ("eps_p",), f"elout.shell{e}.ipt{shell.group(1)}."
+        rest = line[shell.end():]
+    elif kind == "beam" and line.startswith(" " * 11) and "sigma" not in line and numbers(line):
+        names, base, rest = _ELO_BEAM, f"elout.beam{e}.", line
+    elif point:
+        names, base = _ELO_BEAM_POINT, f"elout.beam{e}.ipt{point.group(1)}."
+        rest = line[point.end():]
+    else:
+        return
+    values = numbers(rest)
+    if len(values) != len(names):
+        raise CompareError(f"elout {kind} {e}: {len(values)} numbers, {len(names)} expected",
+                           state["path"], no)
+    for name, value in zip(names, values):
+        out.add(base + name, t, value, no)
+
+
+def read_elout(path):
+    """Blocks 'e l e m e n t   s t r e s s   c a l c u l a t i o n s   f o r   t i m e  s t e p
+    N ( at time T )' (solids: ' ID- MAT' then '       1 state  sxx .. szx effsg yield';
+    shells: per point ' IPT- IOP state  sxx .. szx plastic-strain') and 'r e s u l t a n t s
+    a n d   s t r e s s e s ...' (beams: ' beam/truss # = ID', the resultants row axial,
+    shear-s, shear-t, moment-s, moment-t, torsion, pl eps, then the integration points'
+    sigma 11, 12, 31 and plastic strain)."""
+    out, state, t = _Series(path), {"path": path}, None
+    for no, line in enumerate(_lines(path), 1):
+        m = _ELO_TIME.search(line)
+        if m:
+            t = float(m.group(1))
+            state.update(kind="beam" if "r e s u l t a n t s" in line else None, element=None)
+        elif t is not None:
+            _elout_line(out, state, line, t, no)
+    return out.curves()
+
+
 READERS = {"glstat": read_glstat, "matsum": read_matsum, "nodout": read_nodout,
            "rcforc": read_rcforc, "rwforc": read_rwforc, "secforc": read_secforc,
            "sleout": read_sleout, "spcforc": read_spcforc, "bndout": read_bndout,
-           "rbdout": read_rbdout, "deforc": read_deforc}
+           "rbdout": read_rbdout, "deforc": read_deforc, "elout": read_elout}
 
 
 def read_folder(folder):

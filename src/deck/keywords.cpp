@@ -278,6 +278,11 @@ std::vector<KeywordSpec> makeTables() {
         "*DATABASE_RCFORC", "*DATABASE_SLEOUT", "*DATABASE_SECFORC", "*DATABASE_SPCFORC",
         "*DATABASE_BNDOUT", "*DATABASE_RBDOUT", "*DATABASE_DEFORC", "*DATABASE_JNTFORC"})
     t.push_back({name, asciiDatabase()});
+  // *DATABASE_ELOUT: OPTION1-4 ask for extra history variables per point (not written).
+  t.push_back({"*DATABASE_ELOUT",
+               {{"card 1",
+                 {R("DT"), I("BINARY", 0, Q), I("LCUR"), I("IOOPT", 0, Q), I("OPTION1"),
+                  I("OPTION2"), I("OPTION3"), I("OPTION4")}}}});
   // Keyword Manual Vol. I, *DATABASE_CROSS_SECTION_PLANE: the cut's tail (XCT..) and the
   // normal's head (XCH..), the edge vector's head (XHEV..), its lengths; ID/ITYPE name a local
   // output frame.
@@ -287,6 +292,14 @@ std::vector<KeywordSpec> makeTables() {
         {"card 1",
          {I("PSID"), R("XCT"), R("YCT"), R("ZCT"), R("XCH"), R("YCH"), R("ZCH"), R("RADIUS")}},
         {"card 2", {R("XHEV"), R("YHEV"), R("ZHEV"), R("LENL"), R("LENM"), I("ID"), I("ITYPE")}}}});
+  // Keyword Manual Vol. I, *DATABASE_CROSS_SECTION_SET: the nodes of the cut (NSID) and the
+  // sets of the elements on one side of it (HSID solids, BSID beams, SSID shells, TSID thick
+  // shells, DSID discretes); ID/ITYPE name a local frame.
+  t.push_back({"*DATABASE_CROSS_SECTION_SET",
+               {{"id card", {I("CSID"), A("TITLE", 70)}},
+                {"card 1",
+                 {I("NSID"), I("HSID"), I("BSID"), I("SSID"), I("TSID"), I("DSID"), I("ID"),
+                  I("ITYPE")}}}});
   t.push_back({"*DATABASE_BINARY_D3PLOT",
                {{"card 1", {R("DT"), I("LCDT"), I("BEAM", 0, Q), I("NPLTC"), I("PSETID")}},
                 {"card 2", {I("IOOPT", 0, Q)}}}});
@@ -306,6 +319,16 @@ std::vector<KeywordSpec> makeTables() {
   t.push_back({"*DATABASE_HISTORY_NODE",
                {idList("card 1", "ID1", "ID2", "ID3", "ID4", "ID5", "ID6", "ID7", "ID8"),
                 {"id card", {I("ID"), A("HEADING", 70)}}}});
+  // *DATABASE_HISTORY_SOLID, _SHELL, _BEAM: element ids, or one per card with a heading (_ID);
+  // _SET: ids of *SET_SOLID, *SET_SHELL, *SET_BEAM.
+  for (auto [name, set] : Pairs{{"*DATABASE_HISTORY_SOLID", "*DATABASE_HISTORY_SOLID_SET"},
+                                {"*DATABASE_HISTORY_SHELL", "*DATABASE_HISTORY_SHELL_SET"},
+                                {"*DATABASE_HISTORY_BEAM", "*DATABASE_HISTORY_BEAM_SET"}}) {
+    t.push_back({name,
+                 {idList("card 1", "ID1", "ID2", "ID3", "ID4", "ID5", "ID6", "ID7", "ID8"),
+                  {"id card", {I("ID"), A("HEADING", 70)}}}});
+    t.push_back({set, {idList("card 1", "ID1", "ID2", "ID3", "ID4", "ID5", "ID6", "ID7", "ID8")}});
+  }
   t.push_back({"*DATABASE_HISTORY_NODE_SET",
                {idList("card 1", "ID1", "ID2", "ID3", "ID4", "ID5", "ID6", "ID7", "ID8")}});
   // ---- definitions ----------------------------------------------------------------------------
@@ -351,6 +374,23 @@ std::vector<KeywordSpec> makeTables() {
                {titleCard(), setCard(),
                 idList("card 2", "PID1", "PID2", "PID3", "PID4", "PID5", "PID6", "PID7", "PID8"),
                 rangeCard()}});
+  // *SET_SOLID, *SET_BEAM, *SET_DISCRETE: SID, SOLVER; *SET_SHELL: SID, DA1-DA4, SOLVER
+  // (Keyword Manual vol. I). Eight element ids per card, or _GENERATE ranges; _ADD lists sets.
+  for (auto [name, add] : Pairs{{"*SET_SOLID", "*SET_SOLID_ADD"},
+                                {"*SET_BEAM", "*SET_BEAM_ADD"},
+                                {"*SET_DISCRETE", "*SET_DISCRETE_ADD"},
+                                {"*SET_SHELL", "*SET_SHELL_ADD"}}) {
+    CardSpec head = name == "*SET_SHELL"
+                        ? setCard()
+                        : CardSpec{"card 1", {I("SID"), A("SOLVER", 10, "MECH", Q)}};
+    t.push_back({name,
+                 {titleCard(), head,
+                  idList("card 2", "K1", "K2", "K3", "K4", "K5", "K6", "K7", "K8"), rangeCard()}});
+    t.push_back({add,
+                 {titleCard(), head,
+                  idList("card 2", "DSID1", "DSID2", "DSID3", "DSID4", "DSID5", "DSID6", "DSID7",
+                         "DSID8")}});
+  }
   t.push_back({"*SET_SEGMENT",
                {titleCard(),
                 setCard(),

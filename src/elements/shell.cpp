@@ -636,6 +636,37 @@ BlockStatus computeShellForces(domain::ShellBlock& block, const domain::NodeVect
       block.law);
 }
 
+namespace {
+// The transverse shear stresses (yz, zx) of element e: the mean of its in-plane points.
+void meanShear(const domain::ShellBlock& blk, std::size_t e, double& tyz, double& tzx) {
+  const int nq = blk.inPlanePoints();
+  const double inv_nq = 1.0 / nq;  // as the in-plane means (the same bits as before)
+  for (int q = 0; q < nq; ++q) {
+    tyz += blk.shearAt(0, e, q) * inv_nq;
+    tzx += blk.shearAt(1, e, q) * inv_nq;
+  }
+}
+// The stress of in-plane components loc (xx, yy, xy) and transverse shears in the element
+// frame fr, in the global frame (Voigt xx, yy, zz, xy, yz, zx).
+void toGlobal(const LaneFrame& fr, const double loc[3], double tyz, double tzx, double out[6]) {
+  const double sl[3][3] = {{loc[0], loc[2], tzx}, {loc[2], loc[1], tyz}, {tzx, tyz, 0.0}};
+  double g[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      double sum = 0.0;
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) sum += fr.e[a][i] * sl[a][b] * fr.e[b][j];
+      g[i][j] = sum;
+    }
+  out[0] = g[0][0];
+  out[1] = g[1][1];
+  out[2] = g[2][2];
+  out[3] = g[0][1];
+  out[4] = g[1][2];
+  out[5] = g[2][0];
+}
+}  // namespace
+
 void shellSurfaceStress(const domain::ShellBlock& blk, const domain::NodeVector& x, std::size_t e,
                         double out[3][6], double eps_p_out[3]) {
   // A 2D solid's one point holds the global 3-D stress (blocks.hpp): the same at every layer.
@@ -677,29 +708,36 @@ void shellSurfaceStress(const domain::ShellBlock& blk, const domain::NodeVector&
       ep[surface] += (plastic ? blk.epsAt(p, e, q) : 0.0) * inv_nq;
     }
   double tyz = 0.0, tzx = 0.0;
-  for (int q = 0; q < nq; ++q) {
-    tyz += blk.shearAt(0, e, q) * inv_nq;
-    tzx += blk.shearAt(1, e, q) * inv_nq;
-  }
+  meanShear(blk, e, tyz, tzx);
   for (int surface = 0; surface < 3; ++surface) {
-    const double sl[3][3] = {{loc[surface][0], loc[surface][2], tzx},
-                             {loc[surface][2], loc[surface][1], tyz},
-                             {tzx, tyz, 0.0}};
-    double g[3][3];
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        double sum = 0.0;
-        for (int a = 0; a < 3; ++a)
-          for (int b = 0; b < 3; ++b) sum += fr.e[a][i] * sl[a][b] * fr.e[b][j];
-        g[i][j] = sum;
-      }
-    out[surface][0] = g[0][0];
-    out[surface][1] = g[1][1];
-    out[surface][2] = g[2][2];
-    out[surface][3] = g[0][1];
-    out[surface][4] = g[1][2];
-    out[surface][5] = g[2][0];
+    toGlobal(fr, loc[surface], tyz, tzx, out[surface]);
     eps_p_out[surface] = ep[surface];
+  }
+}
+
+void shellPointStress(const domain::ShellBlock& blk, const domain::NodeVector& x, std::size_t e,
+                      double (*out)[6], double* eps_p_out) {
+  if (blk.planar()) {
+    for (int k = 0; k < 6; ++k) out[0][k] = blk.sigAt(k, 0, e);
+    eps_p_out[0] = blk.eps_p.empty() ? 0.0 : blk.epsAt(0, e);
+    return;
+  }
+  NodalShell xb;
+  for (int a = 0; a < 4; ++a)
+    for (int c = 0; c < 3; ++c) xb[c][a][0] = x[3 * static_cast<std::size_t>(blk.conn[e][a]) + c];
+  const LaneFrame fr = frameAt(xb, 0);
+  const int nq = blk.inPlanePoints();
+  const double inv_nq = 1.0 / nq;
+  double tyz = 0.0, tzx = 0.0;
+  meanShear(blk, e, tyz, tzx);
+  for (int p = 0; p < blk.nip; ++p) {
+    double loc[3] = {}, ep = 0.0;
+    for (int q = 0; q < nq; ++q) {
+      for (int k = 0; k < 3; ++k) loc[k] += blk.sigAt(k, p, e, q) * inv_nq;
+      ep += (blk.eps_p.empty() ? 0.0 : blk.epsAt(p, e, q)) * inv_nq;
+    }
+    toGlobal(fr, loc, tyz, tzx, out[p]);
+    eps_p_out[p] = ep;
   }
 }
 

@@ -106,6 +106,12 @@ double shellTimeStep(double area, double longest_side, bool triangle, double wav
 void shellSurfaceStress(const domain::ShellBlock& block, const domain::NodeVector& x, std::size_t e,
                         double out[3][6], double eps_p_out[3]);
 
+// As shellSurfaceStress, at every integration point through the thickness (out[nip][6],
+// eps_p_out[nip]; the mean of the in-plane points), point 0 at the bottom (zeta = -1). For
+// elout.
+void shellPointStress(const domain::ShellBlock& block, const domain::NodeVector& x, std::size_t e,
+                      double (*out)[6], double* eps_p_out);
+
 // Resultants per unit width of element e in its corotational frame, for the d3plot: bending
 // moments Mxx, Myy, Mxy, transverse shears Qx (from tau_zx), Qy (from tau_yz), membrane forces
 // Nxx, Nyy, Nxy (the order lasso-python reads: moments, shears, normal forces; VTK 9.1's

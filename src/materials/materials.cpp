@@ -79,6 +79,19 @@ std::string_view keywordOf(const LawParams& p) {
                     p);
 }
 
+int typeNumberOf(const LawParams& p) {
+  const std::string_view numbered = std::visit(
+      [](const auto& l) { return UnitOf<std::decay_t<decltype(l)>>::kKeywords.back(); }, p);
+  constexpr std::string_view kPrefix = "*MAT_";
+  if (numbered.substr(0, kPrefix.size()) != kPrefix) return 0;
+  int n = 0;
+  for (char c : numbered.substr(kPrefix.size())) {
+    if (c < '0' || c > '9') return 0;
+    n = 10 * n + (c - '0');
+  }
+  return n;
+}
+
 bool supports(const LawParams& p, Family f) {
   return std::visit(
       [f](const auto& l) { return supportsFamily<UnitOf<std::decay_t<decltype(l)>>>(f); }, p);

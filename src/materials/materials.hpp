@@ -86,6 +86,9 @@ using UnitOf = typename P::Law;
 
 // "*MAT_ELASTIC", "*MAT_RIGID", ... for messages and summaries.
 std::string_view keywordOf(const LawParams& p);
+// LS-DYNA's material type number (1 for *MAT_ELASTIC = *MAT_001, 24 for *MAT_024, ...), from
+// the law's numbered keyword; 0 for laws numbered otherwise (*MAT_S01). For elout.
+int typeNumberOf(const LawParams& p);
 // Whether the law has an update for the element family (rigid laws serve every continuum
 // family; spring and damper laws only discrete elements).
 bool supports(const LawParams& p, Family f);

@@ -42,6 +42,14 @@ std::string_view kindName(Kind kind) {
       return "vector";
     case Kind::Eos:
       return "equation of state";
+    case Kind::SolidSet:
+      return "solid set";
+    case Kind::ShellSet:
+      return "shell set";
+    case Kind::BeamSet:
+      return "beam set";
+    case Kind::DiscreteSet:
+      return "discrete set";
   }
   return "entity";
 }
@@ -218,6 +226,11 @@ const std::vector<int32_t>& Context::partSet(const deck::Card& card, std::string
                                              int64_t id) const {
   return lookup(*this, model.part_sets, Kind::PartSet, card, field, id);
 }
+const std::vector<int32_t>& Context::elementSet(Family f, const deck::Card& card,
+                                                std::string_view field, int64_t id) const {
+  return lookup(*this, model.element_sets[static_cast<std::size_t>(f)], elementSetKind(f), card,
+                field, id);
+}
 const std::vector<std::array<int32_t, 4>>& Context::segmentSet(const deck::Card& card,
                                                                std::string_view field,
                                                                int64_t id) const {
@@ -343,6 +356,35 @@ const std::vector<Meaning>& meanings() {
        U::Definition,
        Kind::PartSet},
       {"*SET_SEGMENT", 4, readSegmentSet, {"TITLE"}, U::Definition, Kind::SegmentSet},
+      {"*SET_SOLID",
+       4,
+       readElementSetList,
+       {"LIST", "TITLE", "GENERATE"},
+       U::Definition,
+       Kind::SolidSet},
+      {"*SET_SHELL",
+       4,
+       readElementSetList,
+       {"LIST", "TITLE", "GENERATE"},
+       U::Definition,
+       Kind::ShellSet},
+      {"*SET_BEAM",
+       4,
+       readElementSetList,
+       {"LIST", "TITLE", "GENERATE"},
+       U::Definition,
+       Kind::BeamSet},
+      {"*SET_DISCRETE",
+       4,
+       readElementSetList,
+       {"LIST", "TITLE", "GENERATE"},
+       U::Definition,
+       Kind::DiscreteSet},
+      // After the lists they add up (phase 4); an _ADD of an _ADD set follows it in the deck.
+      {"*SET_SOLID_ADD", 5, readElementSetAdd, {"TITLE"}, U::Definition, Kind::SolidSet},
+      {"*SET_SHELL_ADD", 5, readElementSetAdd, {"TITLE"}, U::Definition, Kind::ShellSet},
+      {"*SET_BEAM_ADD", 5, readElementSetAdd, {"TITLE"}, U::Definition, Kind::BeamSet},
+      {"*SET_DISCRETE_ADD", 5, readElementSetAdd, {"TITLE"}, U::Definition, Kind::DiscreteSet},
       {"*SET_NODE_GENERAL", 5, readNodeSetGeneral, {"TITLE"}, U::Definition, Kind::NodeSet},
       {"*BOUNDARY_SPC", 6, readSpc, {"NODE", "SET", "ID"}, U::Reject},
       {"*BOUNDARY_PRESCRIBED_MOTION", 6, readPrescribedMotion, {"NODE", "SET", "ID"}, U::Reject},
@@ -408,10 +450,18 @@ const std::vector<Meaning>& meanings() {
       {"*DATABASE_DEFORC", 6, readDatabaseAscii, {}},
       {"*DATABASE_JNTFORC", 6, readDatabaseAscii, {}},
       {"*DATABASE_CROSS_SECTION_PLANE", 6, readCrossSectionPlane, {"ID"}},
+      {"*DATABASE_CROSS_SECTION_SET", 6, readCrossSectionSet, {"ID"}},
       {"*DATABASE_BINARY_D3PLOT", 6, readDatabaseD3plot, {}},
       {"*DATABASE_BINARY_D3DUMP", 6, readDatabaseD3dump, {}},
       {"*DATABASE_HISTORY_NODE", 6, readHistoryNode, {"ID"}},
       {"*DATABASE_HISTORY_NODE_SET", 6, readHistoryNodeSet, {}},
+      {"*DATABASE_HISTORY_SOLID", 6, readHistoryElement, {"ID"}},
+      {"*DATABASE_HISTORY_SHELL", 6, readHistoryElement, {"ID"}},
+      {"*DATABASE_HISTORY_BEAM", 6, readHistoryElement, {"ID"}},
+      {"*DATABASE_HISTORY_SOLID_SET", 6, readHistoryElementSet, {}},
+      {"*DATABASE_HISTORY_SHELL_SET", 6, readHistoryElementSet, {}},
+      {"*DATABASE_HISTORY_BEAM_SET", 6, readHistoryElementSet, {}},
+      {"*DATABASE_ELOUT", 6, readDatabaseAscii, {}},
   });
   return m;
 }

@@ -41,7 +41,15 @@ enum class Kind : uint8_t {
   CoordinateSystem,
   Vector,
   Eos,
+  SolidSet,  // *SET_SOLID, *SET_SHELL, *SET_BEAM, *SET_DISCRETE: one id space per family
+  ShellSet,
+  BeamSet,
+  DiscreteSet,
 };
+// The set kind of an element family.
+inline Kind elementSetKind(Family f) {
+  return static_cast<Kind>(static_cast<int>(Kind::SolidSet) + static_cast<int>(f));
+}
 std::string_view kindName(Kind kind);  // "material", "node set", ...
 
 // *DEFINE_BOX
@@ -148,6 +156,9 @@ class Context {
                                       int64_t id) const;
   const std::vector<int32_t>& partSet(const deck::Card& card, std::string_view field,
                                       int64_t id) const;
+  // Members (indices within family f) of the element set `id` of that family.
+  const std::vector<int32_t>& elementSet(Family f, const deck::Card& card, std::string_view field,
+                                         int64_t id) const;
   const std::vector<std::array<int32_t, 4>>& segmentSet(const deck::Card& card,
                                                         std::string_view field, int64_t id) const;
   const Box& box(const deck::Card& card, std::string_view field, int64_t id) const;
@@ -289,6 +300,10 @@ std::string readTitleCard(deck::CardCursor& cur, const deck::KeywordSpec& spec,
 Material readMaterialBase(Context& ctx, const deck::Card& c, std::string title,
                           bool density = true);
 
+// build_controls.cpp: *DATABASE_HISTORY_SOLID, _SHELL, _BEAM (_ID) and their _SET
+void readHistoryElement(Context&, const deck::Keyword&, const KeywordOptions&);
+void readHistoryElementSet(Context&, const deck::Keyword&, const KeywordOptions&);
+
 // build_sets.cpp
 void readCurve(Context&, const deck::Keyword&, const KeywordOptions&);
 void readBox(Context&, const deck::Keyword&, const KeywordOptions&);
@@ -299,6 +314,9 @@ void readNodeSetList(Context&, const deck::Keyword&, const KeywordOptions&);
 void readNodeSetGeneral(Context&, const deck::Keyword&, const KeywordOptions&);
 void readPartSetList(Context&, const deck::Keyword&, const KeywordOptions&);
 void readSegmentSet(Context&, const deck::Keyword&, const KeywordOptions&);
+// *SET_SOLID, *SET_SHELL, *SET_BEAM, *SET_DISCRETE (_LIST, _GENERATE, _TITLE) and their _ADD.
+void readElementSetList(Context&, const deck::Keyword&, const KeywordOptions&);
+void readElementSetAdd(Context&, const deck::Keyword&, const KeywordOptions&);
 void finishCurves(Context&);
 void readTable(Context&, const deck::Keyword&, const KeywordOptions&);
 // Resolves the tables' curves (after finishCurves): a curve that is not defined makes the
@@ -364,6 +382,7 @@ void readControlDynamicRelaxation(Context&, const deck::Keyword&, const KeywordO
 // Keywords read only to report their non-default fields (*CONTROL_SOLID, ...).
 void readIgnoredControl(Context&, const deck::Keyword&, const KeywordOptions&);
 void readDatabaseAscii(Context&, const deck::Keyword&, const KeywordOptions&);
+void readCrossSectionSet(Context&, const deck::Keyword&, const KeywordOptions&);
 void readCrossSectionPlane(Context&, const deck::Keyword&, const KeywordOptions&);
 void readDatabaseD3plot(Context&, const deck::Keyword&, const KeywordOptions&);
 void readDatabaseExtentBinary(Context&, const deck::Keyword&, const KeywordOptions&);

@@ -190,6 +190,7 @@ void readDatabaseAscii(Context& ctx, const deck::Keyword& kw, const KeywordOptio
       {"*DATABASE_RBDOUT", {&k.rbdout_dt, &k.ascii.rbdout}},
       {"*DATABASE_DEFORC", {&k.deforc_dt, &k.ascii.deforc}},
       {"*DATABASE_JNTFORC", {&k.jntforc_dt, &k.ascii.jntforc}},
+      {"*DATABASE_ELOUT", {&k.elout_dt, &k.ascii.elout}},
   };
   for (const auto& [name, target] : files)
     if (kw.name == name) {
@@ -199,9 +200,12 @@ void readDatabaseAscii(Context& ctx, const deck::Keyword& kw, const KeywordOptio
   ctx.collect(cur);
 }
 
-void readCrossSectionPlane(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
-  const auto& spec = keywordSpec("*DATABASE_CROSS_SECTION_PLANE");
-  CardCursor cur(kw, ctx.deck);
+namespace {
+// The _ID card (CSID, TITLE; without it the 1-based order of definition) and card 1, whose
+// `field` an id defined before is an error at.
+CrossSection crossSectionHead(Context& ctx, CardCursor& cur, const deck::KeywordSpec& spec,
+                              const deck::Keyword& kw, const KeywordOptions& opts,
+                              std::string_view field, const Card*& c1) {
   CrossSection cs;
   cs.id = int64_t(ctx.model.cross_sections.size()) + 1;
   cs.where = ctx.deck.loc(kw);
@@ -210,12 +214,59 @@ void readCrossSectionPlane(Context& ctx, const deck::Keyword& kw, const KeywordO
     if (!idc.blank("CSID")) cs.id = idc.integer("CSID");
     cs.title = idc.text("TITLE");
   }
-  const Card& c1 = cur.read(spec.card("card 1"));
-  const Card& c2 = cur.readOptional(spec.card("card 2"));
+  c1 = &cur.read(spec.card("card 1"));
   for (const auto& other : ctx.model.cross_sections)
     if (other.id == cs.id)
-      c1.fail("PSID", "cross section " + std::to_string(cs.id) + " is already defined at " +
+      c1->fail(field, "cross section " + std::to_string(cs.id) + " is already defined at " +
                           other.where.str());
+  return cs;
+}
+}  // namespace
+
+// Keyword Manual Vol. I, *DATABASE_CROSS_SECTION_SET: the force the given elements exert on the
+// given nodes (src/output/sections.hpp). Thick shells (TSID) and a local frame (ID) are not
+// supported: the section is left out and said so (output only).
+void readCrossSectionSet(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*DATABASE_CROSS_SECTION_SET");
+  CardCursor cur(kw, ctx.deck);
+  const Card* c = nullptr;
+  CrossSection cs = crossSectionHead(ctx, cur, spec, kw, opts, "NSID", c);
+  if (c->integer("ID") != 0 || c->integer("TSID") != 0) {
+    ctx.reportUnsupported(kw,
+                          c->integer("ID") != 0
+                              ? "section forces in a local frame (ID, ITYPE) not supported"
+                              : "thick shells (TSID) not supported",
+                          false);
+    return;
+  }
+  cs.by_set = true;
+  const int64_t nsid = c->integer("NSID");
+  if (nsid == 0) c->fail("NSID", "the nodes of the cut are required");
+  for (int32_t n : ctx.nodeSet(*c, "NSID", nsid))
+    cs.set_nodes.push_back(ctx.model.nodes.id[std::size_t(n)]);
+  std::sort(cs.set_nodes.begin(), cs.set_nodes.end());
+  static constexpr std::pair<std::string_view, Family> kSets[] = {{"HSID", Family::Solid},
+                                                                  {"SSID", Family::Shell},
+                                                                  {"BSID", Family::Beam},
+                                                                  {"DSID", Family::Discrete}};
+  bool any = false;
+  for (const auto& [field, f] : kSets)
+    if (const int64_t id = c->integer(field); id != 0) {
+      cs.set_elements[static_cast<std::size_t>(f)] = ctx.elementSet(f, *c, field, id);
+      any = true;
+    }
+  if (!any) c->fail("HSID", "no element set: give HSID, SSID, BSID or DSID");
+  ctx.model.cross_sections.push_back(std::move(cs));
+  ctx.collect(cur);
+}
+
+void readCrossSectionPlane(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*DATABASE_CROSS_SECTION_PLANE");
+  CardCursor cur(kw, ctx.deck);
+  const Card* c1p = nullptr;
+  CrossSection cs = crossSectionHead(ctx, cur, spec, kw, opts, "PSID", c1p);
+  const Card& c1 = *c1p;
+  const Card& c2 = cur.readOptional(spec.card("card 2"));
   // Forces in the frame of a rigid body, accelerometer or coordinate system (ID, ITYPE) are
   // not computed: the section is left out, and said so (output only: the run is unaffected).
   if (c2.integer("ID") != 0) {
@@ -330,6 +381,69 @@ void readHistoryNodeSet(Context& ctx, const deck::Keyword& kw, const KeywordOpti
       if (const int64_t id = c.integer(f); id != 0)
         for (int32_t n : ctx.nodeSet(c, f, id))
           if (std::find(h.begin(), h.end(), n) == h.end()) h.push_back(n);
+    }
+    ctx.collect(cur);
+  }
+}
+
+namespace {
+// The family of *DATABASE_HISTORY_SOLID, _SHELL or _BEAM (with or without _ID, _SET).
+model::Family historyFamily(std::string_view name) {
+  if (name.rfind("*DATABASE_HISTORY_SOLID", 0) == 0) return model::Family::Solid;
+  if (name.rfind("*DATABASE_HISTORY_SHELL", 0) == 0) return model::Family::Shell;
+  return model::Family::Beam;
+}
+// The spec name of the keyword without _ID ("*DATABASE_HISTORY_SOLID" or its _SET).
+std::string historySpec(model::Family f, bool set) {
+  static constexpr std::string_view kName[] = {"*DATABASE_HISTORY_SOLID", "*DATABASE_HISTORY_SHELL",
+                                               "*DATABASE_HISTORY_BEAM"};
+  return std::string(kName[static_cast<int>(f)]) + (set ? "_SET" : "");
+}
+void addHistoryElement(Context& ctx, model::Family f, int32_t e) {
+  auto& h = ctx.model.history_elements[static_cast<std::size_t>(f)];
+  const auto it = std::lower_bound(h.begin(), h.end(), e);
+  if (it == h.end() || *it != e) h.insert(it, e);
+}
+}  // namespace
+
+// Keyword Manual vol. I, *DATABASE_HISTORY_OPTION: the elements whose stresses (solids,
+// shells) or resultants (beams) elout lists at *DATABASE_ELOUT's DT.
+void readHistoryElement(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const model::Family f = historyFamily(kw.name);
+  const auto& spec = keywordSpec(historySpec(f, false));
+  CardCursor cur(kw, ctx.deck);
+  auto add = [&](const Card& c, std::string_view field, int64_t id) {
+    const int32_t e = ctx.model.elementIndex(f, id);
+    if (e == kNone)
+      c.fail(field, std::string(model::familyName(f)) + " element " + std::to_string(id) +
+                        " is not defined");
+    addHistoryElement(ctx, f, e);
+  };
+  while (nextRecord(cur, opts.has("ID"))) {
+    if (opts.has("ID")) {
+      const Card& c = cur.read(spec.card("id card"));
+      add(c, "ID", c.integer("ID"));
+    } else {
+      const Card& c = cur.read(spec.card("card 1"));
+      for (int k = 1; k <= 8; ++k) {
+        const std::string field = "ID" + std::to_string(k);
+        if (const int64_t id = c.integer(field); id != 0) add(c, field, id);
+      }
+    }
+    ctx.collect(cur);
+  }
+}
+
+void readHistoryElementSet(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const model::Family f = historyFamily(kw.name);
+  const auto& spec = keywordSpec(historySpec(f, true)).card("card 1");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec);
+    for (int k = 1; k <= 8; ++k) {
+      const std::string field = "ID" + std::to_string(k);
+      if (const int64_t id = c.integer(field); id != 0)
+        for (int32_t e : ctx.elementSet(f, c, field, id)) addHistoryElement(ctx, f, e);
     }
     ctx.collect(cur);
   }

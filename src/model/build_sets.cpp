@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <stdexcept>
 
 #include "model/build_context.hpp"
 #include "util/vec3.hpp"
@@ -62,10 +63,16 @@ class Members {
   // Index of node or part `id`, or kNone after recording the problem.
   int32_t resolve(const Card& c, std::string_view field, int64_t id, bool part) {
     const int32_t i = part ? ctx_.model.partIndex(id) : ctx_.model.nodeIndex(id);
-    if (i == kNone && problem_.empty())
-      problem_ = c.context(field) + ": " + (part ? "part " : "node ") + std::to_string(id) +
-                 " is not defined";
+    if (i == kNone)
+      problem(c, field, (part ? "part " : "node ") + std::to_string(id) + " is not defined");
     return i;
+  }
+  // Index of element `id` within family f, or kNone after recording the problem.
+  int32_t resolveElement(const Card& c, std::string_view field, int64_t id, Family f) {
+    if (const int32_t i = ctx_.model.elementIndex(f, id); i != kNone) return i;
+    problem(c, field,
+            std::string(familyName(f)) + " element " + std::to_string(id) + " is not defined");
+    return kNone;
   }
   // Records a problem of a member (the first is kept).
   void problem(const Card& c, std::string_view field, const std::string& message) {
@@ -433,6 +440,91 @@ void readNodeSetGeneral(Context& ctx, const deck::Keyword& kw, const KeywordOpti
   for (std::size_t n = 0; n < in.size(); ++n)
     if (in[n]) nodes.push_back(static_cast<int32_t>(n));
   ctx.model.node_sets[sid] = std::move(nodes);
+}
+
+}  // namespace crumple::model::build
+
+namespace crumple::model::build {
+
+namespace {
+
+// The element-set keywords of each family (Keyword Manual vol. I, *SET_SOLID, *SET_SHELL,
+// *SET_BEAM, *SET_DISCRETE), in Family order.
+constexpr std::string_view kElementSet[kFamilies] = {"*SET_SOLID", "*SET_SHELL", "*SET_BEAM",
+                                                     "*SET_DISCRETE"};
+constexpr std::string_view kElementSetAdd[kFamilies] = {"*SET_SOLID_ADD", "*SET_SHELL_ADD",
+                                                        "*SET_BEAM_ADD", "*SET_DISCRETE_ADD"};
+
+Family elementSetFamily(std::string_view name) {
+  for (int k = 0; k < kFamilies; ++k)
+    if (name.substr(0, kElementSet[k].size()) == kElementSet[k]) return static_cast<Family>(k);
+  throw std::logic_error("not an element set keyword: " + std::string(name));
+}
+
+}  // namespace
+
+namespace {
+// The SID card, then `member(card spec, members, out)` for each card; the set is stored in
+// its family's map unless a member made it unusable.
+template <class Member>
+void readElementSet(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts,
+                    const deck::KeywordSpec& spec, Family f, Member member) {
+  CardCursor cur(kw, ctx.deck);
+  const Kind kind = elementSetKind(f);
+  const int64_t sid = readSetId(ctx, cur, spec, opts, kind);
+  Members members(ctx, kind, sid);
+  std::vector<int32_t> elements;
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    member(cur, members, elements);
+    ctx.collect(cur);
+  }
+  if (!members.finish(kw)) return;
+  sortUnique(elements);
+  ctx.model.element_sets[static_cast<std::size_t>(f)][sid] = std::move(elements);
+}
+}  // namespace
+
+// Members name elements of the keyword's family by id (_GENERATE: the ids between B and E that
+// exist); one that does not exist makes the set an error where it is used.
+void readElementSetList(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const Family f = elementSetFamily(kw.name);
+  const auto& spec = keywordSpec(kElementSet[static_cast<int>(f)]);
+  const std::vector<int64_t>& ids = ctx.model.familyIds(f);
+  readElementSet(
+      ctx, kw, opts, spec, f, [&](CardCursor& cur, Members& members, std::vector<int32_t>& out) {
+        if (opts.has("GENERATE")) {
+          generate(cur.read(spec.card("range card")), ids, [&](int32_t i) { out.push_back(i); });
+          return;
+        }
+        const Card& c = cur.read(spec.card("card 2"));
+        for (int k = 1; k <= 8; ++k) {
+          const std::string field = "K" + std::to_string(k);
+          if (const int64_t id = c.integer(field); id != 0)
+            out.push_back(members.resolveElement(c, field, id, f));
+        }
+      });
+}
+
+// _ADD: the union of the sets of the same family it names (read after every list; an _ADD
+// set it names must come before it in the deck).
+void readElementSetAdd(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const Family f = elementSetFamily(kw.name);
+  const auto& spec = keywordSpec(kElementSetAdd[static_cast<int>(f)]);
+  const auto& sets = ctx.model.element_sets[static_cast<std::size_t>(f)];
+  readElementSet(ctx, kw, opts, spec, f,
+                 [&](CardCursor& cur, Members& members, std::vector<int32_t>& out) {
+                   const Card& c = cur.read(spec.card("card 2"));
+                   for (int k = 1; k <= 8; ++k) {
+                     const std::string field = "DSID" + std::to_string(k);
+                     const int64_t id = c.integer(field);
+                     if (id == 0) continue;
+                     if (const auto it = sets.find(id); it != sets.end()) {
+                       out.insert(out.end(), it->second.begin(), it->second.end());
+                     } else {
+                       members.problem(c, field, ctx.undefinedMessage(elementSetKind(f), id));
+                     }
+                   }
+                 });
 }
 
 }  // namespace crumple::model::build

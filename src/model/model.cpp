@@ -39,6 +39,24 @@ void fill(std::unordered_map<int64_t, int32_t>& m, const Ids& ids) {
 int32_t Model::nodeIndex(int64_t id) const {
   return find(node_index_, id);
 }
+int32_t Model::elementIndex(Family f, int64_t id) const {
+  const auto& ids = familyIds(f);
+  const auto it = std::lower_bound(ids.begin(), ids.end(), id);
+  return it != ids.end() && *it == id ? static_cast<int32_t>(it - ids.begin()) : kNone;
+}
+const std::vector<int64_t>& Model::familyIds(Family f) const {
+  switch (f) {
+    case Family::Solid:
+      return solids.id;
+    case Family::Shell:
+      return shells.id;
+    case Family::Beam:
+      return beams.id;
+    case Family::Discrete:
+      break;
+  }
+  return discretes.id;
+}
 int32_t Model::partIndex(int64_t id) const {
   return find(part_index_, id);
 }
@@ -162,6 +180,7 @@ void Model::releaseMesh() {
   node_sets.clear();
   part_sets.clear();
   segment_sets.clear();
+  for (auto& sets : element_sets) sets.clear();
   std::vector<Vec3>().swap(initial_velocity);
   std::unordered_map<int64_t, int32_t>().swap(node_index_);
 }

@@ -312,12 +312,14 @@ struct Controls {
   double secforc_dt = 0.0;
   double spcforc_dt = 0.0, bndout_dt = 0.0, rbdout_dt = 0.0, deforc_dt = 0.0;
   double jntforc_dt = 0.0;  // *DATABASE_JNTFORC (jntforc.csv and jntforc)
+  double elout_dt = 0.0;    // *DATABASE_ELOUT (elout.csv and elout)
   // The *DATABASE_<file> keywords present: Crumple writes those files in LS-DYNA's ASCII
   // layout (src/output/ascii.hpp) beside its CSV histories.
   struct AsciiFiles {
     bool glstat = false, matsum = false, nodout = false, rwforc = false, rcforc = false;
     bool sleout = false, secforc = false, jntforc = false;
     bool spcforc = false, bndout = false, rbdout = false, deforc = false;
+    bool elout = false;
   } ascii;
   int64_t d3dump_cycles = 0;  // *DATABASE_BINARY_D3DUMP CYCL; 0 = no cycle-driven dumps
 };
@@ -345,6 +347,12 @@ struct CrossSection {
   Vec3 center{}, normal{}, l{};
   double lenl = 0.0, lenm = 0.0;  // 0 = unbounded
   double radius = 0.0;            // RADIUS > 0: a circular cut about the tail (LENL, LENM unused)
+  // *DATABASE_CROSS_SECTION_SET: the cut is the nodes of NSID (user ids, ascending) and the
+  // elements of HSID, SSID, BSID, DSID by family (indices within the family, ascending); the
+  // plane fields are then unused.
+  bool by_set = false;
+  std::vector<int64_t> set_nodes;
+  std::array<std::vector<int32_t>, kFamilies> set_elements;
   util::SourceLoc where;
 };
 
@@ -407,6 +415,9 @@ struct Model {
   std::map<int64_t, std::vector<int32_t>> node_sets;
   std::map<int64_t, std::vector<int32_t>> part_sets;
   std::map<int64_t, std::vector<std::array<int32_t, 4>>> segment_sets;
+  // *SET_SOLID, *SET_SHELL, *SET_BEAM, *SET_DISCRETE by family (each keyword has its own ids):
+  // the members as indices within the family, ascending.
+  std::array<std::map<int64_t, std::vector<int32_t>>, kFamilies> element_sets;
 
   std::vector<Spc> spcs;
   std::vector<PrescribedMotion> prescribed;
@@ -414,9 +425,12 @@ struct Model {
   std::vector<PressureLoad> pressure_loads;
   std::vector<BodyLoad> body_loads;
   std::vector<RigidWallPlanar> rigid_walls;
-  std::vector<Vec3> initial_velocity;        // per node (zero if none given)
-  std::vector<PointMass> point_masses;       // *ELEMENT_MASS, in deck order
-  std::vector<int32_t> history_nodes;        // *DATABASE_HISTORY_NODE, in deck order
+  std::vector<Vec3> initial_velocity;   // per node (zero if none given)
+  std::vector<PointMass> point_masses;  // *ELEMENT_MASS, in deck order
+  std::vector<int32_t> history_nodes;   // *DATABASE_HISTORY_NODE, in deck order
+  // *DATABASE_HISTORY_SOLID, _SHELL, _BEAM (and _SET) by family: indices within the family,
+  // ascending (elout lists them in ascending id).
+  std::array<std::vector<int32_t>, kFamilies> history_elements;
   std::vector<CrossSection> cross_sections;  // *DATABASE_CROSS_SECTION_PLANE, in deck order
   std::vector<BeamPreload> beam_preloads;    // *INITIAL_AXIAL_FORCE_BEAM, in deck order
   RigidDefinitions rigid;                    // rigid bodies, spot welds, tied node sets
@@ -448,6 +462,9 @@ struct Model {
 
   // Lookups from user id to model index (kNone if absent).
   int32_t nodeIndex(int64_t id) const;
+  // Index within family f of element `id` (kNone if absent); the family's ascending ids.
+  int32_t elementIndex(Family f, int64_t id) const;
+  const std::vector<int64_t>& familyIds(Family f) const;
   int32_t partIndex(int64_t id) const;
   int32_t curveIndex(int64_t id) const;
   int32_t tableIndex(int64_t id) const;

@@ -161,6 +161,7 @@ void fields(A& a, M& m) {
   a(m.node_sets);
   a(m.part_sets);
   a(m.segment_sets);
+  for (auto& sets : m.element_sets) a(sets);
   a(m.spcs);
   a(m.prescribed);
   a(m.nodal_loads);
@@ -192,10 +193,11 @@ void fields(A& a, M& m) {
   a(m.initial_velocity);
   a(m.point_masses);
   a(m.history_nodes);
+  for (auto& h : m.history_elements) a(h);
   a.count(
       m.cross_sections.size(),
       [&](auto& c) {
-        util::fieldCount<10>(c);
+        util::fieldCount<13>(c);
         a(c.id);
         a(c.title);
         a(c.parts);
@@ -205,6 +207,9 @@ void fields(A& a, M& m) {
         a(c.lenl);
         a(c.lenm);
         a(c.radius);
+        a(c.by_set);
+        a(c.set_nodes);
+        for (auto& e : c.set_elements) a(e);
         loc(a, c.where);
       },
       m.cross_sections);

@@ -350,4 +350,70 @@ std::string deforcBlock(double time, const std::vector<DiscreteRecord>& elements
   return s;
 }
 
+namespace {
+// The title line of a stress block: "\n\n <spaced title>   f o r   t i m e  s t e p   N   ( at
+// time T )", as R13's elout.
+std::string eloutTitle(std::string_view what, int64_t cycle, double time) {
+  return fmt::format("\n\n {}   f o r   t i m e  s t e p{:9d}   ( at time{} )\n", what, cycle,
+                     scientific(time, 12, 5));
+}
+std::string stresses(const Stress& s) {
+  std::string out;
+  for (double v : s) out += scientific(v, 12, 4);
+  return out;
+}
+}  // namespace
+
+std::string eloutSolidBlock(int64_t cycle, double time, const std::vector<EloutSolid>& solids) {
+  std::string s = eloutTitle("e l e m e n t   s t r e s s   c a l c u l a t i o n s", cycle, time);
+  s += "\n element  materl\n";
+  s += "     ipt  stress       sig-xx      sig-yy      sig-zz      sig-xy      sig-yz      sig-zx"
+       "                       yield\n";
+  s += fmt::format("{:11}state{:82}effsg      function\n", "", "");
+  for (const auto& e : solids) {
+    s += fmt::format("{:8d}-{:7d}\n", e.id, e.material_type);
+    s += fmt::format("       1 {:<7} {}{}{}\n", e.state, stresses(e.sig),
+                     scientific(e.eps_p, 14, 4), scientific(e.effective, 14, 4));
+  }
+  return s;
+}
+
+std::string eloutShellBlock(int64_t cycle, double time, const std::vector<EloutShell>& shells) {
+  std::string s = eloutTitle("e l e m e n t   s t r e s s   c a l c u l a t i o n s", cycle, time);
+  s += "\n element  materl(global)\n";
+  s += " ipt-shl  stress       sig-xx      sig-yy      sig-zz      sig-xy      sig-yz      sig-zx"
+       "       plastic\n";
+  s += fmt::format("{:11}state{:81}strain \n", "", "");
+  for (const auto& e : shells) {
+    s += fmt::format("{:8d}-{:7d}\n", e.id, e.material_type);
+    for (std::size_t p = 0; p < e.points.size(); ++p)
+      s += fmt::format("{:4d}-{:3d} {:<7} {}{}\n", p + 1, 1, e.points[p].state,
+                       stresses(e.points[p].sig), scientific(e.points[p].eps_p, 14, 4));
+  }
+  return s;
+}
+
+std::string eloutBeamBlock(int64_t cycle, double time, const std::vector<EloutBeam>& beams) {
+  std::string s = eloutTitle("r e s u l t a n t s   a n d   s t r e s s e s", cycle, time);
+  for (const auto& b : beams) {
+    s += fmt::format("\n\n beam/truss # ={:8d}      part ID  ={:10d}      material type={:8d}\n\n",
+                     b.id, b.part, b.material_type);
+    s += " resultants      axial    shear-s    shear-t    moment-s   moment-t   torsion     pl "
+         "eps\n";
+    s += fmt::format("{:11}", "");
+    for (double v : b.resultants) s += scientific(v, 11, 3);
+    s += scientific(b.eps_p, 11, 3) + "\n";
+    if (b.points.empty()) continue;
+    s += "\n\n integration point stresses\n";
+    s += "                       sigma 11       sigma 12       sigma 31   plastic  eps\n";
+    for (std::size_t p = 0; p < b.points.size(); ++p) {
+      const auto& q = b.points[p];
+      s += fmt::format("{:5d}{:11}{}{}{}{}\n", p + 1, "", scientific(q.sigma11, 15, 6),
+                       scientific(q.sigma12, 15, 6), scientific(q.sigma31, 15, 6),
+                       scientific(q.eps_p, 15, 6));
+    }
+  }
+  return s;
+}
+
 }  // namespace crumple::output::ascii

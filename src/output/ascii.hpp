@@ -144,3 +144,43 @@ std::string deforcHeader(std::string_view title, const std::vector<LegendEntry>&
 std::string deforcBlock(double time, const std::vector<DiscreteRecord>& elements);
 
 }  // namespace crumple::output::ascii
+
+namespace crumple::output::ascii {
+
+// ---- elout ----------------------------------------------------------------------------------
+// One output time of *DATABASE_HISTORY_SOLID, _SHELL, _BEAM. The beam block is the layout of
+// LS-DYNA R13's elout in ../shared/decks/bolted_joint_lsdyna; the solid and shell blocks follow
+// the layout of LS-DYNA's binout-to-ASCII translation (docs/theory.md, "LS-DYNA ASCII files").
+// `state` is "elastic", "plastic" or "failed" (eroded).
+using Stress = std::array<double, 6>;  // Voigt xx, yy, zz, xy, yz, zx (global)
+struct EloutSolid {
+  int64_t id = 0, material_type = 0;
+  std::string state;
+  Stress sig{};
+  double eps_p = 0;      // effective plastic strain (LS-DYNA's "effsg" column)
+  double effective = 0;  // von Mises stress (the "yield function" column)
+};
+struct EloutShellPoint {
+  std::string state;
+  Stress sig{};
+  double eps_p = 0;
+};
+struct EloutShell {
+  int64_t id = 0, material_type = 0;
+  std::vector<EloutShellPoint> points;  // through the thickness, bottom first
+};
+struct EloutBeamPoint {
+  double sigma11 = 0, sigma12 = 0, sigma31 = 0, eps_p = 0;
+};
+struct EloutBeam {
+  int64_t id = 0, part = 0, material_type = 0;
+  // axial, shear-s, shear-t, moment-s, moment-t, torsion; the plastic strain (mean of the points)
+  std::array<double, 6> resultants{};
+  double eps_p = 0;
+  std::vector<EloutBeamPoint> points;  // integrated beams and trusses only
+};
+std::string eloutSolidBlock(int64_t cycle, double time, const std::vector<EloutSolid>& solids);
+std::string eloutShellBlock(int64_t cycle, double time, const std::vector<EloutShell>& shells);
+std::string eloutBeamBlock(int64_t cycle, double time, const std::vector<EloutBeam>& beams);
+
+}  // namespace crumple::output::ascii

@@ -26,25 +26,6 @@ const std::vector<std::string> kRbdoutColumns = {
 const std::vector<std::string> kDeforcColumns = {"time", "element", "force", "elongation",
                                                  "fx",   "fy",      "fz"};
 
-double intervalOr(double requested, double end_time) {
-  if (requested > 0.0) return requested;
-  return end_time > 0.0 ? end_time / kDefaultSamples : 0.0;
-}
-
-// Rank 0's view of every rank's records of `width` numbers, the first the id, ordered by id
-// (a stable sort: one node's records come from the one rank that owns it, in its order).
-std::vector<std::vector<double>> gatherById(const comm::Communicator& comm,
-                                            const std::vector<double>& local, std::size_t width) {
-  const auto all = comm.allGather(local);
-  std::vector<std::vector<double>> rows;
-  if (!comm.isRoot()) return rows;
-  for (std::size_t k = 0; k + width <= all.size(); k += width)
-    rows.emplace_back(all.begin() + std::ptrdiff_t(k), all.begin() + std::ptrdiff_t(k + width));
-  std::stable_sort(rows.begin(), rows.end(),
-                   [](const auto& a, const auto& b) { return a[0] < b[0]; });
-  return rows;
-}
-
 // The reactions of the owned nodes as (id, fx, fy, fz, mx, my, mz, work, rotations) records.
 std::vector<double> reactionRecords(const std::vector<constraints::NodeReaction>& reactions,
                                     const domain::Subdomain& sd) {
@@ -62,6 +43,23 @@ constexpr std::size_t kReaction = 9;
 
 }  // namespace
 
+double historyInterval(double requested, double end_time) {
+  if (requested > 0.0) return requested;
+  return end_time > 0.0 ? end_time / kDefaultSamples : 0.0;
+}
+
+std::vector<std::vector<double>> gatherById(const comm::Communicator& comm,
+                                            const std::vector<double>& local, std::size_t width) {
+  const auto all = comm.allGather(local);
+  std::vector<std::vector<double>> rows;
+  if (!comm.isRoot()) return rows;
+  for (std::size_t k = 0; k + width <= all.size(); k += width)
+    rows.emplace_back(all.begin() + std::ptrdiff_t(k), all.begin() + std::ptrdiff_t(k + width));
+  std::stable_sort(rows.begin(), rows.end(),
+                   [](const auto& a, const auto& b) { return a[0] < b[0]; });
+  return rows;
+}
+
 ReactionHistories::ReactionHistories(const model::Model& model, const solver::Solver& s,
                                      const comm::Communicator& comm)
     : model_(model), comm_(comm) {
@@ -73,10 +71,10 @@ ReactionHistories::ReactionHistories(const model::Model& model, const solver::So
     for (const auto& b : s.rigidBodies()->states())
       rigid_ = rigid_ || b.kind != constraints::RigidBodyState::Kind::Weld;
   discrete_ = ctl.ascii.deforc && model.discretes.size() > 0;
-  if (spc_) spcforc_.interval = intervalOr(ctl.spcforc_dt, end);
-  if (motion_) bndout_.interval = intervalOr(ctl.bndout_dt, end);
-  if (rigid_) rbdout_.interval = intervalOr(ctl.rbdout_dt, end);
-  if (discrete_) deforc_.interval = intervalOr(ctl.deforc_dt, end);
+  if (spc_) spcforc_.interval = historyInterval(ctl.spcforc_dt, end);
+  if (motion_) bndout_.interval = historyInterval(ctl.bndout_dt, end);
+  if (rigid_) rbdout_.interval = historyInterval(ctl.rbdout_dt, end);
+  if (discrete_) deforc_.interval = historyInterval(ctl.deforc_dt, end);
 }
 
 std::vector<ReactionHistories::File> ReactionHistories::files() {

@@ -23,6 +23,14 @@
 
 namespace crumple::output {
 
+// The DT of a *DATABASE_ history, or without one (0) a sample every 1/200 of the run.
+double historyInterval(double requested, double end_time);
+// Rank 0's view of every rank's records of `width` numbers, the first the id, ordered by id
+// (a stable sort: one entity's records come from the one rank that owns it, in its order);
+// empty on the other ranks. Collective.
+std::vector<std::vector<double>> gatherById(const comm::Communicator& comm,
+                                            const std::vector<double>& local, std::size_t width);
+
 class ReactionHistories {
  public:
   ReactionHistories(const model::Model& model, const solver::Solver& s,

@@ -97,6 +97,7 @@ ResultsWriter::ResultsWriter(std::filesystem::path dir, const model::Model& mode
     sections_.emplace(model, sd);
   }
   reactions_.emplace(model, s, comm);
+  elout_.emplace(model, s, comm);
   // On restart the files are opened by loadState, which knows where the dump left them.
   if (comm.isRoot() && !restart) openStreams();
   if (comm.isRoot()) std::filesystem::create_directories(dir_ / kStatesFolder);
@@ -133,6 +134,8 @@ std::vector<ResultsWriter::Stream> ResultsWriter::streams() {
                              {"jntforc.csv", &jntforc_csv_, &jntforcColumns(), joints},
                              {"jntforc", &jntforc_txt_, nullptr, ascii.jntforc && joints}};
   for (const auto& f : reactions_->files()) out.push_back({f.name, f.file, f.columns, f.wanted});
+  out.push_back({"elout.csv", &elout_->csv(), &ElementHistories::columns(), elout_->wanted()});
+  out.push_back({"elout", &elout_->text(), nullptr, elout_->wanted()});
   return out;
 }
 
@@ -152,7 +155,8 @@ void ResultsWriter::openStreams() {
       {"rcforc", ascii::entityHeader(title, contacts)},
       {"sleout", ascii::entityHeader(title, contacts)},
       {"secforc", ascii::entityHeader(title, sections)},
-      {"jntforc", ascii::banner(title)}};
+      {"jntforc", ascii::banner(title)},
+      {"elout", elout_->header()}};
   for (const Stream& st : streams()) {
     if (!st.wanted) continue;
     if (st.columns)
@@ -190,6 +194,7 @@ std::vector<char> ResultsWriter::saveState() const {
   }
   w.put(d3plot_ ? d3plot_->save() : std::vector<char>());  // empty: no d3plot
   reactions_->saveState(w);
+  elout_->saveState(w);
   return std::move(w.bytes());
 }
 
@@ -228,6 +233,7 @@ void ResultsWriter::loadState(const std::vector<char>& bytes, double time) {
   std::vector<char> d3plot;
   r.get(d3plot);
   reactions_->loadState(r, time);
+  elout_->loadState(r, time);
   if (!r.atEnd() || times.size() != names.size())
     throw util::InputError("restart dump: the output section is inconsistent");
   // A dump of a run without d3plot, restarted with *DATABASE_BINARY_D3PLOT: a new family.
@@ -307,6 +313,7 @@ void ResultsWriter::write(const solver::Solver& s, bool last) {
     jntforc_.advance(t);
   }
   reactions_->write(s, last);
+  elout_->write(s, last);
   if ((s.cycle() == 0 || plot_.due(t, last)) && t != last_plot_time_) {
     writePlotState(s);
     plot_.advance(t);

@@ -12,6 +12,7 @@
 #include "comm/communicator.hpp"
 #include "model/model.hpp"
 #include "output/d3plot.hpp"
+#include "output/elout.hpp"
 #include "output/energy_audit.hpp"
 #include "output/files.hpp"
 #include "output/reactions.hpp"
@@ -104,6 +105,7 @@ class ResultsWriter {
   CsvWriter jntforc_csv_;
   HistoryFile jntforc_txt_;
   std::optional<SectionForces> sections_;                   // when the deck has cross sections
+  std::optional<ElementHistories> elout_;                   // elout, elout.csv
   std::optional<ReactionHistories> reactions_;              // spcforc, bndout, rbdout, deforc
   std::vector<std::pair<int32_t, int32_t>> history_local_;  // (deck order, local node), owned
   std::size_t history_count_ = 0;

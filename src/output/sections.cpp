@@ -75,23 +75,35 @@ constexpr std::array<int[2], 12> kHexEdges = {{{0, 1},
                                                {3, 7}}};
 constexpr std::array<int[2], 4> kQuadEdges = {{{0, 1}, {1, 2}, {2, 3}, {3, 0}}};
 
-// The cut's area through element k of a block, from the initial coordinates.
+// The area of a cut through element k of a block: a solid's `solid_area`, a shell's cut length
+// (between the two points of `edge`) times its thickness, a beam's section area.
+template <class Block>
+double familyArea(const Block& b, std::size_t k, double solid_area, const std::vector<Vec3>& edge) {
+  if constexpr (std::is_same_v<Block, domain::SolidBlock>) {
+    return solid_area;
+  } else if constexpr (std::is_same_v<Block, domain::ShellBlock>) {
+    const double thick = b.thick.size() > k ? b.thick[k] : 0.0;
+    return edge.size() == 2 ? util::norm(sub(edge[1], edge[0])) * thick : 0.0;
+  } else if constexpr (std::is_same_v<Block, domain::BeamBlock>) {
+    return b.section.a;
+  } else {
+    return 0.0;
+  }
+}
+
+// The plane cut's area through element k of a block, from the initial coordinates.
 template <class Block>
 double cutArea(const Block& b, std::size_t k, const Vec3* x, const model::CrossSection& cs) {
   if constexpr (std::is_same_v<Block, domain::SolidBlock>) {
     std::array<Vec3, 8> corners;
     std::copy(x, x + 8, corners.begin());
-    return hexCutArea(corners, cs.center, cs.normal);
+    return familyArea(b, k, hexCutArea(corners, cs.center, cs.normal), {});
   } else if constexpr (std::is_same_v<Block, domain::ShellBlock>) {
     double d[4];
     for (int a = 0; a < 4; ++a) d[a] = dot(sub(x[a], cs.center), cs.normal);
-    const auto p = cutPoints(x, d, kQuadEdges);
-    const double thick = b.thick.size() > k ? b.thick[k] : 0.0;
-    return p.size() == 2 ? util::norm(sub(p[1], p[0])) * thick : 0.0;
-  } else if constexpr (std::is_same_v<Block, domain::BeamBlock>) {
-    return b.section.a;
+    return familyArea(b, k, 0.0, cutPoints(x, d, kQuadEdges));
   } else {
-    return 0.0;
+    return familyArea(b, k, 0.0, {});
   }
 }
 
@@ -109,6 +121,56 @@ bool withinBounds(const Vec3& p, const model::CrossSection& cs) {
          (cs.lenm <= 0.0 || (v >= 0.0 && v <= cs.lenm));
 }
 
+// A plane cut: element k of the block has corners on both sides of the plane and its centre
+// within the bounds; `on` marks the corners on the positive side, `area` the cut's area.
+template <class Block, int N>
+bool planeCut(const Block& b, std::size_t k, const model::CrossSection& cs, const Vec3 (&x)[N],
+              bool (&on)[N], double& area) {
+  double d[N];
+  Vec3 centre{};
+  for (int a = 0; a < N; ++a) {
+    d[a] = dot(sub(x[a], cs.center), cs.normal);
+    centre = add(centre, scale(x[a], 1.0 / N));
+    on[a] = d[a] >= 0.0;
+  }
+  const auto [lo, hi] = std::minmax_element(d, d + N);
+  if (!(*lo < 0.0 && *hi >= 0.0) || !withinBounds(centre, cs)) return false;
+  area = cutArea(b, k, x, cs);
+  return true;
+}
+
+// The area of the face the cut nodes `on` of an element make, from the initial coordinates
+// (*DATABASE_CROSS_SECTION_SET): a solid's face (the polygon of its cut nodes), a shell's edge
+// times its thickness, a beam's section area.
+template <class Block, int N>
+double setCutArea(const Block& b, std::size_t k, const Vec3 (&x)[N], const bool (&on)[N]) {
+  std::vector<Vec3> p;
+  for (int a = 0; a < N; ++a)
+    if (on[a] && std::none_of(p.begin(), p.end(), [&](const Vec3& q) { return q == x[a]; }))
+      p.push_back(x[a]);
+  // A solid's cut nodes are a face: its plane's normal from three of them.
+  const Vec3 n = p.size() >= 3 ? cross(sub(p[1], p[0]), sub(p[2], p[0])) : Vec3{};
+  const double length = util::norm(n);
+  const double solid = length > 0.0 ? polygonArea(p, scale(n, 1.0 / length)) : 0.0;
+  return familyArea(b, k, solid, p);
+}
+
+// A cut by sets: element k is in the section's set of its family and has nodes of the cut.
+template <class Block, int N>
+bool setCut(const domain::Subdomain& sd, const Block& b, std::size_t k,
+            const model::CrossSection& cs, const Vec3 (&x)[N], bool (&on)[N], double& area) {
+  const auto& members = cs.set_elements[static_cast<std::size_t>(Block::kFamily)];
+  if (!std::binary_search(members.begin(), members.end(), b.elem[k])) return false;
+  bool any = false;
+  for (int a = 0; a < N; ++a) {
+    const int64_t id = sd.node_id[std::size_t(b.conn[k][std::size_t(a)])];
+    on[a] = std::binary_search(cs.set_nodes.begin(), cs.set_nodes.end(), id);
+    any = any || on[a];
+  }
+  if (any) area = setCutArea(b, k, x, on);
+  return any;
+}
+
 // One corner's record sent to rank 0: section, element, corner, node id, x, force, moment,
 // area (the element's first record only).
 constexpr std::size_t kRecord = 14;
@@ -118,7 +180,10 @@ constexpr std::size_t kRecord = 14;
 double hexCutArea(const std::array<Vec3, 8>& x, const Vec3& c, const Vec3& n) {
   double d[8];
   for (int a = 0; a < 8; ++a) d[a] = dot(sub(x[std::size_t(a)], c), n);
-  const auto p = cutPoints(x.data(), d, kHexEdges);
+  return polygonArea(cutPoints(x.data(), d, kHexEdges), n);
+}
+
+double polygonArea(const std::vector<Vec3>& p, const Vec3& n) {
   if (p.size() < 3) return 0.0;
   // The points are the corners of a convex polygon in the plane: ordered by angle about their
   // mean, its area is half the sum of the cross products of successive corners.
@@ -159,29 +224,26 @@ void SectionForces::findCuts(const model::Model&, const domain::Subdomain& sd,
     if (b.rigid) continue;  // no force: rigid parts pass theirs through the rigid body
     for (std::size_t s = 0; s < sections_.size(); ++s) {
       const auto& cs = sections_[s];
-      if (!cs.parts.empty() && !std::binary_search(cs.parts.begin(), cs.parts.end(), b.part))
+      if (!cs.by_set && !cs.parts.empty() &&
+          !std::binary_search(cs.parts.begin(), cs.parts.end(), b.part))
         continue;
       for (std::size_t k = 0; k < b.size(); ++k) {
         Vec3 x[kCorners];
-        double d[kCorners];
-        Vec3 centre{};
-        for (int a = 0; a < kCorners; ++a) {
-          x[a] = at(sd.x0, b.conn[k][std::size_t(a)]);
-          d[a] = dot(sub(x[a], cs.center), cs.normal);
-          centre = add(centre, scale(x[a], 1.0 / kCorners));
-        }
-        const auto [lo, hi] = std::minmax_element(d, d + kCorners);
-        if (!(*lo < 0.0 && *hi >= 0.0) || !withinBounds(centre, cs)) continue;
+        bool on[kCorners];  // the corner is a node of the cut (its force counts)
+        double area = 0.0;
+        for (int a = 0; a < kCorners; ++a) x[a] = at(sd.x0, b.conn[k][std::size_t(a)]);
+        if (!(cs.by_set ? setCut(sd, b, k, cs, x, on, area) : planeCut(b, k, cs, x, on, area)))
+          continue;
         Cut cut;
         cut.section = int32_t(s);
         cut.element = sd.globalElement(Block::kFamily, b.elem[k]);
         cut.family = Block::kFamily;
         cut.block = bi;
         cut.k = k;
-        cut.area = cutArea(b, k, x, cs);
+        cut.area = area;
         const std::size_t first = b.slot_offset + std::size_t(Block::kSlotsPerElement) * k;
         for (int a = 0; a < kCorners; ++a) {
-          if (d[a] < 0.0) continue;
+          if (!on[a]) continue;
           const int32_t moment =
               momentOffset<Block>() ? int32_t(first) + momentOffset<Block>() + a : -1;
           cut.corners.push_back({b.conn[k][std::size_t(a)], int32_t(first) + a, moment});

@@ -13,6 +13,11 @@
 // initial geometry (solids: the polygon the plane cuts from the hexahedron; shells: the cut
 // length times the thickness; beams: the section area).
 //
+// *DATABASE_CROSS_SECTION_SET gives the cut by sets instead: the elements of its element sets
+// and, of their nodes, those in NSID; the same sum, negated (the pull of the side the elements
+// are not on); the area of the cut nodes' face of each solid, a shell's cut edge times its
+// thickness, a beam's section area.
+//
 // Every element is computed by one rank: each sends its (element, corner) records to rank 0,
 // which sums them in ascending (section, global element, corner) order, so the sums are the
 // same bits at any rank count.
@@ -70,5 +75,7 @@ class SectionForces {
 // The area of the polygon the plane (point c, unit normal n) cuts from a hexahedron with
 // corners x (degenerate hexahedra too); 0 when the plane misses it.
 double hexCutArea(const std::array<model::Vec3, 8>& x, const model::Vec3& c, const model::Vec3& n);
+// The area of the convex polygon with corners p (in any order) in the plane of unit normal n.
+double polygonArea(const std::vector<model::Vec3>& p, const model::Vec3& n);
 
 }  // namespace crumple::output

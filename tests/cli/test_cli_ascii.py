@@ -117,6 +117,11 @@ def contact_blocks_with_sleout():
     return "".join(lines[:k] + ["*DATABASE_SLEOUT\n", lines[k + 1]] + lines[k:])
 
 
+def read_bytes(path):
+    with open(path, "rb") as f:
+        return f.read()
+
+
 def read_csv(path):
     with open(path, encoding="utf-8") as f:
         lines = f.read().splitlines()
@@ -133,8 +138,42 @@ class Case(TempDirTest):
     def run_deck(self, name, text, *extra):
         deck = self.write(name, text)
         out = os.path.join(self.tmp, name + ".out")
-        self.run_ok("run", deck, "-o", out, "-q", *extra)
+        self.run_ok("run", deck, "-o", out, "-q", "--threads", "1", *extra)
         return out
+
+    def assertSameBytesAtRanks(self, text, names):
+        """The files `names` of the deck `text` run on 1, 2 and 3 ranks are the same bytes."""
+        exe = shutil.which("mpirun")
+        if exe is None:
+            self.skipTest("mpirun not found")
+        deck = self.write("deck.k", text)
+        outs = []
+        for n in (1, 2, 3):
+            out = os.path.join(self.tmp, f"out{n}")
+            p = subprocess.run([exe, "--oversubscribe", "-np", str(n), clitest.CRUMPLE, "run",
+                                deck, "-o", out, "-q", "--threads", "1"], capture_output=True,
+                               text=True, timeout=300, env=MPI_ENV)
+            self.assertEqual(p.returncode, 0, describe(p))
+            outs.append(out)
+        for name in names:
+            data = [read_bytes(os.path.join(o, name)) for o in outs]
+            self.assertEqual(data[0], data[1], name)
+            self.assertEqual(data[0], data[2], name)
+
+    def assertRestartContinues(self, text, names):
+        """A run of `text` (which asks for dumps) stopped after 900 cycles and restarted from
+        its last dump writes the files `names` as the uninterrupted run."""
+        deck = self.write("deck.k", text)
+        full = os.path.join(self.tmp, "full")
+        self.run_ok("run", deck, "-o", full, "-q")
+        part = os.path.join(self.tmp, "part")
+        self.run_ok("run", deck, "-o", part, "-q", "--cycles", "900")
+        dumps = sorted(f for f in os.listdir(part) if f.startswith("d3dump_"))
+        self.assertTrue(dumps, os.listdir(part))
+        self.run_ok("run", deck, "-o", part, "-q", "--restart", os.path.join(part, dumps[-1]))
+        for name in names:
+            self.assertEqual(read_bytes(os.path.join(full, name)),
+                             read_bytes(os.path.join(part, name)), name)
 
 
 class SectionPhysics(Case):
@@ -381,38 +420,13 @@ class Layout(Case):
 
 class Parallel(Case):
     def test_section_files_same_bytes_at_1_2_3_ranks(self):
-        exe = shutil.which("mpirun")
-        if exe is None:
-            self.skipTest("mpirun not found")
-        deck = self.write("bar.k", bar())
-        outs = []
-        for n in (1, 2, 3):
-            out = os.path.join(self.tmp, f"out{n}")
-            p = subprocess.run([exe, "--oversubscribe", "-np", str(n), clitest.CRUMPLE, "run",
-                                deck, "-o", out, "-q", "--threads", "1"], capture_output=True,
-                               text=True, timeout=300, env=MPI_ENV)
-            self.assertEqual(p.returncode, 0, describe(p))
-            outs.append(out)
-        for name in ("secforc.csv", "secforc", "nodout", "nodout.csv"):
-            data = [open(os.path.join(o, name), "rb").read() for o in outs]
-            self.assertEqual(data[0], data[1], name)
-            self.assertEqual(data[0], data[2], name)
+        self.assertSameBytesAtRanks(bar(), ("secforc.csv", "secforc", "nodout", "nodout.csv"))
 
 
 class Restart(Case):
     def test_restart_continues_ascii_files(self):
-        deck = self.write("bar.k", bar(extra="*DATABASE_BINARY_D3DUMP\n     400.0\n"))
-        full = os.path.join(self.tmp, "full")
-        self.run_ok("run", deck, "-o", full, "-q")
-        part = os.path.join(self.tmp, "part")
-        self.run_ok("run", deck, "-o", part, "-q", "--cycles", "900")
-        dumps = sorted(f for f in os.listdir(part) if f.startswith("d3dump_"))
-        self.assertTrue(dumps, os.listdir(part))
-        self.run_ok("run", deck, "-o", part, "-q", "--restart", os.path.join(part, dumps[-1]))
-        for name in ("glstat", "matsum", "nodout", "secforc", "secforc.csv"):
-            a = open(os.path.join(full, name), "rb").read()
-            b = open(os.path.join(part, name), "rb").read()
-            self.assertEqual(a, b, name)
+        self.assertRestartContinues(bar(extra="*DATABASE_BINARY_D3DUMP\n     400.0\n"),
+                                    ("glstat", "matsum", "nodout", "secforc", "secforc.csv"))
 
 
 if __name__ == "__main__":

@@ -175,6 +175,64 @@ TEST(BuildModel, SetsListsGenerateGeneralAndSegments) {
   EXPECT_EQ(seg[1], (std::array<int32_t, 4>{n(5), n(6), n(7), n(7)}));
 }
 
+// *SET_SOLID (_LIST, _GENERATE, _TITLE, _ADD): members as indices within the family, ascending;
+// each family has its own ids; an element that does not exist makes the set unusable.
+TEST(BuildModel, ElementSetsListGenerateAddAndMissingMembers) {
+  TempDir t;
+  const Model m = build(t,
+                        "*SET_SOLID_TITLE\nsecond\n1\n20\n"
+                        "*SET_SOLID_LIST\n2,MECH\n20,10,20\n"
+                        "*SET_SOLID_GENERATE\n3\n11,25\n"
+                        "*SET_SOLID_ADD\n4\n1,3\n"
+                        "*SET_SOLID\n5\n10,99\n"
+                        "*SET_SHELL_LIST\n1,1.0\n"
+                        "*SET_BEAM_GENERATE\n1\n1,1000\n");
+  const auto& solid = m.element_sets[0];
+  EXPECT_EQ(solid.at(1), std::vector<int32_t>{1});
+  EXPECT_EQ(solid.at(2), (std::vector<int32_t>{0, 1}));
+  EXPECT_EQ(solid.at(3), std::vector<int32_t>{1});
+  EXPECT_EQ(solid.at(4), std::vector<int32_t>{1});
+  EXPECT_EQ(solid.count(5), 0u);  // solid 99 does not exist: skipped, an error on use
+  ASSERT_FALSE(m.ignored.empty());
+  EXPECT_NE(m.ignored.back().reason.find("d.k:"), std::string::npos);
+  EXPECT_NE(m.ignored.back().reason.find("solid element 99 is not defined"), std::string::npos);
+  EXPECT_TRUE(m.element_sets[1].at(1).empty());
+  EXPECT_TRUE(m.element_sets[2].at(1).empty());
+}
+
+// *DATABASE_HISTORY_SOLID (_SET) and *DATABASE_CROSS_SECTION_SET refer to element sets; a set
+// that names a missing element is an error there, naming the member's file:line and field.
+TEST(BuildModel, HistoryElementsAndSetCrossSections) {
+  TempDir t;
+  const Model m = build(t,
+                        "*SET_SOLID\n2\n10,20\n*SET_NODE_LIST\n3\n2,3\n"
+                        "*DATABASE_ELOUT\n0.5\n*DATABASE_HISTORY_SOLID\n20\n"
+                        "*DATABASE_HISTORY_SOLID_SET\n2\n"
+                        "*DATABASE_CROSS_SECTION_SET_ID\n4,cut\n3,2\n");
+  EXPECT_EQ(m.history_elements[0], (std::vector<int32_t>{0, 1}));
+  EXPECT_TRUE(m.controls.ascii.elout);
+  EXPECT_EQ(m.controls.elout_dt, 0.5);
+  ASSERT_EQ(m.cross_sections.size(), 1u);
+  const auto& cs = m.cross_sections[0];
+  EXPECT_EQ(cs.id, 4);
+  EXPECT_TRUE(cs.by_set);
+  EXPECT_EQ(cs.set_nodes, (std::vector<int64_t>{2, 3}));
+  EXPECT_EQ(cs.set_elements[0], (std::vector<int32_t>{0, 1}));
+
+  const auto bad =
+      t.write("bad.k", kMesh + "*SET_SOLID\n5\n10,99\n*DATABASE_HISTORY_SOLID_SET\n5\n");
+  const std::string e = errorOf([&] { readModel(bad); });
+  EXPECT_NE(e.find("*DATABASE_HISTORY_SOLID_SET card 1 field 1 (ID1): solid set 5 cannot be used"),
+            std::string::npos)
+      << e;
+  EXPECT_NE(e.find("*SET_SOLID card 2 field 2 (K2): solid element 99 is not defined"),
+            std::string::npos)
+      << e;
+  const auto missing = t.write("missing.k", kMesh + "*DATABASE_HISTORY_SHELL\n7\n");
+  EXPECT_NE(errorOf([&] { readModel(missing); }).find("(ID1): shell element 7 is not defined"),
+            std::string::npos);
+}
+
 TEST(BuildModel, BoundaryConditionsLoadsAndInitialVelocity) {
   TempDir t;
   const Model m = build(t,
