@@ -68,6 +68,32 @@ def _rcforc(path):
     return data
 
 
+_ELOUT_STRESS = ("sxx", "syy", "szz", "sxy", "syz", "szx")
+_ELOUT_BEAM_POINT = {"sxx": "sigma11", "sxy": "sigma12", "szx": "sigma31", "eps_p": "eps_p"}
+_ELOUT_BEAM = ("axial", "shear_s", "shear_t", "moment_s", "moment_t", "torsion", "eps_p")
+
+
+def _elout_key(ident, q):
+    """The key of lsdyna.read_elout for elout.csv's quantity q of (element, family, point),
+    None for a column the row does not use."""
+    e, family, point = ident
+    if family == 0:  # solids: the plastic strain is LS-DYNA's "effsg" column
+        return f"elout.solid{e}.{'effsg' if q == 'eps_p' else q}" \
+            if q in _ELOUT_STRESS + ("eps_p",) else None
+    if family == 1:
+        return f"elout.shell{e}.ipt{point}.{q}" if q in _ELOUT_STRESS + ("eps_p",) else None
+    if point == 0:
+        return f"elout.beam{e}.{q}" if q in _ELOUT_BEAM else None
+    return f"elout.beam{e}.ipt{point}.{_ELOUT_BEAM_POINT[q]}" if q in _ELOUT_BEAM_POINT else None
+
+
+def _elout(path):
+    data = _series(path, ["element", "family", "point"],
+                   list(_ELOUT_STRESS) + ["eps_p", *_ELOUT_BEAM[:-1]], _elout_key)
+    data.pop(None, None)
+    return data
+
+
 def read_folder(folder):
     """Every Crumple history in a results folder; {key: Curve}."""
     if not os.path.isdir(folder):
@@ -92,6 +118,7 @@ def read_folder(folder):
                                         lambda i, q: f"rbdout.body{i[0]}.{q}"),
         "deforc.csv": lambda p: _series(p, ["element"], mapping.CRUMPLE_DEFORC,
                                         lambda i, q: f"deforc.element{i[0]}.{q}"),
+        "elout.csv": _elout,
     }
     curves = {}
     for name, reader in readers.items():

@@ -364,12 +364,23 @@ std::string stresses(const Stress& s) {
 }
 }  // namespace
 
-std::string eloutSolidBlock(int64_t cycle, double time, const std::vector<EloutSolid>& solids) {
+namespace {
+// The head of a solid or shell stress block: the title, " element  materl<system>", the
+// column names ("<ipt>  stress  sig-xx ... sig-zx<last>") and the second header line.
+std::string stressHead(int64_t cycle, double time, std::string_view system, std::string_view ipt,
+                       std::string_view last, std::string_view second) {
   std::string s = eloutTitle("e l e m e n t   s t r e s s   c a l c u l a t i o n s", cycle, time);
-  s += "\n element  materl\n";
-  s += "     ipt  stress       sig-xx      sig-yy      sig-zz      sig-xy      sig-yz      sig-zx"
-       "                       yield\n";
-  s += fmt::format("{:11}state{:82}effsg      function\n", "", "");
+  s += fmt::format(
+      "\n element  materl{}\n{}  stress       sig-xx      sig-yy      sig-zz"
+      "      sig-xy      sig-yz      sig-zx{}\n{:11}state{}\n",
+      system, ipt, last, "", second);
+  return s;
+}
+}  // namespace
+
+std::string eloutSolidBlock(int64_t cycle, double time, const std::vector<EloutSolid>& solids) {
+  std::string s = stressHead(cycle, time, "", "     ipt", fmt::format("{:23}yield", ""),
+                             fmt::format("{:82}effsg      function", ""));
   for (const auto& e : solids) {
     s += fmt::format("{:8d}-{:7d}\n", e.id, e.material_type);
     s += fmt::format("       1 {:<7} {}{}{}\n", e.state, stresses(e.sig),
@@ -379,11 +390,8 @@ std::string eloutSolidBlock(int64_t cycle, double time, const std::vector<EloutS
 }
 
 std::string eloutShellBlock(int64_t cycle, double time, const std::vector<EloutShell>& shells) {
-  std::string s = eloutTitle("e l e m e n t   s t r e s s   c a l c u l a t i o n s", cycle, time);
-  s += "\n element  materl(global)\n";
-  s += " ipt-shl  stress       sig-xx      sig-yy      sig-zz      sig-xy      sig-yz      sig-zx"
-       "       plastic\n";
-  s += fmt::format("{:11}state{:81}strain \n", "", "");
+  std::string s = stressHead(cycle, time, "(global)", " ipt-shl", "       plastic",
+                             fmt::format("{:81}strain ", ""));
   for (const auto& e : shells) {
     s += fmt::format("{:8d}-{:7d}\n", e.id, e.material_type);
     for (std::size_t p = 0; p < e.points.size(); ++p)

@@ -153,7 +153,7 @@ void ElementHistories::write(const solver::Solver& s, bool last) {
     std::vector<double> row = {t, r[0], double(family), r[1]};
     row.insert(row.end(), v);
     row.resize(columns().size(), 0.0);
-    for (double& v : row) v += 0.0;  // no negative zeros in the file
+    for (double& x : row) x += 0.0;  // no negative zeros in the file
     csv_.row(row);
   };
   std::vector<ascii::EloutSolid> es;

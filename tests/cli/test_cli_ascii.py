@@ -141,6 +141,27 @@ class Case(TempDirTest):
         self.run_ok("run", deck, "-o", out, "-q", "--threads", "1", *extra)
         return out
 
+    def assertReaderAgrees(self, out, at_least, rtol=6e-5):
+        """Every curve lsdyna.py reads from the ASCII files that the CSVs also hold: the same
+        times and values, to the five significant digits LS-DYNA prints (`rtol`: fewer, as
+        elout's beam resultants E11.3)."""
+        from crumple_compare import crumple_csv, lsdyna
+        theirs = lsdyna.read_folder(out)
+        ours = crumple_csv.read_folder(out)
+        compared = 0
+        for key, c in ours.items():
+            if key not in theirs:
+                continue
+            d = theirs[key]
+            self.assertEqual(len(d.t), len(c.t), key)
+            np.testing.assert_allclose(d.t, c.t, rtol=6e-5, atol=0, err_msg=key)
+            scale = max(np.max(np.abs(c.y)), 1e-30)
+            # Five significant digits, and LS-DYNA's E13.4 in matsum.
+            np.testing.assert_allclose(d.y, c.y, rtol=rtol, atol=1e-4 * scale, err_msg=key)
+            compared += 1
+        self.assertGreaterEqual(compared, at_least, sorted(theirs))
+        return theirs
+
     def assertSameBytesAtRanks(self, text, names):
         """The files `names` of the deck `text` run on 1, 2 and 3 ranks are the same bytes."""
         exe = shutil.which("mpirun")
@@ -160,14 +181,14 @@ class Case(TempDirTest):
             self.assertEqual(data[0], data[1], name)
             self.assertEqual(data[0], data[2], name)
 
-    def assertRestartContinues(self, text, names):
-        """A run of `text` (which asks for dumps) stopped after 900 cycles and restarted from
-        its last dump writes the files `names` as the uninterrupted run."""
+    def assertRestartContinues(self, text, names, cycles=900):
+        """A run of `text` (which asks for dumps) stopped after `cycles` cycles and restarted
+        from its last dump writes the files `names` as the uninterrupted run."""
         deck = self.write("deck.k", text)
         full = os.path.join(self.tmp, "full")
         self.run_ok("run", deck, "-o", full, "-q")
         part = os.path.join(self.tmp, "part")
-        self.run_ok("run", deck, "-o", part, "-q", "--cycles", "900")
+        self.run_ok("run", deck, "-o", part, "-q", "--cycles", str(cycles))
         dumps = sorted(f for f in os.listdir(part) if f.startswith("d3dump_"))
         self.assertTrue(dumps, os.listdir(part))
         self.run_ok("run", deck, "-o", part, "-q", "--restart", os.path.join(part, dumps[-1]))
@@ -263,26 +284,6 @@ class SectionPhysics(Case):
 
 
 class FilesAndReader(Case):
-    def assertReaderAgrees(self, out, at_least):
-        """Every curve lsdyna.py reads from the ASCII files that the CSVs also hold: the same
-        times and values, to the five significant digits LS-DYNA prints."""
-        from crumple_compare import crumple_csv, lsdyna
-        theirs = lsdyna.read_folder(out)
-        ours = crumple_csv.read_folder(out)
-        compared = 0
-        for key, c in ours.items():
-            if key not in theirs:
-                continue
-            d = theirs[key]
-            self.assertEqual(len(d.t), len(c.t), key)
-            np.testing.assert_allclose(d.t, c.t, rtol=6e-5, atol=0, err_msg=key)
-            scale = max(np.max(np.abs(c.y)), 1e-30)
-            # Five significant digits, and LS-DYNA's E13.4 in matsum.
-            np.testing.assert_allclose(d.y, c.y, rtol=6e-5, atol=1e-4 * scale, err_msg=key)
-            compared += 1
-        self.assertGreaterEqual(compared, at_least, sorted(theirs))
-        return theirs
-
     def test_walls_nodes_and_energies(self):
         # The loads-and-constraints deck: a moving rigid wall (rwforc, the glstat stonewall
         # line), history nodes, two parts.

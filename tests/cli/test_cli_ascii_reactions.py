@@ -289,21 +289,11 @@ class Parallel(Case):
 
 class Restart(Case):
     def test_restart_continues_the_files(self):
-        deck = self.write("plate.k", with_keywords(
-            test_cli_d3plot.pulled_plate(),
-            "*DATABASE_SPCFORC\n      0.05\n*DATABASE_BNDOUT\n      0.05\n"
-            "*DATABASE_BINARY_D3DUMP\n     150.0\n"))
-        full = os.path.join(self.tmp, "full")
-        self.run_ok("run", deck, "-o", full, "-q")
-        part = os.path.join(self.tmp, "part")
-        self.run_ok("run", deck, "-o", part, "-q", "--cycles", "400")
-        dumps = sorted(f for f in os.listdir(part) if f.startswith("d3dump_"))
-        self.assertTrue(dumps, os.listdir(part))
-        self.run_ok("run", deck, "-o", part, "-q", "--restart", os.path.join(part, dumps[-1]))
-        for name in ("spcforc", "spcforc.csv", "bndout", "bndout.csv"):
-            a = open(os.path.join(full, name), "rb").read()
-            b = open(os.path.join(part, name), "rb").read()
-            self.assertEqual(a, b, name)
+        self.assertRestartContinues(
+            with_keywords(test_cli_d3plot.pulled_plate(),
+                          "*DATABASE_SPCFORC\n      0.05\n*DATABASE_BNDOUT\n      0.05\n"
+                          "*DATABASE_BINARY_D3DUMP\n     150.0\n"),
+            ("spcforc", "spcforc.csv", "bndout", "bndout.csv"), cycles=400)
 
 
 if __name__ == "__main__":

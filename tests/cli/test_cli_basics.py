@@ -141,29 +141,29 @@ class InputErrors(clitest.TempDirTest):
 class Strict(clitest.TempDirTest):
     def setUp(self):
         super().setUp()
-        text = one_brick_deck().replace("*END\n", "*DATABASE_ELOUT\n      0.01\n*END\n")
+        text = one_brick_deck().replace("*END\n", "*DATABASE_SSSTAT\n      0.01\n*END\n")
         self.write("unsup.k", text)
-        self.elout_line = text.splitlines().index("*DATABASE_ELOUT") + 1
+        self.unsup_line = text.splitlines().index("*DATABASE_SSSTAT") + 1
 
     def test_run_without_strict_warns_and_runs(self):
         p = crumple("run", "unsup.k", "-q", "-o", "out", cwd=self.tmp)
         self.assertEqual(p.returncode, 0, describe(p))
-        self.assertIn("*DATABASE_ELOUT", p.stderr, describe(p))
+        self.assertIn("*DATABASE_SSSTAT", p.stderr, describe(p))
         with open(os.path.join(self.tmp, "out", "run.log"), encoding="utf-8") as f:
-            self.assertIn("*DATABASE_ELOUT", f.read())
+            self.assertIn("*DATABASE_SSSTAT", f.read())
 
     def test_run_strict_refuses(self):
         p = crumple("run", "unsup.k", "--strict", "-q", "-o", "out", cwd=self.tmp)
         self.assertEqual(p.returncode, 1, describe(p))
         self.assertIn("--strict", p.stderr, describe(p))
-        self.assertIn("*DATABASE_ELOUT", p.stderr, describe(p))
-        self.assertIn(f"unsup.k:{self.elout_line}", p.stderr, describe(p))
+        self.assertIn("*DATABASE_SSSTAT", p.stderr, describe(p))
+        self.assertIn(f"unsup.k:{self.unsup_line}", p.stderr, describe(p))
         self.assertFalse(os.path.exists(os.path.join(self.tmp, "out", "summary.json")))
 
     def test_check_strict_refuses(self):
         p = crumple("check", "unsup.k", "--strict", cwd=self.tmp)
         self.assertEqual(p.returncode, 1, describe(p))
-        self.assertIn("*DATABASE_ELOUT", p.stdout, describe(p))
+        self.assertIn("*DATABASE_SSSTAT", p.stdout, describe(p))
         self.assertIn("--strict", p.stderr, describe(p))
 
     def test_strict_accepts_a_clean_deck(self):
@@ -200,7 +200,7 @@ class Check(clitest.TempDirTest):
 
     def test_check_lists_unsupported_keywords(self):
         text = one_brick_deck().replace(
-            "*END\n", "*DATABASE_ELOUT\n      0.01\n*DATABASE_BINARY_D3THDT\n      0.01\n"
+            "*END\n", "*DATABASE_SSSTAT\n      0.01\n*DATABASE_BINARY_D3THDT\n      0.01\n"
             "*CONTROL_PARALLEL\n         1\n*END\n")
         self.write("unsup.k", text)
         lines = text.splitlines()
@@ -210,7 +210,7 @@ class Check(clitest.TempDirTest):
         self.assertRegex(p.stdout, r"(?m)^solid elements: 1$")
         self.assertRegex(p.stdout, r"(?m)^total mass: 7\.85e-0?6$", describe(p))
         self.assertRegex(p.stdout, r"(?m)^initial time step: \S+ \(solid element 1 \(part \d+\), TSSFAC 0\.9\)$")
-        for keyword, reason in (("*DATABASE_ELOUT", "output not written yet"),
+        for keyword, reason in (("*DATABASE_SSSTAT", "output not written yet"),
                                 ("*DATABASE_BINARY_D3THDT", "output not written yet"),
                                 ("*CONTROL_PARALLEL", "MPP/SMP")):
             line = lines.index(keyword) + 1

@@ -166,6 +166,19 @@ class EloutPhysics(Case):
 
 
 class EloutFiles(Case):
+    def test_every_curve_of_the_csv_in_the_ascii_file(self):
+        # crumple_csv keys elout.csv as lsdyna.py keys elout: every curve of a solid, shell
+        # and Hughes-Liu beam history read from both agrees to the digits printed.
+        deck = hughes_liu(cantilever(0.1)).replace(
+            "*PART\n", "*DATABASE_ELOUT\n      25.0\n*DATABASE_HISTORY_BEAM\n         1\n*PART\n")
+        # The beam resultants have four significant digits (E11.3).
+        for name, text, at_least, rtol in (("bar.k", bar_with_elout(), 4 * 7, 6e-5),
+                                           ("strip.k", shell_strip(0.04), 5 * 7, 6e-5),
+                                           ("hl.k", deck, 7 + 4 * 4, 6e-4)):
+            out = self.run_deck(name, text)
+            theirs = self.assertReaderAgrees(out, at_least, rtol)
+            self.assertTrue(any(k.startswith("elout.") for k in theirs))
+
     def test_reader_agrees_with_csv(self):
         from crumple_compare import lsdyna
         out = self.run_deck("bar.k", bar_with_elout())

@@ -522,7 +522,7 @@ TEST(BuildUnsupported, CountsFirstLocationsReasonsAndIgnoredFields) {
   TempDir t;
   const auto p = t.write("u.k", kMesh +
                                     "*CONTACT_FORCE_TRANSDUCER_PENALTY\n1\n"
-                                    "*DATABASE_ELOUT\n0.1\n"
+                                    "*DATABASE_BINARY_D3THDT\n0.1\n"
                                     "*contact_force_transducer_penalty\n2\n"
                                     "*CONTROL_IMPLICIT_SOLVER\n1\n"
                                     "*CONTROL_MPP_IO_NODUMP\n"
