@@ -26,12 +26,6 @@ class Simulation {
     solver = std::make_unique<solver::Solver>(model, sd, comm::world());
     solver->initialize();
   }
-  // From a model the test has read (and possibly amended) itself.
-  explicit Simulation(model::Model m)
-      : model(std::move(m)), sd(domain::buildSerialSubdomain(model)) {
-    solver = std::make_unique<solver::Solver>(model, sd, comm::world());
-    solver->initialize();
-  }
   // The deck `text` written to a fresh file under the test temp folder; returns its path.
   static std::filesystem::path writeDeck(const std::string& name, const std::string& text) {
     const auto dir = std::filesystem::temp_directory_path() / "crumple_verification";

@@ -13,7 +13,6 @@
 
 #include "elements/beam.hpp"
 #include "harness.hpp"
-#include "model/build.hpp"
 
 namespace {
 
@@ -220,17 +219,15 @@ std::string boltDeck() {
   extra += "*CONSTRAINED_NODAL_RIGID_BODY\n        12         0         2\n";
   extra += fmt::format("*DEFINE_CURVE\n         7\n{:20.6g}{:20.6g}\n{:20.6g}{:20.6g}\n", 0.0, 0.0,
                        kRamp, 1.0);
+  extra += fmt::format(
+      "*SET_BEAM\n         3\n       100\n*INITIAL_AXIAL_FORCE_BEAM\n"
+      "         3         7{:10.4g}         0\n",
+      kBoltForce);
   return crumple::testing::brickDeck(2, 2, 4, kWidth, kWidth, kColumn, extra);
 }
 
 TEST(VerificationSpotweld, BoltPreloadCompressesTheBlocks) {
-  auto model = crumple::model::readModel(Simulation::writeDeck("spotweld_bolt", boltDeck()));
-  crumple::model::BeamPreload preload;
-  preload.beams = {0};
-  preload.curve = model.curveIndex(7);
-  preload.scale = kBoltForce;
-  model.beam_preloads.push_back(preload);
-  Simulation sim(std::move(model));
+  Simulation sim(Simulation::writeDeck("spotweld_bolt", boltDeck()));
   double force = 0.0, shortening = 0.0, time = 0.0, ramp_error = 0.0;
   sim.run([&](const crumple::solver::Solver& s) {
     const auto& b = sim.sd.beam_blocks[0];
