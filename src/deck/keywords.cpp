@@ -422,6 +422,9 @@ std::vector<KeywordSpec> makeTables() {
                {{"card 1", {I("NSID"), I("NSIDEX"), I("BOXID"), I("IRIGID"), I("ICID")}},
                 {"card 2", {R("VX"), R("VY"), R("VZ"), R("VXR"), R("VYR"), R("VZR")}},
                 {"card 3", {R("VXE"), R("VYE"), R("VZE"), R("VXRE"), R("VYRE"), R("VZRE")}}}});
+  // *INITIAL_AXIAL_FORCE_BEAM (Keyword Manual vol. I): SCALE defaults to 1.
+  t.push_back({"*INITIAL_AXIAL_FORCE_BEAM",
+               {{"card 1", {I("BSID"), I("LCID"), R("SCALE", 1, Z), I("KBEND")}}}});
   t.push_back({"*INITIAL_VELOCITY_NODE",
                {{"card 1",
                  {I("NID"), R("VX"), R("VY"), R("VZ"), R("VXR"), R("VYR"), R("VZR"), I("ICID")}}}});

@@ -157,8 +157,8 @@ struct ShellBlock : BlockBase {
 
 // Beam cross-section (*SECTION_BEAM).
 struct BeamSection {
-  int elform = 2;  // 1 Hughes-Liu, 2 Belytschko-Schwer resultant, 3 truss
-  int cst = 0;     // Hughes-Liu cross-section: 0 rectangular, 1 tubular
+  int elform = 2;  // 1 Hughes-Liu, 2 Belytschko-Schwer resultant, 3 truss, 9 spot weld
+  int cst = 0;     // Hughes-Liu and spot-weld cross-section: 0 rectangular, 1 tubular
   // Hughes-Liu thicknesses at nodes 1, 2: rectangular TS (s direction), TT (t direction);
   // tubular TS outer and TT inner diameter.
   double ts1 = 0, ts2 = 0, tt1 = 0, tt2 = 0;
@@ -195,9 +195,20 @@ struct BeamBlock : BlockBase {
   // The conjugate resultants at the last cycle: axial force, torque, moments about s and t at
   // node 1 and at node 2 (ELFORM 2: the state; ELFORM 1, 3: output).
   std::vector<std::array<double, 6>> resultant;
-  // ELFORM 1, 3: integration point state, point i of element e at point[e * points + i].
+  // ELFORM 1, 3, 9: integration point state, point i of element e at point[e * points + i].
   int points = 0;
   std::vector<materials::FibrePoint> point;
+  // *INITIAL_AXIAL_FORCE_BEAM (ELFORM 9): while t(n) lies before the end of its curve, the
+  // axial force of a preloaded element is the curve's value times SCALE; KBEND keeps the
+  // section's stress gradient (elements/beam.cpp). preload[e] indexes preloads, or
+  // model::kNone (empty: no element of the block is preloaded).
+  struct AxialPreload {
+    std::vector<double> t, force;  // the curve (abscissae ascending)
+    double scale = 1.0;
+    bool kbend = false;
+  };
+  std::vector<AxialPreload> preloads;
+  std::vector<int32_t> preload;
 };
 
 // Discrete springs and dampers (*ELEMENT_DISCRETE, *SECTION_DISCRETE).

@@ -457,7 +457,26 @@ class SubdomainBuilder {
       else
         b.orientation[k] = {std::nan(""), std::nan(""), std::nan("")};
     }
+    addPreloads(b);
     return b;
+  }
+
+  // *INITIAL_AXIAL_FORCE_BEAM of the block's elements (model::BeamPreload): the block keeps
+  // the curves of the preloads that reach it and each element's index into them.
+  void addPreloads(BeamBlock& b) const {
+    for (const auto& p : model.beam_preloads) {
+      int32_t index = model::kNone;
+      for (std::size_t k = 0; k < b.size(); ++k) {
+        if (!std::binary_search(p.beams.begin(), p.beams.end(), b.elem[k])) continue;
+        if (index == model::kNone) {
+          const auto& c = model.curves[static_cast<std::size_t>(p.curve)];
+          index = static_cast<int32_t>(b.preloads.size());
+          b.preloads.push_back({c.x, c.y, p.scale, p.kbend});
+        }
+        if (b.preload.empty()) b.preload.assign(b.size(), model::kNone);
+        b.preload[k] = index;
+      }
+    }
   }
 
   DiscreteBlock discreteBlock(int32_t part_index, const std::vector<int32_t>& elems,

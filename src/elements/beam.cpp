@@ -77,6 +77,7 @@
 #include <variant>
 
 #include "materials/uniaxial.hpp"
+#include "util/curve.hpp"
 #include "util/vec3.hpp"
 
 namespace crumple::elements {
@@ -200,7 +201,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 Section sectionOf(const domain::BeamSection& sec) {
   Section out;
-  if (sec.elform != 1) {
+  if (sec.elform != 1 && sec.elform != 9) {
     out.area = sec.a;
     out.iss = sec.iss;
     out.itt = sec.itt;
@@ -208,8 +209,8 @@ Section sectionOf(const domain::BeamSection& sec) {
     out.points = sec.elform == 3 ? 1 : 0;
     return out;
   }
-  // Hughes-Liu: the section at mid-length (one point along the axis); TS2, TT2 default to
-  // TS1, TT1 (LS-DYNA *SECTION_BEAM).
+  // Hughes-Liu and spot weld: the section at mid-length (one point along the axis); TS2, TT2
+  // default to TS1, TT1 (LS-DYNA *SECTION_BEAM).
   const double ts = 0.5 * (sec.ts1 + (sec.ts2 > 0.0 ? sec.ts2 : sec.ts1));
   const double tt = 0.5 * (sec.tt1 + (sec.tt2 > 0.0 ? sec.tt2 : sec.tt1));
   if (sec.cst == 1) {
@@ -315,6 +316,93 @@ void returnResultants(std::array<double, 6>& R, const ResultantCapacity& cap) {
   R[3] *= b1;
   R[4] *= b2;
   R[5] *= b2;
+}
+
+// The axial force a preloaded element carries at t(n) (*INITIAL_AXIAL_FORCE_BEAM), or NaN
+// once its curve has ended (the preload is complete: LS-DYNA Keyword Manual, "when the load
+// curve ends ... the initialization is assumed to be completed") or for an element without
+// one.
+double preloadForce(const domain::BeamBlock& blk, std::size_t e) {
+  if (blk.preload.empty() || blk.preload[e] < 0) return std::nan("");
+  const auto& p = blk.preloads[static_cast<std::size_t>(blk.preload[e])];
+  if (!(blk.time < p.t.back())) return std::nan("");
+  double value = 0.0, slope = 0.0;
+  util::valueAndSlope(p.t, p.force, std::max(blk.time, p.t.front()), value, slope);
+  return p.scale * value;
+}
+
+// Sets the axial stress of the section's points so that they carry the preload force: all the
+// same (KBEND = 0, no bending stiffness during the preload) or shifted by a common amount,
+// which keeps the gradient the bending gave them (KBEND = 1).
+void applyPreload(materials::FibrePoint* pts, const Section& sec, double force, bool kbend) {
+  const auto npt = static_cast<std::size_t>(sec.points);
+  double carried = 0.0;
+  for (std::size_t i = 0; i < npt; ++i) carried += sec.w[i] * pts[i].sig;
+  const double shift = (force - carried) / sec.area;
+  for (std::size_t i = 0; i < npt; ++i) pts[i].sig = kbend ? pts[i].sig + shift : force / sec.area;
+}
+
+// One step of the section's points (Hughes-Liu, spot weld) from the increments dd of the
+// corotational deformation: strains at the points, the law (and a preload), the section
+// integrals into blk.resultant[e], the work into blk.e_int[e]. True when a point has failed.
+bool integrateSection(domain::BeamBlock& blk, std::size_t e, const materials::FibreLaw& law,
+                      const Section& sec, const std::array<double, 6>& dd, double dt) {
+  const double L0 = blk.length0[e], shrf = blk.section.shear_factor;
+  const auto npt = static_cast<std::size_t>(blk.points);
+  const double deps0 = dd[0] / L0, dkr = dd[1] / L0;
+  const double dks = (dd[4] - dd[2]) / L0, dkt = (dd[5] - dd[3]) / L0;
+  const double dgs = -0.5 * shrf * (dd[3] + dd[5]);
+  const double dgt = 0.5 * shrf * (dd[2] + dd[4]);
+  materials::FibrePoint* pts = &blk.point[e * npt];
+  std::array<double, 25> so{}, tso{}, tto{}, des{}, dgss{}, dgts{};
+  bool failed = false;
+  for (std::size_t i = 0; i < npt; ++i) {
+    const double s = sec.s[i], t = sec.t[i];
+    des[i] = deps0 - s * dkt + t * dks;
+    dgss[i] = dgs - t * dkr;
+    dgts[i] = dgt + s * dkr;
+    materials::FibrePoint& p = pts[i];
+    so[i] = p.sig;
+    tso[i] = p.tau_s;
+    tto[i] = p.tau_t;
+    failed = materials::updateFibre(law, p, des[i], dgss[i], dgts[i], dt) || failed;
+  }
+  const double preload = preloadForce(blk, e);
+  if (std::isfinite(preload))
+    applyPreload(pts, sec, preload, blk.preloads[static_cast<std::size_t>(blk.preload[e])].kbend);
+  double N = 0.0, Ms = 0.0, Mt = 0.0, Qs = 0.0, Qt = 0.0, T = 0.0, work = 0.0;
+  for (std::size_t i = 0; i < npt; ++i) {
+    const double s = sec.s[i], t = sec.t[i], wa = sec.w[i];
+    const materials::FibrePoint& p = pts[i];
+    work += wa * (0.5 * (so[i] + p.sig) * des[i] + 0.5 * (tso[i] + p.tau_s) * dgss[i] +
+                  0.5 * (tto[i] + p.tau_t) * dgts[i]);
+    N += wa * p.sig;
+    Ms += wa * p.sig * t;
+    Mt -= wa * p.sig * s;
+    Qs += wa * p.tau_s;
+    Qt += wa * p.tau_t;
+    T += wa * (s * p.tau_t - t * p.tau_s);
+  }
+  Qs *= shrf;
+  Qt *= shrf;
+  blk.e_int[e] += work * L0;
+  blk.resultant[e] = {
+      N, T, -Ms + 0.5 * L0 * Qt, -Mt - 0.5 * L0 * Qs, Ms + 0.5 * L0 * Qt, Mt - 0.5 * L0 * Qs};
+  return failed;
+}
+
+// *MAT_SPOTWELD's failure of a weld beam at t(n) from its end resultants R (laws/spotweld.hpp):
+// the time TFAIL, or the resultant criterion with the section forces at mid-length (the
+// integration point: beamSectionResultants' conversion).
+bool weldFails(const materials::ResultantFailure& f, const std::array<double, 6>& R, double L0,
+               double time) {
+  if (f.tfail > 0.0 && time >= f.tfail) return true;
+  if (!f.byResultants()) return false;
+  const double n = std::max(R[0], 0.0), qs = -(R[3] + R[5]) / L0, qt = (R[2] + R[4]) / L0;
+  const double ms = 0.5 * (R[4] - R[2]), mt = 0.5 * (R[5] - R[3]), torque = R[1];
+  const double sum = ratio2(n, f.nrr) + ratio2(qs, f.nrs) + ratio2(qt, f.nrt) +
+                     ratio2(torque, f.mrr) + ratio2(ms, f.mss) + ratio2(mt, f.mtt);
+  return sum >= 1.0;
 }
 
 void noteBad(BlockStatus& st, int32_t elem) {
@@ -437,10 +525,8 @@ BlockStatus beamForces(domain::BeamBlock& blk, const materials::FibreLaw& law, c
   const domain::BeamSection& bs = blk.section;
   const int form = bs.elform;
   const double E = law.E, G = law.G;
-  const double shrf = bs.shear_factor;
   const bool resultant_plastic = form == 2 && law.plastic;
   const ResultantCapacity cap = capacityOf(sec, law.sigy);
-  const auto npt = static_cast<std::size_t>(blk.points);
   BlockStatus st;
 
   for (std::size_t e = first; e < last; ++e) {
@@ -519,35 +605,10 @@ BlockStatus beamForces(domain::BeamBlock& blk, const materials::FibreLaw& law, c
         blk.resultant[e] = R;
         writeEndForces(F, length, R, slot);
       } else {
-        // --- Hughes-Liu: strains at the section points, law, section integrals ------------
-        const double deps0 = dd[0] / L0, dkr = dd[1] / L0;
-        const double dks = (dd[4] - dd[2]) / L0, dkt = (dd[5] - dd[3]) / L0;
-        const double dgs = -0.5 * shrf * (dd[3] + dd[5]);
-        const double dgt = 0.5 * shrf * (dd[2] + dd[4]);
-        double N = 0.0, Ms = 0.0, Mt = 0.0, Qs = 0.0, Qt = 0.0, T = 0.0, work = 0.0;
-        materials::FibrePoint* pts = &blk.point[e * npt];
-        for (std::size_t i = 0; i < npt; ++i) {
-          const double s = sec.s[i], t = sec.t[i], wa = sec.w[i];
-          const double de = deps0 - s * dkt + t * dks;
-          const double dg_s = dgs - t * dkr, dg_t = dgt + s * dkr;
-          materials::FibrePoint& p = pts[i];
-          const double so = p.sig, tso = p.tau_s, tto = p.tau_t;
-          failed = materials::updateFibre(law, p, de, dg_s, dg_t, dt) || failed;
-          work += wa * (0.5 * (so + p.sig) * de + 0.5 * (tso + p.tau_s) * dg_s +
-                        0.5 * (tto + p.tau_t) * dg_t);
-          N += wa * p.sig;
-          Ms += wa * p.sig * t;
-          Mt -= wa * p.sig * s;
-          Qs += wa * p.tau_s;
-          Qt += wa * p.tau_t;
-          T += wa * (s * p.tau_t - t * p.tau_s);
-        }
-        Qs *= shrf;
-        Qt *= shrf;
-        blk.e_int[e] += work * L0;
-        R = {
-            N, T, -Ms + 0.5 * L0 * Qt, -Mt - 0.5 * L0 * Qs, Ms + 0.5 * L0 * Qt, Mt - 0.5 * L0 * Qs};
-        blk.resultant[e] = R;
+        // --- Hughes-Liu, spot weld: the section's points through the law ----------------
+        failed = integrateSection(blk, e, law, sec, dd, dt) || failed;
+        R = blk.resultant[e];
+        if (form == 9 && !failed) failed = weldFails(law.weld, R, L0, blk.time);
         if (!failed) writeEndForces(F, length, R, slot);
       }
     }

@@ -14,6 +14,7 @@
 #include "materials/laws/power_law.hpp"
 #include "materials/laws/rigid.hpp"
 #include "materials/laws/soil_foam.hpp"
+#include "materials/laws/spotweld.hpp"
 #include "materials/laws/springs.hpp"
 #include "materials/laws/strain_rate_plasticity.hpp"
 
@@ -24,8 +25,9 @@ struct LawList {};
 
 // The order is the index of a law in archives (restart dumps, the model sent to other ranks):
 // append new laws at the end.
-using AllLaws = LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic,
-                        DamperViscous, SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam,
-                        JohnsonCook, PowerLaw, StrainRatePlasticity, ModifiedPiecewiseLinear>;
+using AllLaws =
+    LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic, DamperViscous,
+            SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam, JohnsonCook, PowerLaw,
+            StrainRatePlasticity, ModifiedPiecewiseLinear, Spotweld>;
 
 }  // namespace crumple::materials

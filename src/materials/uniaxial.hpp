@@ -37,6 +37,17 @@ struct FibrePoint {
   double alpha = 0.0, alpha_s = 0.0, alpha_t = 0.0;  // back stress (MAT_003), same components
 };
 
+// The force-resultant and time failure of *MAT_SPOTWELD on spot-weld beams
+// (laws/spotweld.hpp): the axial and shear forces, the torque and the bending moments at
+// which the weld fails (0: that term left out), and the failure time (0: none).
+struct ResultantFailure {
+  double nrr = 0.0, nrs = 0.0, nrt = 0.0, mrr = 0.0, mss = 0.0, mtt = 0.0;
+  double tfail = 0.0;
+  bool byResultants() const {
+    return nrr > 0.0 || nrs > 0.0 || nrt > 0.0 || mrr > 0.0 || mss > 0.0 || mtt > 0.0;
+  }
+};
+
 // A law's parameters as the fibre update uses them.
 struct FibreLaw {
   double E = 0.0, G = 0.0;  // Young's and shear modulus
@@ -58,7 +69,8 @@ struct FibreLaw {
   RateTable table;
   // MAT_019 LC1: the initial yield stress vs the strain rate (sigy unused); empty: none.
   RateCurve sigy_rate;
-  double fail = 0.0;  // effective plastic strain at failure; 0: none
+  double fail = 0.0;      // effective plastic strain at failure; 0: none
+  ResultantFailure weld;  // *MAT_SPOTWELD only (the beam kernel checks it)
 };
 
 // Static yield stress at an effective plastic strain (Hi and the curve; no rate factor; with a

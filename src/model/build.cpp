@@ -391,6 +391,7 @@ const std::vector<Meaning>& meanings() {
       {"*INITIAL_VELOCITY", 6, readInitialVelocity, {}, U::Reject},
       {"*INITIAL_VELOCITY_NODE", 6, readInitialVelocityNode, {}, U::Reject},
       {"*INITIAL_VELOCITY_GENERATION", 6, readInitialVelocityGeneration, {}, U::Reject},
+      {"*INITIAL_AXIAL_FORCE_BEAM", 6, readInitialAxialForceBeam, {}, U::Reject},
       {"*LOAD_NODE", 6, readLoadNode, {"POINT", "SET"}, U::Reject},
       {"*ELEMENT_MASS", 6, readElementMass, {}, U::Reject},
       {"*LOAD_SEGMENT", 6, readLoadSegment, {}, U::Reject},

@@ -472,3 +472,56 @@ void finishConditions(Context& ctx) {
 }
 
 }  // namespace crumple::model::build
+
+namespace crumple::model::build {
+
+namespace {
+
+// The preload applies to spot-weld beams (ELFORM 9) of *MAT_SPOTWELD (Keyword Manual,
+// *INITIAL_AXIAL_FORCE_BEAM); a beam of the set that is not one, or that an earlier preload
+// already holds, makes the card an error naming it.
+void checkPreloadedBeams(Context& ctx, const deck::Card& c, const std::vector<int32_t>& beams) {
+  const Model& m = ctx.model;
+  for (int32_t b : beams) {
+    const Part& part = m.parts[static_cast<std::size_t>(m.beams.part[static_cast<std::size_t>(b)])];
+    const bool weld =
+        part.section != kNone && part.material != kNone &&
+        m.beam_sections[static_cast<std::size_t>(part.section)].elform == 9 &&
+        std::string_view(materialKeyword(
+            m.materials[static_cast<std::size_t>(part.material)].law)) == "*MAT_SPOTWELD";
+    const std::string label = "beam " + std::to_string(m.beams.id[static_cast<std::size_t>(b)]);
+    if (!weld)
+      c.fail("BSID", label + " (part " + std::to_string(part.id) +
+                         ") is not a spot-weld beam (*SECTION_BEAM ELFORM 9 with *MAT_SPOTWELD), "
+                         "the only beams the preload applies to");
+    for (const auto& p : m.beam_preloads)
+      if (std::binary_search(p.beams.begin(), p.beams.end(), b))
+        c.fail("BSID", label + " is already preloaded at " + p.where.str());
+  }
+}
+
+}  // namespace
+
+// *INITIAL_AXIAL_FORCE_BEAM: BSID a *SET_BEAM, LCID the force vs time, SCALE its factor, KBEND
+// 0 or 1 (model::BeamPreload; the kernel in src/elements/beam.cpp).
+void readInitialAxialForceBeam(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*INITIAL_AXIAL_FORCE_BEAM").card("card 1");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec);
+    BeamPreload p;
+    p.where = c.where();
+    p.beams = ctx.elementSet(Family::Beam, c, "BSID", c.integer("BSID"));
+    std::sort(p.beams.begin(), p.beams.end());
+    p.curve = ctx.curve(c, "LCID", c.integer("LCID"));
+    p.scale = c.real("SCALE");
+    const auto kbend = c.integer("KBEND");
+    if (kbend != 0 && kbend != 1) c.fail("KBEND", "must be 0 or 1");
+    p.kbend = kbend == 1;
+    checkPreloadedBeams(ctx, c, p.beams);
+    ctx.model.beam_preloads.push_back(std::move(p));
+    ctx.collect(cur);
+  }
+}
+
+}  // namespace crumple::model::build

@@ -353,6 +353,7 @@ std::optional<std::pair<int, double>> translationAxis(Context& ctx, const deck::
 void readInitialVelocity(Context&, const deck::Keyword&, const KeywordOptions&);
 void readInitialVelocityNode(Context&, const deck::Keyword&, const KeywordOptions&);
 void readInitialVelocityGeneration(Context&, const deck::Keyword&, const KeywordOptions&);
+void readInitialAxialForceBeam(Context&, const deck::Keyword&, const KeywordOptions&);
 void readLoadNode(Context&, const deck::Keyword&, const KeywordOptions&);
 void readElementMass(Context&, const deck::Keyword&, const KeywordOptions&);
 void readLoadSegment(Context&, const deck::Keyword&, const KeywordOptions&);

@@ -337,6 +337,20 @@ void readParts(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts
   }
 }
 
+// *MAT_SPOTWELD runs only on spot-weld beams (ELFORM 9): its resultant and time failure live
+// in that kernel; its solid (hexahedral) welds are not supported. False (reported) otherwise.
+bool spotweldOnWeldBeam(Context& ctx, const Part& p, const Material& m) {
+  if (std::string_view(materialKeyword(m.law)) != "*MAT_SPOTWELD") return true;
+  const bool weld_beam = p.section_kind == SectionKind::Beam &&
+                         ctx.model.beam_sections[static_cast<std::size_t>(p.section)].elform == 9;
+  if (!weld_beam)
+    ctx.fail(p.where.str() + ": *PART card 2 field 3 (MID): part " + std::to_string(p.id) +
+             " has material " + std::to_string(m.id) +
+             " (*MAT_SPOTWELD), which Crumple runs only on spot-weld beams (*SECTION_BEAM "
+             "ELFORM 9); solid spot welds and other beam formulations are not supported");
+  return weld_beam;
+}
+
 void finishParts(Context& ctx) {
   auto& parts = ctx.model.parts;
   const auto order = ascending(parts.size(), [&](std::size_t i) { return parts[i].id; });
@@ -371,6 +385,8 @@ void finishParts(Context& ctx) {
                " has " + sectionName(p.section_kind) + " section but material " +
                std::to_string(m.id) + " (" + materialKeyword(m.law) + ") has no " +
                updateName(p.section_kind));
+    else if (!spotweldOnWeldBeam(ctx, p, m))
+      continue;
     else if (ctx.part_problem[i].empty())  // an unusable EOSID is that part's problem
       checkPartEos(ctx, p);
   }

@@ -217,16 +217,17 @@ void readSectionBeam(Context& ctx, const deck::Keyword& kw, const KeywordOptions
     s.id = positiveId(c, "SECID");
     s.where = c.where();
     const auto elform = c.integer("ELFORM");
-    if (elform < 1 || elform > 3) {
+    if ((elform < 1 || elform > 3) && elform != 9) {
       // The second card's layout depends on ELFORM; skip it with the definition.
       if (!cur.atEnd()) cur.read(spec.card("resultant card"));
       ctx.define(Kind::Section, s.id, c, "SECID");
       ctx.defineUnsupported(Kind::Section, s.id, kw.name + " ELFORM=" + std::to_string(elform),
                             c.where());
-      ctx.reportUnsupported(kw,
-                            "ELFORM " + std::to_string(elform) +
-                                " not supported (1 Hughes-Liu, 2 resultant, 3 truss are)",
-                            false);
+      ctx.reportUnsupported(
+          kw,
+          "ELFORM " + std::to_string(elform) +
+              " not supported (1 Hughes-Liu, 2 resultant, 3 truss, 9 spot weld are)",
+          false);
       ctx.collect(cur);
       continue;
     }
@@ -237,7 +238,9 @@ void readSectionBeam(Context& ctx, const deck::Keyword& kw, const KeywordOptions
     if (c.real("SCOOR") != 0)
       ctx.reject(c, "SCOOR", "offset beam reference axes (SCOOR) are not supported");
     if (c.real("NSM") != 0) ctx.reject(c, "NSM", "non-structural mass is not supported");
-    if (s.elform == 1) {
+    // ELFORM 9, the spot-weld beam, takes the integrated beam's section card (CST 0 rectangle
+    // TS x TT, 1 circle of outer diameter TS and inner TT; Keyword Manual *SECTION_BEAM).
+    if (s.elform == 1 || s.elform == 9) {
       const Card& c2 = cur.read(spec.card("integrated card"));
       if (s.cst != 0 && s.cst != 1)
         ctx.reject(c, "CST", "only rectangular (0) and tubular (1) cross-sections are supported");

@@ -110,9 +110,9 @@ struct SectionShell {
   util::SourceLoc where;
 };
 
-// *SECTION_BEAM: ELFORM 1 Hughes-Liu (CST 0 rectangular, 1 tubular: TS/TT thicknesses or
-// outer/inner diameters at the two ends), 2 Belytschko-Schwer resultant and 3 truss (A, ISS,
-// ITT, J, SA).
+// *SECTION_BEAM: ELFORM 1 Hughes-Liu and 9 spot weld (CST 0 rectangular, 1 tubular: TS/TT
+// thicknesses or outer/inner diameters at the two ends), 2 Belytschko-Schwer resultant and 3 truss
+// (A, ISS, ITT, J, SA).
 struct SectionBeam {
   int64_t id = 0;
   int elform = 1;
@@ -332,6 +332,17 @@ struct Controls {
 
 // *DATABASE_CROSS_SECTION_PLANE (Keyword Manual Vol. I): a plane through `center` with
 // normal `normal` (XCT.. to XCH..), bounded (LENL, LENM > 0) in the directions `l` (towards
+// *INITIAL_AXIAL_FORCE_BEAM: the axial preload of spot-weld beams (ELFORM 9): the force vs
+// time curve (model curve index) times SCALE while the curve lasts; KBEND 1 keeps the
+// section's bending stress gradient (src/elements/beam.cpp).
+struct BeamPreload {
+  std::vector<int32_t> beams;  // beam indices (the *SET_BEAM BSID), ascending
+  int32_t curve = kNone;
+  double scale = 1.0;
+  bool kbend = false;
+  util::SourceLoc where;
+};
+
 // XHEV..) and m = n x l, or to a circle of RADIUS about the tail; PSID's parts (empty: every part).
 // The elements cut and the nodes of the cut are found from the initial geometry
 // (src/output/sections.hpp).
@@ -427,6 +438,7 @@ struct Model {
   // ascending (elout lists them in ascending id).
   std::array<std::vector<int32_t>, kFamilies> history_elements;
   std::vector<CrossSection> cross_sections;  // *DATABASE_CROSS_SECTION_PLANE, in deck order
+  std::vector<BeamPreload> beam_preloads;    // *INITIAL_AXIAL_FORCE_BEAM, in deck order
   RigidDefinitions rigid;                    // rigid bodies, spot welds, tied node sets
   std::vector<ContactInterface> contacts;
   ContactControls contact_controls;

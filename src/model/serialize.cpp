@@ -214,6 +214,17 @@ void fields(A& a, M& m) {
       },
       m.cross_sections);
   a.count(
+      m.beam_preloads.size(),
+      [&](auto& p) {
+        util::fieldCount<5>(p);
+        a(p.beams);
+        a(p.curve);
+        a(p.scale);
+        a(p.kbend);
+        loc(a, p.where);
+      },
+      m.beam_preloads);
+  a.count(
       m.rigid.bodies.size(),
       [&](auto& b) {
         util::fieldCount<14>(b);

@@ -221,6 +221,9 @@ void Solver::checkInitialGeometry(int64_t bad) const {
   const char* hint = family == model::Family::Solid
                          ? "check its node ordering (LS-DYNA: nodes 1-4 one face, 5-8 the "
                            "opposite face, right-handed)"
+                     : family == model::Family::Beam
+                         ? "check its nodes (zero-length beams, such as spot welds between "
+                           "coincident nodes, are not supported)"
                          : "check its nodes";
   throw util::NumericalError(
       fmt::format("{} has {} at cycle 0, time 0: {}", elementLabel(g), what, hint));

@@ -233,6 +233,44 @@ TEST(BuildModel, HistoryElementsAndSetCrossSections) {
             std::string::npos);
 }
 
+// *SECTION_BEAM ELFORM 9, *MAT_SPOTWELD and *INITIAL_AXIAL_FORCE_BEAM on a *SET_BEAM; what
+// they refuse.
+TEST(BuildModel, SpotweldBeamsAndTheirPreload) {
+  TempDir t;
+  const std::string weld =
+      "*PART\nweld\n2,2,2\n*SECTION_BEAM\n2,9,1,2,1\n6.0\n"
+      "*MAT_SPOTWELD\n2,7.8e-9,2e5,0.3,300,1000\n0.1,5,6,6\n"
+      "*ELEMENT_BEAM\n40,2,1,27\n41,2,2,28\n*DEFINE_CURVE\n9\n0,0\n1,1\n";
+  const Model m = build(t, weld + "*SET_BEAM\n5\n41\n*INITIAL_AXIAL_FORCE_BEAM\n5,9,2.5,1\n");
+  ASSERT_EQ(m.beam_preloads.size(), 1u);
+  EXPECT_EQ(m.beam_preloads[0].beams, std::vector<int32_t>{1});
+  EXPECT_EQ(m.beam_preloads[0].curve, m.curveIndex(9));
+  EXPECT_DOUBLE_EQ(m.beam_preloads[0].scale, 2.5);
+  EXPECT_TRUE(m.beam_preloads[0].kbend);
+  EXPECT_EQ(m.beam_sections[0].elform, 9);
+  auto err = [&](const std::string& extra) { return errorOf([&] { build(t, extra, "e.k"); }); };
+  auto has = [](const std::string& e, const std::string& what) {
+    return e.find(what) != std::string::npos;
+  };
+  // The weld material on another beam formulation; the preload of a beam that is not a weld,
+  // or of one preloaded twice; the fields Crumple does not do.
+  const std::string hl =
+      "*PART\nhl\n3,3,2\n*SECTION_BEAM\n3,1,1,2,1\n6.0\n*ELEMENT_BEAM\n42,3,3,29\n";
+  EXPECT_TRUE(has(err(weld + hl), "which Crumple runs only on spot-weld beams")) << err(weld + hl);
+  const std::string elastic =
+      "*PART\nhl\n3,3,1\n*SECTION_BEAM\n3,1,1,2,1\n6.0\n"
+      "*ELEMENT_BEAM\n42,3,3,29\n*SET_BEAM\n6\n42\n"
+      "*INITIAL_AXIAL_FORCE_BEAM\n6,9\n";
+  EXPECT_TRUE(has(err(weld + elastic), "beam 42 (part 3) is not a spot-weld beam"));
+  const std::string twice = "*SET_BEAM\n5\n41\n*INITIAL_AXIAL_FORCE_BEAM\n5,9\n5,9\n";
+  EXPECT_TRUE(has(err(weld + twice), "beam 41 is already preloaded"));
+  const std::string dt =
+      "*PART\nweld\n2,2,2\n*SECTION_BEAM\n2,9,1,2,1\n6.0\n"
+      "*MAT_SPOTWELD\n2,7.8e-9,2e5,0.3,300,1000,1e-6\n"
+      "*ELEMENT_BEAM\n40,2,1,27\n";
+  EXPECT_TRUE(has(err(dt), "(DT)")) << err(dt);
+}
+
 TEST(BuildModel, BoundaryConditionsLoadsAndInitialVelocity) {
   TempDir t;
   const Model m = build(t,

@@ -32,7 +32,14 @@ struct Point {
 using Strain = std::array<double, 6>;
 
 void update(const m::Law& law, m::PointBatch& b) {
-  std::visit([&](const auto& l) { l.update(b); }, law);
+  std::visit(
+      [&](const auto& l) {
+        if constexpr (requires { l.update(b); })
+          l.update(b);
+        else
+          FAIL() << "a law without a solid update (beams only)";
+      },
+      law);
 }
 
 // Advances a single point by one step through a batch of one.

@@ -352,7 +352,11 @@ TEST(ShellPlaneStress, ReturnMatchesTheRadialReturnWithTheThicknessStrain) {
       }
       b.eps_p = &ep3;
       b.failed = &failed3;
-      std::visit([&](const auto& l) { l.update(b); }, law);
+      std::visit(
+          [&](const auto& l) {
+            if constexpr (requires { l.update(b); }) l.update(b);
+          },
+          law);
       const double scale = 0.25;
       ASSERT_NEAR(s3[2], 0.0, 1e-11 * scale) << n;
       ASSERT_NEAR(s3[0], p.s[0], 1e-11 * scale) << n;

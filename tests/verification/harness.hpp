@@ -27,18 +27,22 @@ class Simulation {
     solver = std::make_unique<solver::Solver>(model, sd, comm::world());
     solver->initialize();
   }
-  Simulation(const Simulation&) = delete;
-  Simulation& operator=(const Simulation&) = delete;
-
-  // Writes `text` to a fresh file under the test temp folder and reads it.
-  static std::unique_ptr<Simulation> fromText(const std::string& name, const std::string& text) {
+  // The deck `text` written to a fresh file under the test temp folder; returns its path.
+  static std::filesystem::path writeDeck(const std::string& name, const std::string& text) {
     // One folder per process: two suites running at once (worktrees) do not share decks.
     const auto dir = std::filesystem::temp_directory_path() /
                      ("crumple_verification_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     const auto path = dir / (name + ".k");
     std::ofstream(path) << text;
-    return std::make_unique<Simulation>(path);
+    return path;
+  }
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  // Writes `text` to a fresh file under the test temp folder and reads it.
+  static std::unique_ptr<Simulation> fromText(const std::string& name, const std::string& text) {
+    return std::make_unique<Simulation>(writeDeck(name, text));
   }
 
   void run(const std::function<void(const solver::Solver&)>& each_cycle = {}) {
