@@ -242,6 +242,9 @@ class Contact {
   };
   std::vector<EdgePair> edge_pairs_;
   const EdgePair* findEdgePair(int32_t check, int32_t segment) const;
+  // A pair of pass p in contact last cycle whose edges are edges a and b of the pass or their
+  // neighbours (sharing a node), the first in pair order; none if none.
+  const EdgePair* continuedEdgePair(const Pass& p, std::size_t a, std::size_t b) const;
 
   std::vector<Record> records_;     // of the last cycle, in check order
   std::vector<double> stored_;      // per interface: sum of k pen^2 / 2 of the last cycle

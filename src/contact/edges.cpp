@@ -65,6 +65,20 @@ const Contact::EdgePair* Contact::findEdgePair(int32_t check, int32_t segment) c
   return &*it;
 }
 
+const Contact::EdgePair* Contact::continuedEdgePair(const Pass& p, std::size_t a,
+                                                    std::size_t b) const {
+  auto near = [&](std::size_t x, std::size_t y) {
+    const auto &ex = p.seg[x], &ey = p.seg[y];
+    return x == y || ex[0] == ey[0] || ex[0] == ey[1] || ex[1] == ey[0] || ex[1] == ey[1];
+  };
+  for (const EdgePair& e : edge_pairs_) {
+    if (&passes_[std::size_t(check_pass_[std::size_t(e.check)])] != &p) continue;
+    const auto x = std::size_t(e.check - p.first_check), y = std::size_t(e.segment);
+    if ((near(x, a) && near(y, b)) || (near(x, b) && near(y, a))) return &e;
+  }
+  return nullptr;
+}
+
 namespace {
 
 // The closest points of two edges given by their contact nodes, at positions xs.
@@ -86,9 +100,12 @@ std::optional<Record> Contact::edgePair(const Pass& p, int32_t check, std::size_
   Vec3 d = sub(e.p, e.q);
   double dist = norm(d);
   if (!(dist < h)) return std::nullopt;
-  const EdgePair* last = findEdgePair(check, int32_t(s));
   const EdgePoints before = edgePointsAt(x_prev_, a0, a1, b0, b1);
   const Vec3 d_before = sub(before.p, before.q);
+  const EdgePair* last = findEdgePair(check, int32_t(s));
+  // A pair already overlapping a step ago that was not in contact then continues the contact
+  // of a neighbouring pair (the point slid over the node two edges share) when there is one.
+  if (!last && norm(d_before) < h) last = continuedEdgePair(p, k, s);
   // A pair first found inside the sum of the radii (the capsules came together sideways past
   // an end, or overlapped from the start) keeps the overlap it had a step before as its entry
   // offset, so that the force starts from zero rather than with a jump (which makes energy).
