@@ -372,8 +372,9 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
     // CPARM8 1 or 2: AUTOMATIC_GENERAL leaves out beam-to-beam contact within one part
     // (Keyword Manual, *CONTACT, MPP card 1); 2 also lets spot weld beams in, and Crumple
     // takes every beam of the parts in any case.
-    const int64_t cparm8 = mpp.integer("CPARM8");
+    // Read only there: elsewhere the value stays reported as ignored.
     if (name == "*CONTACT_AUTOMATIC_GENERAL") {
+      const int64_t cparm8 = mpp.integer("CPARM8");
       if (cparm8 < 0 || cparm8 > 2)
         ctx.reject(mpp, "CPARM8", "only CPARM8 0, 1 and 2 are supported");
       ci.skip_same_part_edges = cparm8 == 1 || cparm8 == 2;
