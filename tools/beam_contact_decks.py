@@ -120,8 +120,8 @@ def parallel_sliding(overlap, u, length_a=0.2, length_b=0.1, start=-0.03, ssf=0.
     return text + "*END\n"
 
 
-def beam_grids(n=4, end=2e-3, dt_out=1e-4):
-    """Two layers of sticks: n beams along x and, 1.1 D over them, n along y (2 elements
+def beam_grids(n=10, end=1e-3, dt_out=1e-4):
+    """Two layers of sticks: n beams along x and, 1.1 D over them, n along y (4 elements
     each); above them the same turned 45 degrees, falling at 20 m/s (and drifting sideways)
     onto the first, with friction, SOFT = 1 and damping: many pairs, crossing and sliding,
     for the rank determinism test."""
@@ -135,7 +135,7 @@ def beam_grids(n=4, end=2e-3, dt_out=1e-4):
 
     orient = node(0.0, 0.0, 10.0)
 
-    def line(p0, p1, part, segments=2):
+    def line(p0, p1, part, segments=4):
         ids = [node(*[a + (b - a) * k / segments for a, b in zip(p0, p1)])
                for k in range(segments + 1)]
         for a, b in zip(ids, ids[1:]):
