@@ -31,6 +31,7 @@ Contact::Contact(const model::Model& model, domain::Subdomain& sd, comm::Communi
     for (const auto* s : {&ci.a, &ci.b}) {
       cn_model_.insert(cn_model_.end(), s->nodes.begin(), s->nodes.end());
       for (const auto& seg : s->segments) cn_model_.insert(cn_model_.end(), seg.begin(), seg.end());
+      for (const auto& e : s->edges) cn_model_.insert(cn_model_.end(), e.begin(), e.end());
     }
   std::sort(cn_model_.begin(), cn_model_.end());
   cn_model_.erase(std::unique(cn_model_.begin(), cn_model_.end()), cn_model_.end());
@@ -58,7 +59,9 @@ Contact::Contact(const model::Model& model, domain::Subdomain& sd, comm::Communi
         addPass(iface, ci.b, ci.a, ci.sfs, false);
         break;
       case model::ContactKind::SingleSurface:
-        addPass(iface, ci.a, ci.a, ci.sfs, true);
+        // Beam nodes against segments, and beam edges against each other (AUTOMATIC_GENERAL).
+        if (!ci.a.segments.empty()) addPass(iface, ci.a, ci.a, ci.sfs, true);
+        if (!ci.a.edges.empty()) addEdgePass(iface, ci.a, ci.sfs);
         break;
       case model::ContactKind::Tied:
         addPass(iface, ci.a, ci.b, ci.sfm, false);
@@ -203,6 +206,7 @@ void Contact::buildRoutes() {
     const auto check = std::size_t(checks[i]);
     const Pass& p = passes_[std::size_t(check_pass_[check])];
     need[std::size_t(check_node_[check])] = 1;
+    if (p.edges) need[std::size_t(p.node2[check - std::size_t(p.first_check)])] = 1;
     for (int32_t s : search_.candidates(i))
       for (int32_t a : p.seg[std::size_t(s)]) need[std::size_t(a)] = 1;
     if (p.tied && tie_seg_[check] >= 0)
@@ -239,6 +243,7 @@ void Contact::buildRoutes() {
 }
 
 void Contact::sortAll() {
+  refreshEdgeReach();
   search_.sort(passes_, x_);
   x_sorted_ = x_;
 }
@@ -476,6 +481,8 @@ void Contact::initialize(double dt0) {
     const Pass& p = passes_[pass];
     if (p.tied)
       tieNodes(pass, model_.contacts[std::size_t(p.iface)].offset);
+    else if (p.edges)
+      listInitialEdgeOverlaps(pass);
     else
       resolveInitialPenetrations(pass);
   }
@@ -564,6 +571,7 @@ std::vector<Record> Contact::checkContacts(double time, double dt_prev) {
   const auto& active = search_.active();
   const std::size_t n = active.size();
   // Scratch kept between cycles (this is the cycle's hot path): cleared, not reallocated.
+  const auto& checks = partition_.mine();
   auto& tests = check_tests_;
   auto& found = thread_records_;
   tests.assign(n, 0);
@@ -573,10 +581,14 @@ std::vector<Record> Contact::checkContacts(double time, double dt_prev) {
   {
     auto& mine = found[static_cast<std::size_t>(omp_get_thread_num())];
 #pragma omp for schedule(static)
-    for (std::size_t k = 0; k < n; ++k)
-      if (auto r = checkOne(std::size_t(active[k]), time, dt_prev, tests[k])) mine.push_back(*r);
+    for (std::size_t k = 0; k < n; ++k) {
+      const auto i = std::size_t(active[k]);
+      if (passes_[std::size_t(check_pass_[std::size_t(checks[i])])].edges)
+        checkEdges(i, time, dt_prev, tests[k], mine);
+      else if (auto r = checkOne(i, time, dt_prev, tests[k]))
+        mine.push_back(*r);
+    }
   }
-  const auto& checks = partition_.mine();
   for (std::size_t k = 0; k < n; ++k) {
     partition_.addCost(checks[std::size_t(active[k])], tests[k]);
     stats_.tests += tests[k];
@@ -665,9 +677,11 @@ void Contact::gatherRecords(std::vector<Record> mine) {
   } else {
     records_ = std::move(mine);
   }
-  // Canonical order: by check index (each check is computed by one rank, once).
-  std::sort(records_.begin(), records_.end(),
-            [](const Record& a, const Record& b) { return a.check < b.check; });
+  // Canonical order: by check index (each check is computed by one rank, once), then segment
+  // (a beam edge check has a record per edge it touches).
+  std::sort(records_.begin(), records_.end(), [](const Record& a, const Record& b) {
+    return a.check < b.check || (a.check == b.check && a.segment < b.segment);
+  });
 }
 
 void Contact::applyRecords() {
@@ -681,38 +695,50 @@ void Contact::applyRecords() {
     entry_[check] = 0.0;
   }
   in_contact_.clear();
+  edge_pairs_.clear();
   std::fill(stored_.begin(), stored_.end(), 0.0);
-  auto addForce = [&](std::size_t node, const Vec3& f) {
-    const int32_t l = cn_local_[node];
-    if (l < 0) return;
-    for (std::size_t c = 0; c < 3; ++c) sd_.f[3 * std::size_t(l) + c] += f[c];
-  };
   for (const Record& r : records_) {
     const auto check = std::size_t(r.check);
     const Pass& p = passes_[std::size_t(check_pass_[check])];
     const auto seg = std::size_t(r.segment);
     const auto& sn = p.seg[seg];
+    stored_[std::size_t(p.iface)] += r.energy;
+    dissipated_[std::size_t(p.iface)] += r.dissipated;
+    notePenetration(p, r);
+    if (p.edges) {
+      applyEdgeRecord(p, r);
+      continue;
+    }
     for (std::size_t c = 0; c < 3; ++c) friction_[3 * check + c] = r.friction[c];
     last_seg_[check] = r.segment;
     in_contact_.push_back(r.check);
     last_side_[check] = r.side;
     entry_[check] = r.entry;
-    stored_[std::size_t(p.iface)] += r.energy;
-    dissipated_[std::size_t(p.iface)] += r.dissipated;
     // Added on every rank holding the node.
-    addForce(std::size_t(check_node_[check]), r.force);
+    addNodeForce(check_node_[check], r.force);
     for (std::size_t a = 0; a < 4; ++a) {
       if (a == 3 && sn[3] == sn[2]) break;
-      addForce(std::size_t(sn[a]), segmentReaction(r, a));
+      addNodeForce(sn[a], segmentReaction(r, a));
     }
-    // Geometric penetration (with the entry and initial offsets) relative to the contact
-    // thickness (shells) or the element depth (solids).
-    const double h = p.seg_half[seg] + p.node_half[check - std::size_t(p.first_check)];
-    const double ref = h > 0.0 ? 2.0 * h : p.seg_depth[seg];
-    if (ref > 0.0)
-      stats_.max_penetration_ratio = std::max(
-          stats_.max_penetration_ratio, (r.penetration + r.entry + initial_gap_[check]) / ref);
   }
+}
+
+void Contact::addNodeForce(int32_t node, const Vec3& f) {
+  const int32_t l = cn_local_[std::size_t(node)];
+  if (l < 0) return;
+  for (std::size_t c = 0; c < 3; ++c) sd_.f[3 * std::size_t(l) + c] += f[c];
+}
+
+void Contact::notePenetration(const Pass& p, const Record& r) {
+  // Geometric penetration (with the entry and initial offsets) relative to the contact
+  // thickness (shells, beams) or the element depth (solids).
+  const auto check = std::size_t(r.check);
+  const auto seg = std::size_t(r.segment);
+  const double h = p.seg_half[seg] + p.node_half[check - std::size_t(p.first_check)];
+  const double ref = h > 0.0 ? 2.0 * h : p.seg_depth[seg];
+  if (ref > 0.0)
+    stats_.max_penetration_ratio = std::max(stats_.max_penetration_ratio,
+                                            (r.penetration + r.entry + initial_gap_[check]) / ref);
 }
 
 double Contact::energy() const {

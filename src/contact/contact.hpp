@@ -110,6 +110,7 @@ class Contact {
     f(stats_.rebalances);
     f(stats_.max_penetration_ratio);
     f(dt_stiff_);
+    f(edge_pairs_);
   }
   struct Candidate;
   int32_t contactNode(int32_t model_node) const;
@@ -117,6 +118,26 @@ class Contact {
   // SFM).
   void addPass(int32_t iface, const model::ContactSurface& nodes, const model::ContactSurface& segs,
                double sf, bool self);
+  // The checks of the beam edges of `side` (*CONTACT_AUTOMATIC_GENERAL) against each other,
+  // their penalty scaled by sf (docs/theory.md, "Beam edges"; src/contact/edges.cpp).
+  void addEdgePass(int32_t iface, const model::ContactSurface& side, double sf);
+  // Edge passes: the reach of the buckets from the longest edge now (before a sort).
+  void refreshEdgeReach();
+  // The records of active edge check i (an index into partition_.mine()) against its
+  // candidate edges, appended to `out`; `tests` counts the edges tested.
+  void checkEdges(std::size_t i, double time, double dt_prev, int64_t& tests,
+                  std::vector<Record>& out) const;
+  // Edge check `check` against edge s of its pass, if their capsules overlap.
+  std::optional<Record> edgePair(const Pass& p, int32_t check, std::size_t s, double dt_prev) const;
+  // Edge passes before the first cycle: the overlapping pairs, listed as initial
+  // penetrations (kept as entry offsets, the force starting from zero).
+  void listInitialEdgeOverlaps(std::size_t pass);
+  // f added to contact node `node` where this rank holds it.
+  void addNodeForce(int32_t node, const Vec3& f);
+  // The largest penetration ratio of the statistics, with record r of pass p.
+  void notePenetration(const Pass& p, const Record& r);
+  // The forces of an edge record on the four nodes of its pair.
+  void applyEdgeRecord(const Pass& p, const Record& r);
   // Every contact node from its owner (set-up, sorts); the nodes this rank reads (each cycle).
   void gatherNodes();
   void gatherNeeded();
@@ -211,6 +232,19 @@ class Contact {
   bool need_sort_ = true;
   int cycles_since_sort_ = 0;
   int max_sort_interval_ = 0;  // smallest BSORT of the interfaces (0: none)
+
+  // The history of the beam edge pairs in contact last cycle, by (check, segment) ascending:
+  // friction (the elastic stick) and the entry offset a pair began with.
+  struct EdgePair {
+    int32_t check = 0, segment = 0;
+    Vec3 friction{};
+    double entry = 0.0;
+  };
+  std::vector<EdgePair> edge_pairs_;
+  const EdgePair* findEdgePair(int32_t check, int32_t segment) const;
+  // A pair of pass p in contact last cycle whose edges are edges a and b of the pass or their
+  // neighbours (sharing a node), the first in pair order; none if none.
+  const EdgePair* continuedEdgePair(const Pass& p, std::size_t a, std::size_t b) const;
 
   std::vector<Record> records_;     // of the last cycle, in check order
   std::vector<double> stored_;      // per interface: sum of k pen^2 / 2 of the last cycle

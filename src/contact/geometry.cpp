@@ -92,4 +92,73 @@ Projection project(const Vec3& p, const Vec3& x0, const Vec3& x1, const Vec3& x2
   return r;
 }
 
+namespace {
+
+// Axes within this sine squared of parallel are taken as parallel: the denominator
+// |d1|^2 |d2|^2 - (d1.d2)^2 is then round-off.
+constexpr double kParallelSine2 = 1e-10;
+
+double clamp01(double v) {
+  return std::clamp(v, 0.0, 1.0);
+}
+
+// Parallel axes: the middle of the overlap of p's axis with q's along q, or the nearest ends.
+EdgePoints parallelEdgePoints(const Vec3& p0, const Vec3& d1, const Vec3& q0, const Vec3& d2) {
+  const double e = dot(d2, d2);
+  const double along = dot(d1, d2);  // p's axis runs along q (> 0) or against it
+  const double t0 = dot(sub(p0, q0), d2) / e;
+  const double t1 = t0 + along / e;
+  const double lo = std::min(t0, t1), hi = std::max(t0, t1);
+  EdgePoints r;
+  // Overlapping: the middle of the overlap; apart: the end of q nearest to p's axis.
+  if (hi < 0.0)
+    r.t = 0.0;
+  else if (lo > 1.0)
+    r.t = 1.0;
+  else
+    r.t = 0.5 * (std::max(lo, 0.0) + std::min(hi, 1.0));
+  // s of the point of p's axis over q(t), clamped onto p.
+  r.s = clamp01((r.t - t0) * e / along);
+  return r;
+}
+
+}  // namespace
+
+EdgePoints closestEdgePoints(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1) {
+  const Vec3 d1 = sub(p1, p0), d2 = sub(q1, q0), r = sub(p0, q0);
+  const double a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r);
+  EdgePoints out;
+  if (!(a > 0.0) && !(e > 0.0)) {
+    out.p = p0;
+    out.q = q0;
+    return out;
+  }
+  if (!(a > 0.0)) {
+    out.t = clamp01(f / e);
+  } else {
+    const double c = dot(d1, r);
+    if (!(e > 0.0)) {
+      out.s = clamp01(-c / a);
+    } else {
+      const double b = dot(d1, d2);
+      const double denom = a * e - b * b;
+      if (denom <= kParallelSine2 * a * e) {
+        out = parallelEdgePoints(p0, d1, q0, d2);
+      } else {
+        // The unconstrained minimum on p's axis, clamped; then q's point nearest to it,
+        // clamped; and p's again if q's was clamped.
+        out.s = clamp01((b * f - c * e) / denom);
+        out.t = (b * out.s + f) / e;
+        if (out.t < 0.0 || out.t > 1.0) {
+          out.t = clamp01(out.t);
+          out.s = clamp01((b * out.t - c) / a);
+        }
+      }
+    }
+  }
+  out.p = add(p0, scale(d1, out.s));
+  out.q = add(q0, scale(d2, out.t));
+  return out;
+}
+
 }  // namespace crumple::contact

@@ -87,4 +87,17 @@ inline std::optional<SurfaceGap> shellEdgeGap(const Vec3& x, const Projection& p
   return SurfaceGap{dist - h, scale(r, 1.0 / dist), dot(r, pr.normal) >= 0.0 ? 1 : -1};
 }
 
+// The closest points of two segments p0-p1 and q0-q1 (beam axes): p0 + s (p1 - p0) and
+// q0 + t (q1 - q0), s and t in [0, 1] (the classic segment-segment problem, the minimum of
+// |p(s) - q(t)|^2 with clamping to the ends: Lumelsky 1985, "On fast computation of distance
+// between line segments", Inf. Proc. Letters 21; Ericson 2005, "Real-Time Collision
+// Detection", 5.1.9). Parallel axes have a line of closest points: the middle of the part of
+// p's axis over q's is taken, so that two beams lying along each other share the force evenly
+// between their nodes; without overlap, the nearest ends.
+struct EdgePoints {
+  double s = 0.0, t = 0.0;  // parameters on p and q
+  Vec3 p{}, q{};            // the points
+};
+EdgePoints closestEdgePoints(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1);
+
 }  // namespace crumple::contact

@@ -25,6 +25,14 @@ struct Pass {
   std::vector<int32_t> near_ptr, near_node;
   double reach_extra = 0.0;  // largest node + segment half thickness
   double max_node_half = 0.0;
+  // Beam edges (*CONTACT_AUTOMATIC_GENERAL; docs/theory.md, "Beam edges"): a check is an edge
+  // (its first node in `node`, its second in `node2`, its radius in `node_half`) against the
+  // other edges, stored as segments {m0, m1, m0, m1} with their radius in `seg_half`. Each
+  // pair is checked once, by the check of the lower edge index (the same list on both sides).
+  bool edges = false;
+  std::vector<int32_t> node2;
+  std::vector<int32_t> edge_part;  // part of each edge (CPARM8: pairs of one part left out)
+  bool skip_same_part = false;
 };
 
 }  // namespace crumple::contact

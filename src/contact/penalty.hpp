@@ -28,6 +28,9 @@ struct Record {
   double dissipated = 0.0;    // by friction and damping over the last step
   int8_t side = 0;            // shells: the side of the segment the node is on (0: none)
   double entry = 0.0;         // penetration the node already had when the contact began
+  // Beam edges: the contact point's parameter on the check's edge; its nodes take (1 - s) and
+  // s of `force`, the other edge's nodes -N_a force (N = {1 - t, t, 0, 0}).
+  double edge_s = 0.0;
 };
 
 // The fields of a record in wire order (records travel between ranks as doubles, one per
@@ -45,6 +48,7 @@ constexpr void forEachField(R& r, F&& f) {
   f(r.dissipated);
   f(r.side);
   f(r.entry);
+  f(r.edge_s);
 }
 
 constexpr std::size_t recordDoubles() {

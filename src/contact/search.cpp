@@ -123,46 +123,87 @@ void BucketSearch::updateBoxes(const std::vector<Pass>& passes, const std::vecto
   }
 }
 
-void BucketSearch::collectCandidates(const Pass& p, std::size_t pass, int32_t check, double margin,
-                                     const std::vector<double>& x,
-                                     std::vector<int32_t>& out) const {
-  // The segments in the node's bucket and the 26 around it whose widened box, grown by what
-  // node and segment may still travel before the next sort, holds the node.
-  const Grid& g = grids_[pass];
-  const int32_t node = p.node[std::size_t(check - p.first_check)];
-  const Vec3 xn = at(x, std::size_t(node));
+template <class F>
+void BucketSearch::forEachNear(const Grid& g, const Vec3& xn, F&& f) const {
+  // The segments in the point's bucket and the 26 around it.
   std::array<int32_t, 3> k{};
   for (std::size_t i = 0; i < 3; ++i) {
     const double r = (xn[i] - g.lo[i]) / g.cell;
     if (r < -1.0 || r >= double(g.dims[i]) + 1.0) return;
     k[i] = int32_t(std::floor(r));
   }
-  const int32_t* near_begin =
-      p.self ? &p.near_node[std::size_t(p.near_ptr[std::size_t(node)])] : nullptr;
-  const int32_t* near_end =
-      p.self ? &p.near_node[std::size_t(p.near_ptr[std::size_t(node) + 1])] : nullptr;
   for (int32_t cz = std::max(k[2] - 1, 0); cz <= std::min(k[2] + 1, g.dims[2] - 1); ++cz)
     for (int32_t cy = std::max(k[1] - 1, 0); cy <= std::min(k[1] + 1, g.dims[1] - 1); ++cy)
       for (int32_t cx = std::max(k[0] - 1, 0); cx <= std::min(k[0] + 1, g.dims[0] - 1); ++cx) {
         const std::size_t c =
             (std::size_t(cz) * std::size_t(g.dims[1]) + std::size_t(cy)) * std::size_t(g.dims[0]) +
             std::size_t(cx);
-        for (int32_t q = g.cell_ptr[c]; q < g.cell_ptr[c + 1]; ++q) {
-          const auto s = std::size_t(g.cell_seg[std::size_t(q)]);
-          const double* box = &g.box[6 * s];
-          if (xn[0] < box[0] - margin || xn[0] > box[3] + margin || xn[1] < box[1] - margin ||
-              xn[1] > box[4] + margin || xn[2] < box[2] - margin || xn[2] > box[5] + margin)
-            continue;
-          // A node is never in contact with its own segments, nor (single surface) with the
-          // segments next to them.
-          bool skip = false;
-          for (int32_t a : p.seg[s]) {
-            if (a == node) skip = true;
-            if (near_begin && std::binary_search(near_begin, near_end, a)) skip = true;
-          }
-          if (!skip) out.push_back(int32_t(s));
-        }
+        for (int32_t q = g.cell_ptr[c]; q < g.cell_ptr[c + 1]; ++q)
+          f(std::size_t(g.cell_seg[std::size_t(q)]));
       }
+}
+
+void BucketSearch::collectCandidates(const Pass& p, std::size_t pass, int32_t check, double margin,
+                                     const std::vector<double>& x,
+                                     std::vector<int32_t>& out) const {
+  if (p.edges) {
+    collectEdgeCandidates(p, pass, check, margin, x, out);
+    return;
+  }
+  // The segments near the node whose widened box, grown by what node and segment may still
+  // travel before the next sort, holds the node.
+  const Grid& g = grids_[pass];
+  const int32_t node = p.node[std::size_t(check - p.first_check)];
+  const Vec3 xn = at(x, std::size_t(node));
+  const int32_t* near_begin =
+      p.self ? &p.near_node[std::size_t(p.near_ptr[std::size_t(node)])] : nullptr;
+  const int32_t* near_end =
+      p.self ? &p.near_node[std::size_t(p.near_ptr[std::size_t(node) + 1])] : nullptr;
+  forEachNear(g, xn, [&](std::size_t s) {
+    const double* box = &g.box[6 * s];
+    if (xn[0] < box[0] - margin || xn[0] > box[3] + margin || xn[1] < box[1] - margin ||
+        xn[1] > box[4] + margin || xn[2] < box[2] - margin || xn[2] > box[5] + margin)
+      return;
+    // A node is never in contact with its own segments, nor (single surface) with the
+    // segments next to them.
+    bool skip = false;
+    for (int32_t a : p.seg[s]) {
+      if (a == node) skip = true;
+      if (near_begin && std::binary_search(near_begin, near_end, a)) skip = true;
+    }
+    if (!skip) out.push_back(int32_t(s));
+  });
+}
+
+void BucketSearch::collectEdgeCandidates(const Pass& p, std::size_t pass, int32_t check,
+                                         double margin, const std::vector<double>& x,
+                                         std::vector<int32_t>& out) const {
+  // The edges near the check's edge (its middle's bucket and the 26 around it: the reach
+  // holds half the longest edge) whose widened box, grown by the margin, overlaps the edge's
+  // box. Each pair once: only edges of higher index; never an edge sharing a node, nor (CPARM8)
+  // one of the same part.
+  const Grid& g = grids_[pass];
+  const auto k = std::size_t(check - p.first_check);
+  const auto a0 = p.node[k], a1 = p.node2[k];
+  const Vec3 x0 = at(x, std::size_t(a0)), x1 = at(x, std::size_t(a1));
+  double lo[3], hi[3];
+  for (std::size_t i = 0; i < 3; ++i) {
+    lo[i] = std::min(x0[i], x1[i]) - margin;
+    hi[i] = std::max(x0[i], x1[i]) + margin;
+  }
+  const std::size_t first = out.size();
+  forEachNear(g, scale(add(x0, x1), 0.5), [&](std::size_t s) {
+    if (s <= k) return;
+    const double* box = &g.box[6 * s];
+    for (std::size_t i = 0; i < 3; ++i)
+      if (hi[i] < box[i] || lo[i] > box[3 + i]) return;
+    const auto& b = p.seg[s];
+    if (b[0] == a0 || b[0] == a1 || b[1] == a0 || b[1] == a1) return;
+    if (p.skip_same_part && p.edge_part[s] == p.edge_part[k]) return;
+    out.push_back(int32_t(s));
+  });
+  // Ascending, so that a check's records come in the same order whatever the bucket layout.
+  std::sort(out.begin() + std::ptrdiff_t(first), out.end());
 }
 
 void BucketSearch::buildCandidateLists(const std::vector<Pass>& passes,

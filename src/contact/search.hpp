@@ -11,8 +11,11 @@
 #include <vector>
 
 #include "contact/pass.hpp"
+#include "util/vec3.hpp"
 
 namespace crumple::contact {
+
+using util::Vec3;
 
 class BucketSearch {
  public:
@@ -56,6 +59,12 @@ class BucketSearch {
     std::vector<int32_t> cell_ptr, cell_seg;
   };
   void sortBuckets(const Pass& pass, Grid& grid, const std::vector<double>& x) const;
+  // Calls f(segment) for the segments binned in the bucket of xn and the 26 around it.
+  template <class F>
+  void forEachNear(const Grid& g, const Vec3& xn, F&& f) const;
+  // collectCandidates for a pass of beam edges (Pass::edges).
+  void collectEdgeCandidates(const Pass& pass, std::size_t pass_index, int32_t check, double margin,
+                             const std::vector<double>& x, std::vector<int32_t>& out) const;
 
   std::vector<Grid> grids_;  // per pass
   double margin_ = 0.0;

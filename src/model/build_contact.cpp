@@ -157,15 +157,59 @@ std::vector<Segment> partSegments(const Model& m, const std::vector<uint8_t>& in
   return out;
 }
 
+// Contact radius of beam e (*CONTACT_AUTOMATIC_GENERAL takes beams as cylinders): half its
+// part's *PART_CONTACT OPTT (a contact thickness, the diameter), else from its section: half
+// the outer diameter of a tube (ELFORM 1 CST 1, TS1 and TS2 averaged), else the radius of the
+// circle of the section's area (rectangle TS x TT; A of ELFORM 2 and 3). 0 if none is known.
+double beamContactRadius(const Model& m, std::size_t e) {
+  const Part& part = m.parts[std::size_t(m.beams.part[e])];
+  if (part.contact_thickness > 0.0) return 0.5 * part.contact_thickness;
+  if (part.section == kNone) return 0.0;
+  const SectionBeam& sec = m.beam_sections[std::size_t(part.section)];
+  if (sec.elform != 1) return sec.a > 0.0 ? std::sqrt(sec.a / M_PI) : 0.0;
+  const double ts = 0.5 * (sec.ts1 + (sec.ts2 > 0.0 ? sec.ts2 : sec.ts1));
+  const double tt = 0.5 * (sec.tt1 + (sec.tt2 > 0.0 ? sec.tt2 : sec.tt1));
+  if (sec.cst == 1) return 0.5 * ts;
+  return std::sqrt(ts * tt / M_PI);
+}
+
+struct Edge {
+  std::array<int32_t, 2> nodes;
+  double radius, stiffness;
+  int32_t part;
+};
+
+// The beams of the given parts as capsules: radius and penalty stiffness
+// k = SSF K d (d = 2 r), the shell's f K A / (longest diagonal) with the beam's projected area
+// d L over its length L.
+std::vector<Edge> partEdges(const Model& m, const std::vector<uint8_t>& in_part, const Card& c,
+                            std::string_view field) {
+  std::vector<Edge> out;
+  for (std::size_t e = 0; e < m.beams.size(); ++e) {
+    const int32_t p = m.beams.part[e];
+    if (!in_part[std::size_t(p)]) continue;
+    const double r = beamContactRadius(m, e);
+    if (!(r > 0.0))
+      c.fail(field, "part " + std::to_string(m.parts[std::size_t(p)].id) +
+                        ": its beams have no contact radius (no *PART_CONTACT OPTT and no section "
+                        "dimensions)");
+    const double k = m.parts[std::size_t(p)].contact_ssf * bulkModulus(m, p) * 2.0 * r;
+    out.push_back({m.beams.nodes[e], r, k, p});
+  }
+  return out;
+}
+
 // Surface type codes of card 1 (SSTYP / MSTYP, "SURFATYP"): 0 segment set, 2 part set,
 // 3 part, 4 node set, 5 every part, 6 every part but a part set.
 struct Side {
   std::vector<Segment> segments;
+  std::vector<Edge> edges;
   std::vector<int32_t> nodes;
   bool nodes_only = false;
 };
 
-Side readSide(Context& ctx, const Card& c, std::string_view id_field, std::string_view type_field) {
+Side readSide(Context& ctx, const Card& c, std::string_view id_field, std::string_view type_field,
+              bool beam_edges) {
   const Model& m = ctx.model;
   const int64_t id = c.integer(id_field);
   const int64_t type = c.integer(type_field);
@@ -213,6 +257,7 @@ Side readSide(Context& ctx, const Card& c, std::string_view id_field, std::strin
                              "5 all parts, 6 all but a part set)");
   }
   if (type != 0 && type != 4) side.segments = partSegments(m, in_part);
+  if (beam_edges && type != 0 && type != 4) side.edges = partEdges(m, in_part, c, id_field);
   if (!side.nodes_only) {
     for (const auto& s : side.segments)
       side.nodes.insert(side.nodes.end(), s.nodes.begin(), s.nodes.end());
@@ -239,6 +284,8 @@ void applyBox(const Context& ctx, const Card& c, std::string_view field, Side& s
   std::erase_if(side.segments, [&](const Segment& s) {
     return !box.contains(centroid(m, s.nodes.data(), s.nodes[2] == s.nodes[3] ? 3 : 4));
   });
+  std::erase_if(side.edges,
+                [&](const Edge& e) { return !box.contains(centroid(m, e.nodes.data(), 2)); });
 }
 
 ContactSurface makeSurface(const Model& m, const Side& side, double thickness_override) {
@@ -259,6 +306,14 @@ ContactSurface makeSurface(const Model& m, const Side& side, double thickness_ov
   for (std::size_t e = 0; e < m.shells.size(); ++e) {
     const double h = 0.5 * (thickness_override > 0.0 ? thickness_override : shellThickness(m, e));
     for (int32_t n : m.shells.nodes[e]) half[std::size_t(n)] = std::max(half[std::size_t(n)], h);
+  }
+  // A beam node of a capsule side meets segments with the beam's radius (its spherical end).
+  for (const auto& e : side.edges) {
+    s.edges.push_back(e.nodes);
+    s.edge_radius.push_back(e.radius);
+    s.edge_stiffness.push_back(e.stiffness);
+    s.edge_part.push_back(e.part);
+    for (int32_t n : e.nodes) half[std::size_t(n)] = std::max(half[std::size_t(n)], e.radius);
   }
   for (int32_t n : s.nodes) s.node_half_thickness.push_back(half[std::size_t(n)]);
   return s;
@@ -313,7 +368,17 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
     ci.title = idc.text("HEADING");
   }
   if (opts.has("MPP")) {
-    cur.read(spec.card("mpp card 1"));
+    const Card& mpp = cur.read(spec.card("mpp card 1"));
+    // CPARM8 1 or 2: AUTOMATIC_GENERAL leaves out beam-to-beam contact within one part
+    // (Keyword Manual, *CONTACT, MPP card 1); 2 also lets spot weld beams in, and Crumple
+    // takes every beam of the parts in any case.
+    // Read only there: elsewhere the value stays reported as ignored.
+    if (name == "*CONTACT_AUTOMATIC_GENERAL") {
+      const int64_t cparm8 = mpp.integer("CPARM8");
+      if (cparm8 < 0 || cparm8 > 2)
+        ctx.reject(mpp, "CPARM8", "only CPARM8 0, 1 and 2 are supported");
+      ci.skip_same_part_edges = cparm8 == 1 || cparm8 == 2;
+    }
     if (!cur.atEnd() && deck::trim(cur.peek().text).rfind('&', 0) == 0)
       cur.read(spec.card("mpp card 2"));
   }
@@ -357,7 +422,10 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
   if (ci.bsort < 0) ca.fail("BSORT", "must not be negative");
   if (ci.sofscl <= 0) ca.fail("SOFSCL", "must be positive");
 
-  Side a = readSide(ctx, c1, "SSID", "SSTYP");
+  // AUTOMATIC_GENERAL takes beams as capsules, edge against edge (LS-DYNA Keyword Manual,
+  // *CONTACT_AUTOMATIC_GENERAL); the other types take beam nodes as nodes.
+  const bool general = name == "*CONTACT_AUTOMATIC_GENERAL";
+  Side a = readSide(ctx, c1, "SSID", "SSTYP", general);
   applyBox(ctx, c1, "SBOXID", a);
   Side b;
   if (ci.kind == ContactKind::SingleSurface) {
@@ -365,7 +433,7 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
     if (c1.integer("MSID") != 0 || c1.integer("MSTYP") != 0)
       ctx.ignore(kw.name, "MSID", "a single surface has one side", c1.where());
   } else {
-    b = readSide(ctx, c1, "MSID", "MSTYP");
+    b = readSide(ctx, c1, "MSID", "MSTYP", false);
     applyBox(ctx, c1, "MBOXID", b);
     if (b.nodes_only) c1.fail("MSTYP", "the master side needs segments, not a node set");
     if (ci.kind == ContactKind::SurfaceToSurface && a.nodes_only)
@@ -373,12 +441,12 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
     if (b.segments.empty()) c1.fail("MSID", "the master side has no segments");
   }
   if (a.nodes.empty()) c1.fail("SSID", "the slave side has no nodes");
-  if (ci.kind == ContactKind::SingleSurface && a.segments.empty()) {
+  if (ci.kind == ContactKind::SingleSurface && a.segments.empty() && a.edges.empty()) {
     // Beams make no segments: a surface of beams alone asks for beam contact.
     if (ctx.model.beams.size() == 0) c1.fail("SSID", "the surface has no segments");
     ctx.reject(c1, "SSID",
-               "the surface has no segments, only beam nodes: beam-to-beam contact is not "
-               "supported",
+               "the surface has no segments, only beam nodes: beam-to-beam contact is supported "
+               "in *CONTACT_AUTOMATIC_GENERAL only",
                "beam contact");
     throw SkipRecord{};
   }

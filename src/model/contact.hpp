@@ -33,6 +33,13 @@ struct ContactSurface {
   // Per node: half the largest shell thickness at it (0 where only solids meet it), the
   // offset of a node of this side from the mid-surface of the other.
   std::vector<double> node_half_thickness;
+  // *CONTACT_AUTOMATIC_GENERAL: the side's beams as capsules (their axis and a radius;
+  // docs/theory.md, "Beam edges"), checked edge against edge. Per edge: its two model nodes,
+  // radius, penalty stiffness before the scale factors (K d, d the contact diameter) and part.
+  std::vector<std::array<int32_t, 2>> edges;
+  std::vector<double> edge_radius;
+  std::vector<double> edge_stiffness;
+  std::vector<int32_t> edge_part;
 };
 
 enum class ContactKind : uint8_t {
@@ -58,6 +65,8 @@ struct ContactInterface {
   int soft = 0;             // 1: stiffness also from the nodal masses and the time step
   double sofscl = 0.1;
   int bsort = 0;  // at most this many cycles between bucket sorts (0: by travel alone)
+  // MPP card 1 CPARM8 of AUTOMATIC_GENERAL: 1 and 2 leave out beam pairs of one part.
+  bool skip_same_part_edges = false;
   util::SourceLoc where;
 };
 

@@ -308,7 +308,7 @@ void fields(A& a, M& m) {
       },
       m.rigid.loads);
   auto surface = [&](auto& sf) {
-    util::fieldCount<7>(sf);
+    util::fieldCount<11>(sf);
     a(sf.nodes);
     a(sf.segments);
     a(sf.segment_element);
@@ -316,11 +316,15 @@ void fields(A& a, M& m) {
     a(sf.segment_stiffness);
     a(sf.segment_depth);
     a(sf.node_half_thickness);
+    a(sf.edges);
+    a(sf.edge_radius);
+    a(sf.edge_stiffness);
+    a(sf.edge_part);
   };
   a.count(
       m.contacts.size(),
       [&](auto& c) {
-        util::fieldCount<22>(c);
+        util::fieldCount<23>(c);
         a(c.id);
         a(c.title);
         a(c.keyword);
@@ -342,6 +346,7 @@ void fields(A& a, M& m) {
         a(c.soft);
         a(c.sofscl);
         a(c.bsort);
+        a(c.skip_same_part_edges);
         loc(a, c.where);
       },
       m.contacts);

@@ -664,6 +664,35 @@ TEST(BuildContact, MppCardsAreReadInTheirPlace) {
   EXPECT_TRUE(reported("CHKSEGS"));
 }
 
+// *CONTACT_AUTOMATIC_GENERAL takes the beams of its parts as capsules: radius OPTT / 2 of
+// *PART_CONTACT, else half a tube's outer diameter; stiffness SSF x K x 2r (K = E / (3 (1 - 2
+// nu)) = 2e5 / 1.2); MPP CPARM8 1 leaves out pairs of one part. A single surface of beams alone
+// is refused unless it is AUTOMATIC_GENERAL.
+TEST(BuildContact, GeneralContactTakesBeamsAsCapsules) {
+  TempDir t;
+  const std::string beams =
+      "*PART_CONTACT\nrods\n2,2,1\n0,0,0,0,0.5,0,2.0\n*PART\ntubes\n3,2,1\n"
+      "*SECTION_BEAM\n2,1,0.8333,2,1\n0.2,0.2,0,0\n"
+      "*ELEMENT_BEAM\n1,2,1,2,4\n2,3,5,6,8\n3,3,27,28,29\n*SET_PART_LIST\n10\n2,3\n";
+  const Model m = build(t, beams +
+                               "*CONTACT_AUTOMATIC_GENERAL_MPP_ID\n7\n0,200,,,,,,1\n"
+                               "10,0,2,0\n");
+  ASSERT_EQ(m.contacts.size(), 1u);
+  const auto& a = m.contacts[0].a;
+  ASSERT_EQ(a.edges.size(), 3u);
+  EXPECT_TRUE(a.segments.empty());
+  EXPECT_TRUE(m.contacts[0].skip_same_part_edges);
+  const double k = 2e5 / 1.2;
+  EXPECT_DOUBLE_EQ(a.edge_radius[0], 0.25);
+  EXPECT_DOUBLE_EQ(a.edge_stiffness[0], 2.0 * k * 0.5);
+  EXPECT_DOUBLE_EQ(a.edge_radius[2], 0.1);
+  EXPECT_DOUBLE_EQ(a.edge_stiffness[2], k * 0.2);
+  EXPECT_EQ(a.edge_part[1], m.partIndex(3));
+  const std::string error =
+      errorOf([&] { build(t, beams + "*CONTACT_AUTOMATIC_SINGLE_SURFACE\n10,0,2,0\n", "s.k"); });
+  EXPECT_NE(error.find("*CONTACT_AUTOMATIC_GENERAL only"), std::string::npos) << error;
+}
+
 // _DISPLAY adds a drawing part's card at the end of a geometric wall: read, noted, no force.
 TEST(BuildWalls, DisplayCardIsReadAndNoted) {
   TempDir t;
