@@ -98,26 +98,22 @@ def read_folder(folder):
     """Every Crumple history in a results folder; {key: Curve}."""
     if not os.path.isdir(folder):
         raise CompareError("no such folder", folder)
+    def by_id(stem, column, names):
+        # One curve per id and quantity: '<stem>.<column><id>.<quantity>' (matsum.part3.internal).
+        return lambda p: _series(p, [column], names, lambda i, q: f"{stem}.{column}{i[0]}.{q}")
+
     readers = {
         "glstat.csv": lambda p: _series(p, [], mapping.CRUMPLE_GLSTAT,
                                         lambda i, q: f"glstat.{q}"),
-        "matsum.csv": lambda p: _series(p, ["part"], mapping.CRUMPLE_MATSUM,
-                                        lambda i, q: f"matsum.part{i[0]}.{q}"),
-        "nodout.csv": lambda p: _series(p, ["node"], mapping.CRUMPLE_NODOUT,
-                                        lambda i, q: f"nodout.node{i[0]}.{q}"),
-        "rwforc.csv": lambda p: _series(p, ["wall"], mapping.CRUMPLE_RWFORC,
-                                        lambda i, q: f"rwforc.wall{i[0]}.{q}"),
+        "matsum.csv": by_id("matsum", "part", mapping.CRUMPLE_MATSUM),
+        "nodout.csv": by_id("nodout", "node", mapping.CRUMPLE_NODOUT),
+        "rwforc.csv": by_id("rwforc", "wall", mapping.CRUMPLE_RWFORC),
         "rcforc.csv": _rcforc,
-        "secforc.csv": lambda p: _series(p, ["section"], mapping.CRUMPLE_SECFORC,
-                                         lambda i, q: f"secforc.section{i[0]}.{q}"),
-        "spcforc.csv": lambda p: _series(p, ["node"], mapping.CRUMPLE_SPCFORC,
-                                         lambda i, q: f"spcforc.node{i[0]}.{q}"),
-        "bndout.csv": lambda p: _series(p, ["node"], mapping.CRUMPLE_BNDOUT,
-                                        lambda i, q: f"bndout.node{i[0]}.{q}"),
-        "rbdout.csv": lambda p: _series(p, ["body"], mapping.CRUMPLE_RBDOUT,
-                                        lambda i, q: f"rbdout.body{i[0]}.{q}"),
-        "deforc.csv": lambda p: _series(p, ["element"], mapping.CRUMPLE_DEFORC,
-                                        lambda i, q: f"deforc.element{i[0]}.{q}"),
+        "secforc.csv": by_id("secforc", "section", mapping.CRUMPLE_SECFORC),
+        "spcforc.csv": by_id("spcforc", "node", mapping.CRUMPLE_SPCFORC),
+        "bndout.csv": by_id("bndout", "node", mapping.CRUMPLE_BNDOUT),
+        "rbdout.csv": by_id("rbdout", "body", mapping.CRUMPLE_RBDOUT),
+        "deforc.csv": by_id("deforc", "element", mapping.CRUMPLE_DEFORC),
         "elout.csv": _elout,
     }
     curves = {}

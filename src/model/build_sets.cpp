@@ -252,6 +252,21 @@ void readVector(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opt
   ctx.collect(cur);
 }
 
+namespace {
+
+// The right-handed frame with x along ex and z along ez (ez normal to ex), y = z x x.
+Frame frameOf(const Vec3& ex, const Vec3& ez) {
+  Frame f;
+  for (int i = 0; i < 3; ++i) {
+    f.axis[0][i] = ex[i] / norm(ex);
+    f.axis[2][i] = ez[i] / norm(ez);
+  }
+  f.axis[1] = cross(f.axis[2], f.axis[0]);
+  return f;
+}
+
+}  // namespace
+
 // Local x along O->L, z normal to the plane O, L, P, y = z x x (Keyword Manual,
 // *DEFINE_COORDINATE_SYSTEM).
 void readCoordinateSystem(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
@@ -270,13 +285,7 @@ void readCoordinateSystem(Context& ctx, const deck::Keyword& kw, const KeywordOp
   const Vec3 ez = cross(ex, sub({c2.real("XP"), c2.real("YP"), c2.real("ZP")}, o));
   if (norm(ex) == 0.0) c.fail("XL", "the point on the local x axis coincides with the origin");
   if (norm(ez) == 0.0) c2.fail("XP", "the point in the local xy plane lies on the local x axis");
-  Frame f;
-  for (int i = 0; i < 3; ++i) {
-    f.axis[0][i] = ex[i] / norm(ex);
-    f.axis[2][i] = ez[i] / norm(ez);
-  }
-  f.axis[1] = cross(f.axis[2], f.axis[0]);
-  ctx.frames.emplace(id, f);
+  ctx.frames.emplace(id, frameOf(ex, ez));
   ctx.collect(cur);
 }
 
@@ -304,13 +313,7 @@ void readCoordinateNode(Context& ctx, const deck::Keyword& kw, const KeywordOpti
   const Vec3 ez = cross(ex, sub(at("N3"), o));
   if (norm(ex) == 0.0) c.fail("N2", "N2 coincides with N1: the local x axis has no direction");
   if (norm(ez) == 0.0) c.fail("N3", "N3 lies on the local x axis N1-N2");
-  Frame f;
-  for (int i = 0; i < 3; ++i) {
-    f.axis[0][i] = ex[i] / norm(ex);
-    f.axis[2][i] = ez[i] / norm(ez);
-  }
-  f.axis[1] = cross(f.axis[2], f.axis[0]);
-  ctx.frames.emplace(id, f);
+  ctx.frames.emplace(id, frameOf(ex, ez));
   ctx.collect(cur);
 }
 

@@ -576,9 +576,7 @@ void Solver::addExternalWork(double dt_n, constraints::StepWork work) {
       if (!sd_.node_owned[std::size_t(n)]) continue;
       for (int c = 0; c < 3; ++c) {
         const std::size_t i = 3 * std::size_t(n) + std::size_t(c);
-        const auto w = constraints::impulseWork(f[std::size_t(c)] * dt_n, v_old_[i], sd_.v[i]);
-        work.behind -= w.behind;
-        work.ahead -= w.ahead;
+        work += constraints::impulseWork(-f[std::size_t(c)] * dt_n, v_old_[i], sd_.v[i]);
       }
     }
   external_work_ += work.total();
