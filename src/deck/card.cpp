@@ -54,15 +54,24 @@ ParameterLookup numericParameters(const Deck& deck) {
   };
 }
 
-Card::Card(const CardSpec& spec, const DataLine* line, const Keyword& keyword, const Deck& deck)
-    : spec_(&spec),
-      keyword_(&keyword),
-      deck_(&deck),
-      file_(line ? line->file : keyword.file),
-      line_(line ? line->line : keyword.line),
-      values_(spec.fields.size()),
-      used_(spec.fields.size(), false) {
+Card::Card(const CardSpec& spec, const DataLine* line, const Keyword& keyword, const Deck& deck) {
+  assign(spec, line, keyword, deck);
+}
+
+void Card::assign(const CardSpec& spec, const DataLine* line, const Keyword& keyword,
+                  const Deck& deck) {
+  spec_ = &spec;
+  keyword_ = &keyword;
+  deck_ = &deck;
+  file_ = line ? line->file : keyword.file;
+  line_ = line ? line->line : keyword.line;
+  values_.assign(spec.fields.size(), Value{});
+  used_.assign(spec.fields.size(), 0);
+  if (!owned_.empty()) owned_.clear();
+  next_field_ = 0;
+  spaced_ = false;
   if (!line) return;
+  references_ = line->text.find('&') != std::string_view::npos;
   const std::string_view text = line->text;
   if (freeFormat(text)) {
     readFree(text);
@@ -134,11 +143,12 @@ bool Card::outOfColumns(std::string_view text, std::span<const std::string_view>
   std::size_t end = text.size();
   while (end > 0 && (text[end - 1] == ' ' || text[end - 1] == '\t')) --end;
   if (text.substr(0, end).find('\t') != std::string_view::npos) return true;
+  // The fields are trimmed (the caller did it).
   for (std::size_t i = 0; i < fields.size(); ++i) {
     if (spec_->fields[i].type == FieldType::Text) continue;
-    const std::string_view s = trim(fields[i]);
-    const bool blank_inside = std::any_of(s.begin(), s.end(), [](char c) { return c == ' '; }) ||
-                              s.find('\t') != std::string_view::npos;
+    const std::string_view s = fields[i];
+    const bool blank_inside =
+        std::any_of(s.begin(), s.end(), [](char c) { return c == ' ' || c == '\t'; });
     if (blank_inside && s.find('&') == std::string_view::npos) return true;
   }
   return false;
@@ -185,24 +195,28 @@ void Card::parseField(std::size_t i, std::string_view raw) {
   const std::string_view s = trim(raw);
   if (s.empty()) return;
   v.blank = false;
-  v.text = std::string(s);
-  if (const auto ref = plainReference(s)) return resolveReference(i, *ref);
-  if (f.type != FieldType::Text && s.find('&') != std::string_view::npos) {
+  v.text = s;
+  if (references_) {
+    if (const auto ref = plainReference(s)) return resolveReference(i, *ref);
+  }
+  if (references_ && f.type != FieldType::Text && s.find('&') != std::string_view::npos) {
     const double x = evaluateInline(i, s);
-    return setNumber(i, x, "'" + v.text + "' = " + fmtNumber(x));
+    return setNumber(i, x, "'" + std::string(v.text) + "' = " + fmtNumber(x));
   }
   switch (f.type) {
     case FieldType::Text:
       return;  // an expression in a text field (*PARAMETER_EXPRESSION) stays text
     case FieldType::Real: {
       const auto r = parseReal(s);
-      if (!r) throw util::FormatError(context(f.name) + ": '" + v.text + "' is not a number");
+      if (!r)
+        throw util::FormatError(context(f.name) + ": '" + std::string(s) + "' is not a number");
       v.num = *r;
       return;
     }
     case FieldType::Int: {
       const auto k = parseInteger(s);
-      if (!k) throw util::FormatError(context(f.name) + ": '" + v.text + "' is not an integer");
+      if (!k)
+        throw util::FormatError(context(f.name) + ": '" + std::string(s) + "' is not an integer");
       v.inum = *k;
       v.num = static_cast<double>(*k);
       return;
@@ -216,7 +230,7 @@ void Card::resolveReference(std::size_t i, const Reference& ref) {
   if (!p)
     throw util::FormatError(context(f.name) + ": parameter '" + ref.name + "' is not defined");
   if (f.type == FieldType::Text) {
-    values_[i].text = p->type == 'C' ? p->text : fmtNumber(p->value);
+    values_[i].text = own(p->type == 'C' ? p->text : fmtNumber(p->value));
     return;
   }
   if (p->type == 'C')
@@ -242,9 +256,24 @@ void Card::setNumber(std::size_t i, double x, const std::string& what) {
   v.inum = static_cast<int64_t>(x);
 }
 
+std::string_view Card::own(std::string text) {
+  return owned_.emplace_back(std::move(text));
+}
+
 std::size_t Card::index(std::string_view field) const {
-  for (std::size_t i = 0; i < spec_->fields.size(); ++i)
-    if (spec_->fields[i].name == field) return i;
+  // Names are a few characters: a loop, not a call to memcmp per comparison.
+  const auto same = [&](std::string_view name) {
+    if (name.size() != field.size()) return false;
+    for (std::size_t c = 0; c < name.size(); ++c)
+      if (name[c] != field[c]) return false;
+    return true;
+  };
+  const std::size_t n = spec_->fields.size();
+  for (std::size_t k = 0, i = next_field_; k < n; ++k, i = i + 1 == n ? 0 : i + 1) {
+    if (!same(spec_->fields[i].name)) continue;
+    next_field_ = i + 1 == n ? 0 : i + 1;
+    return i;
+  }
   throw std::logic_error("field " + std::string(field) + " is not in " + std::string(spec_->label) +
                          " of " + keyword_->name);
 }
@@ -256,7 +285,7 @@ int64_t Card::integer(std::string_view field) const {
   const Value& v = values_[i];
   if (v.blank || (f.zeroIsDefault() && v.inum == 0)) return static_cast<int64_t>(f.def);
   if (f.type == FieldType::Real) {
-    if (std::trunc(v.num) != v.num) fail(field, "'" + v.text + "' is not an integer");
+    if (std::trunc(v.num) != v.num) fail(field, "'" + std::string(v.text) + "' is not an integer");
     return static_cast<int64_t>(v.num);
   }
   return v.inum;
@@ -275,7 +304,7 @@ std::string Card::text(std::string_view field) const {
   const std::size_t i = index(field);
   used_[i] = true;
   const Value& v = values_[i];
-  return v.blank ? std::string(spec_->fields[i].text_def) : v.text;
+  return std::string(v.blank ? spec_->fields[i].text_def : v.text);
 }
 
 bool Card::blank(std::string_view field) const {
@@ -307,7 +336,7 @@ std::vector<UnusedValue> Card::unusedValues() const {
     const Value& v = values_[i];
     if (used_[i] || v.blank || f.quiet()) continue;
     if (f.type == FieldType::Text) {
-      std::string a = v.text, b(f.text_def);
+      std::string a(v.text), b(f.text_def);
       for (auto* s : {&a, &b})
         std::transform(s->begin(), s->end(), s->begin(),
                        [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
@@ -315,7 +344,7 @@ std::vector<UnusedValue> Card::unusedValues() const {
     } else if (v.num == f.def || (f.zeroIsDefault() && v.num == 0.0)) {
       continue;
     }
-    out.push_back({keyword_->name, std::string(f.name), v.text, where()});
+    out.push_back({keyword_->name, std::string(f.name), std::string(v.text), where()});
   }
   return out;
 }
@@ -332,7 +361,16 @@ const Card& CardCursor::read(const CardSpec& spec) {
   if (atEnd())
     throw util::InputError(deck_->loc(*keyword_).str() + ": " + keyword_->name + " " +
                            std::string(spec.label) + " is missing");
-  return noteSpaced(cards_.emplace_back(spec, &keyword_->lines[next_++], *keyword_, *deck_));
+  return noteSpaced(nextCard(spec, &keyword_->lines[next_++]));
+}
+
+const Card& CardCursor::nextCard(const CardSpec& spec, const DataLine* line) {
+  if (live_ == cards_.size()) {
+    cards_.emplace_back(spec, line, *keyword_, *deck_);
+  } else {
+    cards_[live_].assign(spec, line, *keyword_, *deck_);
+  }
+  return cards_[live_++];
 }
 
 // Once per keyword: the cards after the first are most likely written by the same script.
@@ -351,17 +389,17 @@ std::vector<ReaderNote> CardCursor::takeNotes() {
 }
 
 const Card& CardCursor::readOptional(const CardSpec& spec) {
-  if (atEnd()) return cards_.emplace_back(spec, nullptr, *keyword_, *deck_);
+  if (atEnd()) return nextCard(spec, nullptr);
   return read(spec);
 }
 
 std::vector<UnusedValue> CardCursor::flush() {
   std::vector<UnusedValue> out;
-  for (const Card& c : cards_) {
-    auto u = c.unusedValues();
+  for (std::size_t k = 0; k < live_; ++k) {
+    auto u = cards_[k].unusedValues();
     out.insert(out.end(), u.begin(), u.end());
   }
-  cards_.clear();
+  live_ = 0;  // kept for reuse
   return out;
 }
 

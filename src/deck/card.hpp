@@ -36,6 +36,13 @@ class Card {
   // Parses `line` (nullptr: a card absent from the deck, all fields default). Throws
   // util::InputError for a value that is not of the field's type.
   Card(const CardSpec& spec, const DataLine* line, const Keyword& keyword, const Deck& deck);
+  // The values view the deck's text and the card's own strings: a copy would view the
+  // original's.
+  Card(const Card&) = delete;
+  Card& operator=(const Card&) = delete;
+  // Reads another line into this card, keeping its storage (a list keyword reads one card per
+  // record: no allocation per line).
+  void assign(const CardSpec& spec, const DataLine* line, const Keyword& keyword, const Deck& deck);
 
   // Values after defaulting: a blank field, or 0 in a kZeroIsDefault field, gives the default.
   int64_t integer(std::string_view field) const;
@@ -65,7 +72,7 @@ class Card {
     bool blank = true;
     double num = 0.0;
     int64_t inum = 0;
-    std::string text;
+    std::string_view text;  // into the line, or into owned_
   };
   struct Reference {
     std::string name;
@@ -80,6 +87,8 @@ class Card {
   bool outOfColumns(std::string_view text, std::span<const std::string_view> fields) const;
   bool readSpaced(std::string_view text);
   std::size_t index(std::string_view field) const;
+  // Keeps `text` (a parameter's value) for as long as the card: the value views it.
+  std::string_view own(std::string text);
   void parseField(std::size_t i, std::string_view raw);
   void resolveReference(std::size_t i, const Reference& ref);
   double evaluateInline(std::size_t i, std::string_view s) const;
@@ -91,7 +100,13 @@ class Card {
   const Deck* deck_;
   int32_t file_ = 0, line_ = 0;
   std::vector<Value> values_;
-  mutable std::vector<bool> used_;
+  mutable std::vector<uint8_t> used_;  // bytes: assigning them is one memset per line
+  // False when the line holds no '&': no field then needs a look for a parameter reference.
+  bool references_ = true;
+  // Texts that are not in the line (a parameter's value); a deque never moves its elements.
+  std::deque<std::string> owned_;
+  // Fields are mostly asked for in card order: the search for a name starts after the last.
+  mutable std::size_t next_field_ = 0;
   bool spaced_ = false;
 };
 
@@ -128,9 +143,12 @@ class CardCursor {
   const Keyword* keyword_;
   const Deck* deck_;
   const Card& noteSpaced(const Card& card);
+  // The next card of cards_ for `line`: a flushed one reused, or a new one.
+  const Card& nextCard(const CardSpec& spec, const DataLine* line);
 
   std::size_t next_ = 0;
   std::deque<Card> cards_;
+  std::size_t live_ = 0;  // cards_[0, live_) are read since the last flush; the rest are spare
   std::vector<ReaderNote> notes_;
   bool noted_spaced_ = false;
 };

@@ -3,9 +3,15 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <fstream>
+#include <iterator>
 #include <optional>
-#include <sstream>
+
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <fmt/format.h>
 
@@ -75,11 +81,6 @@ Format keywordFormat(std::string_view trailing, Format format) {
   return format;
 }
 
-bool isComment(std::string_view line) {
-  const auto first = line.find_first_not_of(" \t");
-  return first != std::string_view::npos && line[first] == '$';
-}
-
 // "CID=3" on a keyword line makes the keyword belong to load case 3 only (*CASE).
 bool hasCaseId(std::string_view trailing) {
   const std::string u = upper(trailing);
@@ -87,45 +88,81 @@ bool hasCaseId(std::string_view trailing) {
   return p != std::string::npos && (p == 0 || u[p - 1] == ' ' || u[p - 1] == '\t');
 }
 
-// One line of `in` into `text`, without its end ("\n", or "\r\n" with the "\r" removed);
-// false when the input is exhausted. A line longer than kMaxLineLength ends the read with an
-// error after kMaxLineLength characters: the rest is never held in memory (a 2 GB line costs
-// 64 KiB). A control character (other than tab, form feed, vertical tab and the DOS end-of-file
-// mark) means binary data: keyword decks are text.
-//
-// istream::getline into a buffer of kMaxLineLength + 2 characters scans the stream's buffer
-// for the line end (memchr) instead of taking one character at a time, which was a sixth of
-// the instructions of reading a deck (callgrind, `check`).
-bool readLine(std::istream& in, std::vector<char>& buffer, std::string& text,
-              const std::string& display, int32_t line_no) {
-  text.clear();
-  buffer.resize(kMaxLineLength + 2);
-  in.getline(buffer.data(), static_cast<std::streamsize>(buffer.size()));
-  auto length = static_cast<std::size_t>(in.gcount());
-  if (length == 0 && !in) return false;  // nothing left
-  // The line end was extracted (and counted, not stored) unless the input ended or the buffer
-  // filled first.
-  if (!in.eof() && !in.fail()) --length;
-  if (length > kMaxLineLength) {
-    throw util::InputError(display + ":" + std::to_string(line_no) + ": line longer than " +
-                           std::to_string(kMaxLineLength) +
-                           " characters: this is not a keyword deck (or a line end is "
-                           "missing)");
-  }
-  in.clear(in.rdstate() & ~std::ios::failbit);
-  text.assign(buffer.data(), length);
-  if (!text.empty() && text.back() == '\r') text.pop_back();
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const auto u = static_cast<unsigned char>(text[i]);
-    const bool allowed = u == '\t' || u == '\f' || u == '\v' || u == 0x1a;
-    if ((u < 0x20 || u == 0x7f) && !allowed) {
-      throw util::InputError(
-          fmt::format("{}:{}: byte 0x{:02x} in column {}: binary data, not a keyword deck (text)",
-                      display, line_no, u, i + 1));
-    }
-  }
-  return true;
+// A control character other than tab, form feed, vertical tab and the DOS end-of-file mark
+// means binary data: keyword decks are text.
+bool isBinary(unsigned char u) {
+  const bool allowed = u == '\t' || u == '\f' || u == '\v' || u == 0x1a || u == '\n' || u == '\r';
+  return (u < 0x20 || u == 0x7f) && !allowed;
 }
+
+// Offset of the first binary byte of `text` (isBinary, "\r" not counted), or npos. Eight
+// bytes at a time: a word none of whose bytes is below 0x20 or 0x7f needs no closer look (a
+// branch per byte was a fifth of reading a deck).
+std::size_t firstBinaryByte(std::string_view text) {
+  constexpr uint64_t kOnes = 0x0101010101010101ULL, kHighs = 0x8080808080808080ULL;
+  std::size_t i = 0;
+  for (; i + 8 <= text.size(); i += 8) {
+    uint64_t w;
+    std::memcpy(&w, text.data() + i, 8);
+    const uint64_t below_space = (w - 0x20 * kOnes) & ~w & kHighs;
+    const uint64_t x = w ^ (0x7f * kOnes);
+    const uint64_t del = (x - kOnes) & ~x & kHighs;
+    if ((below_space | del) == 0) continue;
+    for (std::size_t k = i; k < i + 8; ++k)
+      if (isBinary(static_cast<unsigned char>(text[k]))) return k;
+  }
+  for (; i < text.size(); ++i)
+    if (isBinary(static_cast<unsigned char>(text[i]))) return i;
+  return std::string_view::npos;
+}
+
+// The lines of a file's text one at a time, each without its end ("\n", or "\r\n" with the
+// "\r" removed), as views into the text. A line longer than kMaxLineLength, or one holding a
+// binary byte (isBinary, or a "\r" before its end), is an error: the lines before it are
+// read, and nothing after it is looked at (a 2 GB line costs no more than its first 64 KiB).
+class LineSplitter {
+ public:
+  LineSplitter(std::string_view text, const std::string& display)
+      : text_(text), display_(display) {}
+
+  // The next line into `line`; false when the text is exhausted.
+  bool next(std::string_view& line) {
+    if (pos_ >= text_.size()) return false;
+    ++line_no_;
+    const std::size_t start = pos_;
+    const std::size_t searched = std::min(text_.size() - start, kMaxLineLength + 2);
+    const void* nl = std::memchr(text_.data() + start, '\n', searched);
+    const std::size_t end =
+        nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - text_.data())
+           : start + searched;
+    line = text_.substr(start, end - start);
+    pos_ = end + 1;
+    if (line.size() > kMaxLineLength) {
+      throw util::InputError(fmt::format(
+          "{}:{}: line longer than {} characters: this is not a keyword deck (or a line end is "
+          "missing)",
+          display_, line_no_, kMaxLineLength));
+    }
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    const std::size_t cr = line.find('\r');
+    const std::size_t bad = std::min(cr, firstBinaryByte(line));
+    if (bad != std::string_view::npos) failBinary(line[bad], bad);
+    return true;
+  }
+  int32_t lineNumber() const { return line_no_; }
+
+ private:
+  [[noreturn]] void failBinary(char byte, std::size_t at) const {
+    throw util::InputError(
+        fmt::format("{}:{}: byte 0x{:02x} in column {}: binary data, not a keyword deck (text)",
+                    display_, line_no_, static_cast<unsigned char>(byte), at + 1));
+  }
+
+  std::string_view text_;
+  const std::string& display_;
+  std::size_t pos_ = 0;
+  int32_t line_no_ = 0;
+};
 
 class Reader {
  public:
@@ -138,7 +175,7 @@ class Reader {
 
   // `path` opens the file's includes (relative to its folder), `identity` recognises cycles,
   // `display` names it in messages.
-  void readFile(std::istream& in, const fs::path& path, const std::string& identity,
+  void readFile(const FileText& text, const fs::path& path, const std::string& identity,
                 const std::string& display, Format format, int depth);
 
  private:
@@ -192,10 +229,11 @@ class Reader {
   std::string case_block_;
 };
 
-void Reader::readFile(std::istream& in, const fs::path& path, const std::string& identity,
+void Reader::readFile(const FileText& text, const fs::path& path, const std::string& identity,
                       const std::string& display, Format format, int depth) {
   const auto file_index = static_cast<int32_t>(deck_.files.size());
   deck_.files.push_back(display);
+  deck_.texts.push_back(text.owner);
   FileState file{path.parent_path(), fs::path(display).parent_path(), format};
   open_.emplace_back(identity, display);
   // Closed however reading ends: with collect_errors the includer reads on after an error.
@@ -205,25 +243,25 @@ void Reader::readFile(std::istream& in, const fs::path& path, const std::string&
   } close{open_};
 
   std::optional<Keyword> current;
-  std::string text;
-  std::vector<char> buffer;
-  int32_t line_no = 0;
-  while (readLine(in, buffer, text, display, line_no + 1)) {
-    ++line_no;
+  LineSplitter lines(text.text, display);
+  std::string_view line;
+  while (lines.next(line)) {
+    const int32_t line_no = lines.lineNumber();
     // Encrypted input (Keyword Manual, "Encryption"): only LS-DYNA holds the key, and the
     // cipher text that follows would otherwise be reported as binary data.
-    if (startsWith(trim(text), "-----BEGIN PGP MESSAGE-----"))
+    const std::string_view trimmed = trim(line);
+    if (startsWith(trimmed, "-----BEGIN PGP MESSAGE-----"))
       throw util::InputError(display + ":" + std::to_string(line_no) +
                              ": encrypted (PGP) input cannot be read");
-    if (isComment(text)) continue;
-    if (text.empty() || text[0] != '*') {
+    if (!trimmed.empty() && trimmed[0] == '$') continue;  // a comment
+    if (line.empty() || line[0] != '*') {
       // Lines before the first keyword (a header) are not part of any keyword.
-      if (current) current->lines.push_back({std::move(text), file_index, line_no});
+      if (current) current->lines.push_back({line, file_index, line_no});
       continue;
     }
     if (current) finish(*current, file, depth);
     current.reset();
-    KeywordLine k = parseKeywordLine(text);
+    KeywordLine k = parseKeywordLine(line);
     if (k.name == "*END") break;  // the rest of this file is not read (Keyword Manual, *END)
     if (k.name == "*KEYWORD") {
       file.format = keywordFormat(k.trailing, file.format);
@@ -249,7 +287,6 @@ void Reader::readFile(std::istream& in, const fs::path& path, const std::string&
       current->case_block = current->trailing;
   }
   if (current) finish(*current, file, depth);
-  if (in.bad()) throw util::InputError(display + ":" + std::to_string(line_no) + ": read error");
 }
 
 void Reader::finish(Keyword& kw, FileState& file, int depth) {
@@ -292,7 +329,7 @@ void Reader::includeFile(const Card& card, const std::string& name, FileState& f
     card.fail("FILENAME", "*INCLUDE nested more than 40 deep (does a file include itself?)");
   std::string tried;
   for (const auto& c : includeCandidates(name, file)) {
-    auto in = source_.open(c.full);
+    const auto in = source_.load(c.full);
     if (!in) {
       tried += (tried.empty() ? "" : ", ") + c.display;
       continue;
@@ -497,12 +534,48 @@ const Parameter* Deck::parameter(std::string_view name) const {
   return it == parameters.end() ? nullptr : &it->second;
 }
 
-std::unique_ptr<std::istream> DiskSource::open(const fs::path& path) const {
+namespace {
+
+// A read-only mapping of a file, unmapped with its last owner.
+struct Mapping {
+  void* address = nullptr;
+  std::size_t size = 0;
+  Mapping(const Mapping&) = delete;
+  Mapping& operator=(const Mapping&) = delete;
+  Mapping(void* a, std::size_t n) : address(a), size(n) {}
+  ~Mapping() { ::munmap(address, size); }
+};
+
+// The whole file through a stream: for what cannot be mapped.
+std::optional<FileText> copyOf(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  auto text = std::make_shared<std::string>(std::istreambuf_iterator<char>(in),
+                                            std::istreambuf_iterator<char>());
+  if (in.bad()) throw util::InputError(path.string() + ": read error");
+  const std::string_view view = *text;
+  return FileText{std::move(text), view};
+}
+
+}  // namespace
+
+std::optional<FileText> DiskSource::load(const fs::path& path) const {
   std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) return nullptr;
-  auto in = std::make_unique<std::ifstream>(path, std::ios::binary);
-  if (!*in) return nullptr;
-  return in;
+  if (!fs::is_regular_file(path, ec)) return std::nullopt;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return std::nullopt;
+  struct stat st {};
+  const bool sized = ::fstat(fd, &st) == 0;
+  const auto size = sized ? static_cast<std::size_t>(st.st_size) : 0;
+  // Not populated up front: a file that is no deck (a 2 GB line) is refused after its first
+  // 64 KiB, and only what is read is brought in.
+  void* address = size > 0 ? ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0) : MAP_FAILED;
+  ::close(fd);
+  if (sized && size == 0) return FileText{};
+  if (address == MAP_FAILED) return copyOf(path);
+  ::madvise(address, size, MADV_SEQUENTIAL);
+  auto mapping = std::make_shared<Mapping>(address, size);
+  return FileText{std::move(mapping), std::string_view(static_cast<const char*>(address), size)};
 }
 
 std::string DiskSource::identity(const fs::path& path) const {
@@ -512,13 +585,15 @@ std::string DiskSource::identity(const fs::path& path) const {
 }
 
 MemorySource::MemorySource(std::map<std::string, std::string> files) {
-  for (auto& [name, text] : files) files_[fs::path(name).lexically_normal().string()] = text;
+  for (auto& [name, text] : files)
+    files_[fs::path(name).lexically_normal().string()] =
+        std::make_shared<const std::string>(std::move(text));
 }
 
-std::unique_ptr<std::istream> MemorySource::open(const fs::path& path) const {
+std::optional<FileText> MemorySource::load(const fs::path& path) const {
   const auto it = files_.find(path.lexically_normal().string());
-  if (it == files_.end()) return nullptr;
-  return std::make_unique<std::istringstream>(it->second);
+  if (it == files_.end()) return std::nullopt;
+  return FileText{it->second, *it->second};
 }
 
 std::string MemorySource::identity(const fs::path& path) const {
@@ -540,7 +615,7 @@ Deck readDeck(const std::filesystem::path& path, const Source& source) {
 Deck readDeck(const std::filesystem::path& path, const Source& source,
               const ReadDeckOptions& options) {
   Deck deck;
-  const auto in = source.open(path);
+  const auto in = source.load(path);
   if (!in) throw util::InputError(path.string() + ": cannot open the file");
   Reader reader(deck, source, path, options);
   reader.readFile(*in, path, source.identity(path), path.string(), Format::Standard, 0);

@@ -9,9 +9,9 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <istream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,9 +22,9 @@
 namespace crumple::deck {
 
 struct DataLine {
-  std::string text;  // without the line end
-  int32_t file = 0;  // index into Deck::files
-  int32_t line = 0;  // 1-based
+  std::string_view text;  // without the line end; a view into Deck::texts
+  int32_t file = 0;       // index into Deck::files
+  int32_t line = 0;       // 1-based
 };
 
 struct Keyword {
@@ -53,8 +53,18 @@ struct ReaderNote {
   util::SourceLoc where;
 };
 
+// The text of one file as read: a view and what keeps it alive (a mapping of the file, or a
+// copy of it in memory).
+struct FileText {
+  std::shared_ptr<const void> owner;
+  std::string_view text;
+};
+
 struct Deck {
   std::vector<std::string> files;  // display names, as the user would recognise them
+  // What the data lines' views point into: lines are not copied out of the files (a copy per
+  // line was one allocation per line of the deck).
+  std::vector<std::shared_ptr<const void>> texts;
   std::vector<Keyword> keywords;
   // Keyed by the upper-cased name: LS-DYNA parameter names are case-insensitive (a deck may
   // define tEnd and use &TEnd). Look names up through parameter().
@@ -78,16 +88,17 @@ struct Deck {
 class Source {
  public:
   virtual ~Source() = default;
-  // The file's text, or null when there is no such regular file.
-  virtual std::unique_ptr<std::istream> open(const std::filesystem::path& path) const = 0;
+  // The file's text, or nullopt when there is no such regular file.
+  virtual std::optional<FileText> load(const std::filesystem::path& path) const = 0;
   // One name per file, whatever the spelling ("a/../b.k" and "b.k"): include cycles are
   // recognised by it.
   virtual std::string identity(const std::filesystem::path& path) const = 0;
 };
 
+// Maps the file into memory (read-only): reading then costs no copy of the deck.
 class DiskSource : public Source {
  public:
-  std::unique_ptr<std::istream> open(const std::filesystem::path& path) const override;
+  std::optional<FileText> load(const std::filesystem::path& path) const override;
   std::string identity(const std::filesystem::path& path) const override;
 };
 
@@ -95,16 +106,16 @@ class DiskSource : public Source {
 class MemorySource : public Source {
  public:
   explicit MemorySource(std::map<std::string, std::string> files);
-  std::unique_ptr<std::istream> open(const std::filesystem::path& path) const override;
+  std::optional<FileText> load(const std::filesystem::path& path) const override;
   std::string identity(const std::filesystem::path& path) const override;
 
  private:
-  std::map<std::string, std::string> files_;
+  std::map<std::string, std::shared_ptr<const std::string>> files_;
 };
 
 // Longest data or keyword line read (characters, without the line end). Real decks use 80
 // columns (160 in LONG=Y format, a little more free-format); a longer line means the file is
-// not a keyword deck, and reading on would hold an arbitrarily long line in memory.
+// not a keyword deck (or its line ends are not "\n").
 inline constexpr std::size_t kMaxLineLength = 64 * 1024;
 
 struct ReadDeckOptions {

@@ -114,16 +114,14 @@ void readNodes(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
   CardCursor cur(kw, ctx.deck);
   for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
     const auto& c = cur.read(spec);
+    // In card order: Card finds the next field first.
     const int64_t id = positiveId(c, "NID");
+    const Vec3 x{c.real("X"), c.real("Y"), c.real("Z")};
     const auto tc = c.integer("TC"), rc = c.integer("RC");
     if (tc < 0 || tc > 7) c.fail("TC", "must be 0 to 7");
     if (rc < 0 || rc > 7) c.fail("RC", "must be 0 to 7");
-    ctx.node_input.push_back({id,
-                              {c.real("X"), c.real("Y"), c.real("Z")},
-                              static_cast<int>(tc),
-                              static_cast<int>(rc),
-                              c.fileIndex(),
-                              c.lineNumber()});
+    ctx.node_input.push_back(
+        {id, x, static_cast<int>(tc), static_cast<int>(rc), c.fileIndex(), c.lineNumber()});
     ctx.collect(cur);
   }
 }

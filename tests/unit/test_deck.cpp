@@ -1,5 +1,6 @@
 // The keyword reader (src/deck): numbers, expressions, card formats, comments, parameters,
 // includes, *END, *CASE blocks and the exact form of its error messages.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -484,6 +485,23 @@ TEST(DeckLines, LongLinesAndBinaryDataAreRefused) {
   const auto ok = crumple::deck::readDeck(
       "c.k", MemorySource(Files{{"c.k", "*TITLE\r\nK\xc3\xa4se\tbox\f\r\n\x1a"}}));
   EXPECT_EQ(ok.keywords[0].lines[0].text, "K\xc3\xa4se\tbox\f");
+  // The text is scanned eight bytes at a time: a bad byte in any place of a word, DEL, and a
+  // carriage return before the line's end are found in the line and column they are in.
+  const std::string row = "       1             0.0             0.0             0.0\n";
+  for (const std::size_t column : {1u, 7u, 8u, 9u, 16u, 17u, 55u}) {
+    for (const char bad : {'\x01', '\x7f', '\r', '\x1f'}) {
+      std::string line = row;
+      line[column - 1] = bad;
+      const std::string text = "*NODE\n" + row + row + line + row;
+      EXPECT_EQ(errorOf([&] {
+                  crumple::deck::readDeck("d.k", MemorySource(Files{{"d.k", text}}));
+                }),
+                fmt::format("d.k:4: byte 0x{:02x} in column {}: binary data, not a keyword deck "
+                            "(text)",
+                            static_cast<unsigned char>(bad), column))
+          << column;
+    }
+  }
 }
 
 TEST(DeckLines, EncryptedIncludeIsNamedAsSuch) {
@@ -523,7 +541,7 @@ TEST(DeckErrors, CollectModeRecordsEachBadIncludeOrParameterAndReadsOn) {
   EXPECT_EQ(d.parameter("b"), nullptr);
   // Nodes 2 (after the cycle in loop.k), 3 (before the bad line of bin.k), 1 and 9 are read.
   std::vector<std::string> nodes;
-  for (const auto& k : d.keywords) nodes.push_back(k.lines.at(0).text);
+  for (const auto& k : d.keywords) nodes.emplace_back(k.lines.at(0).text);
   EXPECT_EQ(nodes, (std::vector<std::string>{"2,0,0,0", "3,0,0,0", "1,0,0,0", "9,0,0,0"}));
   // Without the option the first error is thrown, as before; the main file is always thrown.
   EXPECT_EQ(errorOf([&] { memoryDeck(main, files); }), expected[0]);
