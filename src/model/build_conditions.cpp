@@ -21,6 +21,7 @@ using deck::keywordSpec;
 
 using util::cross;
 using util::dot;
+using util::scale;
 using util::sub;
 using util::unit;
 
@@ -153,8 +154,23 @@ void readPrescribedMotion(Context& ctx, const deck::Keyword& kw, const KeywordOp
   }
 }
 
+namespace {
+
+// The angular velocity of a node's rotational freedoms (those of shell and beam nodes; a solid
+// node has none, and the solver leaves it out).
+void setAngularVelocity(Model& m, int32_t node, const Vec3& w) {
+  if (m.initial_angular_velocity.empty()) {
+    if (w == Vec3{}) return;
+    m.initial_angular_velocity.assign(m.nodes.size(), Vec3{});
+  }
+  m.initial_angular_velocity[static_cast<std::size_t>(node)] = w;
+}
+
+}  // namespace
+
 // NSID 0 means all nodes; the nodes of NSIDEX take the velocities of card 3 instead
-// (Keyword Manual, *INITIAL_VELOCITY). Rotational velocities have no meaning for solid nodes.
+// (Keyword Manual, *INITIAL_VELOCITY). VXR-VZR set the rotational freedoms (shell and beam
+// nodes).
 void readInitialVelocity(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
   const auto& spec = keywordSpec("*INITIAL_VELOCITY");
   CardCursor cur(kw, ctx.deck);
@@ -170,10 +186,13 @@ void readInitialVelocity(Context& ctx, const deck::Keyword& kw, const KeywordOpt
   const Box* box = nullptr;
   if (const int64_t b = c.integer("BOXID"); b != 0) box = &ctx.box(c, "BOXID", b);
   const Vec3 v{c2.real("VX"), c2.real("VY"), c2.real("VZ")};
+  const Vec3 w{c2.real("VXR"), c2.real("VYR"), c2.real("VZR")};
   const Vec3 ve = nsidex != 0 ? Vec3{c3.real("VXE"), c3.real("VYE"), c3.real("VZE")} : v;
+  const Vec3 we = nsidex != 0 ? Vec3{c3.real("VXRE"), c3.real("VYRE"), c3.real("VZRE")} : w;
   for (int32_t n : nodes) {
     if (box && !box->contains(ctx.model.nodes.x[n])) continue;
     ctx.model.initial_velocity[n] = exempt[n] ? ve : v;
+    setAngularVelocity(ctx.model, n, exempt[n] ? we : w);
   }
   ctx.collect(cur);
 }
@@ -184,14 +203,17 @@ void readInitialVelocityNode(Context& ctx, const deck::Keyword& kw, const Keywor
   for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
     const Card& c = cur.read(spec);
     checkNoLocalSystem(ctx, c, "ICID");
-    ctx.model.initial_velocity[ctx.node(c, "NID", c.integer("NID"))] = {c.real("VX"), c.real("VY"),
-                                                                        c.real("VZ")};
+    const int32_t n = ctx.node(c, "NID", c.integer("NID"));
+    ctx.model.initial_velocity[n] = {c.real("VX"), c.real("VY"), c.real("VZ")};
+    setAngularVelocity(ctx.model, n, {c.real("VXR"), c.real("VYR"), c.real("VZR")});
     ctx.collect(cur);
   }
 }
 
-// v = (VX, VY, VZ) + OMEGA n x (x - xc), n the unit axis through (XC, YC, ZC)
-// (Keyword Manual, *INITIAL_VELOCITY_GENERATION); STYP 1 part set, 2 part, 3 node set. With
+// v = (VX, VY, VZ) + OMEGA n x (x - xc), n the unit axis through (XC, YC, ZC), and the
+// rotational freedoms spin at OMEGA n (Keyword Manual, *INITIAL_VELOCITY_GENERATION: "both
+// translational and rotational initial velocities": the body turns as a rigid one, so a shell
+// or beam starts without bending rate); STYP 1 part set, 2 part, 3 node set. With
 // ICID the velocity (VX, VY, VZ) and the axis direction (NX, NY, NZ) are components in that
 // *DEFINE_COORDINATE_SYSTEM; the centre (XC, YC, ZC) stays global (Keyword Manual, ICID).
 void readInitialVelocityGeneration(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
@@ -233,6 +255,7 @@ void readInitialVelocityGeneration(Context& ctx, const deck::Keyword& kw, const 
     const Vec3 w = cross(axis, sub(ctx.model.nodes.x[n], xc));
     ctx.model.initial_velocity[n] = {vt[0] + omega * w[0], vt[1] + omega * w[1],
                                      vt[2] + omega * w[2]};
+    setAngularVelocity(ctx.model, n, scale(axis, omega));
   }
   ctx.collect(cur);
 }

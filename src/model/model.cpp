@@ -182,6 +182,7 @@ void Model::releaseMesh() {
   segment_sets.clear();
   for (auto& sets : element_sets) sets.clear();
   std::vector<Vec3>().swap(initial_velocity);
+  std::vector<Vec3>().swap(initial_angular_velocity);
   std::unordered_map<int64_t, int32_t>().swap(node_index_);
 }
 

@@ -431,7 +431,10 @@ struct Model {
   std::vector<PressureLoad> pressure_loads;
   std::vector<BodyLoad> body_loads;
   std::vector<RigidWallPlanar> rigid_walls;
-  std::vector<Vec3> initial_velocity;   // per node (zero if none given)
+  std::vector<Vec3> initial_velocity;  // per node (zero if none given)
+  // Per node, for the rotational freedoms of shell and beam nodes (*INITIAL_VELOCITY VXR-VZR,
+  // _NODE, _GENERATION OMEGA); empty when no keyword gives one.
+  std::vector<Vec3> initial_angular_velocity;
   std::vector<PointMass> point_masses;  // *ELEMENT_MASS, in deck order
   std::vector<int32_t> history_nodes;   // *DATABASE_HISTORY_NODE, in deck order
   // *DATABASE_HISTORY_SOLID, _SHELL, _BEAM (and _SET) by family: indices within the family,

@@ -191,6 +191,7 @@ void fields(A& a, M& m) {
       },
       m.rigid_walls);
   a(m.initial_velocity);
+  a(m.initial_angular_velocity);
   a(m.point_masses);
   a(m.history_nodes);
   for (auto& h : m.history_elements) a(h);

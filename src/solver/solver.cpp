@@ -134,9 +134,7 @@ void Solver::initialize() {
   });
   sumMasses(physical_mass);
 
-  for (std::size_t n = 0; n < sd_.numNodes(); ++n)
-    for (int c = 0; c < 3; ++c)
-      sd_.v[3 * n + c] = model_.initial_velocity[static_cast<std::size_t>(sd_.node_model[n])][c];
+  setInitialVelocities();
   // Contact before the rigid bodies: moving initially penetrating nodes changes their shape.
   if (contact_)
     contact_->initialize(model_.controls.tssfac *
@@ -152,6 +150,18 @@ void Solver::initialize() {
   cycle_ = 0;
   initial_energy_ = 0.0;
   initial_energy_ = energies().kinetic;
+}
+
+// The deck's nodal velocities; angular ones on the nodes with rotary inertia (shell and beam
+// nodes: a solid node has no rotational freedom to set).
+void Solver::setInitialVelocities() {
+  const auto& w0 = model_.initial_angular_velocity;
+  for (std::size_t n = 0; n < sd_.numNodes(); ++n) {
+    const auto m = static_cast<std::size_t>(sd_.node_model[n]);
+    for (int c = 0; c < 3; ++c) sd_.v[3 * n + c] = model_.initial_velocity[m][c];
+    if (!sd_.rotations || w0.empty() || !(sd_.inertia[n] > 0.0)) continue;
+    for (int c = 0; c < 3; ++c) sd_.w[3 * n + c] = w0[m][c];
+  }
 }
 
 Solver::InitialSteps Solver::initializeElements() {

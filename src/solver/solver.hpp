@@ -175,6 +175,7 @@ class Solver {
   };
   // Element state from the initial geometry: corner masses in the slots, element steps.
   InitialSteps initializeElements();
+  void setInitialVelocities();
   void checkInitialGeometry(int64_t bad) const;
   // Element masses of shells and beams (matsum), from their corner masses in the slots.
   void computeStructuralMasses();
