@@ -13,9 +13,9 @@
 #include "harness.hpp"
 
 using crumple::testing::brickDeck;
-using crumple::testing::brickNodeSet;
 using crumple::testing::Simulation;
 using crumple::testing::termination;
+using crumple::testing::uniaxialStrainCrush;
 
 TEST(VerificationMaterials, ElasticPlasticHydroUniaxialStrain) {
   constexpr double G = 37593.0, K = 140000.0, sig0 = 180.0, eh = 500.0;
@@ -25,16 +25,7 @@ TEST(VerificationMaterials, ElasticPlasticHydroUniaxialStrain) {
       "*DEFINE_CURVE\n         1\n                 0.0                 0.0\n"
       "                 0.5                0.08\n" +
       termination(0.5);
-  s += brickNodeSet(1, 1, 1, 1, [](int i, int, int) { return i == 1; });
-  s += "*BOUNDARY_PRESCRIBED_MOTION_SET\n         1         1         2         1      -1.0\n";
-  for (int d = 0; d < 3; ++d) {
-    s += brickNodeSet(2 + d, 1, 1, 1, [d](int i, int j, int k) {
-      const int c = d == 0 ? i : d == 1 ? j : k;
-      return c == 0 || (d > 0 && c == 1);
-    });
-    s += fmt::format("*BOUNDARY_SPC_SET\n{:10d}{:10d}{:10d}{:10d}{:10d}\n", 2 + d, 0, int(d == 0),
-                     int(d == 1), int(d == 2));
-  }
+  s += uniaxialStrainCrush();
   std::string deck = brickDeck(1, 1, 1, 1.0, 1.0, 1.0, s);
   // The part takes the EOS: *PART card  PID SECID MID EOSID.
   const std::string part = "         1         1         1\n";

@@ -6,6 +6,7 @@
 
 #include "deck/card.hpp"
 #include "deck/layout.hpp"
+#include "materials/eos_return.hpp"
 #include "materials/return_mapping.hpp"
 #include "util/error.hpp"
 
@@ -13,10 +14,16 @@ namespace crumple::materials {
 
 namespace {
 
-// The names of a card of eight EPS or ES values: EPS1-8, EPS9-16, ES1-8, ES9-16.
-std::vector<deck::FieldSpec> pointFields(const char* name, int first) {
+// The fields of a card of eight EPS or ES values: EPS1-8, EPS9-16, ES1-8, ES9-16 (names with
+// static storage: the specs keep views of them).
+std::vector<deck::FieldSpec> pointFields(int card) {
+  static constexpr const char* kNames[4][8] = {
+      {"EPS1", "EPS2", "EPS3", "EPS4", "EPS5", "EPS6", "EPS7", "EPS8"},
+      {"EPS9", "EPS10", "EPS11", "EPS12", "EPS13", "EPS14", "EPS15", "EPS16"},
+      {"ES1", "ES2", "ES3", "ES4", "ES5", "ES6", "ES7", "ES8"},
+      {"ES9", "ES10", "ES11", "ES12", "ES13", "ES14", "ES15", "ES16"}};
   std::vector<deck::FieldSpec> f;
-  for (int i = first; i < first + 8; ++i) f.push_back(deck::R(name + std::to_string(i)));
+  for (const char* name : kNames[card]) f.push_back(deck::R(name));
   return f;
 }
 
@@ -29,10 +36,10 @@ const deck::KeywordSpec& ElasticPlasticHydro::cards() {
       kKeywords[0],
       {deck::titleCard(),
        {"card 1", {I("MID"), R("RO"), R("G"), R("SIG0"), R("EH"), R("PC"), R("FS"), R("CHARL")}},
-       {"card 2", pointFields("EPS", 1)},
-       {"card 3", pointFields("EPS", 9)},
-       {"card 4", pointFields("ES", 1)},
-       {"card 5", pointFields("ES", 9)}}};
+       {"card 2", pointFields(0)},
+       {"card 3", pointFields(1)},
+       {"card 4", pointFields(2)},
+       {"card 5", pointFields(3)}}};
   return spec;
 }
 

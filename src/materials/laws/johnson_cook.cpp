@@ -6,6 +6,7 @@
 
 #include "deck/card.hpp"
 #include "deck/layout.hpp"
+#include "materials/eos_return.hpp"
 #include "materials/return_mapping.hpp"
 #include "util/error.hpp"
 
