@@ -80,4 +80,14 @@ EosStep eosEnergyStep(const Eos& eos, double rho0, double pc, double e_old, doub
   return s;
 }
 
+double eosPointStep(const Eos& eos, double rho0, double pc, double& ln_v, double& de0, double w_dev,
+                    double p_old, double tr) {
+  const double x_old = ln_v, x_new = x_old + tr;
+  const EosStep st = eosEnergyStep(eos, rho0, pc, eos.e0 + de0, eos.v0 * std::exp(x_old + 0.5 * tr),
+                                   eos.v0 * std::exp(x_new), w_dev, p_old, tr);
+  ln_v = x_new;
+  de0 = st.e - eos.e0;
+  return st.p;
+}
+
 }  // namespace crumple::materials

@@ -62,6 +62,13 @@ struct EosStep {
 EosStep eosEnergyStep(const Eos& eos, double rho0, double pc, double e_old, double v_mid,
                       double v_new, double w_dev, double p_old, double tr);
 
+// eosEnergyStep at an integration point whose history keeps ln(V / V0) (`ln_v`) and E - E0
+// (`de0`), as the deviatoric laws with an equation of state do (*MAT_JOHNSON_COOK,
+// *MAT_ELASTIC_PLASTIC_HYDRO): advances both over a step of volumetric strain tr and returns
+// the new pressure.
+double eosPointStep(const Eos& eos, double rho0, double pc, double& ln_v, double& de0, double w_dev,
+                    double p_old, double tr);
+
 // "*EOS_LINEAR_POLYNOMIAL" or "*EOS_GRUNEISEN", for messages.
 std::string_view eosKeyword(const Eos& eos);
 

@@ -6,6 +6,7 @@
 
 #include "materials/laws/crushable_foam.hpp"
 #include "materials/laws/elastic.hpp"
+#include "materials/laws/elastic_plastic_hydro.hpp"
 #include "materials/laws/johnson_cook.hpp"
 #include "materials/laws/modified_piecewise_linear.hpp"
 #include "materials/laws/null.hpp"
@@ -28,6 +29,6 @@ struct LawList {};
 using AllLaws =
     LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic, DamperViscous,
             SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam, JohnsonCook, PowerLaw,
-            StrainRatePlasticity, ModifiedPiecewiseLinear, Spotweld>;
+            StrainRatePlasticity, ModifiedPiecewiseLinear, Spotweld, ElasticPlasticHydro>;
 
 }  // namespace crumple::materials

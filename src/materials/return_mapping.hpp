@@ -89,6 +89,18 @@ double curveFlowStress(const CurveHardening& P, double eps_p);
 // The effective strain rate sqrt(2/3 dev(de):dev(de)) / dt of a step (0 when dt is 0), the rate
 // of the rate forms here (VP = 0), for the laws that measure it themselves.
 double effectiveStrainRate(const double de[6], double dt);
+// The deviator (tensor shear) of a stress; returns its pressure (positive in compression).
+inline double deviator(const double s[6], double dev[6]) {
+  const double p = -(s[0] + s[1] + s[2]) / 3.0;
+  for (int k = 0; k < 6; ++k) dev[k] = k < 3 ? s[k] + p : s[k];
+  return p;
+}
+// The von Mises stress sqrt(3/2 s:s) of a deviator (tensor shear components counted twice).
+inline double vonMises(const double s[6]) {
+  const double ss =
+      s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + 2.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+  return std::sqrt(1.5 * ss);
+}
 // Raises b.failed where the effective plastic strain has reached `limit` (> 0).
 void markFailed(PointBatch& b, double limit);
 

@@ -119,6 +119,23 @@ std::string brickNodeSet(int set_id, int nx, int ny, int nz, Pred pred) {
   return s;
 }
 
+// A unit cube (brickDeck(1, 1, 1, ...)) in uniaxial strain: face x = 1 displaced by -a(t), the
+// values of curve 1 (*BOUNDARY_PRESCRIBED_MOTION_SET, displacement), face x = 0 held in x, the
+// lateral faces held in their normal directions (node sets 1-4).
+inline std::string uniaxialStrainCrush() {
+  std::string s = brickNodeSet(1, 1, 1, 1, [](int i, int, int) { return i == 1; });
+  s += "*BOUNDARY_PRESCRIBED_MOTION_SET\n         1         1         2         1      -1.0\n";
+  for (int d = 0; d < 3; ++d) {
+    s += brickNodeSet(2 + d, 1, 1, 1, [d](int i, int j, int k) {
+      const int c = d == 0 ? i : d == 1 ? j : k;
+      return c == 0 || (d > 0 && c == 1);
+    });
+    s += fmt::format("*BOUNDARY_SPC_SET\n{:10d}{:10d}{:10d}{:10d}{:10d}\n", 2 + d, 0, int(d == 0),
+                     int(d == 1), int(d == 2));
+  }
+  return s;
+}
+
 // A unit cube pulled along x at the constant velocity v to the strain `strain` (face x = 1
 // prescribed), on rollers on the faces x = 0, y = 0, z = 0 and otherwise free: uniaxial stress,
 // the lateral faces contracting as the material lets them (the wave transit, 2e-7 s for steel,

@@ -16,6 +16,7 @@ using crumple::testing::Simulation;
 using crumple::testing::termination;
 using crumple::testing::triaxialCompression;
 using crumple::testing::uniaxialPull;
+using crumple::testing::uniaxialStrainCrush;
 
 namespace {
 
@@ -331,16 +332,7 @@ TEST(VerificationMaterials, CrushableFoamUniaxialStrainCrush) {
       "                 0.5                 4.0\n                 0.8                40.0\n" +
       curve + termination(0.5);
   std::string s = foam;
-  s += brickNodeSet(1, 1, 1, 1, [](int i, int, int) { return i == 1; });
-  s += "*BOUNDARY_PRESCRIBED_MOTION_SET\n         1         1         2         1      -1.0\n";
-  for (int d = 0; d < 3; ++d) {
-    s += brickNodeSet(2 + d, 1, 1, 1, [d](int i, int j, int k) {
-      const int c = d == 0 ? i : d == 1 ? j : k;
-      return c == 0 || (d > 0 && c == 1);
-    });
-    s += fmt::format("*BOUNDARY_SPC_SET\n{:10d}{:10d}{:10d}{:10d}{:10d}\n", 2 + d, 0, int(d == 0),
-                     int(d == 1), int(d == 2));
-  }
+  s += uniaxialStrainCrush();
   auto sim = Simulation::fromText("foam_crush", brickDeck(1, 1, 1, 1.0, 1.0, 1.0, s));
   auto yield = [](double g) {
     return g < 0.2 ? 2.0 + 5.0 * g : g < 0.5 ? 3.0 + (g - 0.2) / 0.3 : 4.0 + 120.0 * (g - 0.5);

@@ -6,6 +6,7 @@
 
 #include "deck/card.hpp"
 #include "deck/layout.hpp"
+#include "materials/eos_return.hpp"
 #include "materials/return_mapping.hpp"
 #include "util/error.hpp"
 
@@ -152,57 +153,20 @@ double JohnsonCook::fractureStrain(double triax, double rate, double dT) const {
   return std::max(par.efmin, f);
 }
 
-namespace {
-
-// The deviatoric stress (tensor shear) of a stress and its pressure (positive in compression).
-double deviator(const double s[6], double dev[6]) {
-  const double p = -(s[0] + s[1] + s[2]) / 3.0;
-  for (int k = 0; k < 6; ++k) dev[k] = k < 3 ? s[k] + p : s[k];
-  return p;
-}
-
-// The von Mises stress sqrt(3/2 s:s) of a deviator (tensor shear components counted twice).
-double vonMises(const double s[6]) {
-  const double ss =
-      s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + 2.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
-  return std::sqrt(1.5 * ss);
-}
-
-}  // namespace
-
 void JohnsonCook::update(PointBatch& b) const {
-  const double G2 = 2.0 * par.G;
   for (int i = 0; i < b.n; ++i) {
-    double d[6], s_old[6], dev_old[6], dev[6];
-    for (int k = 0; k < 6; ++k) {
-      d[k] = b.de[k][i];
-      s_old[k] = b.s[k][i];
-    }
-    const double tr = d[0] + d[1] + d[2];
-    const double p_old = deviator(s_old, dev_old);
-    // Elastic predictor of the deviator, then the radial return to the Johnson-Cook surface.
-    for (int k = 0; k < 6; ++k) dev[k] = dev_old[k] + G2 * (k < 3 ? d[k] - tr / 3.0 : d[k]);
-    const double q = vonMises(dev);
-    const double rate = effectiveStrainRate(d, b.dt);
     const double dT = b.h[3][i], e = b.eps_p[i];
-    const double scale = rateFactor(rate) * thermalFactor(dT);
-    const double x = q > scale * hardening(e) ? returnIncrement(q, e, scale) : 0.0;
-    const double shrink = x > 0.0 ? 3.0 * par.G * x / q : 0.0;
-    double w_dev = 0.0;  // (s'_old + s'_new) / 2 : de, as *MAT_NULL
-    for (int k = 0; k < 6; ++k) {
-      dev[k] -= shrink * dev[k];
-      w_dev += (k < 3 ? 0.5 : 1.0) * (dev_old[k] + dev[k]) * d[k];
-    }
-    // Pressure and energy from the EOS, cut off at PC (SPALL = 1), as *MAT_NULL.
-    const double x_old = b.h[0][i], x_new = x_old + tr;
-    const EosStep st =
-        eosEnergyStep(eos, par.rho, par.pc, eos.e0 + b.h[1][i], eos.v0 * std::exp(x_old + 0.5 * tr),
-                      eos.v0 * std::exp(x_new), w_dev, p_old, tr);
-    for (int k = 0; k < 6; ++k) b.s[k][i] = k < 3 ? dev[k] - st.p : dev[k];
-    b.h[0][i] = x_new;
-    b.h[1][i] = st.e - eos.e0;
-    b.eps_p[i] = e + x;
-    if (x > 0.0) heatAndDamage(b, i, Increment{e, x, scale, rate, dT, st.p});
+    double rate = 0.0, scale = 1.0;
+    // The radial return to the Johnson-Cook surface at the step's rate and starting
+    // temperature; the pressure cut off at PC (SPALL = 1).
+    const EosReturn r =
+        eosRadialReturn(b, i, par.G, eos, par.rho, par.pc, [&](double q, const double* d) {
+          rate = effectiveStrainRate(d, b.dt);
+          scale = rateFactor(rate) * thermalFactor(dT);
+          return q > scale * hardening(e) ? returnIncrement(q, e, scale) : 0.0;
+        });
+    b.eps_p[i] = e + r.x;
+    if (r.x > 0.0) heatAndDamage(b, i, Increment{e, r.x, scale, rate, dT, r.p});
   }
 }
 
