@@ -92,6 +92,11 @@ struct SolidBlock : BlockBase {
   // tensor shear), the rate of deformation integrated and turned with the stress, stored batch
   // by batch like sig; else empty.
   std::vector<double> strain;
+  // Laws of the deformation gradient (materials::needsDeformationGradient; one-point solids
+  // only): each corner's initial shape-function gradient dN_a/dX_j = B_ja(X) / V0 (the uniform
+  // strain gradient at the initial geometry), 24 x kSolidBatch values per batch (corner-major,
+  // component-minor rows); else empty. Built from the initial coordinates (initializeSolids).
+  std::vector<double> grad0;
 
   // Elements plus padding: a whole number of batches.
   std::size_t paddedSize() const {

@@ -163,6 +163,8 @@ inline void updateStress(const Law& law, const SolidParams& p, const domain::Sol
     w.de[5][l] = 0.5 * (L[2][0][l] + L[0][2][l]) * dt;
     sp.trace_d[l] = L[0][0][l] + L[1][1][l] + L[2][2][l];
   }
+  if constexpr (materials::needsDeformationGradient<Law>())
+    detail::deformationGradient(blk, first, w);
   detail::updateMaterial(law, w, dt);
 }
 
@@ -506,6 +508,8 @@ BlockStatus initializeSolids(domain::SolidBlock& blk, const domain::NodeVector& 
   auto carries = [&](int a) { return tet ? a < 4 : !(prism && (a == 5 || a == 7)); };
   const std::size_t ne = blk.size();
   element_dt.assign(ne, 0.0);
+  const bool gradients = materials::needsDeformationGradient(blk.law);
+  if (gradients) blk.grad0.assign(blk.paddedSize() * 24, 0.0);
   for (std::size_t first = 0; first < ne; first += kBatch) {
     const int n = static_cast<int>(std::min<std::size_t>(kBatch, ne - first));
     gatherNodal(blk, first, n, x0, xb);
@@ -519,6 +523,7 @@ BlockStatus initializeSolids(domain::SolidBlock& blk, const domain::NodeVector& 
       volumeOf(xb, bb, vol);
       maxFaceArea(xb, area);
     }
+    if (gradients) detail::storeInitialGradient(blk, first, bb, vol);
     for (int l = 0; l < n; ++l) {
       const std::size_t e = first + static_cast<std::size_t>(l);
       blk.vol0[e] = blk.vol[e] = vol[l];

@@ -526,7 +526,9 @@ BlockStatus computeFullSolidForces(domain::SolidBlock& block, const domain::Node
   return std::visit(
       [&](const auto& law) -> BlockStatus {
         using Law = std::decay_t<decltype(law)>;
-        if constexpr (materials::SolidLaw<Law>)
+        // Laws of the deformation gradient are refused for these formulations when the model is
+        // built (model/build_mesh.cpp, finishParts): no Gauss point here computes F.
+        if constexpr (materials::SolidLaw<Law> && !materials::needsDeformationGradient<Law>())
           return block.elform == 15
                      ? fullBlockForces<Law, PrismRule>(law, block, x, v, dt, bv, slots, first, last)
                  : block.elform == 2

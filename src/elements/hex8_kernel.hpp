@@ -125,8 +125,35 @@ struct BatchScratch {
   double s[6][kBatch], s_old[6][kBatch], de[6][kBatch], alpha[6][kBatch];
   double eps_p[kBatch];
   double hist[materials::kMaxHistory][kBatch];
+  double F[9][kBatch];  // deformation gradient (laws that need it; deformationGradient)
   uint8_t failed[kBatch];
 };
+
+// The deformation gradient of the batch's one-point elements at x: F_ij = sum_a x_ia dN_a/dX_j
+// with the initial gradients the block keeps (SolidBlock::grad0). For the uniform-strain
+// element this is the volume average of F over the initial element, as B / V is of the velocity
+// gradient (Flanagan & Belytschko 1981, eq. 14 with x in place of v).
+inline void deformationGradient(const domain::SolidBlock& blk, std::size_t first, BatchScratch& w) {
+  const double* g = blk.grad0.data() + first * 24;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int l = 0; l < kBatch; ++l) {
+        double s = 0.0;
+        for (int a = 0; a < 8; ++a) s += w.x[i][a][l] * g[(3 * a + j) * kBatch + l];
+        w.F[3 * i + j][l] = s;
+      }
+}
+
+// Stores the initial gradients dN_a/dX = B(X) / V0 of one batch (every lane, the padding
+// lanes' replicas too, so the kernel reads whole batches) for laws that need F.
+inline void storeInitialGradient(domain::SolidBlock& blk, std::size_t first, const NodalBatch& b,
+                                 const LaneArray& vol0) {
+  double* g = blk.grad0.data() + first * 24;
+  for (int a = 0; a < 8; ++a)
+    for (int j = 0; j < 3; ++j)
+      for (int l = 0; l < kBatch; ++l)
+        g[(3 * a + j) * kBatch + l] = vol0[l] > 0.0 ? b[j][a][l] / vol0[l] : 0.0;
+}
 
 // The material update of one batch of points: keeps the rotated stress in s_old (for the
 // energy), clears the failure flags and lets the law advance s (and eps_p, alpha) by de.
@@ -145,6 +172,8 @@ inline void updateMaterial(const Law& law, BatchScratch& w, double dt) {
   }
   pb.eps_p = Law::kPlastic ? w.eps_p : nullptr;
   for (int k = 0; k < materials::historyOf<Law>(); ++k) pb.h[k] = w.hist[k];
+  if constexpr (materials::needsDeformationGradient<Law>())
+    for (int k = 0; k < 9; ++k) pb.F[k] = w.F[k];
   pb.failed = w.failed;
   law.update(pb);
 }

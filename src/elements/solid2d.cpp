@@ -367,7 +367,9 @@ BlockStatus computeSolid2DForces(domain::ShellBlock& block, const domain::NodeVe
         using L = std::decay_t<decltype(law)>;
         // Laws with history variables are refused for 2D parts when the model is built
         // (model/build_mesh.cpp, finishParts): the shell block does not store them.
-        if constexpr (materials::SolidLaw<L> && materials::historyOf<L>() == 0) {
+        // So are laws of the deformation gradient (model/build_planar.cpp).
+        if constexpr (materials::SolidLaw<L> && materials::historyOf<L>() == 0 &&
+                      !materials::needsDeformationGradient<L>()) {
           return solid2DBlockForces<L>(law, block, x, v, dt, bv, slots, first, last);
         } else {
           materials::noUpdateFor(materials::Family::Solid);

@@ -14,6 +14,9 @@
 //                              (materials/eos.hpp); a part of another law with one is refused
 //   kMassOnlyStructures (opt.) its shells and beams are bypassed: mass and inertia only, no
 //                              force and no time step (LS-DYNA's null shells and beams)
+//   kDeformationGradient (opt.) its stress is a function of the deformation gradient F
+//                              (hyperelastic laws): the one-point solids give PointBatch::F,
+//                              and parts of other solid formulations are refused
 //   Params                     the deck's parameters, stored in the Model (trivially copyable:
 //                              the Model is sent to the other ranks as bytes); Params::Law
 //                              names the unit
@@ -63,6 +66,16 @@ constexpr int historyOf() {
   }
 }
 
+// Whether the law's stress is a function of the deformation gradient (its kDeformationGradient,
+// else false).
+template <class L>
+constexpr bool needsDeformationGradient() {
+  if constexpr (requires { L::kDeformationGradient; })
+    return L::kDeformationGradient;
+  else
+    return false;
+}
+
 // A batch of n integration points; every pointer addresses n contiguous values.
 struct PointBatch {
   int n = 0;
@@ -73,6 +86,9 @@ struct PointBatch {
   double* alpha[6] = {};        // back stress, in/out (laws with kinematic hardening)
   uint8_t* failed = nullptr;    // out: set to 1 when the point reaches the failure strain
   double* h[kMaxHistory] = {};  // the law's history variables h[0..kHistory), in/out
+  // The deformation gradient F_ij = dx_i/dX_j at x(n) from the initial geometry, row-major
+  // (F[3 i + j]), in; given only to laws that declare kDeformationGradient, else null.
+  const double* F[9] = {};
 };
 
 // Elastic moduli every continuum law exposes for wave speeds and hourglass control.

@@ -140,6 +140,12 @@ bool massOnlyStructures(const LawParams& p) {
       p);
 }
 
+bool needsDeformationGradient(const LawParams& p) {
+  return std::visit(
+      [](const auto& l) { return needsDeformationGradient<UnitOf<std::decay_t<decltype(l)>>>(); },
+      p);
+}
+
 Law makeLaw(const LawParams& p, const CurveAt& curves, const std::string& at, const Eos* eos) {
   return std::visit(
       [&](const auto& params) -> Law {

@@ -103,6 +103,9 @@ int historyCountOf(const LawParams& p);
 bool usesEos(const LawParams& p);
 // Whether the law's shells and beams give mass only (its unit declares kMassOnlyStructures).
 bool massOnlyStructures(const LawParams& p);
+// Whether the law's stress is a function of the deformation gradient (hyperelastic laws; its
+// unit declares kDeformationGradient): only the one-point solids give it.
+bool needsDeformationGradient(const LawParams& p);
 
 // The kernel law of a continuum part; `at` prefixes messages ("deck.k:12: *MAT_ELASTIC 3: ").
 // `eos` is the part's equation of state, given to a law that declares kEos (solid blocks).
@@ -128,6 +131,10 @@ inline bool isPlastic(const Law& law) {
 }
 inline int historyCount(const Law& law) {
   return std::visit([](const auto& l) { return historyOf<std::decay_t<decltype(l)>>(); }, law);
+}
+inline bool needsDeformationGradient(const Law& law) {
+  return std::visit(
+      [](const auto& l) { return needsDeformationGradient<std::decay_t<decltype(l)>>(); }, law);
 }
 inline bool isKinematic(const Law& law) {
   return std::visit([](const auto& l) { return std::decay_t<decltype(l)>::kKinematic; }, law);

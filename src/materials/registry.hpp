@@ -7,8 +7,10 @@
 #include "materials/laws/crushable_foam.hpp"
 #include "materials/laws/elastic.hpp"
 #include "materials/laws/elastic_plastic_hydro.hpp"
+#include "materials/laws/frazer_nash.hpp"
 #include "materials/laws/johnson_cook.hpp"
 #include "materials/laws/modified_piecewise_linear.hpp"
+#include "materials/laws/mooney_rivlin.hpp"
 #include "materials/laws/null.hpp"
 #include "materials/laws/piecewise_linear.hpp"
 #include "materials/laws/plastic_kinematic.hpp"
@@ -29,6 +31,7 @@ struct LawList {};
 using AllLaws =
     LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic, DamperViscous,
             SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam, JohnsonCook, PowerLaw,
-            StrainRatePlasticity, ModifiedPiecewiseLinear, Spotweld, ElasticPlasticHydro>;
+            StrainRatePlasticity, ModifiedPiecewiseLinear, Spotweld, ElasticPlasticHydro,
+            MooneyRivlin, FrazerNash>;
 
 }  // namespace crumple::materials

@@ -387,7 +387,13 @@ const std::vector<Meaning>& meanings() {
       {"*SET_DISCRETE_ADD", 5, readElementSetAdd, {"TITLE"}, U::Definition, Kind::DiscreteSet},
       {"*SET_NODE_GENERAL", 5, readNodeSetGeneral, {"TITLE"}, U::Definition, Kind::NodeSet},
       {"*BOUNDARY_SPC", 6, readSpc, {"NODE", "SET", "ID"}, U::Reject},
-      {"*BOUNDARY_PRESCRIBED_MOTION", 6, readPrescribedMotion, {"NODE", "SET", "ID"}, U::Reject},
+      // _NODES: the spelling of LS-DYNA's older examples (the 1997 Frazer-Nash test deck) for
+      // _NODE, with the same card (NID DOF VAD LCID SF VID DEATH BIRTH).
+      {"*BOUNDARY_PRESCRIBED_MOTION",
+       6,
+       readPrescribedMotion,
+       {"NODE", "NODES", "SET", "ID"},
+       U::Reject},
       {"*INITIAL_VELOCITY", 6, readInitialVelocity, {}, U::Reject},
       {"*INITIAL_VELOCITY_NODE", 6, readInitialVelocityNode, {}, U::Reject},
       {"*INITIAL_VELOCITY_GENERATION", 6, readInitialVelocityGeneration, {}, U::Reject},

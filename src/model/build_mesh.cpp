@@ -335,6 +335,14 @@ void readParts(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts
   }
 }
 
+// Whether a solid part runs the one-point kernel, the only one that computes the deformation
+// gradient hyperelastic laws need: ELFORM 1 or 10, and without *CONTROL_SOLID ESORT = 1 (which
+// may run its pentahedra as ELFORM 15).
+bool oneSolidPoint(const Model& m, const Part& p) {
+  const int elform = m.solid_sections[static_cast<std::size_t>(p.section)].elform;
+  return elform == 10 || (elform == 1 && !m.controls.solid_esort);
+}
+
 // *MAT_SPOTWELD runs only on spot-weld beams (ELFORM 9): its resultant and time failure live
 // in that kernel; its solid (hexahedral) welds are not supported. False (reported) otherwise.
 bool spotweldOnWeldBeam(Context& ctx, const Part& p, const Material& m) {
@@ -383,6 +391,15 @@ void finishParts(Context& ctx) {
                " has " + sectionName(p.section_kind) + " section but material " +
                std::to_string(m.id) + " (" + materialKeyword(m.law) + ") has no " +
                updateName(p.section_kind));
+    else if (p.section_kind == SectionKind::Solid && materials::needsDeformationGradient(m.law) &&
+             !oneSolidPoint(ctx.model, p))
+      ctx.fail(
+          p.where.str() + ": *PART card 2 field 3 (MID): part " + std::to_string(p.id) +
+          " has material " + std::to_string(m.id) + " (" + materialKeyword(m.law) +
+          "), a hyperelastic law (a function of the deformation gradient), which only the "
+          "one-point solids (*SECTION_SOLID ELFORM 1, 10; not with *CONTROL_SOLID "
+          "ESORT = 1) support yet; its section has ELFORM " +
+          std::to_string(ctx.model.solid_sections[static_cast<std::size_t>(p.section)].elform));
     else if (!spotweldOnWeldBeam(ctx, p, m))
       continue;
     else if (ctx.part_problem[i].empty())  // an unusable EOSID is that part's problem

@@ -36,6 +36,11 @@ void checkPlanarPart(Context& ctx, const Part& p) {
         "{}: material {} ({}) keeps history variables or an equation of state, which 2D "
         "solids do not support yet",
         at, mat.id, law));
+  else if (materials::needsDeformationGradient(mat.law))
+    ctx.fail(fmt::format(
+        "{}: material {} ({}) is hyperelastic (a function of the deformation gradient), which "
+        "only the one-point solids (*SECTION_SOLID ELFORM 1, 10) support yet",
+        at, mat.id, law));
   const int ihq =
       p.hourglass != kNone ? m.hourglass[std::size_t(p.hourglass)].ihq : m.controls.hourglass_ihq;
   if (ihq < 1 || ihq > 3)

@@ -1,0 +1,291 @@
+// The hyperelastic rubbers (*MAT_027 Mooney-Rivlin, *MAT_031 Frazer-Nash) at a material point:
+// the Cauchy stress against closed forms (simple shear of Mooney-Rivlin) and against the
+// derivative of the Theory Manual's strain energy, sigma = (1/J) dW/dF F^T, taken by central
+// differences on W written here from the manual (uniaxial, equibiaxial, simple shear, a general
+// F); frame indifference; the least-squares fits of the LCID option; the refusals.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "materials/hyperelastic.hpp"
+#include "materials/materials.hpp"
+#include "model/build.hpp"
+#include "temp_dir.hpp"
+
+namespace m = crumple::materials;
+
+namespace {
+
+using Mat3 = std::array<double, 9>;  // row-major
+using Stress = std::array<double, 6>;
+
+// The law's stress at F (a batch of one point).
+template <class Law>
+Stress stressAt(const Law& law, const Mat3& F) {
+  double f[9][1], s[6][1] = {}, de[6][1] = {};
+  for (int k = 0; k < 9; ++k) f[k][0] = F[std::size_t(k)];
+  m::PointBatch pb;
+  pb.n = 1;
+  for (int k = 0; k < 6; ++k) {
+    pb.s[k] = s[k];
+    pb.de[k] = de[k];
+  }
+  for (int k = 0; k < 9; ++k) pb.F[k] = f[k];
+  law.update(pb);
+  Stress out;
+  for (int k = 0; k < 6; ++k) out[std::size_t(k)] = s[k][0];
+  return out;
+}
+
+Mat3 mul(const Mat3& a, const Mat3& b) {
+  Mat3 c{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) c[3 * i + j] += a[3 * i + k] * b[3 * k + j];
+  return c;
+}
+Mat3 transpose(const Mat3& a) {
+  return {a[0], a[3], a[6], a[1], a[4], a[7], a[2], a[5], a[8]};
+}
+double det(const Mat3& f) {
+  return f[0] * (f[4] * f[8] - f[5] * f[7]) - f[1] * (f[3] * f[8] - f[5] * f[6]) +
+         f[2] * (f[3] * f[7] - f[4] * f[6]);
+}
+
+// W of *MAT_027 (Theory Manual): invariants of C = F^T F.
+std::function<double(const Mat3&)> mooneyEnergy(double A, double B, double nu) {
+  const double C = 0.5 * A + B;
+  const double D = (A * (5 * nu - 2) + B * (11 * nu - 5)) / (2 * (1 - 2 * nu));
+  return [=](const Mat3& F) {
+    const Mat3 c = mul(transpose(F), F);
+    const Mat3 c2 = mul(c, c);
+    const double i1 = c[0] + c[4] + c[8];
+    const double i2 = 0.5 * (i1 * i1 - (c2[0] + c2[4] + c2[8]));
+    const double i3 = det(c);
+    return A * (i1 - 3) + B * (i2 - 3) + C * (1 / (i3 * i3) - 1) + D * (i3 - 1) * (i3 - 1);
+  };
+}
+
+// U of *MAT_031 (Theory Manual) in the invariants of the Green strain of C_bar = J^-2/3 C, with
+// this code's hydrostatic term f(J) = K (J - 1)^2 / 2 (frazer_nash.hpp).
+std::function<double(const Mat3&)> frazerEnergy(const std::array<double, 8>& c, double K) {
+  return [=](const Mat3& F) {
+    const double J = det(F);
+    Mat3 e = mul(transpose(F), F);
+    for (int i = 0; i < 9; ++i)
+      e[std::size_t(i)] = 0.5 * (std::pow(J, -2.0 / 3.0) * e[std::size_t(i)] - (i % 4 == 0));
+    const Mat3 e2 = mul(e, e);
+    const double i1 = e[0] + e[4] + e[8];
+    const double i2 = 0.5 * (i1 * i1 - (e2[0] + e2[4] + e2[8]));
+    return c[0] * i1 + c[1] * i1 * i1 + c[2] * i1 * i1 * i1 + c[3] * i1 * i1 * i1 * i1 +
+           c[4] * i1 * i2 + c[5] * i1 * i1 * i2 + c[6] * i2 + c[7] * i2 * i2 +
+           0.5 * K * (J - 1) * (J - 1);
+  };
+}
+
+// B, J and the invariants the laws compute from F.
+m::LeftCauchyGreen kinematicsOf(const Mat3& F) {
+  double f[9][1];
+  for (int k = 0; k < 9; ++k) f[k][0] = F[std::size_t(k)];
+  m::PointBatch pb;
+  pb.n = 1;
+  for (int k = 0; k < 9; ++k) pb.F[k] = f[k];
+  return m::leftCauchyGreen(pb, 0);
+}
+
+// sigma = (1/J) P F^T with P = dW/dF by central differences.
+Stress stressOfEnergy(const std::function<double(const Mat3&)>& W, const Mat3& F) {
+  Mat3 P{};
+  const double h = 1e-6;
+  for (std::size_t k = 0; k < 9; ++k) {
+    Mat3 fp = F, fm = F;
+    fp[k] += h;
+    fm[k] -= h;
+    P[k] = (W(fp) - W(fm)) / (2 * h);
+  }
+  const Mat3 s = mul(P, transpose(F));
+  const double J = det(F);
+  return {s[0] / J, s[4] / J, s[8] / J, s[1] / J, s[5] / J, s[2] / J};
+}
+
+const Mat3 kUniaxial{1.3, 0, 0, 0, 0.9, 0, 0, 0, 0.9};
+const Mat3 kEquibiaxial{1.2, 0, 0, 0, 1.2, 0, 0, 0, 0.72};
+const Mat3 kShear{1, 0.4, 0, 0, 1, 0, 0, 0, 1};
+const Mat3 kGeneral{1.1, 0.2, -0.05, 0.1, 0.95, 0.15, -0.08, 0.05, 1.05};
+
+m::MooneyRivlin mooney(double A = 0.5, double B = 0.2, double nu = 0.45) {
+  m::MooneyRivlin::Params p;
+  p.a = A;
+  p.b = B;
+  p.nu = nu;
+  return m::MooneyRivlin::make(p, {}, "");
+}
+
+const std::array<double, 8> kFrazer{1.0, 0.3, 0.1, 0.05, 0.2, 0.1, 0.4, 0.2};
+m::FrazerNash frazer(double nu = 0.45) {
+  m::FrazerNash::Params p;
+  p.nu = nu;
+  for (int t = 0; t < 8; ++t) p.c[t] = kFrazer[std::size_t(t)];
+  return m::FrazerNash::make(p, {}, "");
+}
+
+void expectStress(const Stress& got, const Stress& want, double tol) {
+  for (std::size_t k = 0; k < 6; ++k) EXPECT_NEAR(got[k], want[k], tol) << "component " << k;
+}
+
+}  // namespace
+
+// Simple shear (J = 1) of Mooney-Rivlin, closed form (Holzapfel 2000, sec. 6.3): sigma_xy =
+// 2 (A + B) gamma, sigma_xx - sigma_yy = 2 (A + B) gamma^2, sigma_yy - sigma_zz = -2 B gamma^2.
+// A = 0.5, B = 0.2, gamma = 0.4: 0.56, 0.224, -0.064.
+TEST(Hyperelastic, MooneyRivlinSimpleShearClosedForm) {
+  const Stress s = stressAt(mooney(), kShear);
+  EXPECT_NEAR(s[3], 0.56, 1e-13);
+  EXPECT_NEAR(s[0] - s[1], 0.224, 1e-13);
+  EXPECT_NEAR(s[1] - s[2], -0.064, 1e-13);
+  EXPECT_NEAR(s[4], 0.0, 1e-15);
+  EXPECT_NEAR(s[5], 0.0, 1e-15);
+}
+
+// The small-strain answer: G = 2 (A + B) = 1.4, and with nu = 0.45 K = 2G (1 + nu) /
+// (3 (1 - 2 nu)) = 13.533: a stretch 1 + e gives sigma_xx = (K + 4G/3) e, sigma_yy = (K - 2G/3) e.
+TEST(Hyperelastic, MooneyRivlinSmallStrainModuli) {
+  const auto law = mooney();
+  EXPECT_NEAR(law.moduli.shear, 1.4, 1e-14);
+  EXPECT_NEAR(law.moduli.bulk, 2.0 * 1.4 * 1.45 / (3.0 * 0.1), 1e-12);
+  const double e = 1e-7;
+  const Stress s = stressAt(law, {1 + e, 0, 0, 0, 1, 0, 0, 0, 1});
+  EXPECT_NEAR(s[0] / e, law.moduli.bulk + 4.0 / 3.0 * 1.4, 1e-5);
+  EXPECT_NEAR(s[1] / e, law.moduli.bulk - 2.0 / 3.0 * 1.4, 1e-5);
+  for (double v : stressAt(law, {1, 0, 0, 0, 1, 0, 0, 0, 1})) EXPECT_NEAR(v, 0.0, 1e-15);
+}
+
+// Uniaxial, equibiaxial, shear and a general F: the stress is the derivative of the manual's W.
+TEST(Hyperelastic, StressIsTheDerivativeOfTheEnergy) {
+  const auto mr = mooney();
+  const auto w_mr = mooneyEnergy(0.5, 0.2, 0.45);
+  const auto fn = frazer();
+  const auto w_fn = frazerEnergy(kFrazer, fn.moduli.bulk);
+  for (const Mat3& F : {kUniaxial, kEquibiaxial, kShear, kGeneral}) {
+    expectStress(stressAt(mr, F), stressOfEnergy(w_mr, F), 1e-7);
+    expectStress(stressAt(fn, F), stressOfEnergy(w_fn, F), 1e-7);
+  }
+  // The law's own energy (used by the whole-run energy checks) is the same function.
+  EXPECT_NEAR(fn.energy(kinematicsOf(kGeneral)), w_fn(kGeneral), 1e-14);
+}
+
+// The Frazer-Nash small-strain moduli: G = C100 - C010/2 = 0.8; nu = 0.45 gives K = 7.733.
+TEST(Hyperelastic, FrazerNashSmallStrainModuli) {
+  const auto law = frazer();
+  EXPECT_NEAR(law.moduli.shear, 0.8, 1e-14);
+  const double K = 2.0 * 0.8 * 1.45 / (3.0 * 0.1);
+  EXPECT_NEAR(law.moduli.bulk, K, 1e-12);
+  const double e = 1e-7;
+  const Stress s = stressAt(law, {1 + e, 0, 0, 0, 1, 0, 0, 0, 1});
+  EXPECT_NEAR(s[0] / e, K + 4.0 / 3.0 * 0.8, 1e-5);
+  EXPECT_NEAR(s[1] / e, K - 2.0 / 3.0 * 0.8, 1e-5);
+  const Stress zero = stressAt(law, {1, 0, 0, 0, 1, 0, 0, 0, 1});
+  for (double v : zero) EXPECT_NEAR(v, 0.0, 1e-15);
+}
+
+// Frame indifference: F -> R F turns the stress into R sigma R^T (so its principal values stay).
+TEST(Hyperelastic, RotationTurnsTheStress) {
+  const double a = 0.7, b = -0.4;
+  const Mat3 Rz{std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a), 0, 0, 0, 1};
+  const Mat3 Rx{1, 0, 0, 0, std::cos(b), -std::sin(b), 0, std::sin(b), std::cos(b)};
+  const Mat3 R = mul(Rz, Rx);
+  auto full = [](const Stress& s) {
+    return Mat3{s[0], s[3], s[5], s[3], s[1], s[4], s[5], s[4], s[2]};
+  };
+  auto check = [&](const auto& law) {
+    const Mat3 s0 = full(stressAt(law, kGeneral));
+    const Mat3 turned = mul(mul(R, s0), transpose(R));
+    const Mat3 s1 = full(stressAt(law, mul(R, kGeneral)));
+    for (std::size_t k = 0; k < 9; ++k) EXPECT_NEAR(s1[k], turned[k], 1e-12);
+  };
+  check(mooney());
+  check(frazer());
+}
+
+// The LCID fits recover the coefficients of a curve made from known ones (nominal stress of the
+// incompressible uniaxial stretch, force = P SW ST at dl = (lambda - 1) SGL).
+TEST(Hyperelastic, CurveFitsRecoverTheCoefficients) {
+  const double sgl = 2.0, sw = 0.5, st = 0.25;
+  std::vector<double> x, y_mr, y_fn;
+  for (int i = 0; i <= 20; ++i) {
+    const double l = 0.7 + 0.05 * i;
+    x.push_back((l - 1) * sgl);
+    y_mr.push_back(2 * (l - 1 / (l * l)) * (0.5 + 0.2 / l) * sw * st);
+    // Frazer-Nash with C100 = 1, C200 = 0.3, C010 = 0.4: dU/dl along F = diag(l, l^-1/2, l^-1/2).
+    const double h = 1e-6;
+    auto u = [](double s) {
+      const double a = 0.5 * (s * s - 1), b = 0.5 * (1 / s - 1);
+      const double e1 = a + 2 * b, e2 = 0.5 * (e1 * e1 - (a * a + 2 * b * b));
+      return 1.0 * e1 + 0.3 * e1 * e1 + 0.4 * e2;
+    };
+    y_fn.push_back((u(l + h) - u(l - h)) / (2 * h) * sw * st);
+  }
+  m::MooneyRivlin::Params pm;
+  pm.nu = 0.49;
+  pm.curve = 0;
+  pm.sgl = sgl, pm.sw = sw, pm.st = st;
+  const auto mr = m::MooneyRivlin::make(
+      pm,
+      [&](int32_t) {
+        return m::CurveData{7, x, y_mr};
+      },
+      "");
+  EXPECT_NEAR(mr.a, 0.5, 1e-10);
+  EXPECT_NEAR(mr.b, 0.2, 1e-10);
+  m::FrazerNash::Params pf;
+  pf.nu = 0.49;
+  pf.curve = 0;
+  pf.sgl = sgl, pf.sw = sw, pf.st = st;
+  pf.c[0] = pf.c[1] = pf.c[6] = 1.0;  // flags: C100, C200, C010 in the fit
+  const auto fn = m::FrazerNash::make(
+      pf,
+      [&](int32_t) {
+        return m::CurveData{7, x, y_fn};
+      },
+      "");
+  EXPECT_NEAR(fn.c100, 1.0, 1e-7);
+  EXPECT_NEAR(fn.c200, 0.3, 1e-7);
+  EXPECT_NEAR(fn.c010, 0.4, 1e-7);
+  EXPECT_EQ(fn.c300, 0.0);
+  EXPECT_EQ(fn.c020, 0.0);
+}
+
+// Read from the deck; refused on shells (no plane-stress update) and on the fully integrated
+// hexahedron (no deformation gradient there), each naming the part and the law.
+TEST(Hyperelastic, ReadAndRefusedOnShellsAndElform2) {
+  crumple::testing::TempDir t("crumple_test_rubber");
+  const std::string nodes =
+      "*KEYWORD\n*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,0,0,1\n6,1,0,1\n7,1,1,1\n8,0,1,1\n"
+      "*MAT_MOONEY-RIVLIN_RUBBER\n5,1.0e-6,0.495,0.5,0.2\n0,0,0,0\n";
+  const auto model =
+      crumple::model::readModel(t.write("r.k", nodes + "*SECTION_SOLID\n1,1\n*PART\nrubber\n1,1,5\n"
+                                                       "*ELEMENT_SOLID\n1,1,1,2,3,4,5,6,7,8\n"));
+  const auto& params = std::get<m::MooneyRivlin::Params>(model.materials.at(0).law);
+  EXPECT_EQ(params.a, 0.5);
+  EXPECT_EQ(params.b, 0.2);
+  EXPECT_EQ(params.nu, 0.495);
+
+  const auto shell = t.write("s.k", nodes +
+                                        "*SECTION_SHELL\n1,2\n0.1,0.1,0.1,0.1\n"
+                                        "*PART\nskin\n1,1,5\n*ELEMENT_SHELL\n1,1,1,2,3,4\n");
+  EXPECT_NE(crumple::testing::errorOf([&] { crumple::model::readModel(shell); })
+                .find("part 1 has a *SECTION_SHELL section but material 5 "
+                      "(*MAT_MOONEY-RIVLIN_RUBBER) has no plane-stress update"),
+            std::string::npos);
+  const auto full = t.write("f.k", nodes +
+                                       "*SECTION_SOLID\n1,2\n*PART\nrubber\n1,1,5\n"
+                                       "*ELEMENT_SOLID\n1,1,1,2,3,4,5,6,7,8\n");
+  EXPECT_NE(crumple::testing::errorOf([&] { crumple::model::readModel(full); })
+                .find("(*MAT_MOONEY-RIVLIN_RUBBER), a hyperelastic law (a function of the "
+                      "deformation gradient), which only the one-point solids"),
+            std::string::npos);
+}
