@@ -184,6 +184,10 @@ struct BeamBlock : BlockBase {
   std::vector<double> length0;  // initial length
   std::vector<double> e_int;    // internal energy
   std::vector<uint8_t> active;  // 0 once eroded
+  // *DAMPING_PART_STIFFNESS: Rayleigh beta of the part (0: none) and each element's damping
+  // work (the energy it has taken out).
+  double stiffness_damping = 0.0;
+  std::vector<double> e_damp;
   // ELFORM 1, 2: the frame of each end node as a unit quaternion (w, x, y, z), node 1 then
   // node 2: it turns the global axes into the node's (r, s, t) axes, and the node's angular
   // velocity turns it every cycle.
