@@ -453,6 +453,7 @@ class SubdomainBuilder {
     b.section.shear_factor = sec.shrf;
     b.section.qr = sec.qr;
     b.stiffness_damping = part.stiffness_damping;
+    b.stiffness_fraction = part.stiffness_fraction;
     b.orientation.resize(b.size());
     for (std::size_t k = 0; k < b.size(); ++k) {
       const auto e = static_cast<std::size_t>(b.elem[k]);

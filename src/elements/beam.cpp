@@ -453,7 +453,9 @@ void resizeBeamBlock(domain::BeamBlock& blk, std::size_t n) {
   const bool frames = blk.section.elform != 3;
   blk.length0.assign(n, 0.0);
   blk.e_int.assign(n, 0.0);
-  blk.e_damp.assign(blk.stiffness_damping > 0.0 ? n : 0, 0.0);
+  const bool damped = blk.stiffness_damping > 0.0 || blk.stiffness_fraction > 0.0;
+  blk.e_damp.assign(damped ? n : 0, 0.0);
+  blk.damping_resultant.assign(damped ? n : 0, {});
   blk.active.assign(n, 1);
   blk.triad.assign(frames ? n : 0, {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0});
   blk.deformation.assign(frames ? n : 0, {});
@@ -497,8 +499,9 @@ BlockStatus initializeBeams(domain::BeamBlock& blk, const domain::NodeVector& x0
       slot[3 * a] = mass;
       slot[3 * (2 + a)] = inertia;
     }
+    const double dt_free = beamTimeStep(blk.section, length, E, G, blk.rho0);
     const double dte =
-        dampedStep(beamTimeStep(blk.section, length, E, G, blk.rho0), blk.stiffness_damping);
+        dampedStep(dt_free, blk.stiffness_damping + blk.stiffness_fraction * dt_free);
     element_dt[e] = dte;
     noteStep(st, dte, blk.elem[e]);
   }
@@ -551,7 +554,6 @@ BlockStatus beamForces(domain::BeamBlock& blk, const materials::FibreLaw& law, c
   const double E = law.E, G = law.G;
   const bool resultant_plastic = form == 2 && law.plastic;
   const ResultantCapacity cap = capacityOf(sec, law.sigy);
-  const double beta = blk.stiffness_damping;
   BlockStatus st;
 
   for (std::size_t e = first; e < last; ++e) {
@@ -572,6 +574,9 @@ BlockStatus beamForces(domain::BeamBlock& blk, const materials::FibreLaw& law, c
     }
     const Vec e1 = scale(d, 1.0 / length);
     bool failed = false;
+    // The element's step, and the stiffness damping beta it sets with COEF > 0.
+    const double dt_free = beamTimeStep(bs, length, E, G, blk.rho0);
+    const double beta = blk.stiffness_damping + blk.stiffness_fraction * dt_free;
 
     if (form == 3) {
       // --- truss: axial rate of deformation at the mid-step geometry ----------------------
@@ -585,7 +590,13 @@ BlockStatus beamForces(domain::BeamBlock& blk, const materials::FibreLaw& law, c
       // Stiffness damping: the viscous stress beta E deps/dt over the step (no damping force
       // on an eroding element: `failed` zeroes the slots below).
       const double sig_d = beta > 0.0 && dt > 0.0 ? beta * E * de / dt : 0.0;
-      if (beta > 0.0) blk.e_damp[e] += sec.area * L0 * sig_d * de;
+      if (beta > 0.0) {
+        // Trapezoidal like the internal energy: the stress of the last cycle and this one over
+        // the step between them (what the energy identity of the cycle books).
+        double& sig_d_old = blk.damping_resultant[e][0];
+        blk.e_damp[e] += sec.area * L0 * 0.5 * (sig_d_old + sig_d) * de;
+        sig_d_old = sig_d;
+      }
       const double N = (p.sig + sig_d) * sec.area * L0 / length;
       blk.resultant[e] = {N, 0.0, 0.0, 0.0, 0.0, 0.0};
       if (!failed) {
@@ -625,11 +636,14 @@ BlockStatus beamForces(domain::BeamBlock& blk, const materials::FibreLaw& law, c
         blk.e_int[e] += work;
         blk.resultant[e] = R;
         // Stiffness damping: beta K dd/dt, the elastic increment over the step times beta/dt
-        // (C = beta K; on top of the resultants, not kept in them).
+        // (C = beta K; on top of the resultants, not kept in them), its work trapezoidal like
+        // the internal energy's.
         if (beta > 0.0 && dt > 0.0)
           for (std::size_t k = 0; k < 6; ++k) {
             const double Rd = beta / dt * dR[k];
-            blk.e_damp[e] += Rd * dd[k];
+            double& Rd_old = blk.damping_resultant[e][k];
+            blk.e_damp[e] += 0.5 * (Rd_old + Rd) * dd[k];
+            Rd_old = Rd;
             R[k] += Rd;
           }
         writeEndForces(F, length, R, slot);
@@ -649,7 +663,7 @@ BlockStatus beamForces(domain::BeamBlock& blk, const materials::FibreLaw& law, c
       ++st.eroded;
       continue;
     }
-    noteStep(st, dampedStep(beamTimeStep(bs, length, E, G, blk.rho0), beta), blk.elem[e]);
+    noteStep(st, dampedStep(dt_free, beta), blk.elem[e]);
   }
   return st;
 }

@@ -99,21 +99,20 @@ void readDampingPartStiffness(Context& ctx, const deck::Keyword& kw, const Keywo
     const Card& c = cur.read(spec.card("card 1"));
     const double coef = c.real("COEF");
     // COEF < 0: |COEF| is the Rayleigh coefficient beta of C = beta K (the LS-DYNA 950
-    // formulation, kept under negative COEF since 970 rev. 3510). COEF > 0 selects LS-DYNA's
-    // later formulation, an approximate fraction of critical damping at high frequencies whose
-    // details are not published: refused rather than guessed.
-    if (coef > 0)
-      ctx.reject(c, "COEF",
-                 "COEF > 0 (LS-DYNA's unpublished fraction-of-critical formulation) is not "
-                 "supported; a negative COEF gives the Rayleigh beta = |COEF|");
+    // formulation, kept under negative COEF since 970 rev. 3510). COEF > 0: LS-DYNA's later
+    // formulation, "an approximate fraction of critical damping in the high-frequency domain"
+    // (its details are not published): here beta = COEF x the element's stable step, i.e.
+    // the fraction COEF of critical damping at the element's highest frequency 2 / dt_e
+    // (docs/theory.md, "Damping").
     for (int32_t p : dampedParts(ctx, c, set, field)) {
       Part& part = ctx.model.parts[static_cast<std::size_t>(p)];
-      if (coef < 0 && !stiffnessDampingRuns(ctx.model, part))
+      if (coef != 0 && !stiffnessDampingRuns(ctx.model, part))
         ctx.reject(c, field,
                    "part " + std::to_string(part.id) +
                        ": stiffness damping runs on resultant beams and trusses (*SECTION_BEAM "
                        "ELFORM 2, 3) only, not yet on solids, shells or integrated beams");
-      part.stiffness_damping = -coef;
+      part.stiffness_damping = coef < 0 ? -coef : 0.0;
+      part.stiffness_fraction = coef > 0 ? coef : 0.0;
     }
     ctx.collect(cur);
   }

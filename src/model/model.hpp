@@ -150,9 +150,11 @@ struct Part {
   int32_t eos = kNone;             // index into Model::eos; kNone = none (EOSID 0)
   double contact_ssf = 1.0;        // *PART_CONTACT SSF: penalty scale of the part's segments
   double contact_thickness = 0.0;  // *PART_CONTACT OPTT: shell contact thickness; 0 = the shell's
-  // *DAMPING_PART_STIFFNESS: Rayleigh stiffness-proportional coefficient beta (time units) of
-  // the damping stress beta D_el deps/dt (src/elements/beam.cpp); 0 = none.
-  double stiffness_damping = 0.0;
+  // *DAMPING_PART_STIFFNESS: the damping stress beta D_el deps/dt (src/elements/beam.cpp) with
+  // beta = stiffness_damping (COEF < 0: its magnitude, time units) + stiffness_fraction x the
+  // element's stable step (COEF > 0: the fraction of critical damping at the element's highest
+  // frequency); 0 = none.
+  double stiffness_damping = 0.0, stiffness_fraction = 0.0;
   util::SourceLoc where;
 };
 

@@ -51,7 +51,7 @@ void fields(A& a, M& m) {
   a.count(
       m.parts.size(),
       [&](auto& p) {
-        util::fieldCount<11>(p);
+        util::fieldCount<12>(p);
         a(p.id);
         a(p.title);
         a(p.section_kind);
@@ -62,6 +62,7 @@ void fields(A& a, M& m) {
         a(p.contact_ssf);
         a(p.contact_thickness);
         a(p.stiffness_damping);
+        a(p.stiffness_fraction);
         loc(a, p.where);
       },
       m.parts);

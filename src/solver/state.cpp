@@ -74,6 +74,8 @@ template <class B, class F>
 void visitBeam(B& b, std::size_t e, F&& f) {
   f(b.e_int[e]);
   if (!b.e_damp.empty()) f(b.e_damp[e]);
+  if (!b.damping_resultant.empty())
+    for (auto& v : b.damping_resultant[e]) f(v);
   f(b.active[e]);
   if (!b.triad.empty())
     for (auto& v : b.triad[e]) f(v);
