@@ -87,7 +87,12 @@ std::vector<KeywordSpec> makeTables() {
                {{"card 1",
                  {I("EID", 0, 0, 8), I("PID", 0, 0, 8), I("N1", 0, 0, 8), I("N2", 0, 0, 8),
                   I("N3", 0, 0, 8), I("RT1", 0, 0, 8), I("RR1", 0, 0, 8), I("RT2", 0, 0, 8),
-                  I("RR2", 0, 0, 8), I("LOCAL", 2, Z, 8)}}}});
+                  I("RR2", 0, 0, 8), I("LOCAL", 2, Z, 8)}},
+                // _THICKNESS: the section's dimensions per element, 5E16 (by ELFORM: 1 and 9
+                // TS1 TS2 TT1 TT2; 2 A ISS ITT IRR SA; 3 A).
+                {"thickness card",
+                 {R("PARM1", 0, 0, 16), R("PARM2", 0, 0, 16), R("PARM3", 0, 0, 16),
+                  R("PARM4", 0, 0, 16), R("PARM5", 0, 0, 16)}}}});
   // *ELEMENT_DISCRETE I8,I8,I8,I8,I8,E16,I8,E16.
   t.push_back({"*ELEMENT_DISCRETE",
                {{"card 1",
@@ -422,6 +427,19 @@ std::vector<KeywordSpec> makeTables() {
                {{"card 1", {I("NSID"), I("NSIDEX"), I("BOXID"), I("IRIGID"), I("ICID")}},
                 {"card 2", {R("VX"), R("VY"), R("VZ"), R("VXR"), R("VYR"), R("VZR")}},
                 {"card 3", {R("VXE"), R("VYE"), R("VZE"), R("VXRE"), R("VYRE"), R("VZRE")}}}});
+  // *DAMPING_GLOBAL, *DAMPING_PART_MASS(_SET), *DAMPING_PART_STIFFNESS(_SET) (Keyword Manual
+  // vol. I): SF defaults to 1; the scale factors STX..SRZ all 0 mean 1 (DAMPING_GLOBAL).
+  t.push_back(
+      {"*DAMPING_GLOBAL",
+       {{"card 1",
+         {I("LCID"), R("VALDMP"), R("STX"), R("STY"), R("STZ"), R("SRX"), R("SRY"), R("SRZ")}}}});
+  for (auto [name, id] : Pairs{{"*DAMPING_PART_MASS", "PID"}, {"*DAMPING_PART_MASS_SET", "PSID"}})
+    t.push_back({name,
+                 {{"card 1", {I(id), I("LCID"), R("SF", 1, Z), I("FLAG")}},
+                  {"card 2", {R("STX"), R("STY"), R("STZ"), R("SRX"), R("SRY"), R("SRZ")}}}});
+  for (auto [name, id] :
+       Pairs{{"*DAMPING_PART_STIFFNESS", "PID"}, {"*DAMPING_PART_STIFFNESS_SET", "PSID"}})
+    t.push_back({name, {{"card 1", {I(id), R("COEF")}}}});
   // *INITIAL_AXIAL_FORCE_BEAM (Keyword Manual vol. I): SCALE defaults to 1.
   t.push_back({"*INITIAL_AXIAL_FORCE_BEAM",
                {{"card 1", {I("BSID"), I("LCID"), R("SCALE", 1, Z), I("KBEND")}}}});

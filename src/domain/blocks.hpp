@@ -184,6 +184,14 @@ struct BeamBlock : BlockBase {
   std::vector<double> length0;  // initial length
   std::vector<double> e_int;    // internal energy
   std::vector<uint8_t> active;  // 0 once eroded
+  // *DAMPING_PART_STIFFNESS: Rayleigh beta of the part and the fraction of critical damping at
+  // each element's highest frequency (model::Part; 0: none), and each element's damping work
+  // (the energy it has taken out) with the damping resultants of the last cycle (ELFORM 2: the
+  // six of `resultant`; trusses: the axial stress first) for its trapezoidal rule; empty when
+  // the block is not damped.
+  double stiffness_damping = 0.0, stiffness_fraction = 0.0;
+  std::vector<double> e_damp;
+  std::vector<std::array<double, 6>> damping_resultant;
   // ELFORM 1, 2: the frame of each end node as a unit quaternion (w, x, y, z), node 1 then
   // node 2: it turns the global axes into the node's (r, s, t) axes, and the node's angular
   // velocity turns it every cycle.

@@ -235,8 +235,12 @@ class SubdomainBuilder {
       for (auto& [triangles, sub, sub_shared] : sortTriangles(key.first, elems, shared))
         addBlock(shellBlock(key.first, sub, sub_shared, triangles), model::Family::Shell,
                  sd.shell_blocks);
-    for (auto& [key, elems, shared] : groupByPart(model::Family::Beam, model.beams))
-      addBlock(beamBlock(key.first, elems, shared), model::Family::Beam, sd.beam_blocks);
+    // A part's beams split by their own sections (*ELEMENT_BEAM_THICKNESS; kNone: the part's).
+    for (auto& [key, elems, shared] :
+         groupByPart(model::Family::Beam, model.beams,
+                     [&](std::size_t e) { return int(model.beams.section[e]); }))
+      addBlock(beamBlock(key.first, key.second, elems, shared), model::Family::Beam,
+               sd.beam_blocks);
     for (auto& [key, elems, shared] : groupByPart(model::Family::Discrete, model.discretes))
       addBlock(discreteBlock(key.first, elems, shared), model::Family::Discrete,
                sd.discrete_blocks);
@@ -424,11 +428,12 @@ class SubdomainBuilder {
     return b;
   }
 
-  BeamBlock beamBlock(int32_t part_index, const std::vector<int32_t>& elems,
+  BeamBlock beamBlock(int32_t part_index, int32_t section, const std::vector<int32_t>& elems,
                       std::size_t shared_count) const {
     const auto& part = model.parts[static_cast<std::size_t>(part_index)];
     const auto& mat = model.materials[static_cast<std::size_t>(part.material)];
-    const auto& sec = model.beam_sections[static_cast<std::size_t>(part.section)];
+    const auto& sec = model.beam_sections[static_cast<std::size_t>(
+        section == model::kNone ? part.section : section)];
     BeamBlock b;
     fillBase(b, model, part_index, elems, shared_count, 1, model.beams, local_of);
     b.law = lawOf(model, part, false);
@@ -447,6 +452,8 @@ class SubdomainBuilder {
     b.section.sa = sec.sa;
     b.section.shear_factor = sec.shrf;
     b.section.qr = sec.qr;
+    b.stiffness_damping = part.stiffness_damping;
+    b.stiffness_fraction = part.stiffness_fraction;
     b.orientation.resize(b.size());
     for (std::size_t k = 0; k < b.size(); ++k) {
       const auto e = static_cast<std::size_t>(b.elem[k]);

@@ -442,11 +442,20 @@ double beamTimeStep(const domain::BeamSection& section, double length, double E,
   return dt;
 }
 
+double dampedStep(double dt, double beta) {
+  if (!(beta > 0.0) || !(dt > 0.0)) return dt;
+  const double xi = beta / dt;  // beta omega_max / 2 with omega_max = 2 / dt
+  return dt * (std::sqrt(1.0 + xi * xi) - xi);
+}
+
 void resizeBeamBlock(domain::BeamBlock& blk, std::size_t n) {
   const Section sec = sectionOf(blk.section);
   const bool frames = blk.section.elform != 3;
   blk.length0.assign(n, 0.0);
   blk.e_int.assign(n, 0.0);
+  const bool damped = blk.stiffness_damping > 0.0 || blk.stiffness_fraction > 0.0;
+  blk.e_damp.assign(damped ? n : 0, 0.0);
+  blk.damping_resultant.assign(damped ? n : 0, {});
   blk.active.assign(n, 1);
   blk.triad.assign(frames ? n : 0, {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0});
   blk.deformation.assign(frames ? n : 0, {});
@@ -490,7 +499,9 @@ BlockStatus initializeBeams(domain::BeamBlock& blk, const domain::NodeVector& x0
       slot[3 * a] = mass;
       slot[3 * (2 + a)] = inertia;
     }
-    const double dte = beamTimeStep(blk.section, length, E, G, blk.rho0);
+    const double dt_free = beamTimeStep(blk.section, length, E, G, blk.rho0);
+    const double dte =
+        dampedStep(dt_free, blk.stiffness_damping + blk.stiffness_fraction * dt_free);
     element_dt[e] = dte;
     noteStep(st, dte, blk.elem[e]);
   }
@@ -498,6 +509,22 @@ BlockStatus initializeBeams(domain::BeamBlock& blk, const domain::NodeVector& x0
 }
 
 namespace {
+
+// The increments of the ELFORM 2 resultants for the deformation increment dd through the
+// elastic Timoshenko beam stiffness (top of file).
+std::array<double, 6> elasticIncrement(const Section& sec, double sa, double E, double G, double L0,
+                                       const std::array<double, 6>& dd) {
+  const double phi_s = sa > 0.0 ? 12.0 * E * sec.iss / (G * sa * L0 * L0) : 0.0;
+  const double phi_t = sa > 0.0 ? 12.0 * E * sec.itt / (G * sa * L0 * L0) : 0.0;
+  const double ks = E * sec.iss / (L0 * (1.0 + phi_s));
+  const double kt = E * sec.itt / (L0 * (1.0 + phi_t));
+  return {E * sec.area * dd[0] / L0,
+          G * sec.j * dd[1] / L0,
+          ks * ((4.0 + phi_s) * dd[2] + (2.0 - phi_s) * dd[4]),
+          kt * ((4.0 + phi_t) * dd[3] + (2.0 - phi_t) * dd[5]),
+          ks * ((2.0 - phi_s) * dd[2] + (4.0 + phi_s) * dd[4]),
+          kt * ((2.0 - phi_t) * dd[3] + (4.0 + phi_t) * dd[5])};
+}
 
 // The end forces and moments on the nodes (minus the internal force vector) from the
 // resultants G = (N, T, G_1s, G_1t, G_2s, G_2t) conjugate to the deformation (top of file).
@@ -547,6 +574,9 @@ BlockStatus beamForces(domain::BeamBlock& blk, const materials::FibreLaw& law, c
     }
     const Vec e1 = scale(d, 1.0 / length);
     bool failed = false;
+    // The element's step, and the stiffness damping beta it sets with COEF > 0.
+    const double dt_free = beamTimeStep(bs, length, E, G, blk.rho0);
+    const double beta = blk.stiffness_damping + blk.stiffness_fraction * dt_free;
 
     if (form == 3) {
       // --- truss: axial rate of deformation at the mid-step geometry ----------------------
@@ -557,7 +587,17 @@ BlockStatus beamForces(domain::BeamBlock& blk, const materials::FibreLaw& law, c
       const double s_old = p.sig;
       failed = materials::updateFibre(law, p, de, 0.0, 0.0, dt);
       blk.e_int[e] += sec.area * L0 * 0.5 * (s_old + p.sig) * de;
-      const double N = p.sig * sec.area * L0 / length;
+      // Stiffness damping: the viscous stress beta E deps/dt over the step (no damping force
+      // on an eroding element: `failed` zeroes the slots below).
+      const double sig_d = beta > 0.0 && dt > 0.0 ? beta * E * de / dt : 0.0;
+      if (beta > 0.0) {
+        // Trapezoidal like the internal energy: the stress of the last cycle and this one over
+        // the step between them (what the energy identity of the cycle books).
+        double& sig_d_old = blk.damping_resultant[e][0];
+        blk.e_damp[e] += sec.area * L0 * 0.5 * (sig_d_old + sig_d) * de;
+        sig_d_old = sig_d;
+      }
+      const double N = (p.sig + sig_d) * sec.area * L0 / length;
       blk.resultant[e] = {N, 0.0, 0.0, 0.0, 0.0, 0.0};
       if (!failed) {
         for (int i = 0; i < 3; ++i) {
@@ -588,21 +628,24 @@ BlockStatus beamForces(domain::BeamBlock& blk, const materials::FibreLaw& law, c
       if (form == 2) {
         // --- Belytschko-Schwer: resultants through the beam stiffness ---------------------
         const std::array<double, 6> R_old = R;
-        R[0] += E * sec.area * dd[0] / L0;
-        R[1] += G * sec.j * dd[1] / L0;
-        const double phi_s = bs.sa > 0.0 ? 12.0 * E * sec.iss / (G * bs.sa * L0 * L0) : 0.0;
-        const double phi_t = bs.sa > 0.0 ? 12.0 * E * sec.itt / (G * bs.sa * L0 * L0) : 0.0;
-        const double ks = E * sec.iss / (L0 * (1.0 + phi_s));
-        const double kt = E * sec.itt / (L0 * (1.0 + phi_t));
-        R[2] += ks * ((4.0 + phi_s) * dd[2] + (2.0 - phi_s) * dd[4]);
-        R[4] += ks * ((2.0 - phi_s) * dd[2] + (4.0 + phi_s) * dd[4]);
-        R[3] += kt * ((4.0 + phi_t) * dd[3] + (2.0 - phi_t) * dd[5]);
-        R[5] += kt * ((2.0 - phi_t) * dd[3] + (4.0 + phi_t) * dd[5]);
+        const std::array<double, 6> dR = elasticIncrement(sec, bs.sa, E, G, L0, dd);
+        for (std::size_t k = 0; k < 6; ++k) R[k] += dR[k];
         if (resultant_plastic) returnResultants(R, cap);
         double work = 0.0;
         for (std::size_t k = 0; k < 6; ++k) work += 0.5 * (R_old[k] + R[k]) * dd[k];
         blk.e_int[e] += work;
         blk.resultant[e] = R;
+        // Stiffness damping: beta K dd/dt, the elastic increment over the step times beta/dt
+        // (C = beta K; on top of the resultants, not kept in them), its work trapezoidal like
+        // the internal energy's.
+        if (beta > 0.0 && dt > 0.0)
+          for (std::size_t k = 0; k < 6; ++k) {
+            const double Rd = beta / dt * dR[k];
+            double& Rd_old = blk.damping_resultant[e][k];
+            blk.e_damp[e] += 0.5 * (Rd_old + Rd) * dd[k];
+            Rd_old = Rd;
+            R[k] += Rd;
+          }
         writeEndForces(F, length, R, slot);
       } else {
         // --- Hughes-Liu, spot weld: the section's points through the law ----------------
@@ -620,7 +663,7 @@ BlockStatus beamForces(domain::BeamBlock& blk, const materials::FibreLaw& law, c
       ++st.eroded;
       continue;
     }
-    noteStep(st, beamTimeStep(bs, length, E, G, blk.rho0), blk.elem[e]);
+    noteStep(st, dampedStep(dt_free, beta), blk.elem[e]);
   }
   return st;
 }

@@ -75,4 +75,10 @@ double beamRotationalInertia(double rho, double length, double area, double i_ma
 double beamTimeStep(const domain::BeamSection& section, double length, double E, double G,
                     double rho);
 
+// The stable step dt of an undamped element reduced for stiffness-proportional damping
+// C = beta K: (2 / omega) (sqrt(1 + xi^2) - xi) with omega = 2 / dt and xi = beta omega / 2
+// (Belytschko, Liu & Moran, Nonlinear Finite Elements for Continua and Structures, 2000,
+// sec. 6.3.3, the central difference method with viscous damping).
+double dampedStep(double dt, double beta);
+
 }  // namespace crumple::elements

@@ -341,7 +341,7 @@ const std::vector<Meaning>& meanings() {
       {"*MAT_ADD_EROSION", 2, readAddErosion, {"TITLE"}, U::Reject},
       {"*ELEMENT_SOLID", 3, readSolids, {}, U::Reject},
       {"*ELEMENT_SHELL", 3, readShells, {"THICKNESS"}, U::Reject},
-      {"*ELEMENT_BEAM", 3, readBeams, {}, U::Reject},
+      {"*ELEMENT_BEAM", 3, readBeams, {"THICKNESS"}, U::Reject},
       {"*ELEMENT_DISCRETE", 3, readDiscretes, {}, U::Reject},
       {"*SET_NODE",
        4,
@@ -444,6 +444,9 @@ const std::vector<Meaning>& meanings() {
       {"*CONTROL_IMPLICIT_GENERAL", 6, readControlImplicitGeneral, {}},
       {"*CONTROL_DYNAMIC_RELAXATION", 6, readControlDynamicRelaxation, {}},
       {"*CONTROL_DAMPING", 6, readControlDynamicRelaxation, {}},
+      {"*DAMPING_GLOBAL", 6, readDampingGlobal, {}},
+      {"*DAMPING_PART_MASS", 6, readDampingPartMass, {"SET"}, U::Reject},
+      {"*DAMPING_PART_STIFFNESS", 6, readDampingPartStiffness, {"SET"}, U::Reject},
       {"*DATABASE_EXTENT_BINARY", 6, readDatabaseExtentBinary, {}},
       {"*DATABASE_GLSTAT", 6, readDatabaseAscii, {}},
       {"*DATABASE_MATSUM", 6, readDatabaseAscii, {}},
@@ -729,6 +732,7 @@ Model buildModel(const deck::Deck& deck, const std::filesystem::path& path,
   }
   ctx.attempt([&] { finishRigid(ctx); });
   ctx.attempt([&] { finishConditions(ctx); });
+  ctx.attempt([&] { finishDamping(ctx); });
   ctx.attempt([&] { finishControls(ctx); });
   ctx.attempt([&] { finishPlanar(ctx); });
   inferUnits(ctx.model);

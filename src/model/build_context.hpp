@@ -201,6 +201,7 @@ class Context {
     int32_t file, line;
     std::array<double, 4> real{};
     int32_t aux = kNone;
+    int32_t section = kNone;  // *ELEMENT_BEAM_THICKNESS: the element's own beam section
   };
   std::vector<ElementInput<8>> solid_input;
   std::vector<ElementInput<4>> shell_input;
@@ -362,6 +363,13 @@ void readLoadBody(Context&, const deck::Keyword&, const KeywordOptions&);
 void readRigidWallPlanar(Context&, const deck::Keyword&, const KeywordOptions&);
 void readRigidWallGeometric(Context&, const deck::Keyword&, const KeywordOptions&);
 void finishConditions(Context&);
+
+// build_damping.cpp: *DAMPING_GLOBAL, *DAMPING_PART_MASS(_SET), *DAMPING_PART_STIFFNESS(_SET);
+// finishDamping gives the parts' mass damping its nodes (after the elements are read).
+void readDampingGlobal(Context&, const deck::Keyword&, const KeywordOptions&);
+void readDampingPartMass(Context&, const deck::Keyword&, const KeywordOptions&);
+void readDampingPartStiffness(Context&, const deck::Keyword&, const KeywordOptions&);
+void finishDamping(Context&);
 
 // build_rigid.cpp: rigid bodies, spot welds, tied node sets (finishRigid before
 // finishConditions: it turns SPCs on rigid-body nodes into constraints of the body)

@@ -264,7 +264,10 @@ void finishSolids(Context& ctx) {
   finishFamily(ctx, ctx.shell_input, ctx.model.shells, "*ELEMENT_SHELL",
                [](Shells& s, const Context::ElementInput<4>& e) { s.thickness.push_back(e.real); });
   finishFamily(ctx, ctx.beam_input, ctx.model.beams, "*ELEMENT_BEAM",
-               [](Beams& b, const Context::ElementInput<2>& e) { b.orientation.push_back(e.aux); });
+               [](Beams& b, const Context::ElementInput<2>& e) {
+                 b.orientation.push_back(e.aux);
+                 b.section.push_back(e.section);
+               });
   finishFamily(ctx, ctx.discrete_input, ctx.model.discretes, "*ELEMENT_DISCRETE",
                [](Discretes& d, const Context::ElementInput<2>& e) {
                  d.scale.push_back(e.real[0]);

@@ -3,6 +3,8 @@
 // and *CONTROL_SHELL (LS-DYNA Keyword Manual Vol. I and II).
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <string>
 
 #include "model/build_context.hpp"
 #include "util/error.hpp"
@@ -106,9 +108,82 @@ void readShells(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opt
   }
 }
 
-void readBeams(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+namespace {
+
+// Defaults of blank section dimensions (Keyword Manual, *SECTION_BEAM): TS2 = TS1, TT2 = TT1;
+// J = ISS + ITT (thin section), SA = A.
+void completeBeamSection(SectionBeam& s) {
+  if (s.ts2 <= 0) s.ts2 = s.ts1;
+  if (s.tt2 <= 0) s.tt2 = s.tt1;
+  if (s.j <= 0) s.j = s.iss + s.itt;
+  if (s.sa <= 0) s.sa = s.a;
+}
+
+// The dimensions a beam runs with must be positive: checked per element, since a section may
+// leave them to *ELEMENT_BEAM_THICKNESS (pre-processors write them per element).
+void checkBeamSection(const Card& c, const SectionBeam& s, int64_t eid) {
+  auto need = [&](double value, const char* what) {
+    if (value > 0) return;
+    c.fail("EID", "beam " + std::to_string(eid) + " has no " + what + ": section " +
+                      std::to_string(s.id) + " gives none and the element none " +
+                      "(*ELEMENT_BEAM_THICKNESS)");
+  };
+  if (s.elform == 1 || s.elform == 9) {
+    need(s.ts1, "thickness TS1");
+    if (s.cst == 0) need(s.tt1, "thickness TT1");
+    return;
+  }
+  need(s.a, "area A");
+  if (s.elform != 2) return;
+  need(s.iss, "moment of inertia ISS");
+  need(s.itt, "moment of inertia ITT");
+}
+
+// *ELEMENT_BEAM_THICKNESS card 2: PARM1-5 by ELFORM (Keyword Manual, *ELEMENT_BEAM): 1 and 9
+// TS1 TS2 TT1 TT2; 2 A ISS ITT IRR (J) SA; 3 A. A field left 0 keeps the section's value.
+// Elements with the same dimensions share one section (blocks are per section).
+int32_t elementSection(Context& ctx, const Card& t, int32_t section,
+                       std::map<std::pair<int32_t, std::array<double, 5>>, int32_t>& made) {
+  std::array<double, 5> p{};
+  for (std::size_t i = 0; i < 5; ++i) {
+    const std::string f = "PARM" + std::to_string(i + 1);
+    p[i] = t.real(f);
+    if (p[i] < 0) t.fail(f, "a section dimension must not be negative");
+  }
+  const auto key = std::make_pair(section, p);
+  if (const auto it = made.find(key); it != made.end()) return it->second;
+  SectionBeam s = ctx.model.beam_sections[static_cast<std::size_t>(section)];
+  auto put = [&](double& field, double value) {
+    if (value > 0) field = value;
+  };
+  if (s.elform == 1 || s.elform == 9) {
+    put(s.ts1, p[0]);
+    put(s.ts2, p[1]);
+    put(s.tt1, p[2]);
+    put(s.tt2, p[3]);
+  } else {
+    put(s.a, p[0]);
+    if (s.elform == 2) {
+      put(s.iss, p[1]);
+      put(s.itt, p[2]);
+      put(s.j, p[3]);
+      put(s.sa, p[4]);
+    }
+  }
+  completeBeamSection(s);
+  s.where = t.where();
+  const auto index = static_cast<int32_t>(ctx.model.beam_sections.size());
+  ctx.model.beam_sections.push_back(s);
+  made.emplace(key, index);
+  return index;
+}
+
+}  // namespace
+
+void readBeams(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const auto& spec = keywordSpec("*ELEMENT_BEAM");
   static constexpr const char* kN[2] = {"N1", "N2"};
+  std::map<std::pair<int32_t, std::array<double, 5>>, int32_t> made;
   CardCursor cur(kw, ctx.deck);
   for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
     const Card& c = cur.read(spec.card("card 1"));
@@ -118,6 +193,15 @@ void readBeams(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
     for (auto f : {"RT1", "RR1", "RT2", "RR2"})
       if (c.integer(f) != 0) ctx.reject(c, f, "beam end releases are not supported");
     c.integer("LOCAL");  // release coordinate system: no releases, no meaning
+    const int32_t section = ctx.model.parts[static_cast<std::size_t>(e.part)].section;
+    if (opts.has("THICKNESS")) {
+      const Card& t = cur.read(spec.card("thickness card"));
+      if (section != kNone) e.section = elementSection(ctx, t, section, made);
+    }
+    if (section != kNone) {
+      const auto s = static_cast<std::size_t>(e.section != kNone ? e.section : section);
+      checkBeamSection(c, ctx.model.beam_sections[s], e.id);
+    }
     ctx.beam_input.push_back(e);
     ctx.collect(cur);
   }
@@ -250,30 +334,26 @@ void readSectionBeam(Context& ctx, const deck::Keyword& kw, const KeywordOptions
       s.ts2 = c2.real("TS2");
       s.tt1 = c2.real("TT1");
       s.tt2 = c2.real("TT2");
-      if (!(s.ts1 > 0)) c2.fail("TS1", "the section dimension must be positive");
-      if (s.ts2 <= 0) s.ts2 = s.ts1;
-      // A tube's TT is its inner diameter (0: solid bar); a rectangle's is the other side.
-      if (s.cst == 0 && !(s.tt1 > 0)) c2.fail("TT1", "the section dimension must be positive");
-      if (s.tt2 <= 0) s.tt2 = s.tt1;
+      // Zero dimensions may come per element (*ELEMENT_BEAM_THICKNESS): checked per element.
+      for (auto f : {"TS1", "TT1"})
+        if (c2.real(f) < 0) c2.fail(f, "the section dimension must not be negative");
       if (c2.real("NSLOC") != 0 || c2.real("NTLOC") != 0)
         ctx.reject(c2, c2.real("NSLOC") != 0 ? "NSLOC" : "NTLOC",
                    "offset reference axes are not supported");
     } else {
       const Card& c2 = cur.read(spec.card("resultant card"));
       s.a = c2.real("A");
-      if (!(s.a > 0)) c2.fail("A", "the cross-section area must be positive");
       if (s.elform == 2) {
         s.iss = c2.real("ISS");
         s.itt = c2.real("ITT");
         s.j = c2.real("J");
         s.sa = c2.real("SA");
-        if (!(s.iss > 0)) c2.fail("ISS", "the moment of inertia must be positive");
-        if (!(s.itt > 0)) c2.fail("ITT", "the moment of inertia must be positive");
-        if (s.j <= 0) s.j = s.iss + s.itt;  // polar moment of a thin section, LS-DYNA default
-        if (s.sa <= 0) s.sa = s.a;
       }
+      for (auto f : {"A", "ISS", "ITT"})
+        if (c2.real(f) < 0) c2.fail(f, "the section property must not be negative");
       c2.real("IST");
     }
+    completeBeamSection(s);
     ctx.define(Kind::Section, s.id, c, "SECID");
     ctx.model.beam_sections.push_back(s);
     ctx.collect(cur);

@@ -150,6 +150,11 @@ struct Part {
   int32_t eos = kNone;             // index into Model::eos; kNone = none (EOSID 0)
   double contact_ssf = 1.0;        // *PART_CONTACT SSF: penalty scale of the part's segments
   double contact_thickness = 0.0;  // *PART_CONTACT OPTT: shell contact thickness; 0 = the shell's
+  // *DAMPING_PART_STIFFNESS: the damping stress beta D_el deps/dt (src/elements/beam.cpp) with
+  // beta = stiffness_damping (COEF < 0: its magnitude, time units) + stiffness_fraction x the
+  // element's stable step (COEF > 0: the fraction of critical damping at the element's highest
+  // frequency); 0 = none.
+  double stiffness_damping = 0.0, stiffness_fraction = 0.0;
   util::SourceLoc where;
 };
 
@@ -183,6 +188,9 @@ struct Shells : ElementList<4> {
 // 2-node beams with an optional orientation node (third node, kNone if none).
 struct Beams : ElementList<2> {
   std::vector<int32_t> orientation;
+  // *ELEMENT_BEAM_THICKNESS: index into Model::beam_sections of the element's own section (its
+  // part's with PARM1-5 put in); kNone = the part's.
+  std::vector<int32_t> section;
 };
 
 // 2-node discrete springs and dampers, with the S (scale) and OFFSET fields.
@@ -217,6 +225,21 @@ struct PrescribedMotion {
   double sf = 1.0;
   double birth = 0.0;
   double death = std::numeric_limits<double>::infinity();
+};
+
+// *DAMPING_GLOBAL, *DAMPING_PART_MASS(_SET): the nodal force -D(t) m v on the translations
+// (scale[0..2]) and -D(t) I omega on the rotations (scale[3..5]), D(t) = value * curve(t)
+// (curve kNone: D = value). Global when `nodes` is empty and `global`; a part's damping acts
+// on the nodes of its elements, nodes[k] with weight[k] = the fraction of the node's elements
+// that belong to the parts (1 unless parts with other damping share the node).
+struct MassDamping {
+  bool global = false;
+  int32_t curve = kNone;
+  double value = 0.0;
+  std::array<double, 6> scale{1, 1, 1, 1, 1, 1};
+  std::vector<int32_t> nodes;  // ascending node indices
+  std::vector<double> weight;
+  util::SourceLoc where;
 };
 
 // *LOAD_NODE_POINT/_SET: F = sf * curve(t) in a global direction.
@@ -442,6 +465,7 @@ struct Model {
   std::array<std::vector<int32_t>, kFamilies> history_elements;
   std::vector<CrossSection> cross_sections;  // *DATABASE_CROSS_SECTION_PLANE, in deck order
   std::vector<BeamPreload> beam_preloads;    // *INITIAL_AXIAL_FORCE_BEAM, in deck order
+  std::vector<MassDamping> mass_damping;     // *DAMPING_GLOBAL, *DAMPING_PART_MASS, deck order
   RigidDefinitions rigid;                    // rigid bodies, spot welds, tied node sets
   std::vector<ContactInterface> contacts;
   ContactControls contact_controls;

@@ -42,6 +42,7 @@ void fields(A& a, M& m) {
   a(m.beams.part);
   a(m.beams.nodes);
   a(m.beams.orientation);
+  a(m.beams.section);
   a(m.discretes.id);
   a(m.discretes.part);
   a(m.discretes.nodes);
@@ -50,7 +51,7 @@ void fields(A& a, M& m) {
   a.count(
       m.parts.size(),
       [&](auto& p) {
-        util::fieldCount<10>(p);
+        util::fieldCount<12>(p);
         a(p.id);
         a(p.title);
         a(p.section_kind);
@@ -60,6 +61,8 @@ void fields(A& a, M& m) {
         a(p.eos);
         a(p.contact_ssf);
         a(p.contact_thickness);
+        a(p.stiffness_damping);
+        a(p.stiffness_fraction);
         loc(a, p.where);
       },
       m.parts);
@@ -225,6 +228,19 @@ void fields(A& a, M& m) {
         loc(a, p.where);
       },
       m.beam_preloads);
+  a.count(
+      m.mass_damping.size(),
+      [&](auto& d) {
+        util::fieldCount<7>(d);
+        a(d.global);
+        a(d.curve);
+        a(d.value);
+        a(d.scale);
+        a(d.nodes);
+        a(d.weight);
+        loc(a, d.where);
+      },
+      m.mass_damping);
   a.count(
       m.rigid.bodies.size(),
       [&](auto& b) {

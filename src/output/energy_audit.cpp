@@ -23,6 +23,7 @@ std::vector<Term> changes(const solver::Energies& a, const solver::Energies& b) 
           {"hourglass", b.hourglass - a.hourglass},
           {"contact", b.contact - a.contact},
           {"stonewall", b.rigidwall - a.rigidwall},
+          {"damping", b.damping - a.damping},
           {"external work", b.external_work - a.external_work}};
 }
 

@@ -40,8 +40,8 @@ long peakMemoryBytes() {
 
 namespace {
 const std::vector<std::string> kGlstatColumns = {
-    "time",    "cycle",         "dt",    "kinetic",      "internal",  "hourglass",
-    "contact", "external_work", "total", "energy_ratio", "rigidwall", "added_mass"};
+    "time",          "cycle", "dt",           "kinetic",   "internal",   "hourglass", "contact",
+    "external_work", "total", "energy_ratio", "rigidwall", "added_mass", "damping"};
 const std::vector<std::string> kMatsumColumns = {
     "time", "part", "kinetic", "internal", "hourglass", "x_momentum", "y_momentum", "z_momentum"};
 const std::vector<std::string> kNodoutColumns = {"time", "node", "x",  "y",  "z",  "dx", "dy",
@@ -358,6 +358,7 @@ ascii::GlstatSample ResultsWriter::glstatSample(const solver::Solver& s,
       e.total != 0.0 ? e.ratio * (e.total - eroded.internal - eroded.hourglass) / e.total : e.ratio;
   g.stonewall = !model_.rigid_walls.empty();
   g.stonewall_energy = e.rigidwall;
+  g.damping = e.damping;
   g.mass_scaled = model_.controls.dt2ms != 0.0;
   g.added_mass = s.addedMass();
   g.percent_increase = s.totalMass() > 0.0 ? 100.0 * s.addedMass() / s.totalMass() : 0.0;
@@ -370,7 +371,7 @@ void ResultsWriter::writeGlstat(const solver::Solver& s) {
   const double t = s.time();
   if (root)
     glstat_csv_.row({t, double(s.cycle()), s.dt(), e.kinetic, e.internal, e.hourglass, e.contact,
-                     e.external_work, e.total, e.ratio, e.rigidwall, s.addedMass()});
+                     e.external_work, e.total, e.ratio, e.rigidwall, s.addedMass(), e.damping});
   if (root) glstat_csv_.flush();
   if (model_.controls.ascii.glstat) {
     const ascii::GlstatSample g = glstatSample(s, e);  // collective
@@ -768,6 +769,7 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
                  {"contact", e.contact},
                  {"external_work", e.external_work},
                  {"rigidwall", e.rigidwall},
+                 {"damping", e.damping},
                  {"total", e.total},
                  {"ratio", e.ratio}};
   const auto& audit = audit_.summary();

@@ -43,7 +43,8 @@ Solver::Solver(const model::Model& model, domain::Subdomain& sd, comm::Communica
       sd_(sd),
       comm_(comm),
       shared_slots_(comm, sharedSlotPeers(sd), 3),
-      boundary_(model, sd) {
+      boundary_(model, sd),
+      damping_(model, sd) {
   bv_.q1 = model.controls.q_quadratic;
   bv_.q2 = model.controls.q_linear;
   end_time_ = model.controls.end_time;
@@ -501,6 +502,7 @@ Solver::StableStep Solver::stableTimeStep(const ElementPass& pass) const {
 void Solver::computeExternalForces() {
   util::ScopedTimer timer(timing_.constraints);
   boundary_.externalForces(time_, sd_, sd_.f_ext);
+  if (!damping_.empty()) damping_.addForces(model_, time_, sd_);
   if (rigid_) {
     rigid_->addJointForces(dt_next_, sd_, comm_);
     rigid_->computeBodyLoads(time_);
@@ -589,6 +591,13 @@ void Solver::addExternalWork(double dt_n, constraints::StepWork work) {
         work += constraints::impulseWork(-f[std::size_t(c)] * dt_n, v_old_[i], sd_.v[i]);
       }
     }
+  // The mass damping forces sit in f_ext too: their work is damping energy.
+  if (!damping_.empty()) {
+    const auto dw = damping_.work(sd_, dt_n, v_old_, w_old_);
+    if (nchunk > 0) work += constraints::StepWork{-dw.translation.behind, -dw.translation.ahead};
+    damping_work_ += dw.translation.total() + dw.rotation.total();
+    damping_ahead_ = dw.translation.ahead + dw.rotation.ahead;
+  }
   external_work_ += work.total();
   work_ahead_ = work.ahead;
 }
@@ -717,13 +726,18 @@ Energies Solver::energies() const {
       e.kinetic += 0.5 * sd_.inertia[n] * stepProduct(spun ? w_old_ : sd_.w, sd_.w, n);
   }
   // The work up to t(n): the last step's half at v(n+1/2) belongs to the next balance.
-  const auto sums = comm_.sumOrdered(
-      {e.kinetic, e.internal, e.hourglass, external_work_ - work_ahead_, rigidwall_energy_});
+  // Damping: the mass damping forces' work (negated) and the beams' stiffness damping.
+  double damping = -(damping_work_ - damping_ahead_);
+  for (const auto& blk : sd_.beam_blocks)
+    for (double d : blk.e_damp) damping += d;
+  const auto sums = comm_.sumOrdered({e.kinetic, e.internal, e.hourglass,
+                                      external_work_ - work_ahead_, rigidwall_energy_, damping});
   e.kinetic = sums[0];
   e.internal = sums[1];
   e.hourglass = sums[2];
   e.external_work = sums[3];
   e.rigidwall = sums[4];
+  e.damping = sums[5];
   e.kinetic += boundary_.wallKineticEnergy();  // the same on every rank: added once
   // Rigid bodies: translation and rotation of the body (the energy its integrator keeps;
   // with *PART_INERTIA the nodal masses are not the body's), the same on every rank.
@@ -732,7 +746,7 @@ Energies Solver::energies() const {
     e.internal += rigid_->jointEnergy();
   }
   if (contact_) e.contact = contact_->energy();
-  e.total = e.kinetic + e.internal + e.hourglass + e.contact + e.rigidwall;
+  e.total = e.kinetic + e.internal + e.hourglass + e.contact + e.rigidwall + e.damping;
   e.initial = initial_energy_;
   const double reference = initial_energy_ + e.external_work;
   e.ratio = reference != 0.0 ? e.total / reference : 1.0;

@@ -31,12 +31,14 @@
 #include "domain/subdomain.hpp"
 #include "elements/hex8.hpp"
 #include "model/model.hpp"
+#include "solver/damping.hpp"
 
 namespace crumple::solver {
 
 struct Energies {
   double kinetic = 0, internal = 0, hourglass = 0, contact = 0, external_work = 0;
   double rigidwall = 0;  // energy absorbed by stonewalls
+  double damping = 0;    // energy taken out by *DAMPING_ mass and stiffness damping
   double total = 0, initial = 0, ratio = 1;
 };
 
@@ -204,6 +206,7 @@ class Solver {
   elements::BulkViscosity bv_;
   std::unique_ptr<constraints::RigidBodies> rigid_;  // built in initialize(), after the masses
   std::unique_ptr<contact::Contact> contact_;
+  NodalDamping damping_;  // *DAMPING_GLOBAL, *DAMPING_PART_MASS
 
   double time_ = 0.0, end_time_ = 0.0;
   int64_t cycle_ = 0;
@@ -222,6 +225,9 @@ class Solver {
   // This rank's share of the last step's external work at v(n+1/2) (step_work.hpp): reported
   // energies leave it to the next balance.
   double work_ahead_ = 0.0;
+  // The work of the mass damping forces (negative) on the nodes this rank owns, and its half
+  // ahead like work_ahead_.
+  double damping_work_ = 0.0, damping_ahead_ = 0.0;
   domain::NodeVector v_old_, w_old_;
   // Element masses per shell / beam block (matsum).
   std::vector<std::vector<double>> shell_mass_, beam_mass_;

@@ -73,6 +73,9 @@ void visitShell(B& b, std::size_t e, F&& f) {
 template <class B, class F>
 void visitBeam(B& b, std::size_t e, F&& f) {
   f(b.e_int[e]);
+  if (!b.e_damp.empty()) f(b.e_damp[e]);
+  if (!b.damping_resultant.empty())
+    for (auto& v : b.damping_resultant[e]) f(v);
   f(b.active[e]);
   if (!b.triad.empty())
     for (auto& v : b.triad[e]) f(v);
@@ -146,8 +149,8 @@ std::vector<char> Solver::saveState(StateSection which) const {
       // Per-rank accumulators are kept per rank: restarted at the same number of ranks each
       // continues its own partial sum, so the energy sums stay bitwise those of the
       // uninterrupted run (at another count rank 0 takes the total, docs/reliability.md).
-      const auto partials =
-          comm_.allGather(std::vector<double>{external_work_, rigidwall_energy_, work_ahead_});
+      const auto partials = comm_.allGather(std::vector<double>{
+          external_work_, rigidwall_energy_, work_ahead_, damping_work_, damping_ahead_});
       const long long eroded = comm_.sumAll(eroded_);
       if (!comm_.isRoot()) return {};
       util::ArchiveWriter w;
@@ -290,11 +293,13 @@ void Solver::loadState(StateSection which, const std::vector<char>& bytes) {
       if (dt_initial != dt_initial_)
         mismatch(fmt::format("its initial time step {:.17g} differs from this deck's {:.17g}",
                              dt_initial, dt_initial_));
-      // Three accumulators per rank (two in dumps written before the work ahead was kept).
+      // Five accumulators per rank (two in dumps written before the work ahead was kept, three
+      // before the damping work was).
       const auto per_rank = static_cast<std::size_t>(ranks) == 0
                                 ? std::size_t{0}
                                 : partials.size() / static_cast<std::size_t>(ranks);
-      if ((per_rank != 2 && per_rank != 3) || partials.size() != per_rank * std::size_t(ranks))
+      if ((per_rank < 2 || per_rank > 5 || per_rank == 4) ||
+          partials.size() != per_rank * std::size_t(ranks))
         throw util::InputError("restart dump: the solver section is inconsistent");
       initial_energy_ = initial_energy;
       auto partial = [&](int k, std::size_t i) {
@@ -304,17 +309,19 @@ void Solver::loadState(StateSection which, const std::vector<char>& bytes) {
         external_work_ = partial(comm_.rank(), 0);
         rigidwall_energy_ = partial(comm_.rank(), 1);
         work_ahead_ = partial(comm_.rank(), 2);
+        damping_work_ = partial(comm_.rank(), 3);
+        damping_ahead_ = partial(comm_.rank(), 4);
       } else {
         // Summed in rank order from zero, as Communicator::sumOrdered adds them.
-        double work = 0.0, wall = 0.0, ahead = 0.0;
-        for (int k = 0; k < ranks; ++k) {
-          work += partial(k, 0);
-          wall += partial(k, 1);
-          ahead += partial(k, 2);
-        }
-        external_work_ = comm_.isRoot() ? work : 0.0;
-        rigidwall_energy_ = comm_.isRoot() ? wall : 0.0;
-        work_ahead_ = comm_.isRoot() ? ahead : 0.0;
+        double sums[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
+        for (int k = 0; k < ranks; ++k)
+          for (std::size_t i = 0; i < 5; ++i) sums[i] += partial(k, i);
+        const bool root = comm_.isRoot();
+        external_work_ = root ? sums[0] : 0.0;
+        rigidwall_energy_ = root ? sums[1] : 0.0;
+        work_ahead_ = root ? sums[2] : 0.0;
+        damping_work_ = root ? sums[3] : 0.0;
+        damping_ahead_ = root ? sums[4] : 0.0;
       }
       eroded_ = comm_.isRoot() ? eroded : 0;
       if (stepped) v_old_.assign(sd_.v.size(), 0.0);

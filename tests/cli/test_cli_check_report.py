@@ -24,7 +24,7 @@ THREE_ERRORS = one_brick_deck(extra=(
 
 # An implicit deck (IMFLAG 1) and an answer-changing keyword Crumple does not have.
 IMPLICIT = one_brick_deck(extra="*CONTROL_IMPLICIT_GENERAL\n         1     0.001\n")
-UNSUPPORTED = one_brick_deck(extra="*DAMPING_GLOBAL\n         0       0.5\n")
+UNSUPPORTED = one_brick_deck(extra="*DAMPING_FREQUENCY_RANGE\n      0.05       1.0      30.0\n")
 
 
 class CheckReport(clitest.TempDirTest):
@@ -118,16 +118,16 @@ class CheckReport(clitest.TempDirTest):
         p = crumple("check", "damp.k", cwd=self.tmp)
         self.assertEqual(p.returncode, 1, describe(p))
         self.assertIn("not supported, and leaving it out would change the answer:\n"
-                      "  *DAMPING_GLOBAL (1x", p.stdout, describe(p))
+                      "  *DAMPING_FREQUENCY_RANGE (1x", p.stdout, describe(p))
         out = os.path.join(self.tmp, "out")
         p = crumple("run", "damp.k", "-o", out, "-q", cwd=self.tmp)
         self.assertEqual(p.returncode, 1, describe(p))
-        self.assertIn("*DAMPING_GLOBAL", p.stderr, describe(p))
+        self.assertIn("*DAMPING_FREQUENCY_RANGE", p.stderr, describe(p))
         p = crumple("run", "damp.k", "-o", out, "-q", "--ignore-unsupported", "--cycles", "4",
                     cwd=self.tmp)
         self.assertEqual(p.returncode, 0, describe(p))
         s = read_summary(out)
-        self.assertEqual(s["ignored_unsupported"], ["*DAMPING_GLOBAL"])
+        self.assertEqual(s["ignored_unsupported"], ["*DAMPING_FREQUENCY_RANGE"])
         self.assertEqual(s["cycles"], 4)
 
     def test_cycles_stops_a_run_after_n_cycles(self):
