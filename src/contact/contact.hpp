@@ -121,6 +121,21 @@ class Contact {
   // The checks of the beam edges of `side` (*CONTACT_AUTOMATIC_GENERAL) against each other,
   // their penalty scaled by sf (docs/theory.md, "Beam edges"; src/contact/edges.cpp).
   void addEdgePass(int32_t iface, const model::ContactSurface& side, double sf);
+  // The segment pairs of SOFT = 2 (src/contact/segpairs.cpp): the segments of `a` against
+  // those of `b` (the same surface when `self`).
+  void addSegmentPass(int32_t iface, const model::ContactSurface& a, const model::ContactSurface& b,
+                      bool self);
+  // The records of active segment check i against its candidate segments, appended to `out`.
+  void checkSegments(std::size_t i, double time, double dt_prev, int64_t& tests,
+                     std::vector<Record>& out) const;
+  // Segment check `check` against segment s of its pass, if they are in contact.
+  std::optional<Record> segmentPair(const Pass& p, int32_t check, std::size_t s,
+                                    double dt_prev) const;
+  // Segment passes before the first cycle: the pairs in contact, listed as initial
+  // penetrations (kept as entry offsets).
+  void listInitialSegmentOverlaps(std::size_t pass);
+  // The forces of a segment pair record on the nodes of both segments.
+  void applySegmentRecord(const Pass& p, const Record& r);
   // Edge passes: the reach of the buckets from the longest edge now (before a sort).
   void refreshEdgeReach();
   // The records of active edge check i (an index into partition_.mine()) against its
@@ -239,6 +254,7 @@ class Contact {
     int32_t check = 0, segment = 0;
     Vec3 friction{};
     double entry = 0.0;
+    int8_t side = 0;  // segment pairs: the side of the other segment the check's is on
   };
   std::vector<EdgePair> edge_pairs_;
   const EdgePair* findEdgePair(int32_t check, int32_t segment) const;

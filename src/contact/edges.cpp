@@ -46,6 +46,24 @@ void Contact::refreshEdgeReach() {
   // the bucket reach is half the longest segment plus reach_extra, so reach_extra holds the
   // other half length and the radii, at the lengths of now (beams stretch).
   for (Pass& p : passes_) {
+    if (p.segpairs) {
+      // Segment pairs: the largest check segment's radius and both thicknesses, and half the
+      // deepest element (a solid face's centroid may be that far behind the other's plane).
+      double radius = 0.0, depth = 0.0, seg_half = 0.0;
+      for (std::size_t k = 0; k < p.check_seg.size(); ++k) {
+        Vec3 c{};
+        for (int32_t a : p.check_seg[k]) c = add(c, scale(at(x_, std::size_t(a)), 0.25));
+        for (int32_t a : p.check_seg[k])
+          radius = std::max(radius, norm(sub(at(x_, std::size_t(a)), c)));
+        depth = std::max(depth, p.check_depth[k]);
+      }
+      for (std::size_t s = 0; s < p.seg.size(); ++s) {
+        seg_half = std::max(seg_half, p.seg_half[s]);
+        depth = std::max(depth, p.seg_depth[s]);
+      }
+      p.reach_extra = radius + p.max_node_half + seg_half + 0.5 * depth;
+      continue;
+    }
     if (!p.edges) continue;
     double longest = 0.0;
     for (std::size_t k = 0; k < p.node.size(); ++k)
