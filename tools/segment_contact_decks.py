@@ -10,29 +10,15 @@ m1 and m2 the nodal masses interpolated at the two contact points, dt the initia
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from beam_contact_decks import _header  # noqa: E402  (the same output requests)
+
 E, NU, RHO = 2.0e11, 0.3, 7850.0
 SLSFAC = 0.1
 
 
 def pair_stiffness(m1, m2, dt, sfs=1.0):
     return 0.5 * SLSFAC * sfs * m1 * m2 / (m1 + m2) / (dt * dt)
-
-
-def _header(title, end, dt_out, extra=""):
-    return f"""*KEYWORD
-*TITLE
-{title}
-*CONTROL_TERMINATION
-{end}
-*DATABASE_GLSTAT
-{dt_out}
-*DATABASE_MATSUM
-{dt_out}
-*DATABASE_RCFORC
-{dt_out}
-*DATABASE_NODOUT
-{dt_out}
-{extra}"""
 
 
 def _contact(soft=2, fs=0.0, fd=0.0, vdc=0.0):

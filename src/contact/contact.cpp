@@ -140,6 +140,10 @@ void Contact::addPass(int32_t iface, const model::ContactSurface& nodes,
       p.near_node.insert(p.near_node.end(), v.begin(), v.end());
     }
   }
+  registerPass(std::move(p));
+}
+
+void Contact::registerPass(Pass p) {
   num_checks_ += int32_t(p.node.size());
   for (int32_t node : p.node) {
     check_pass_.push_back(int32_t(passes_.size()));
@@ -596,10 +600,8 @@ std::vector<Record> Contact::checkContacts(double time, double dt_prev) {
     for (std::size_t k = 0; k < n; ++k) {
       const auto i = std::size_t(active[k]);
       const Pass& p = passes_[std::size_t(check_pass_[std::size_t(checks[i])])];
-      if (p.edges)
-        checkEdges(i, time, dt_prev, tests[k], mine);
-      else if (p.segpairs)
-        checkSegments(i, time, dt_prev, tests[k], mine);
+      if (p.edges || p.segpairs)
+        checkPairs(i, time, dt_prev, tests[k], mine);
       else if (auto r = checkOne(i, time, dt_prev, tests[k]))
         mine.push_back(*r);
     }

@@ -114,6 +114,8 @@ class Contact {
   }
   struct Candidate;
   int32_t contactNode(int32_t model_node) const;
+  // Appends a pass, numbering its checks after the others'.
+  void registerPass(Pass p);
   // The checks of `nodes` against the segments of `segs`, their penalty scaled by sf (SFS or
   // SFM).
   void addPass(int32_t iface, const model::ContactSurface& nodes, const model::ContactSurface& segs,
@@ -125,9 +127,6 @@ class Contact {
   // those of `b` (the same surface when `self`).
   void addSegmentPass(int32_t iface, const model::ContactSurface& a, const model::ContactSurface& b,
                       bool self);
-  // The records of active segment check i against its candidate segments, appended to `out`.
-  void checkSegments(std::size_t i, double time, double dt_prev, int64_t& tests,
-                     std::vector<Record>& out) const;
   // Segment check `check` against segment s of its pass, if they are in contact.
   std::optional<Record> segmentPair(const Pass& p, int32_t check, std::size_t s,
                                     double dt_prev) const;
@@ -138,9 +137,9 @@ class Contact {
   void applySegmentRecord(const Pass& p, const Record& r);
   // Edge passes: the reach of the buckets from the longest edge now (before a sort).
   void refreshEdgeReach();
-  // The records of active edge check i (an index into partition_.mine()) against its
-  // candidate edges, appended to `out`; `tests` counts the edges tested.
-  void checkEdges(std::size_t i, double time, double dt_prev, int64_t& tests,
+  // The records of active edge or segment check i (an index into partition_.mine()) against
+  // its candidates, appended to `out`; `tests` counts the candidates tested.
+  void checkPairs(std::size_t i, double time, double dt_prev, int64_t& tests,
                   std::vector<Record>& out) const;
   // Edge check `check` against edge s of its pass, if their capsules overlap.
   std::optional<Record> edgePair(const Pass& p, int32_t check, std::size_t s, double dt_prev) const;

@@ -50,12 +50,7 @@ void Contact::addSegmentPass(int32_t iface, const model::ContactSurface& a,
     p.seg_k.push_back(slsfac * (self ? ci.sfs : ci.sfm));
     p.seg_depth.push_back(b.segment_depth[k]);
   }
-  num_checks_ += int32_t(p.node.size());
-  for (int32_t node : p.node) {
-    check_pass_.push_back(int32_t(passes_.size()));
-    check_node_.push_back(node);
-  }
-  passes_.push_back(std::move(p));
+  registerPass(std::move(p));
 }
 
 namespace {
@@ -250,31 +245,6 @@ std::optional<Record> Contact::segmentPair(const Pass& p, int32_t check, std::si
       penaltyForce(found, m, stiffness, last ? last->friction : Vec3{}, ci, dt_stiff_, dt_prev);
   r.M = g->Na;
   return r;
-}
-
-void Contact::checkSegments(std::size_t i, double time, double dt_prev, int64_t& tests,
-                            std::vector<Record>& out) const {
-  const int32_t check = partition_.mine()[i];
-  const auto pass = std::size_t(check_pass_[std::size_t(check)]);
-  const Pass& p = passes_[pass];
-  const auto& ci = model_.contacts[std::size_t(p.iface)];
-  if (time < ci.birth || time > ci.death) return;
-  const auto k = std::size_t(check - p.first_check);
-  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-  for (int32_t a : p.check_seg[k])
-    for (std::size_t c = 0; c < 3; ++c) {
-      lo[c] = std::min(lo[c], x_[3 * std::size_t(a) + c]);
-      hi[c] = std::max(hi[c], x_[3 * std::size_t(a) + c]);
-    }
-  for (const int32_t candidate : search_.candidates(i)) {
-    const auto s = std::size_t(candidate);
-    const double* box = search_.box(pass, s);
-    bool apart = false;
-    for (std::size_t c = 0; c < 3; ++c) apart = apart || hi[c] < box[c] || lo[c] > box[3 + c];
-    if (apart) continue;
-    ++tests;
-    if (auto r = segmentPair(p, check, s, dt_prev)) out.push_back(*r);
-  }
 }
 
 void Contact::listInitialSegmentOverlaps(std::size_t pass) {
