@@ -161,7 +161,7 @@ def crossing_edges(gap, v, end, dt_out=1e-6, soft=2):
     return text + _curve(2, 0.0) + "*END\n"
 
 
-def determinism(end=4e-4, dt_out=2e-5):
+def determinism(end=2.5e-4, dt_out=2e-5):
     """A 4 x 4 sheet turned about x and y falling with friction and damping onto a plate of
     6 x 6 shells resting on two 2 x 2 x 2 blocks, a third block falling onto it too: many
     pairs of every kind (shell-shell face and edge, shell-solid, solid-solid), for the rank
