@@ -50,6 +50,14 @@ Contact::Contact(const model::Model& model, domain::Subdomain& sd, comm::Communi
   for (std::size_t i = 0; i < model.contacts.size(); ++i) {
     const auto& ci = model.contacts[i];
     const auto iface = int32_t(i);
+    if (ci.soft == 2) {
+      // Segment-based contact: segment pairs (the model refuses it elsewhere), and beam edges
+      // as the node-to-segment interfaces have them.
+      const bool self = ci.kind == model::ContactKind::SingleSurface;
+      if (!ci.a.segments.empty()) addSegmentPass(iface, ci.a, self ? ci.a : ci.b, self);
+      if (self && !ci.a.edges.empty()) addEdgePass(iface, ci.a, ci.sfs);
+      continue;
+    }
     switch (ci.kind) {
       case model::ContactKind::NodesToSurface:
         addPass(iface, ci.a, ci.b, ci.sfm, false);
@@ -132,6 +140,10 @@ void Contact::addPass(int32_t iface, const model::ContactSurface& nodes,
       p.near_node.insert(p.near_node.end(), v.begin(), v.end());
     }
   }
+  registerPass(std::move(p));
+}
+
+void Contact::registerPass(Pass p) {
   num_checks_ += int32_t(p.node.size());
   for (int32_t node : p.node) {
     check_pass_.push_back(int32_t(passes_.size()));
@@ -207,6 +219,8 @@ void Contact::buildRoutes() {
     const Pass& p = passes_[std::size_t(check_pass_[check])];
     need[std::size_t(check_node_[check])] = 1;
     if (p.edges) need[std::size_t(p.node2[check - std::size_t(p.first_check)])] = 1;
+    if (p.segpairs)
+      for (int32_t a : p.check_seg[check - std::size_t(p.first_check)]) need[std::size_t(a)] = 1;
     for (int32_t s : search_.candidates(i))
       for (int32_t a : p.seg[std::size_t(s)]) need[std::size_t(a)] = 1;
     if (p.tied && tie_seg_[check] >= 0)
@@ -483,6 +497,8 @@ void Contact::initialize(double dt0) {
       tieNodes(pass, model_.contacts[std::size_t(p.iface)].offset);
     else if (p.edges)
       listInitialEdgeOverlaps(pass);
+    else if (p.segpairs)
+      listInitialSegmentOverlaps(pass);
     else
       resolveInitialPenetrations(pass);
   }
@@ -583,8 +599,9 @@ std::vector<Record> Contact::checkContacts(double time, double dt_prev) {
 #pragma omp for schedule(static)
     for (std::size_t k = 0; k < n; ++k) {
       const auto i = std::size_t(active[k]);
-      if (passes_[std::size_t(check_pass_[std::size_t(checks[i])])].edges)
-        checkEdges(i, time, dt_prev, tests[k], mine);
+      const Pass& p = passes_[std::size_t(check_pass_[std::size_t(checks[i])])];
+      if (p.edges || p.segpairs)
+        checkPairs(i, time, dt_prev, tests[k], mine);
       else if (auto r = checkOne(i, time, dt_prev, tests[k]))
         mine.push_back(*r);
     }
@@ -707,6 +724,10 @@ void Contact::applyRecords() {
     notePenetration(p, r);
     if (p.edges) {
       applyEdgeRecord(p, r);
+      continue;
+    }
+    if (p.segpairs) {
+      applySegmentRecord(p, r);
       continue;
     }
     for (std::size_t c = 0; c < 3; ++c) friction_[3 * check + c] = r.friction[c];

@@ -114,6 +114,8 @@ class Contact {
   }
   struct Candidate;
   int32_t contactNode(int32_t model_node) const;
+  // Appends a pass, numbering its checks after the others'.
+  void registerPass(Pass p);
   // The checks of `nodes` against the segments of `segs`, their penalty scaled by sf (SFS or
   // SFM).
   void addPass(int32_t iface, const model::ContactSurface& nodes, const model::ContactSurface& segs,
@@ -121,11 +123,23 @@ class Contact {
   // The checks of the beam edges of `side` (*CONTACT_AUTOMATIC_GENERAL) against each other,
   // their penalty scaled by sf (docs/theory.md, "Beam edges"; src/contact/edges.cpp).
   void addEdgePass(int32_t iface, const model::ContactSurface& side, double sf);
+  // The segment pairs of SOFT = 2 (src/contact/segpairs.cpp): the segments of `a` against
+  // those of `b` (the same surface when `self`).
+  void addSegmentPass(int32_t iface, const model::ContactSurface& a, const model::ContactSurface& b,
+                      bool self);
+  // Segment check `check` against segment s of its pass, if they are in contact.
+  std::optional<Record> segmentPair(const Pass& p, int32_t check, std::size_t s,
+                                    double dt_prev) const;
+  // Segment passes before the first cycle: the pairs in contact, listed as initial
+  // penetrations (kept as entry offsets).
+  void listInitialSegmentOverlaps(std::size_t pass);
+  // The forces of a segment pair record on the nodes of both segments.
+  void applySegmentRecord(const Pass& p, const Record& r);
   // Edge passes: the reach of the buckets from the longest edge now (before a sort).
   void refreshEdgeReach();
-  // The records of active edge check i (an index into partition_.mine()) against its
-  // candidate edges, appended to `out`; `tests` counts the edges tested.
-  void checkEdges(std::size_t i, double time, double dt_prev, int64_t& tests,
+  // The records of active edge or segment check i (an index into partition_.mine()) against
+  // its candidates, appended to `out`; `tests` counts the candidates tested.
+  void checkPairs(std::size_t i, double time, double dt_prev, int64_t& tests,
                   std::vector<Record>& out) const;
   // Edge check `check` against edge s of its pass, if their capsules overlap.
   std::optional<Record> edgePair(const Pass& p, int32_t check, std::size_t s, double dt_prev) const;
@@ -239,6 +253,7 @@ class Contact {
     int32_t check = 0, segment = 0;
     Vec3 friction{};
     double entry = 0.0;
+    int8_t side = 0;  // segment pairs: the side of the other segment the check's is on
   };
   std::vector<EdgePair> edge_pairs_;
   const EdgePair* findEdgePair(int32_t check, int32_t segment) const;

@@ -33,12 +33,7 @@ void Contact::addEdgePass(int32_t iface, const model::ContactSurface& side, doub
     p.edge_part.push_back(side.edge_part[k]);
     p.max_node_half = std::max(p.max_node_half, r);
   }
-  num_checks_ += int32_t(p.node.size());
-  for (int32_t node : p.node) {
-    check_pass_.push_back(int32_t(passes_.size()));
-    check_node_.push_back(node);
-  }
-  passes_.push_back(std::move(p));
+  registerPass(std::move(p));
 }
 
 void Contact::refreshEdgeReach() {
@@ -46,6 +41,24 @@ void Contact::refreshEdgeReach() {
   // the bucket reach is half the longest segment plus reach_extra, so reach_extra holds the
   // other half length and the radii, at the lengths of now (beams stretch).
   for (Pass& p : passes_) {
+    if (p.segpairs) {
+      // Segment pairs: the largest check segment's radius and both thicknesses, and half the
+      // deepest element (a solid face's centroid may be that far behind the other's plane).
+      double radius = 0.0, depth = 0.0, seg_half = 0.0;
+      for (std::size_t k = 0; k < p.check_seg.size(); ++k) {
+        Vec3 c{};
+        for (int32_t a : p.check_seg[k]) c = add(c, scale(at(x_, std::size_t(a)), 0.25));
+        for (int32_t a : p.check_seg[k])
+          radius = std::max(radius, norm(sub(at(x_, std::size_t(a)), c)));
+        depth = std::max(depth, p.check_depth[k]);
+      }
+      for (std::size_t s = 0; s < p.seg.size(); ++s) {
+        seg_half = std::max(seg_half, p.seg_half[s]);
+        depth = std::max(depth, p.seg_depth[s]);
+      }
+      p.reach_extra = radius + p.max_node_half + seg_half + 0.5 * depth;
+      continue;
+    }
     if (!p.edges) continue;
     double longest = 0.0;
     for (std::size_t k = 0; k < p.node.size(); ++k)
@@ -138,24 +151,34 @@ std::optional<Record> Contact::edgePair(const Pass& p, int32_t check, std::size_
   return r;
 }
 
-void Contact::checkEdges(std::size_t i, double time, double dt_prev, int64_t& tests,
+void Contact::checkPairs(std::size_t i, double time, double dt_prev, int64_t& tests,
                          std::vector<Record>& out) const {
+  // A beam edge's or a segment's check (segpairs.cpp): each candidate whose widened box
+  // overlaps the box of the check's nodes is tested.
   const int32_t check = partition_.mine()[i];
   const auto pass = std::size_t(check_pass_[std::size_t(check)]);
   const Pass& p = passes_[pass];
   const auto& ci = model_.contacts[std::size_t(p.iface)];
   if (time < ci.birth || time > ci.death) return;
   const auto k = std::size_t(check - p.first_check);
-  const Vec3 x0 = at(x_, std::size_t(p.node[k])), x1 = at(x_, std::size_t(p.node2[k]));
+  const std::array<int32_t, 4> corners =
+      p.edges ? std::array<int32_t, 4>{p.node[k], p.node2[k], p.node[k], p.node2[k]}
+              : p.check_seg[k];
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (int32_t a : corners)
+    for (std::size_t c = 0; c < 3; ++c) {
+      lo[c] = std::min(lo[c], x_[3 * std::size_t(a) + c]);
+      hi[c] = std::max(hi[c], x_[3 * std::size_t(a) + c]);
+    }
   for (const int32_t candidate : search_.candidates(i)) {
     const auto s = std::size_t(candidate);
     const double* box = search_.box(pass, s);
     bool apart = false;
-    for (std::size_t c = 0; c < 3; ++c)
-      apart = apart || std::max(x0[c], x1[c]) < box[c] || std::min(x0[c], x1[c]) > box[3 + c];
+    for (std::size_t c = 0; c < 3; ++c) apart = apart || hi[c] < box[c] || lo[c] > box[3 + c];
     if (apart) continue;
     ++tests;
-    if (auto r = edgePair(p, check, s, dt_prev)) out.push_back(*r);
+    if (auto r = p.edges ? edgePair(p, check, s, dt_prev) : segmentPair(p, check, s, dt_prev))
+      out.push_back(*r);
   }
 }
 

@@ -162,3 +162,100 @@ EdgePoints closestEdgePoints(const Vec3& p0, const Vec3& p1, const Vec3& q0, con
 }
 
 }  // namespace crumple::contact
+
+namespace crumple::contact {
+
+namespace {
+
+// The closest point of triangle (a, b, c) to p as barycentric weights (Ericson 2005, 5.1.5:
+// the Voronoi regions of the vertices, the edges and the face).
+std::array<double, 3> closestOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b,
+                                        const Vec3& c) {
+  const Vec3 ab = sub(b, a), ac = sub(c, a), ap = sub(p, a);
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return {1.0, 0.0, 0.0};
+  const Vec3 bp = sub(p, b);
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0.0 && d4 <= d3) return {0.0, 1.0, 0.0};
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
+    const double v = d1 / (d1 - d3);
+    return {1.0 - v, v, 0.0};
+  }
+  const Vec3 cp = sub(p, c);
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0.0 && d5 <= d6) return {0.0, 0.0, 1.0};
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
+    const double w = d2 / (d2 - d6);
+    return {1.0 - w, 0.0, w};
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return {0.0, 1.0 - w, w};
+  }
+  const double denom = 1.0 / (va + vb + vc);
+  const double v = vb * denom, w = vc * denom;
+  return {1.0 - v - w, v, w};
+}
+
+using Triangle = std::array<std::size_t, 3>;
+
+std::vector<Triangle> trianglesOf(bool triangle) {
+  if (triangle) return {{0, 1, 2}};
+  return {{0, 1, 2}, {0, 2, 3}};
+}
+
+// Keeps the nearer of the current best and the candidate (p with weights wa, q with wb).
+void keepNearer(SegmentPoints& best, const Vec3& p, const Vec3& q, const std::array<double, 4>& wa,
+                const std::array<double, 4>& wb) {
+  const double d = norm(sub(p, q));
+  if (d < best.dist) best = {wa, wb, p, q, d};
+}
+
+// Vertices of `from` (weights into fa) against triangle t of `onto` (weights into fb).
+void verticesOnto(SegmentPoints& best, const std::array<Vec3, 4>& from, const Triangle& tf,
+                  const std::array<Vec3, 4>& onto, const Triangle& t, bool swap) {
+  for (std::size_t v : tf) {
+    const auto w = closestOnTriangle(from[v], onto[t[0]], onto[t[1]], onto[t[2]]);
+    std::array<double, 4> wv{}, wt{};
+    wv[v] = 1.0;
+    Vec3 q{};
+    for (std::size_t i = 0; i < 3; ++i) {
+      wt[t[i]] += w[i];
+      q = add(q, scale(onto[t[i]], w[i]));
+    }
+    if (swap)
+      keepNearer(best, q, from[v], wt, wv);
+    else
+      keepNearer(best, from[v], q, wv, wt);
+  }
+}
+
+}  // namespace
+
+SegmentPoints closestSegmentPoints(const std::array<Vec3, 4>& a, bool tri_a,
+                                   const std::array<Vec3, 4>& b, bool tri_b) {
+  SegmentPoints best;
+  best.dist = 1e300;
+  for (const Triangle& ta : trianglesOf(tri_a))
+    for (const Triangle& tb : trianglesOf(tri_b)) {
+      verticesOnto(best, a, ta, b, tb, false);
+      verticesOnto(best, b, tb, a, ta, true);
+      for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) {
+          const std::size_t a0 = ta[i], a1 = ta[(i + 1) % 3], b0 = tb[j], b1 = tb[(j + 1) % 3];
+          const EdgePoints e = closestEdgePoints(a[a0], a[a1], b[b0], b[b1]);
+          std::array<double, 4> wa{}, wb{};
+          wa[a0] += 1.0 - e.s;
+          wa[a1] += e.s;
+          wb[b0] += 1.0 - e.t;
+          wb[b1] += e.t;
+          keepNearer(best, e.p, e.q, wa, wb);
+        }
+    }
+  return best;
+}
+
+}  // namespace crumple::contact

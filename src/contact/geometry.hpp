@@ -101,3 +101,23 @@ struct EdgePoints {
 EdgePoints closestEdgePoints(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1);
 
 }  // namespace crumple::contact
+
+namespace crumple::contact {
+
+// The closest points of two contact segments a and b (four corners each; a triangle repeats
+// its third), each split into the triangles (0, 1, 2) and (0, 2, 3): the smallest of the
+// vertex-triangle and edge-edge distances of every triangle pair (Ericson 2005, "Real-Time
+// Collision Detection", 5.1.5 and 5.1.9), so a warped quad is two planar triangles. Weights
+// Na, Nb on the corners give the points (sum 1). Ties go to the first feature found (vertices
+// of a, of b, then edges), so the result is the same bits every time. Segments whose
+// triangles intersect get the distance of their nearest features, not 0: a caller keeps
+// their history (the side they came from).
+struct SegmentPoints {
+  std::array<double, 4> Na{}, Nb{};
+  Vec3 p{}, q{};
+  double dist = 0.0;
+};
+SegmentPoints closestSegmentPoints(const std::array<Vec3, 4>& a, bool tri_a,
+                                   const std::array<Vec3, 4>& b, bool tri_b);
+
+}  // namespace crumple::contact

@@ -33,6 +33,14 @@ struct Pass {
   std::vector<int32_t> node2;
   std::vector<int32_t> edge_part;  // part of each edge (CPARM8: pairs of one part left out)
   bool skip_same_part = false;
+  // Segment pairs (SOFT = 2; docs/theory.md, "Segment-based contact"): a check is a segment
+  // of the first side (its corners in `check_seg`, its half thickness in `node_half`, its
+  // depth in `check_depth`, its scale factor in `check_k`) against the segments of the other
+  // side (`seg`, `seg_k` holding their scale factors SLSFAC x SFS or SFM). Single surface
+  // (`self`): both lists are the surface's, each pair checked once, by the lower index.
+  bool segpairs = false;
+  std::vector<std::array<int32_t, 4>> check_seg;
+  std::vector<double> check_depth, check_k;
 };
 
 }  // namespace crumple::contact

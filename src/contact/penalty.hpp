@@ -31,6 +31,9 @@ struct Record {
   // Beam edges: the contact point's parameter on the check's edge; its nodes take (1 - s) and
   // s of `force`, the other edge's nodes -N_a force (N = {1 - t, t, 0, 0}).
   double edge_s = 0.0;
+  // Segment pairs: the weights of the check's segment nodes at its contact point; they take
+  // M_a `force`, the other segment's nodes -N_a force.
+  std::array<double, 4> M{};
 };
 
 // The fields of a record in wire order (records travel between ranks as doubles, one per
@@ -49,6 +52,7 @@ constexpr void forEachField(R& r, F&& f) {
   f(r.side);
   f(r.entry);
   f(r.edge_s);
+  for (auto& m : r.M) f(m);
 }
 
 constexpr std::size_t recordDoubles() {

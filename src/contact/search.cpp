@@ -150,6 +150,10 @@ void BucketSearch::collectCandidates(const Pass& p, std::size_t pass, int32_t ch
     collectEdgeCandidates(p, pass, check, margin, x, out);
     return;
   }
+  if (p.segpairs) {
+    collectSegmentCandidates(p, pass, check, margin, x, out);
+    return;
+  }
   // The segments near the node whose widened box, grown by what node and segment may still
   // travel before the next sort, holds the node.
   const Grid& g = grids_[pass];
@@ -203,6 +207,36 @@ void BucketSearch::collectEdgeCandidates(const Pass& p, std::size_t pass, int32_
     out.push_back(int32_t(s));
   });
   // Ascending, so that a check's records come in the same order whatever the bucket layout.
+  std::sort(out.begin() + std::ptrdiff_t(first), out.end());
+}
+
+void BucketSearch::collectSegmentCandidates(const Pass& p, std::size_t pass, int32_t check,
+                                            double margin, const std::vector<double>& x,
+                                            std::vector<int32_t>& out) const {
+  // The segments near the check's segment (its centroid's bucket and the 26 around it: the
+  // reach holds the largest check segment's radius) whose widened box, grown by the margin,
+  // overlaps its box. Never a segment sharing a node with it (its neighbours, whose contact
+  // is the element's own business); single surface: each pair once, by the lower index.
+  const Grid& g = grids_[pass];
+  const auto k = std::size_t(check - p.first_check);
+  const auto& cs = p.check_seg[k];
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (int32_t a : cs)
+    for (std::size_t i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], x[3 * std::size_t(a) + i] - margin);
+      hi[i] = std::max(hi[i], x[3 * std::size_t(a) + i] + margin);
+    }
+  const std::size_t first = out.size();
+  forEachNear(g, centroid(cs, x), [&](std::size_t s) {
+    if (p.self && s <= k) return;
+    const double* box = &g.box[6 * s];
+    for (std::size_t i = 0; i < 3; ++i)
+      if (hi[i] < box[i] || lo[i] > box[3 + i]) return;
+    for (int32_t a : p.seg[s])
+      for (int32_t b : cs)
+        if (a == b) return;
+    out.push_back(int32_t(s));
+  });
   std::sort(out.begin() + std::ptrdiff_t(first), out.end());
 }
 

@@ -66,6 +66,11 @@ class BucketSearch {
   void collectEdgeCandidates(const Pass& pass, std::size_t pass_index, int32_t check, double margin,
                              const std::vector<double>& x, std::vector<int32_t>& out) const;
 
+  // collectCandidates for a pass of segment pairs (Pass::segpairs).
+  void collectSegmentCandidates(const Pass& pass, std::size_t pass_index, int32_t check,
+                                double margin, const std::vector<double>& x,
+                                std::vector<int32_t>& out) const;
+
   std::vector<Grid> grids_;  // per pass
   double margin_ = 0.0;
   std::vector<int32_t> cand_ptr_, cand_seg_;  // candidate segments of each check (CSR)

@@ -319,6 +319,36 @@ ContactSurface makeSurface(const Model& m, const Side& side, double thickness_ov
   return s;
 }
 
+void readSegmentBased(Context& ctx, const deck::Keyword& kw, const deck::Card& ca,
+                      ContactInterface& ci) {
+  if (ci.kind != ContactKind::SurfaceToSurface && ci.kind != ContactKind::SingleSurface)
+    ctx.reject(ca, "SOFT",
+               "SOFT = 2 (segment-based contact) is supported for surface-to-surface and single "
+               "surface contacts only");
+  // SOFT = 2 (LS-DYNA Keyword Manual, *CONTACT optional card A): SBOPT 0 and 2 are planar
+  // segments, 3 warped segments; Crumple's pair check splits quads into triangles, so 3 is
+  // honoured by the same check. 4 and 5 (the sliding option) are not done.
+  const double sbopt = ca.real("SBOPT");
+  ci.sbopt = sbopt == 0.0 ? 2 : int(sbopt);
+  if (double(ci.sbopt) != (sbopt == 0.0 ? 2.0 : sbopt) || ci.sbopt < 2 || ci.sbopt > 3)
+    ctx.reject(ca, "SBOPT", "only SBOPT 0, 2 and 3 are supported with SOFT = 2");
+  // DEPTH 0 and 2 (default): surface and edge-to-edge penetration, what the pair check does
+  // for shells; other values change which pairs are checked and are reported.
+  ci.depth = int(ca.integer("DEPTH"));
+  if (ci.depth == 0) ci.depth = 2;
+  if (ci.depth != 2)
+    ctx.ignore(kw.name, "DEPTH",
+               "value " + std::to_string(ci.depth) +
+                   " is read but not honoured: Crumple checks surface and edge-to-edge "
+                   "penetration (DEPTH 2)",
+               ca.where());
+  if (ca.integer("LCIDAB") != 0)
+    ctx.reject(ca, "LCIDAB", "airbag fabric edge curves (LCIDAB) are not supported");
+  if (ca.real("MAXPAR") != 1.025)
+    ctx.ignore(kw.name, "MAXPAR",
+               "read but not honoured: Crumple's pair search uses the segments' boxes", ca.where());
+}
+
 }  // namespace
 
 void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
@@ -416,8 +446,9 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
   if (ci.sst < 0) c3.fail("SST", "must not be negative");
   if (ci.mst < 0) c3.fail("MST", "must not be negative");
   ci.soft = int(ca.integer("SOFT"));
-  if (ci.soft != 0 && ci.soft != 1) ctx.reject(ca, "SOFT", "only SOFT 0 and 1 are supported");
+  if (ci.soft < 0 || ci.soft > 2) ctx.reject(ca, "SOFT", "only SOFT 0, 1 and 2 are supported");
   ci.sofscl = ca.real("SOFSCL");
+  if (ci.soft == 2) readSegmentBased(ctx, kw, ca, ci);
   ci.bsort = int(ca.integer("BSORT"));
   if (ci.bsort < 0) ca.fail("BSORT", "must not be negative");
   if (ci.sofscl <= 0) ca.fail("SOFSCL", "must be positive");

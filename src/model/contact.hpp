@@ -62,8 +62,13 @@ struct ContactInterface {
   double birth = 0, death = 1e20;
   double sfs = 1, sfm = 1;  // penalty scale factors of the A and B segments (SFSA, SFSB)
   double sst = 0, mst = 0;  // contact thickness overrides of A and B (0 = shell thickness)
-  int soft = 0;             // 1: stiffness also from the nodal masses and the time step
+  // 1: stiffness also from the nodal masses and the time step; 2: segment-based contact,
+  // segment pairs with a stiffness from their masses and the time step (docs/theory.md,
+  // "Segment-based contact").
+  int soft = 0;
   double sofscl = 0.1;
+  int sbopt = 2;  // SOFT = 2: segment pair options (2: planar segments; 3: warped, as 2 here)
+  int depth = 2;  // SOFT = 2: 2 surface and edge-to-edge penetration
   int bsort = 0;  // at most this many cycles between bucket sorts (0: by travel alone)
   // MPP card 1 CPARM8 of AUTOMATIC_GENERAL: 1 and 2 leave out beam pairs of one part.
   bool skip_same_part_edges = false;

@@ -341,7 +341,7 @@ void fields(A& a, M& m) {
   a.count(
       m.contacts.size(),
       [&](auto& c) {
-        util::fieldCount<23>(c);
+        util::fieldCount<25>(c);
         a(c.id);
         a(c.title);
         a(c.keyword);
@@ -362,6 +362,8 @@ void fields(A& a, M& m) {
         a(c.mst);
         a(c.soft);
         a(c.sofscl);
+        a(c.sbopt);
+        a(c.depth);
         a(c.bsort);
         a(c.skip_same_part_edges);
         loc(a, c.where);

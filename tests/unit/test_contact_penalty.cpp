@@ -288,7 +288,7 @@ TEST(ContactPenalty, TiedNodeIsPulledToItsPoint) {
   expectVec(offset.force, {0, 0, 0}, 1e-12);
 }
 
-TEST(ContactPenalty, RecordTravelsAsEighteenDoublesInFieldOrder) {
+TEST(ContactPenalty, RecordTravelsAsTwentyTwoDoublesInFieldOrder) {
   Record r;
   r.check = 12;
   r.segment = 5;
@@ -301,12 +301,13 @@ TEST(ContactPenalty, RecordTravelsAsEighteenDoublesInFieldOrder) {
   r.side = -1;
   r.entry = 0.0625;
   r.edge_s = 0.75;
+  r.M = {0.7, 0.1, 0.1, 0.1};
   std::vector<double> wire;
   contact::pack(r, wire);
   ASSERT_EQ(wire.size(), contact::kRecordDoubles);
-  EXPECT_EQ(contact::kRecordDoubles, 18u);
-  EXPECT_EQ(wire, (std::vector<double>{12, 5, 0.1, 0.2, 0.3, 0.4, 1, 2, 3, 4, 5, 6, 0.5, 0.25,
-                                       0.125, -1, 0.0625, 0.75}));
+  EXPECT_EQ(contact::kRecordDoubles, 22u);
+  EXPECT_EQ(wire, (std::vector<double>{12,  5,    0.1,   0.2, 0.3,    0.4,  1,   2,   3,   4,  5, 6,
+                                       0.5, 0.25, 0.125, -1,  0.0625, 0.75, 0.7, 0.1, 0.1, 0.1}));
   const Record back = contact::unpack(wire.data());
   EXPECT_EQ(back.check, 12);
   EXPECT_EQ(back.segment, 5);
@@ -314,6 +315,7 @@ TEST(ContactPenalty, RecordTravelsAsEighteenDoublesInFieldOrder) {
   EXPECT_EQ(back.force, r.force);
   EXPECT_EQ(back.friction, r.friction);
   EXPECT_EQ(back.side, -1);
+  EXPECT_EQ(back.M, r.M);
   EXPECT_EQ(back.entry, 0.0625);
   EXPECT_EQ(back.edge_s, 0.75);
 }
