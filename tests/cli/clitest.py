@@ -127,6 +127,15 @@ class TempDirTest(unittest.TestCase):
             f.write(text)
         return path
 
+    def run_deck(self, name, text):
+        """Runs the deck `text` as NAME.k in self.tmp (quietly); asserts it ends normally and
+        returns its results folder NAME.out."""
+        path = self.write(name + ".k", text)
+        out = os.path.join(self.tmp, name + ".out")
+        p = crumple("run", path, "-o", out, "-q", cwd=self.tmp, timeout=600)
+        self.assertEqual(p.returncode, 0, describe(p))
+        return out
+
 
 def one_brick_deck(title="one brick", material_id=1, extra="", end_time=0.01):
     """A unit cube of one hex (element 1, part 1, nodes 1-8), steel in mm/ms/kg/GPa."""

@@ -136,6 +136,20 @@ inline std::string uniaxialStrainCrush() {
   return s;
 }
 
+// Node sets 4, 5, 6 (the faces x = 0, y = 0, z = 0 of a unit cube) held along their normals:
+// rollers, so the cube stretches or shears freely otherwise.
+inline std::string rollersOnLowFaces() {
+  std::string s;
+  for (int d = 0; d < 3; ++d) {
+    s += brickNodeSet(4 + d, 1, 1, 1, [d](int i, int j, int k) {
+      return (d == 0 ? i : d == 1 ? j : k) == 0;
+    });
+    s += fmt::format("*BOUNDARY_SPC_SET\n{:10d}{:10d}{:10d}{:10d}{:10d}\n", 4 + d, 0,
+                     d == 0 ? 1 : 0, d == 1 ? 1 : 0, d == 2 ? 1 : 0);
+  }
+  return s;
+}
+
 // A unit cube pulled along x at the constant velocity v to the strain `strain` (face x = 1
 // prescribed), on rollers on the faces x = 0, y = 0, z = 0 and otherwise free: uniaxial stress,
 // the lateral faces contracting as the material lets them (the wave transit, 2e-7 s for steel,
@@ -149,14 +163,7 @@ inline std::string uniaxialPull(const std::string& material, double v, double st
   s += brickNodeSet(1, 1, 1, 1, [](int i, int, int) { return i == 1; });
   s += fmt::format("*BOUNDARY_PRESCRIBED_MOTION_SET\n{:10d}{:10d}{:10d}{:10d}{:10.1f}\n", 1, 1, 0,
                    90, 1.0);
-  for (int d = 0; d < 3; ++d) {
-    s += brickNodeSet(4 + d, 1, 1, 1, [d](int i, int j, int k) {
-      return (d == 0 ? i : d == 1 ? j : k) == 0;
-    });
-    s += fmt::format("*BOUNDARY_SPC_SET\n{:10d}{:10d}{:10d}{:10d}{:10d}\n", 4 + d, 0,
-                     d == 0 ? 1 : 0, d == 1 ? 1 : 0, d == 2 ? 1 : 0);
-  }
-  return brickDeck(1, 1, 1, 1.0, 1.0, 1.0, s);
+  return brickDeck(1, 1, 1, 1.0, 1.0, 1.0, s + rollersOnLowFaces());
 }
 
 // A unit cube whose faces x = 1, y = 1, z = 1 move by -a(t) along their normals (a from curve

@@ -21,7 +21,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cli"))
 import clitest  # noqa: E402
-from clitest import TempDirTest, crumple, describe, main  # noqa: E402
+from clitest import TempDirTest, main  # noqa: E402
 from clitest import history_rows as rows  # noqa: E402
 
 
@@ -30,15 +30,6 @@ def decks():
 
 
 class BeamContactVerification(TempDirTest):
-    def run_deck(self, name, text):
-        path = os.path.join(self.tmp, name + ".k")
-        with open(path, "w", encoding="utf-8") as f:
-            f.write(text)
-        out = os.path.join(self.tmp, name + ".out")
-        p = crumple("run", path, "-o", out, "-q", cwd=self.tmp, timeout=600)
-        self.assertEqual(p.returncode, 0, describe(p))
-        return out
-
     def test_crossing_beams_force_is_stiffness_times_penetration(self):
         b = decks()
         v, gap = 1.0, 0.002

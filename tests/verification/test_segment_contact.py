@@ -29,15 +29,6 @@ def decks():
 
 
 class SegmentContactVerification(TempDirTest):
-    def run_deck(self, name, text):
-        path = os.path.join(self.tmp, name + ".k")
-        with open(path, "w", encoding="utf-8") as f:
-            f.write(text)
-        out = os.path.join(self.tmp, name + ".out")
-        p = crumple("run", path, "-o", out, "-q", cwd=self.tmp, timeout=600)
-        self.assertEqual(p.returncode, 0, describe(p))
-        return out
-
     def forces_and_positions(self, out):
         z = {r["time"]: r["z"] for r in rows(out, "nodout.csv")}
         force = {}
