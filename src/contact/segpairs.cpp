@@ -172,6 +172,21 @@ std::optional<PairGap> shellPairGap(const PairShape& s, int side, const PairShap
   return g;
 }
 
+// Check k of pass p against its segment s at positions xs.
+PairShape pairShapeAt(const Pass& p, std::size_t k, std::size_t s, const std::vector<double>& xs) {
+  const auto& sa = p.check_seg[k];
+  const auto& sb = p.seg[s];
+  return PairShape{cornersAt(xs, sa),
+                   cornersAt(xs, sb),
+                   sa[2] == sa[3],
+                   sb[2] == sb[3],
+                   p.node_half[k] + p.seg_half[s],
+                   p.check_depth[k],
+                   p.seg_depth[s],
+                   p.node_half[k] == 0.0,
+                   p.seg_half[s] == 0.0};
+}
+
 }  // namespace
 
 std::optional<Record> Contact::segmentPair(const Pass& p, int32_t check, std::size_t s,
@@ -179,18 +194,7 @@ std::optional<Record> Contact::segmentPair(const Pass& p, int32_t check, std::si
   const auto k = std::size_t(check - p.first_check);
   const auto& sa = p.check_seg[k];
   const auto& sb = p.seg[s];
-  auto shapeAt = [&](const std::vector<double>& xs) {
-    return PairShape{cornersAt(xs, sa),
-                     cornersAt(xs, sb),
-                     sa[2] == sa[3],
-                     sb[2] == sb[3],
-                     p.node_half[k] + p.seg_half[s],
-                     p.check_depth[k],
-                     p.seg_depth[s],
-                     p.node_half[k] == 0.0,
-                     p.seg_half[s] == 0.0};
-  };
-  const PairShape now = shapeAt(x_), before = shapeAt(x_prev_);
+  const PairShape now = pairShapeAt(p, k, s, x_), before = pairShapeAt(p, k, s, x_prev_);
   const EdgePair* last = findEdgePair(check, int32_t(s));
   const auto g = now.h > 0.0 ? shellPairGap(now, last ? last->side : 0, before)
                              : solidPairGap(now, before, last == nullptr);
@@ -258,24 +262,16 @@ void Contact::listInitialSegmentOverlaps(std::size_t pass) {
     candidates.clear();
     search_.collectCandidates(p, pass, check, 0.0, x_, candidates);
     for (const int32_t s : candidates) {
-      const auto& sa = p.check_seg[k];
-      const auto& sb = p.seg[std::size_t(s)];
-      const PairShape shape{cornersAt(x_, sa),
-                            cornersAt(x_, sb),
-                            sa[2] == sa[3],
-                            sb[2] == sb[3],
-                            p.node_half[k] + p.seg_half[std::size_t(s)],
-                            p.check_depth[k],
-                            p.seg_depth[std::size_t(s)],
-                            p.node_half[k] == 0.0,
-                            p.seg_half[std::size_t(s)] == 0.0};
+      const PairShape shape = pairShapeAt(p, k, std::size_t(s), x_);
       const auto g =
           shape.h > 0.0 ? shellPairGap(shape, 0, shape) : solidPairGap(shape, shape, false);
       const double ref = shape.h > 0.0 ? shape.h : p.seg_depth[std::size_t(s)];
       if (g && -g->gap > 1e-9 * ref)
         initial_.push_back(
             {ci.id,
-             model_.nodes.size() ? model_.nodes.id[std::size_t(cn_model_[std::size_t(sa[0])])] : 0,
+             model_.nodes.size()
+                 ? model_.nodes.id[std::size_t(cn_model_[std::size_t(p.check_seg[k][0])])]
+                 : 0,
              -g->gap});
     }
   }
