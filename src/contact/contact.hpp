@@ -253,9 +253,15 @@ class Contact {
     int32_t check = 0, segment = 0;
     Vec3 friction{};
     double entry = 0.0;
-    int8_t side = 0;  // segment pairs: the side of the other segment the check's is on
+    int8_t side = 0;          // segment pairs: the side of the other segment the check's is on
+    double energy = 0.0;      // segment pairs: the penalty energy the pair held, k p^2 / 2
+    double dissipated = 0.0;  // segment pairs: by friction and damping over its last step
   };
   std::vector<EdgePair> edge_pairs_;
+  std::vector<EdgePair> last_pairs_;  // applyRecords' scratch: edge_pairs_ of the cycle before
+  // The energy of the segment pairs of last cycle that are no longer in contact, booked as
+  // contact energy that stays (see applyRecords).
+  void bookEndedSegmentPairs();
   const EdgePair* findEdgePair(int32_t check, int32_t segment) const;
   // A pair of pass p in contact last cycle whose edges are edges a and b of the pass or their
   // neighbours (sharing a node), the first in pair order; none if none.

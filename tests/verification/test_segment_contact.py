@@ -7,6 +7,8 @@ through the command line on decks from tools/segment_contact_decks.py:
   - two free blocks colliding (equal masses): the struck block leaves with the striker's
     momentum, the striker stops (0.5%), the energy ratio stays within 0.2%, total momentum
     to round-off, no contact energy left;
+  - sheets and a block landing sliding on a plate (the rank determinism deck, run longer): the
+    energy ratio stays within 0.5% while the contact takes a fifth of the energy;
   - a sheet's edge crossing another sheet's edge where neither has a node: SOFT = 2 pushes
     with k x (h - distance of the edges), h the contact thickness, where node-to-segment
     contact (SOFT = 0) lets it pass with no force at all;
@@ -71,7 +73,9 @@ class SegmentContactVerification(TempDirTest):
         glstat = rows(out, "glstat.csv")
         ratios = [r["energy_ratio"] for r in glstat]
         self.assertLess(max(abs(r - 1.0) for r in ratios), 0.002, ratios)
-        self.assertLess(glstat[-1]["contact"], 1e-6 * glstat[0]["kinetic"], "still in contact")
+        # Pairs that end keep the k p^2 / 2 of their last cycle in the contact energy
+        # (docs/theory.md, "Segment-based contact"): at most one step's unloading.
+        self.assertLess(glstat[-1]["contact"], 1e-5 * glstat[0]["kinetic"], "still in contact")
         self.assertGreater(max(r["contact"] for r in glstat), 0.1 * glstat[0]["kinetic"])
         matsum = rows(out, "matsum.csv")
         last = matsum[-1]["time"]
@@ -81,6 +85,22 @@ class SegmentContactVerification(TempDirTest):
         mv = d.RHO * d.A ** 3 * v
         self.assertAlmostEqual(end[1], -mv, delta=0.005 * mv)  # the struck block takes it all
         self.assertAlmostEqual(end[2], 0.0, delta=0.005 * mv)
+
+    def test_sheets_and_blocks_sliding_onto_a_plate_keep_the_energy_balance(self):
+        # The rank determinism deck run on to 1.2 ms: a tilted sheet and a small block land
+        # sliding (1 and 0.5 m/s across) on a plate of shells, with friction and damping; the
+        # block turns as it lands, its faces within 8 degrees of the plate's. Contact energy is
+        # the springs' stored energy plus what friction, damping and ended pairs took, so a
+        # force that is not the gradient of the penalty energy shows as a ratio off 1. With the
+        # nearest corners' gap and the force at the centroid the ratio reached 1.078 by 0.4 ms;
+        # with pairs that end while penetrated dropping their energy it fell to 0.993.
+        d = decks()
+        out = self.run_deck("slide", d.determinism(end=1.2e-3, dt_out=2e-5))
+        glstat = rows(out, "glstat.csv")
+        ratios = [r["energy_ratio"] for r in glstat]
+        self.assertLess(max(abs(r - 1.0) for r in ratios), 0.005, ratios)
+        # The contact carried a fifth of the energy: the balance is not trivially met.
+        self.assertGreater(glstat[-1]["contact"], 0.15 * glstat[0]["kinetic"])
 
     def test_sheet_edge_crossing_a_sheet_edge_is_caught(self):
         d = decks()
