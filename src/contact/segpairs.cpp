@@ -125,6 +125,14 @@ std::optional<PairGap> solidPairGap(const PairShape& s, const PairShape& before,
   return best;
 }
 
+// The gap of faces on each other from the centroid's distance d along the push: d - h. A
+// centroid past the other mid-surface (d < 0: the faces cross there) takes the closest points'
+// distance instead, as before it crossed (a Workbench block face through a plate gave a pair
+// a penetration of 4 mm against h = 0.5 mm at once).
+double centroidGap(double d, double closest, double h) {
+  return (d >= 0.0 ? d : closest) - h;
+}
+
 // Shells: the mid-surfaces closer than h. The gap is their distance less h, which moves
 // continuously with the nodes whatever features are nearest (a gap that jumped, as a centroid
 // distance does when the centroid leaves the other segment, would make energy). The force
@@ -164,12 +172,12 @@ std::optional<PairGap> shellPairGap(const PairShape& s, int side, const PairShap
       g.Na = centroidWeights(s.tri_a);
       g.Nb = pr->N;
       g.push = push;
-      g.gap = dot(sub(centroidOf(s.a, s.tri_a), pr->point), push) - s.h;
+      g.gap = centroidGap(dot(sub(centroidOf(s.a, s.tri_a), pr->point), push), c.dist, s.h);
     } else if (const auto pb = centroidOver(s.b, s.tri_b, s.a, s.tri_a)) {
       g.Na = pb->N;
       g.Nb = centroidWeights(s.tri_b);
       g.push = push;
-      g.gap = dot(sub(pb->point, centroidOf(s.b, s.tri_b)), push) - s.h;
+      g.gap = centroidGap(dot(sub(pb->point, centroidOf(s.b, s.tri_b)), push), c.dist, s.h);
     } else {
       // Faces on each other that only touch at an edge or a corner (neither centroid over the
       // other): their neighbours, over which the centroids lie, carry the contact. Taken at
