@@ -413,6 +413,18 @@ target
 """
 
 
+def _shell_plate(m: Mesh, part: int, z: float) -> dict:
+    """A 30 x 30 plate of 3 x 3 shells of 10 mm at height z; its node ids keyed (i, j)."""
+    plate = {}
+    for j in range(4):
+        for i in range(4):
+            plate[i, j] = m.add_node(10.0 * i, 10.0 * j, z)
+    for j in range(3):
+        for i in range(3):
+            m.add_shell(part, [plate[i, j], plate[i + 1, j], plate[i + 1, j + 1], plate[i, j + 1]])
+    return plate
+
+
 def pressed_plate(load: float = 100.0, end: float = 1.33e-4) -> str:
     """A 1 mm steel shell plate (3 x 3 shells of 10 mm) pressed onto an elastic block (its
     base fixed) by `load` N at each of its 16 nodes, automatic surface-to-surface contact with
@@ -422,13 +434,7 @@ def pressed_plate(load: float = 100.0, end: float = 1.33e-4) -> str:
     pushes the resting plate off the block; one capped at the initial step does not."""
     m = Mesh()
     g = block(m, 1, (0.0, 0.0, 0.0), (30.0, 30.0, 10.0), (3, 3, 1))
-    plate = {}
-    for j in range(4):
-        for i in range(4):
-            plate[i, j] = m.add_node(10.0 * i, 10.0 * j, 10.5)
-    for j in range(3):
-        for i in range(3):
-            m.add_shell(2, [plate[i, j], plate[i + 1, j], plate[i + 1, j + 1], plate[i, j + 1]])
+    plate = _shell_plate(m, 2, 10.5)
     col = block(m, 3, (100.0, 0.0, 0.0), (10.0, 10.0, 14.0), (1, 1, 1))
     fixed = [g[i, j, 0] for i in range(4) for j in range(4)] + \
         [col[i, j, 0] for i in range(2) for j in range(2)]
@@ -494,26 +500,13 @@ def overlapping_stack(lower: str = "shell", overlap: float = 0.2, push: float = 
     m = Mesh()
     soft = 1 if dtstif > 0.0 else 0
     if lower == "shell":
-        base = {}
-        for j in range(4):
-            for i in range(4):
-                base[i, j] = m.add_node(10.0 * i, 10.0 * j, 0.0)
-        for j in range(3):
-            for i in range(3):
-                m.add_shell(1, [base[i, j], base[i + 1, j], base[i + 1, j + 1], base[i, j + 1]])
-        fixed = list(base.values())
+        fixed = list(_shell_plate(m, 1, 0.0).values())
         z_top, lower_part = 1.0 - overlap, "1,2,1"
     else:
         g = block(m, 1, (0.0, 0.0, -10.0), (30.0, 30.0, 10.0), (3, 3, 1))
         fixed = sorted(g.values())
         z_top, lower_part = 0.5 - overlap, "1,1,1"
-    plate = {}
-    for j in range(4):
-        for i in range(4):
-            plate[i, j] = m.add_node(10.0 * i, 10.0 * j, z_top)
-    for j in range(3):
-        for i in range(3):
-            m.add_shell(2, [plate[i, j], plate[i + 1, j], plate[i + 1, j + 1], plate[i, j + 1]])
+    plate = _shell_plate(m, 2, z_top)
     up = 0.5 * overlap
     return f"""*KEYWORD
 *TITLE
