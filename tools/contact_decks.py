@@ -413,6 +413,18 @@ target
 """
 
 
+def _shell_plate(m: Mesh, part: int, z: float) -> dict:
+    """A 30 x 30 plate of 3 x 3 shells of 10 mm at height z; its node ids keyed (i, j)."""
+    plate = {}
+    for j in range(4):
+        for i in range(4):
+            plate[i, j] = m.add_node(10.0 * i, 10.0 * j, z)
+    for j in range(3):
+        for i in range(3):
+            m.add_shell(part, [plate[i, j], plate[i + 1, j], plate[i + 1, j + 1], plate[i, j + 1]])
+    return plate
+
+
 def pressed_plate(load: float = 100.0, end: float = 1.33e-4) -> str:
     """A 1 mm steel shell plate (3 x 3 shells of 10 mm) pressed onto an elastic block (its
     base fixed) by `load` N at each of its 16 nodes, automatic surface-to-surface contact with
@@ -422,13 +434,7 @@ def pressed_plate(load: float = 100.0, end: float = 1.33e-4) -> str:
     pushes the resting plate off the block; one capped at the initial step does not."""
     m = Mesh()
     g = block(m, 1, (0.0, 0.0, 0.0), (30.0, 30.0, 10.0), (3, 3, 1))
-    plate = {}
-    for j in range(4):
-        for i in range(4):
-            plate[i, j] = m.add_node(10.0 * i, 10.0 * j, 10.5)
-    for j in range(3):
-        for i in range(3):
-            m.add_shell(2, [plate[i, j], plate[i + 1, j], plate[i + 1, j + 1], plate[i, j + 1]])
+    plate = _shell_plate(m, 2, 10.5)
     col = block(m, 3, (100.0, 0.0, 0.0), (10.0, 10.0, 14.0), (1, 1, 1))
     fixed = [g[i, j, 0] for i in range(4) for j in range(4)] + \
         [col[i, j, 0] for i in range(2) for j in range(2)]
@@ -477,9 +483,91 @@ squeezed column
         m.keyword_text() + "*END\n"
 
 
+def overlapping_stack(lower: str = "shell", overlap: float = 0.2, push: float = 0.1,
+                      ignore: int = 2, local_ignore: int = 0, dtstif: float = 0.0,
+                      sfs: float = 1.0) -> str:
+    """A 1 mm steel shell plate (3 x 3 shells of 10 mm) that starts `overlap` deep in a fixed
+    body under it (`lower`: a 1 mm shell plate of the same mesh, or a 30 x 30 x 10 mm block),
+    automatic single surface contact, initial penetrations tracked (*CONTROL_CONTACT IGNORE
+    `ignore`, or the contact's own card C IGNORE `local_ignore`). Every node of the upper
+    plate is driven in z (mm): 0 -> -push (held from 1 to 2 ms) -> +overlap/2 (held from 3 to 4)
+    -> -push (held from 5 to 6 ms). Units mm, ms, kg, GPa. Both bodies move as prescribed, so
+    the contact force is a function of the position alone: LS-DYNA's tracking (LSTC FAQ
+    "contact.ignore1") gives no force at the start, k x push on the first hold, none while the
+    plate is lifted, and k x (push + overlap/2) on the last hold (the stored offset fell to
+    overlap/2 when the plate was lifted). `dtstif` > 0: SOFT = 1 with that DTSTIF (card C) and
+    SFS = SFM = `sfs`, so that the mass-based stiffness 0.5 SOFSCL m* / DTSTIF^2 governs."""
+    m = Mesh()
+    soft = 1 if dtstif > 0.0 else 0
+    if lower == "shell":
+        fixed = list(_shell_plate(m, 1, 0.0).values())
+        z_top, lower_part = 1.0 - overlap, "1,2,1"
+    else:
+        g = block(m, 1, (0.0, 0.0, -10.0), (30.0, 30.0, 10.0), (3, 3, 1))
+        fixed = sorted(g.values())
+        z_top, lower_part = 0.5 - overlap, "1,1,1"
+    plate = _shell_plate(m, 2, z_top)
+    up = 0.5 * overlap
+    return f"""*KEYWORD
+*TITLE
+plate starting inside a {lower}, initial penetrations tracked
+*CONTROL_TERMINATION
+6.0
+*CONTROL_CONTACT
+0.1
+$ cards 2 and 3
+0
+0.0
+{ignore}
+*DATABASE_GLSTAT
+0.05
+*DATABASE_RCFORC
+0.05
+*DATABASE_BNDOUT
+0.05
+*PART
+lower
+{lower_part}
+*PART
+upper plate
+2,2,1
+*SECTION_SOLID
+1,1
+*SECTION_SHELL
+2,2
+1.0,1.0,1.0,1.0
+*MAT_ELASTIC
+1,7.85e-6,210.,0.3
+*SET_PART_LIST
+1
+1,2
+*CONTACT_AUTOMATIC_SINGLE_SURFACE
+1,0,2
+0.0,0.0,0.0,0.0,0.0
+{sfs},{sfs}
+{soft}
+0
+0,{local_ignore},0.0,{dtstif}
+*DEFINE_CURVE
+1
+0.0,0.0
+1.0,{-push}
+2.0,{-push}
+3.0,{up}
+4.0,{up}
+5.0,{-push}
+6.0,{-push}
+*BOUNDARY_SPC_SET
+1,0,1,1,1,1,1,1
+*BOUNDARY_PRESCRIBED_MOTION_SET
+2,3,2,1,1.0
+""" + node_set(1, fixed) + node_set(2, list(plate.values())) + m.keyword_text() + "*END\n"
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    ap.add_argument("problem", choices=["blocks", "sliding", "hertz", "tube", "tied", "cask", "pressed"])
+    ap.add_argument("problem", choices=["blocks", "sliding", "hertz", "tube", "tied", "cask", "pressed",
+                             "overlap"])
     ap.add_argument("out", type=pathlib.Path)
     ap.add_argument("--kind", default="SURFACE_TO_SURFACE")
     ap.add_argument("--mu", type=float, default=0.3)
@@ -501,6 +589,8 @@ def main() -> None:
         text = cask_drop(**extra)
     elif a.problem == "pressed":
         text = pressed_plate(**extra)
+    elif a.problem == "overlap":
+        text = overlapping_stack()
     else:
         text = tube_crush(size=a.size, length=a.length, **extra)
     a.out.write_text(text)

@@ -83,7 +83,6 @@ Contact::Contact(const model::Model& model, domain::Subdomain& sd, comm::Communi
       max_sort_interval_ =
           max_sort_interval_ > 0 ? std::min(max_sort_interval_, ci.bsort) : ci.bsort;
   friction_.assign(3 * std::size_t(num_checks_), 0.0);
-  initial_gap_.assign(std::size_t(num_checks_), 0.0);
   last_seg_.assign(std::size_t(num_checks_), -1);
   last_side_.assign(std::size_t(num_checks_), 0);
   entry_.assign(std::size_t(num_checks_), 0.0);
@@ -469,8 +468,15 @@ void Contact::resolveInitialPenetrations(std::size_t pass) {
     if (-gap <= 1e-9 * ref) continue;
     initial_.push_back(
         {ci.id, model_.nodes.size() ? model_.nodes.id[std::size_t(cn_model_[node])] : 0, -gap});
-    if (model_.contact_controls.ignore != 0) {
-      initial_gap_[std::size_t(check)] = -gap;
+    if (model::ignoreOf(ci, model_.contact_controls) != 0) {
+      // Tracked (LS-DYNA's IGNORE 1 and 2): the node starts in contact with this segment,
+      // its initial penetration the contact's entry offset, so the force starts from zero;
+      // the offset then follows the penetration down (checkOne).
+      const auto c = std::size_t(check);
+      last_seg_[c] = best->seg;
+      last_side_[c] = int8_t(best->surface.side);
+      entry_[c] = -gap;
+      in_contact_.push_back(check);
       continue;
     }
     moveNode(node, scale(best->surface.push, -gap));
@@ -566,10 +572,24 @@ std::optional<Record> Contact::checkOne(std::size_t i, double time, double dt_pr
   }
   auto best = chooseSegment(pass, check, search_.candidates(i), tests, false);
   if (!best) return std::nullopt;
-  // Tracked contacts keep the entry offset they began with.
-  if (best->rank == 0) best->entry = entry_[c];
-  const double pen = -best->surface.gap - initial_gap_[c] - best->entry;
-  if (!(pen > 0.0)) return std::nullopt;
+  // Tracked contacts keep the entry offset they began with. IGNORE 1 and 2 (LS-DYNA's
+  // tracking of initial penetrations, LSTC FAQ "contact.ignore1"): when the penetration falls
+  // below the offset, the offset falls with it, and the contact stays tracked with no force;
+  // a node that backed out and comes in again is pushed back from the depth it came out to.
+  const double depth = -best->surface.gap;
+  const bool tracking = model::ignoreOf(ci, model_.contact_controls) != 0;
+  if (best->rank == 0) best->entry = tracking ? std::min(entry_[c], depth) : entry_[c];
+  const double pen = depth - best->entry;
+  if (!(pen > 0.0)) {
+    if (!(tracking && best->rank == 0)) return std::nullopt;
+    Record r;
+    r.check = check;
+    r.segment = best->seg;
+    r.N = best->proj.N;
+    r.side = int8_t(best->surface.side);
+    r.entry = best->entry;
+    return r;
+  }
   const auto seg = std::size_t(best->seg);
   const Penetration found{
       check,      best->seg, best->proj.N, best->surface.push, pen, int8_t(best->surface.side),
@@ -780,8 +800,8 @@ void Contact::notePenetration(const Pass& p, const Record& r) {
   const double h = p.seg_half[seg] + p.node_half[check - std::size_t(p.first_check)];
   const double ref = h > 0.0 ? 2.0 * h : p.seg_depth[seg];
   if (ref > 0.0)
-    stats_.max_penetration_ratio = std::max(stats_.max_penetration_ratio,
-                                            (r.penetration + r.entry + initial_gap_[check]) / ref);
+    stats_.max_penetration_ratio =
+        std::max(stats_.max_penetration_ratio, (r.penetration + r.entry) / ref);
 }
 
 double Contact::energy() const {

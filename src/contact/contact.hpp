@@ -234,8 +234,7 @@ class Contact {
   std::vector<int32_t> check_node_;  // contact node of each global check
   BucketSearch search_;
   CheckPartition partition_;
-  std::vector<double> friction_;     // tangential force history, 3 per check
-  std::vector<double> initial_gap_;  // IGNORE 1/2: initial penetration per check
+  std::vector<double> friction_;  // tangential force history, 3 per check
   // The step the penalty stiffness is taken at (SOFT = 1 and the stability cap): the initial
   // step, raised when the step grows, never lowered (LS-DYNA Theory Manual, "soft constraint
   // penalty"), so that a falling step does not stiffen the contacts already in force.

@@ -58,9 +58,9 @@ Record penaltyForce(const Penetration& p, const NodeAndSegment& m, double stiffn
   double k = stiffness;
   // SOFT = 1: a stiffness from the masses and the step, so soft foam against steel still
   // stops (LS-DYNA Theory Manual, "soft constraint penalty": 0.5 SOFSCL m / dt^2, dt the
-  // initial step, updated when the step grows).
-  if (ci.soft == 1 && dt_stiff > 0.0)
-    k = std::max(k, 0.5 * ci.sofscl * m_eff / (dt_stiff * dt_stiff));
+  // initial step, updated when the step grows, or the interface's DTSTIF when given).
+  const double dt_soft = ci.dtstif > 0.0 ? ci.dtstif : dt_stiff;
+  if (ci.soft == 1 && dt_soft > 0.0) k = std::max(k, 0.5 * ci.sofscl * m_eff / (dt_soft * dt_soft));
   k = stableStiffness(k, m_eff, dt_stiff);
   const Vec3& n = p.push;
   const double pen = p.depth;

@@ -349,6 +349,18 @@ void readSegmentBased(Context& ctx, const deck::Keyword& kw, const deck::Card& c
                "read but not honoured: Crumple's pair search uses the segments' boxes", ca.where());
 }
 
+// Optional card C (Keyword Manual, *CONTACT): IGNORE, the interface's own initial penetration
+// treatment (0: *CONTROL_CONTACT's); DTSTIF, the step of SOFT = 1's stiffness (read for
+// SOFT = 1 only: elsewhere it stays reported as not honoured).
+void readCardC(const Card& cc, const Card& ca, ContactInterface& ci) {
+  const int64_t ignore = cc.integer("IGNORE");
+  if (ignore < 0 || ignore > 2) cc.fail("IGNORE", "must be 0, 1 or 2");
+  ci.ignore = int(ignore);
+  if (ca.integer("SOFT") != 1) return;
+  ci.dtstif = cc.real("DTSTIF");
+  if (ci.dtstif < 0.0) cc.fail("DTSTIF", "a time step from a curve (< 0) is not supported");
+}
+
 }  // namespace
 
 void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
@@ -420,8 +432,9 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
   const Card& c2 = cur.readOptional(spec.card("card 2"));
   const Card& c3 = cur.readOptional(spec.card("card 3"));
   const Card& ca = cur.readOptional(spec.card("card A"));
-  for (const char* label : {"card B", "card C", "card D"})
-    if (!cur.atEnd()) cur.read(spec.card(label));
+  if (!cur.atEnd()) cur.read(spec.card("card B"));
+  if (!cur.atEnd()) readCardC(cur.read(spec.card("card C")), ca, ci);
+  if (!cur.atEnd()) cur.read(spec.card("card D"));
   if (!cur.atEnd())
     ctx.ignore(kw.name, "cards E and after", "not read (Crumple reads the optional cards A to D)",
                ctx.deck.loc(cur.peek()));

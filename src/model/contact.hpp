@@ -70,6 +70,12 @@ struct ContactInterface {
   int sbopt = 2;  // SOFT = 2: segment pair options (2: planar segments; 3: warped, as 2 here)
   int depth = 2;  // SOFT = 2: 2 surface and edge-to-edge penetration
   int bsort = 0;  // at most this many cycles between bucket sorts (0: by travel alone)
+  // Optional card C (or MPP card 1) IGNORE, the interface's own: 1 and 2 track initial
+  // penetrations; 0 takes *CONTROL_CONTACT's (ignoreOf below).
+  int ignore = 0;
+  // Optional card C DTSTIF: the step SOFT = 1's mass-based stiffness is taken at (0: the
+  // stiffness step, Contact::dt_stiff_).
+  double dtstif = 0.0;
   // MPP card 1 CPARM8 of AUTOMATIC_GENERAL: 1 and 2 leave out beam pairs of one part.
   bool skip_same_part_edges = false;
   util::SourceLoc where;
@@ -84,5 +90,11 @@ struct ContactControls {
   // Re-partition the contact work when the busiest rank carries this many times the mean.
   double rebalance_threshold = 1.25;
 };
+
+// The IGNORE an interface runs with: its own, else *CONTROL_CONTACT's (Keyword Manual,
+// *CONTACT optional card C: "EQ.0: take the value of *CONTROL_CONTACT").
+inline int ignoreOf(const ContactInterface& ci, const ContactControls& controls) {
+  return ci.ignore != 0 ? ci.ignore : controls.ignore;
+}
 
 }  // namespace crumple::model

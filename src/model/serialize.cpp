@@ -341,7 +341,7 @@ void fields(A& a, M& m) {
   a.count(
       m.contacts.size(),
       [&](auto& c) {
-        util::fieldCount<25>(c);
+        util::fieldCount<27>(c);
         a(c.id);
         a(c.title);
         a(c.keyword);
@@ -365,6 +365,8 @@ void fields(A& a, M& m) {
         a(c.sbopt);
         a(c.depth);
         a(c.bsort);
+        a(c.ignore);
+        a(c.dtstif);
         a(c.skip_same_part_edges);
         loc(a, c.where);
       },

@@ -151,6 +151,51 @@ class ContactVerification(TempDirTest):
         for r in plate:
             self.assertAlmostEqual(r["fz"], 1600.0, delta=8.0, msg=r)
 
+    def test_initial_penetration_tracked_as_lsdyna_ignore(self):
+        # IGNORE 1 and 2 (LSTC FAQ "contact.ignore1"): the initial penetration is the reference,
+        # the force comes from the penetration beyond it, and the reference falls with the
+        # penetration. A plate starting 0.2 mm inside a shell (or a block), pushed 0.1 mm in,
+        # lifted to 0.1 mm overlap, pushed 0.1 mm in again: no force at first, F1 = k x 0.1 on
+        # the first hold, none while lifted, 2 F1 = k x 0.2 on the last. Crumple counted the
+        # offset twice on shells and lost the contact on solid faces: no force at all.
+        # The global IGNORE and the contact's own (card C, over a global 0) alike.
+        for lower, glob, local in (("shell", 2, 0), ("solid", 2, 0), ("shell", 0, 1)):
+            with self.subTest(lower=lower, ignore=glob, card_c=local):
+                deck = decks().overlapping_stack(lower, 0.2, 0.1, glob, local)
+                out = self.run_deck(f"overlap_{lower}_{glob}{local}", deck)
+                force = {}
+                for r in rows(out, "bndout.csv"):
+                    force[r["time"]] = force.get(r["time"], 0.0) - r["fz"]
+
+                def hold(t0, t1):
+                    return [f for t, f in force.items() if t0 <= t <= t1]
+
+                self.assertEqual(force[0.0], 0.0)
+                first, lifted, last = hold(1.2, 1.8), hold(3.2, 3.8), hold(5.2, 5.8)
+                self.assertGreater(min(first), 0.0, force)
+                self.assertLess(max(first) - min(first), 1e-9 * max(first))
+                self.assertEqual(max(abs(f) for f in lifted), 0.0)
+                for f in last:
+                    self.assertAlmostEqual(f / first[0], 2.0, delta=1e-6)
+                s = read_summary(out)
+                self.assertEqual(s["contact"]["initial_penetrations"], 32)
+
+    def test_soft1_stiffness_at_dtstif(self):
+        # SOFT = 1 with DTSTIF (card C): the mass-based stiffness 0.5 SOFSCL m* / DTSTIF^2 is
+        # taken at DTSTIF, not at the run's step; with the element-based one scaled far below
+        # (SFS 1e-5), doubling DTSTIF quarters the force of the same penetration.
+        force = {}
+        for dtstif in (0.01, 0.02):
+            out = self.run_deck(f"dtstif_{dtstif}",
+                                decks().overlapping_stack("shell", 0.2, 0.1, 2, 0, dtstif, 1e-5))
+            total = {}
+            for r in rows(out, "bndout.csv"):
+                total[r["time"]] = total.get(r["time"], 0.0) - r["fz"]
+            force[dtstif] = [f for t, f in sorted(total.items()) if 1.2 <= t <= 1.8]
+        self.assertGreater(min(force[0.02]), 0.0)
+        for a, b in zip(force[0.01], force[0.02]):
+            self.assertAlmostEqual(a / b, 4.0, delta=1e-6)
+
     def test_cask_drop_impulse_equals_momentum_change(self):
         # A steel cask (hex tube with a hex lid tied to it) dropped lid first onto a rigid
         # target, symmetric two-surface contact: the impulse of the contact force on the target
