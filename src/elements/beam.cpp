@@ -472,7 +472,7 @@ BlockStatus initializeBeams(domain::BeamBlock& blk, const domain::NodeVector& x0
   const double G = materials::moduliOf(blk.law).shear;
   const bool frames = blk.section.elform != 3;
   const double i_max = std::max(sec.iss, sec.itt);
-  const materials::Muscle* muscle = materials::fibreLawOf(blk.law).muscle;
+  const materials::Muscle* muscle = std::get_if<materials::Muscle>(&blk.law);
   BlockStatus st;
   const std::size_t ne = blk.size();
   element_dt.assign(ne, 0.0);
