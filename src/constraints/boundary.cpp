@@ -204,7 +204,11 @@ StepWork Boundary::applyKinematics(double t, double dt_n, double dt_half, domain
         v_new = v_old[i] + dt_n * m.sf * curveValue(m.curve, t);
         break;
       case model::MotionKind::Displacement: {
-        const double u_next = m.sf * curveValue(m.curve, t_next);
+        // The displacement since t = 0 is the curve's change since then, sf (f(t) - f(0)):
+        // LS-DYNA moves the node by the curve's increments, so a curve that starts at a
+        // non-zero value (the node's coordinate, say) does not make it jump at the first
+        // step (docs/theory.md, "Loads and constraints").
+        const double u_next = m.sf * (curveValue(m.curve, t_next) - curveValue(m.curve, 0.0));
         v_new = dt_half > 0.0 ? (u_next - (sd.x[i] - sd.x0[i])) / dt_half : 0.0;
         break;
       }

@@ -691,8 +691,9 @@ StepWork RigidBodies::advance(Body& b, const Vec3& F, const Vec3& M, double t, d
         v = (rot ? omega_prev[d] : b.V_prev[d]) + dt_n * value(t);
         break;
       case model::MotionKind::Displacement: {
+        // From the curve's value at t = 0 (as the nodal displacement, boundary.cpp).
         const double now = rot ? b.angle[d] : b.x_cm[d] - b.x_cm0[d];
-        v = dt_half > 0.0 ? (value(t_next) - now) / dt_half : 0.0;
+        v = dt_half > 0.0 ? (value(t_next) - value(0.0) - now) / dt_half : 0.0;
         break;
       }
     }

@@ -437,7 +437,7 @@ class SubdomainBuilder {
     BeamBlock b;
     fillBase(b, model, part_index, elems, shared_count, 1, model.beams, local_of);
     b.law = lawOf(model, part, false);
-    b.rho0 = mat.rho;
+    b.rho0 = materials::massDensityOf(b.law, mat.rho);
     b.rigid = massOnly(model, part);
     b.section.elform = sec.elform;
     b.section.cst = sec.cst;

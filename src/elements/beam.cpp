@@ -76,6 +76,7 @@
 #include <stdexcept>
 #include <variant>
 
+#include "materials/laws/muscle.hpp"
 #include "materials/uniaxial.hpp"
 #include "util/curve.hpp"
 #include "util/vec3.hpp"
@@ -471,6 +472,7 @@ BlockStatus initializeBeams(domain::BeamBlock& blk, const domain::NodeVector& x0
   const double G = materials::moduliOf(blk.law).shear;
   const bool frames = blk.section.elform != 3;
   const double i_max = std::max(sec.iss, sec.itt);
+  const materials::Muscle* muscle = std::get_if<materials::Muscle>(&blk.law);
   BlockStatus st;
   const std::size_t ne = blk.size();
   element_dt.assign(ne, 0.0);
@@ -501,7 +503,9 @@ BlockStatus initializeBeams(domain::BeamBlock& blk, const domain::NodeVector& x0
     }
     const double dt_free = beamTimeStep(blk.section, length, E, G, blk.rho0);
     const double dte =
-        dampedStep(dt_free, blk.stiffness_damping + blk.stiffness_fraction * dt_free);
+        muscle ? materials::muscleStep(muscle->response(muscle->sno, 0.0, 0.0), blk.rho0, length,
+                                       length / muscle->sno)
+               : dampedStep(dt_free, blk.stiffness_damping + blk.stiffness_fraction * dt_free);
     element_dt[e] = dte;
     noteStep(st, dte, blk.elem[e]);
   }
@@ -545,6 +549,53 @@ void writeEndForces(const Frame& E, double length, const std::array<double, 6>& 
   }
 }
 
+// A truss's axial force N after the step and whether its law failed; for a muscle also its
+// stable step.
+struct TrussStep {
+  double N = 0.0;
+  bool failed = false;
+  double dt = 0.0;
+};
+
+// The truss of a fibre law: the log strain increment de through the law, true stress on the
+// current area A L0 / L (constant volume), and the stiffness damping beta.
+TrussStep trussStress(domain::BeamBlock& blk, std::size_t e, const materials::FibreLaw& law,
+                      double area, double length, double de, double dt, double beta) {
+  const double L0 = blk.length0[e];
+  materials::FibrePoint& p = blk.point[e];
+  const double s_old = p.sig;
+  TrussStep out;
+  out.failed = materials::updateFibre(law, p, de, 0.0, 0.0, dt);
+  blk.e_int[e] += area * L0 * 0.5 * (s_old + p.sig) * de;
+  // Stiffness damping: the viscous stress beta E deps/dt over the step (no damping force
+  // on an eroding element: `failed` zeroes the slots).
+  const double sig_d = beta > 0.0 && dt > 0.0 ? beta * law.E * de / dt : 0.0;
+  if (beta > 0.0) {
+    // Trapezoidal like the internal energy: the stress of the last cycle and this one over
+    // the step between them (what the energy identity of the cycle books).
+    double& sig_d_old = blk.damping_resultant[e][0];
+    blk.e_damp[e] += area * L0 * 0.5 * (sig_d_old + sig_d) * de;
+    sig_d_old = sig_d;
+  }
+  out.N = (p.sig + sig_d) * area * L0 / length;
+  return out;
+}
+
+// The truss of *MAT_MUSCLE (materials/laws/muscle.hpp) at t(n): the stress of the stretch
+// L / l_orig at x(n) and the strain rate of the mid-step rate of length dl_dt, force sigma A.
+// Its work, trapezoidal over the step's length change dt dl_dt, is the internal energy (the
+// damping element's included: it is the material's). The stress is kept in the point for the
+// next step's work and for output.
+TrussStep muscleTruss(domain::BeamBlock& blk, std::size_t e, const materials::Muscle& m,
+                      double area, double length, double dl_dt, double dt) {
+  const double L0 = blk.length0[e], l_orig = L0 / m.sno;
+  materials::FibrePoint& p = blk.point[e];
+  const materials::MuscleResponse r = m.response(length / l_orig, dl_dt / l_orig, blk.time);
+  blk.e_int[e] += area * 0.5 * (p.sig + r.stress) * dl_dt * dt;
+  p.sig = r.stress;
+  return {r.stress * area, false, materials::muscleStep(r, blk.rho0, L0, l_orig)};
+}
+
 BlockStatus beamForces(domain::BeamBlock& blk, const materials::FibreLaw& law, const Section& sec,
                        const domain::NodeVector& x, const domain::NodeVector& v,
                        const domain::NodeVector& w, double dt, double* slots, std::size_t first,
@@ -582,30 +633,23 @@ BlockStatus beamForces(domain::BeamBlock& blk, const materials::FibreLaw& law, c
       // --- truss: axial rate of deformation at the mid-step geometry ----------------------
       const Vec dv = sub(nodeVec(v, c[1]), nodeVec(v, c[0]));
       const Vec dm = sub(d, scale(dv, 0.5 * dt));
-      const double de = dt * dot(dm, dv) / dot(dm, dm);
-      materials::FibrePoint& p = blk.point[e];
-      const double s_old = p.sig;
-      failed = materials::updateFibre(law, p, de, 0.0, 0.0, dt);
-      blk.e_int[e] += sec.area * L0 * 0.5 * (s_old + p.sig) * de;
-      // Stiffness damping: the viscous stress beta E deps/dt over the step (no damping force
-      // on an eroding element: `failed` zeroes the slots below).
-      const double sig_d = beta > 0.0 && dt > 0.0 ? beta * E * de / dt : 0.0;
-      if (beta > 0.0) {
-        // Trapezoidal like the internal energy: the stress of the last cycle and this one over
-        // the step between them (what the energy identity of the cycle books).
-        double& sig_d_old = blk.damping_resultant[e][0];
-        blk.e_damp[e] += sec.area * L0 * 0.5 * (sig_d_old + sig_d) * de;
-        sig_d_old = sig_d;
-      }
-      const double N = (p.sig + sig_d) * sec.area * L0 / length;
-      blk.resultant[e] = {N, 0.0, 0.0, 0.0, 0.0, 0.0};
+      const TrussStep ts = law.muscle ? muscleTruss(blk, e, *law.muscle, sec.area, length,
+                                                    dot(dm, dv) / norm(dm), dt)
+                                      : trussStress(blk, e, law, sec.area, length,
+                                                    dt * dot(dm, dv) / dot(dm, dm), dt, beta);
+      failed = ts.failed;
+      blk.resultant[e] = {ts.N, 0.0, 0.0, 0.0, 0.0, 0.0};
       if (!failed) {
         for (int i = 0; i < 3; ++i) {
           const auto k = static_cast<std::size_t>(i);
-          slot[i] = N * e1[k];
-          slot[3 + i] = -N * e1[k];
+          slot[i] = ts.N * e1[k];
+          slot[3 + i] = -ts.N * e1[k];
           slot[6 + i] = slot[9 + i] = 0.0;
         }
+      }
+      if (law.muscle && !failed) {
+        noteStep(st, ts.dt, blk.elem[e]);
+        continue;
       }
     } else {
       // --- corotational beams: nodal frames, element frame, deformation -------------------

@@ -17,6 +17,9 @@
 //   kDeformationGradient (opt.) its stress is a function of the deformation gradient F
 //                              (hyperelastic laws): the one-point solids give PointBatch::F,
 //                              and parts of other solid formulations are refused
+//   kBeamOnly (optional)       the one *SECTION_BEAM ELFORM its parts may use (a BeamOnly);
+//                              parts of other sections are refused (model/build_mesh.cpp)
+//   massDensity(ro) (optional) the density of its beams' nodal masses from RO (else RO)
 //   Params                     the deck's parameters, stored in the Model (trivially copyable:
 //                              the Model is sent to the other ranks as bytes); Params::Law
 //                              names the unit
@@ -89,6 +92,13 @@ struct PointBatch {
   // The deformation gradient F_ij = dx_i/dX_j at x(n) from the initial geometry, row-major
   // (F[3 i + j]), in; given only to laws that declare kDeformationGradient, else null.
   const double* F[9] = {};
+};
+
+// A law that runs on one beam formulation only: its ELFORM and what to call those beams in
+// messages.
+struct BeamOnly {
+  int elform = 0;
+  std::string_view what;
 };
 
 // Elastic moduli every continuum law exposes for wave speeds and hourglass control.

@@ -146,6 +146,18 @@ bool needsDeformationGradient(const LawParams& p) {
       p);
 }
 
+const BeamOnly* beamOnlyOf(const LawParams& p) {
+  return std::visit(
+      [](const auto& l) -> const BeamOnly* {
+        using U = UnitOf<std::decay_t<decltype(l)>>;
+        if constexpr (requires { U::kBeamOnly; })
+          return &U::kBeamOnly;
+        else
+          return nullptr;
+      },
+      p);
+}
+
 Law makeLaw(const LawParams& p, const CurveAt& curves, const std::string& at, const Eos* eos) {
   return std::visit(
       [&](const auto& params) -> Law {

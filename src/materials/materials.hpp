@@ -107,6 +107,9 @@ bool massOnlyStructures(const LawParams& p);
 // unit declares kDeformationGradient): only the one-point solids give it.
 bool needsDeformationGradient(const LawParams& p);
 
+// The one beam formulation the law runs on (its unit's kBeamOnly), or null for any.
+const BeamOnly* beamOnlyOf(const LawParams& p);
+
 // The kernel law of a continuum part; `at` prefixes messages ("deck.k:12: *MAT_ELASTIC 3: ").
 // `eos` is the part's equation of state, given to a law that declares kEos (solid blocks).
 // Throws util::InputError when the parameters are unusable, the law has no continuum update or
@@ -138,6 +141,18 @@ inline bool needsDeformationGradient(const Law& law) {
 }
 inline bool isKinematic(const Law& law) {
   return std::visit([](const auto& l) { return std::decay_t<decltype(l)>::kKinematic; }, law);
+}
+// The density of a beam block's nodal masses for the material density ro (the unit's
+// massDensity, else ro).
+inline double massDensityOf(const Law& law, double ro) {
+  return std::visit(
+      [ro](const auto& l) {
+        if constexpr (requires { l.massDensity(ro); })
+          return l.massDensity(ro);
+        else
+          return ro;
+      },
+      law);
 }
 // The beam fibre law; throws std::logic_error for a law without one (refused at build).
 FibreLaw fibreLawOf(const Law& law);

@@ -11,6 +11,7 @@
 #include "materials/laws/johnson_cook.hpp"
 #include "materials/laws/modified_piecewise_linear.hpp"
 #include "materials/laws/mooney_rivlin.hpp"
+#include "materials/laws/muscle.hpp"
 #include "materials/laws/null.hpp"
 #include "materials/laws/piecewise_linear.hpp"
 #include "materials/laws/plastic_kinematic.hpp"
@@ -31,6 +32,6 @@ struct LawList {};
 using AllLaws = LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic,
                         DamperViscous, SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam,
                         JohnsonCook, PowerLaw, StrainRatePlasticity, ModifiedPiecewiseLinear,
-                        Spotweld, ElasticPlasticHydro, MooneyRivlin, FrazerNash>;
+                        Spotweld, ElasticPlasticHydro, MooneyRivlin, FrazerNash, Muscle>;
 
 }  // namespace crumple::materials

@@ -30,6 +30,8 @@
 
 namespace crumple::materials {
 
+struct Muscle;
+
 // State of one truss or beam integration point.
 struct FibrePoint {
   double sig = 0.0, tau_s = 0.0, tau_t = 0.0;        // sigma_rr, tau_rs, tau_rt
@@ -71,6 +73,9 @@ struct FibreLaw {
   RateCurve sigy_rate;
   double fail = 0.0;      // effective plastic strain at failure; 0: none
   ResultantFailure weld;  // *MAT_SPOTWELD only (the beam kernel checks it)
+  // *MAT_MUSCLE: the truss kernel takes its stress from this law (laws/muscle.hpp), not from
+  // updateFibre; null otherwise. A view into the block's law.
+  const Muscle* muscle = nullptr;
 };
 
 // Static yield stress at an effective plastic strain (Hi and the curve; no rate factor; with a

@@ -29,9 +29,13 @@ std::array<double, 6> scaleFactors(const Card& c) {
   return s;
 }
 
-// The elements whose kernels add the damping stress (src/elements/beam.cpp).
+// The elements whose kernels add the damping stress (src/elements/beam.cpp): not the trusses
+// of *MAT_MUSCLE, whose force is the muscle's own (it has its damping element, DMP).
 bool stiffnessDampingRuns(const Model& m, const Part& part) {
   if (part.section == kNone || part.section_kind != SectionKind::Beam) return false;
+  if (part.material != kNone && std::holds_alternative<materials::Muscle::Params>(
+                                    m.materials[static_cast<std::size_t>(part.material)].law))
+    return false;
   const int form = m.beam_sections[static_cast<std::size_t>(part.section)].elform;
   return form == 2 || form == 3;
 }
@@ -110,7 +114,8 @@ void readDampingPartStiffness(Context& ctx, const deck::Keyword& kw, const Keywo
         ctx.reject(c, field,
                    "part " + std::to_string(part.id) +
                        ": stiffness damping runs on resultant beams and trusses (*SECTION_BEAM "
-                       "ELFORM 2, 3) only, not yet on solids, shells or integrated beams");
+                       "ELFORM 2, 3; not *MAT_MUSCLE) only, not yet on solids, shells or "
+                       "integrated beams");
       part.stiffness_damping = coef < 0 ? -coef : 0.0;
       part.stiffness_fraction = coef > 0 ? coef : 0.0;
     }

@@ -346,18 +346,21 @@ bool oneSolidPoint(const Model& m, const Part& p) {
   return elform == 10 || (elform == 1 && !m.controls.solid_esort);
 }
 
-// *MAT_SPOTWELD runs only on spot-weld beams (ELFORM 9): its resultant and time failure live
-// in that kernel; its solid (hexahedral) welds are not supported. False (reported) otherwise.
-bool spotweldOnWeldBeam(Context& ctx, const Part& p, const Material& m) {
-  if (std::string_view(materialKeyword(m.law)) != "*MAT_SPOTWELD") return true;
-  const bool weld_beam = p.section_kind == SectionKind::Beam &&
-                         ctx.model.beam_sections[static_cast<std::size_t>(p.section)].elform == 9;
-  if (!weld_beam)
+// A law that runs on one beam formulation only (its kBeamOnly: *MAT_SPOTWELD on spot-weld
+// beams, whose resultant and time failure live in that kernel; *MAT_MUSCLE on trusses) on a
+// part of another section. False (reported) then.
+bool onItsBeams(Context& ctx, const Part& p, const Material& m) {
+  const materials::BeamOnly* only = materials::beamOnlyOf(m.law);
+  if (!only) return true;
+  const bool ok =
+      p.section_kind == SectionKind::Beam &&
+      ctx.model.beam_sections[static_cast<std::size_t>(p.section)].elform == only->elform;
+  if (!ok)
     ctx.fail(p.where.str() + ": *PART card 2 field 3 (MID): part " + std::to_string(p.id) +
-             " has material " + std::to_string(m.id) +
-             " (*MAT_SPOTWELD), which Crumple runs only on spot-weld beams (*SECTION_BEAM "
-             "ELFORM 9); solid spot welds and other beam formulations are not supported");
-  return weld_beam;
+             " has material " + std::to_string(m.id) + " (" + materialKeyword(m.law) +
+             "), which Crumple runs only on " + std::string(only->what) +
+             "; other sections are not supported");
+  return ok;
 }
 
 void finishParts(Context& ctx) {
@@ -403,7 +406,7 @@ void finishParts(Context& ctx) {
           "one-point solids (*SECTION_SOLID ELFORM 1, 10; not with *CONTROL_SOLID "
           "ESORT = 1) support yet; its section has ELFORM " +
           std::to_string(ctx.model.solid_sections[static_cast<std::size_t>(p.section)].elform));
-    else if (!spotweldOnWeldBeam(ctx, p, m))
+    else if (!onItsBeams(ctx, p, m))
       continue;
     else if (ctx.part_problem[i].empty())  // an unusable EOSID is that part's problem
       checkPartEos(ctx, p);

@@ -26,6 +26,7 @@ struct Spotweld {
   static constexpr bool kPlastic = true;
   static constexpr bool kKinematic = false;
   static constexpr bool kDensity = true;
+  static constexpr BeamOnly kBeamOnly{9, "spot-weld beams (*SECTION_BEAM ELFORM 9)"};
 
   struct Params {
     using Law = Spotweld;
