@@ -5,9 +5,14 @@
 
 #include <array>
 #include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "constraints/airbag.hpp"
+#include "model/build.hpp"
+#include "temp_dir.hpp"
 
 namespace {
 
@@ -144,6 +149,58 @@ TEST(Airbag, TrianglePressureIsAThirdPerCorner) {
     EXPECT_DOUBLE_EQ(out[3 * k], 0.0);
   }
   EXPECT_EQ(out[9] + out[10] + out[11], 0.0);
+}
+
+// The deck reader on tests/data/decks/airbag_sphere.k (a part set of 216 shells).
+std::string sphereDeck() {
+  std::ifstream in(std::string(CRUMPLE_SOURCE_DIR) + "/tests/data/decks/airbag_sphere.k");
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+TEST(AirbagDeck, ReadsTheBagAndItsSegments) {
+  crumple::testing::TempDir t("crumple_test_airbag");
+  const auto m = crumple::model::readModel(t.write("bag.k", sphereDeck()));
+  ASSERT_EQ(m.airbags.size(), 1u);
+  const auto& bag = m.airbags[0];
+  EXPECT_EQ(bag.id, 3);  // _ID heading
+  EXPECT_EQ(bag.first, 0u);
+  EXPECT_EQ(bag.count, 216u);
+  EXPECT_DOUBLE_EQ(bag.cn, 3.0e4);
+  EXPECT_DOUBLE_EQ(bag.beta, 1.0);
+  EXPECT_DOUBLE_EQ(bag.mwd, 756.0);
+  ASSERT_EQ(m.pressure_loads.size(), 216u);
+  for (const auto& p : m.pressure_loads) EXPECT_EQ(p.airbag, 0);
+}
+
+TEST(AirbagDeck, NumberedSuffixIsTheId) {
+  crumple::testing::TempDir t("crumple_test_airbag");
+  const auto m = crumple::model::readModel(
+      t.write("bag.k", replaced(sphereDeck(), "*AIRBAG_SIMPLE_PRESSURE_VOLUME_ID\n         3bag\n",
+                                "*AIRBAG_SIMPLE_PRESSURE_VOLUME_1\n")));
+  ASSERT_EQ(m.airbags.size(), 1u);
+  EXPECT_EQ(m.airbags[0].id, 1);
+}
+
+TEST(AirbagDeck, RefusesWhatItDoesNotHonour) {
+  crumple::testing::TempDir t("crumple_test_airbag");
+  // VINI (card 1 field 6) set: refused, naming the field.
+  const std::string card = "         7         1         0         1         1         0";
+  const auto msg = crumple::testing::errorOf([&] {
+    crumple::model::readModel(t.write(
+        "vini.k", replaced(sphereDeck(), card,
+                           "         7         1         0         1         1       0.5")));
+  });
+  EXPECT_NE(msg.find("(VINI)"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("not supported"), std::string::npos) << msg;
 }
 
 }  // namespace
