@@ -95,11 +95,12 @@ Boundary::Boundary(const model::Model& m, const domain::Subdomain& sd) {
   }
   for (std::size_t k = 0; k < sd.pressure_segments.size(); ++k) {
     const auto& p = m.pressure_loads[static_cast<std::size_t>(sd.pressure_segments[k])];
-    Pressure q{{}, curveOf(m, p.curve), p.sf, p.at, sd.pressure_slot_offset + 4 * k};
+    Pressure q{{}, curveOf(m, p.curve), p.sf, p.at, sd.pressure_slot_offset + 4 * k, p.airbag};
     for (int c = 0; c < 4; ++c) q.nodes[c] = sd.localNode(p.nodes[c]);
     pressure_.push_back(q);
   }
   for (const auto& b : m.body_loads) body_.push_back({b.dof, curveOf(m, b.curve), b.sf});
+  if (!m.airbags.empty()) airbags_ = Airbags(m, sd);
   for (const auto& w : m.rigid_walls) {
     WallState ws;
     ws.def = &w;
@@ -120,6 +121,13 @@ void Boundary::pressureForces(double t, domain::Subdomain& sd) const {
   // against the segment normal). Triangles (n3 == n4) share it in thirds.
   for (const auto& p : pressure_) {
     double* slot = &sd.slots[3 * p.first_slot];
+    if (p.airbag != model::kNone) {
+      std::array<const double*, 4> corner{};
+      for (std::size_t k = 0; k < 4; ++k)
+        corner[k] = &sd.x[3 * static_cast<std::size_t>(p.nodes[k])];
+      segmentPressureForces(corner, airbags_.segmentPressure(p.airbag), slot);
+      continue;
+    }
     std::fill(slot, slot + 12, 0.0);
     if (t < p.at) continue;
     const double pr = p.sf * curveValue(p.curve, t - p.at);

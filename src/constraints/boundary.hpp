@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "comm/communicator.hpp"
+#include "constraints/airbag.hpp"
 #include "constraints/step_work.hpp"
 #include "domain/subdomain.hpp"
 #include "model/model.hpp"
@@ -36,6 +37,17 @@ struct WallState {
 class Boundary {
  public:
   Boundary(const model::Model& model, const domain::Subdomain& sd);
+
+  // The control volumes' volumes and pressures at sd.x and time t (collective; nothing
+  // without bags). Before pressureForces.
+  void updateAirbags(double t, const domain::Subdomain& sd, const comm::Communicator& comm) {
+    if (!airbags_.empty()) airbags_.update(t, sd, comm);
+  }
+  // The bags' mass weighted damping (MWD) into sd.f_ext, after externalForces (collective).
+  void addAirbagDamping(domain::Subdomain& sd, const comm::Communicator& comm) const {
+    if (!airbags_.empty()) airbags_.addDampingForces(sd, comm);
+  }
+  const Airbags& airbags() const { return airbags_; }
 
   // Follower pressure of the segments this rank computes, into their corner slots (they are
   // exchanged and gathered like element forces, so every rank sums them in the same order).
@@ -95,6 +107,7 @@ class Boundary {
     const model::Curve* curve;
     double sf, at;
     std::size_t first_slot;
+    int32_t airbag;  // model::kNone: a *LOAD_SEGMENT
   };
   struct Body {
     int dof;
@@ -117,6 +130,7 @@ class Boundary {
   std::vector<Pressure> pressure_;
   std::vector<Body> body_;
   std::vector<WallState> walls_;
+  Airbags airbags_;
   bool has_external_ = false;
 };
 

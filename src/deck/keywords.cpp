@@ -465,6 +465,15 @@ std::vector<KeywordSpec> makeTables() {
   t.push_back(
       {"*LOAD_BODY",
        {{"card 1", {I("LCID"), R("SF", 1, Z), I("LCIDDR"), R("XC"), R("YC"), R("ZC"), I("CID")}}}});
+  // *AIRBAG_SIMPLE_PRESSURE_VOLUME (Keyword Manual, *AIRBAG): the _ID heading, card 1 shared by
+  // every *AIRBAG (SID SIDTYP RBID VSCA PSCA VINI MWD SPSF), the law's card 2 (CN BETA LCID
+  // LCIDDR). VSCA and PSCA: 0 is the default 1.
+  t.push_back({"*AIRBAG_SIMPLE_PRESSURE_VOLUME",
+               {{"id card", {I("ID"), A("TITLE", 70, {}, Q)}},
+                {"card 1",
+                 {I("SID"), I("SIDTYP"), I("RBID"), R("VSCA", 1, Z), R("PSCA", 1, Z), R("VINI"),
+                  R("MWD"), R("SPSF")}},
+                {"card 2", {R("CN"), R("BETA"), I("LCID"), I("LCIDDR")}}}});
   t.push_back(
       {"*RIGIDWALL_PLANAR",
        {idCard(),

@@ -403,6 +403,8 @@ const std::vector<Meaning>& meanings() {
       {"*LOAD_SEGMENT", 6, readLoadSegment, {}, U::Reject},
       {"*LOAD_SEGMENT_SET", 6, readLoadSegmentSet, {}, U::Reject},
       {"*LOAD_BODY", 6, readLoadBody, {"X", "Y", "Z"}, U::Reject},
+      // "#": a number after the name (*AIRBAG_SIMPLE_PRESSURE_VOLUME_1) is the bag's id.
+      {"*AIRBAG_SIMPLE_PRESSURE_VOLUME", 6, readAirbagSimplePressureVolume, {"ID", "#"}, U::Reject},
       {"*RIGIDWALL_PLANAR", 6, readRigidWallPlanar, {"ID", "FINITE", "MOVING"}, U::Reject},
       {"*RIGIDWALL_GEOMETRIC",
        6,
@@ -529,6 +531,12 @@ Unsupported unsupportedReason(std::string_view name) {
 void reportUnknown(Context& ctx, const deck::Keyword& kw) {
   const Unsupported u = unsupportedReason(kw.name);
   ctx.reportUnsupported(kw, u.reason, u.changes_answer);
+}
+
+// An option word of digits only (a number written after a keyword's name).
+bool isNumber(std::string_view w) {
+  return !w.empty() && w.size() < 10 &&
+         std::all_of(w.begin(), w.end(), [](char ch) { return ch >= '0' && ch <= '9'; });
 }
 
 // The meaning whose base is the longest prefix of `name` ending at a '_' boundary.
@@ -698,7 +706,9 @@ Model buildModel(const deck::Deck& deck, const std::filesystem::path& path,
     }
     std::string unknown;
     for (const auto& w : opts.words)
-      if (std::find(m->options.begin(), m->options.end(), w) == m->options.end())
+      if (std::find(m->options.begin(), m->options.end(), w) == m->options.end() &&
+          !(isNumber(w) &&
+            std::find(m->options.begin(), m->options.end(), "#") != m->options.end()))
         unknown += (unknown.empty() ? "_" : ", _") + w;
     if (!unknown.empty()) {
       switch (m->unknown) {

@@ -398,6 +398,9 @@ void readControlImplicitGeneral(Context&, const deck::Keyword&, const KeywordOpt
 void readControlSolution(Context&, const deck::Keyword&, const KeywordOptions&);
 void readControlUnits(Context&, const deck::Keyword&, const KeywordOptions&);
 void readControlDynamicRelaxation(Context&, const deck::Keyword&, const KeywordOptions&);
+
+// build_airbag.cpp: *AIRBAG_SIMPLE_PRESSURE_VOLUME (its segments join Model::pressure_loads).
+void readAirbagSimplePressureVolume(Context&, const deck::Keyword&, const KeywordOptions&);
 // Keywords read only to report their non-default fields (*CONTROL_SOLID, ...).
 void readIgnoredControl(Context&, const deck::Keyword&, const KeywordOptions&);
 void readDatabaseAscii(Context&, const deck::Keyword&, const KeywordOptions&);

@@ -258,6 +258,24 @@ struct PressureLoad {
   int32_t curve = kNone;
   double sf = 1.0;
   double at = 0.0;  // arrival time
+  // A segment of the control volume Model::airbags[airbag]: the pressure is the bag's (curve,
+  // sf and at unused) and pushes along the outward normal of the bag (constraints/airbag.hpp).
+  int32_t airbag = kNone;
+};
+
+// *AIRBAG_SIMPLE_PRESSURE_VOLUME (Keyword Manual, *AIRBAG): a closed surface, its segments
+// Model::pressure_loads[first, first + count), whose gas pressure follows its volume V:
+//   p = PSCA * BETA * CN(t) / (V / V0)   (CN < 0 in the deck: CN(t) is the curve |CN|)
+//   p = PSCA * LCID(V / V0)               (with LCID: pressure vs relative volume)
+// V0 the volume of the initial geometry; MWD (mass weighted damping) adds the nodal force
+// -MWD m (v - v_bag) at the bag's nodes, v_bag their mass-weighted mean velocity.
+struct Airbag {
+  int64_t id = 0;  // _ID option, else 1-based order
+  std::size_t first = 0, count = 0;
+  double psca = 1.0, vsca = 1.0, mwd = 0.0;
+  double cn = 0.0, beta = 1.0;
+  int32_t cn_curve = kNone;  // coefficient vs time (CN < 0)
+  int32_t pv_curve = kNone;  // LCID: pressure vs relative volume
 };
 
 // *LOAD_BODY_X/Y/Z: base acceleration a = sf * curve(t) along dof; the body force on a node
@@ -452,6 +470,7 @@ struct Model {
   std::vector<PrescribedMotion> prescribed;
   std::vector<NodalLoad> nodal_loads;
   std::vector<PressureLoad> pressure_loads;
+  std::vector<Airbag> airbags;  // control volumes, in deck order
   std::vector<BodyLoad> body_loads;
   std::vector<RigidWallPlanar> rigid_walls;
   std::vector<Vec3> initial_velocity;  // per node (zero if none given)

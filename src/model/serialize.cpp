@@ -169,6 +169,7 @@ void fields(A& a, M& m) {
   a(m.prescribed);
   a(m.nodal_loads);
   a(m.pressure_loads);
+  a(m.airbags);
   a(m.body_loads);
   a.count(
       m.rigid_walls.size(),

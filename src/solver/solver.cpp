@@ -405,6 +405,10 @@ Solver::ElementPass Solver::computeInternalForces() {
   // Elements at shared nodes first; their corner forces travel while the others compute.
   ElementPass pass;
   {
+    util::ScopedTimer timer(timing_.communication);
+    boundary_.updateAirbags(time_, sd_, comm_);  // a global sum of the bags' volumes
+  }
+  {
     util::ScopedTimer timer(timing_.elements);
     computeElementGroup(Group::Shared, pass);
     boundary_.pressureForces(time_, sd_);
@@ -502,6 +506,7 @@ Solver::StableStep Solver::stableTimeStep(const ElementPass& pass) const {
 void Solver::computeExternalForces() {
   util::ScopedTimer timer(timing_.constraints);
   boundary_.externalForces(time_, sd_, sd_.f_ext);
+  boundary_.addAirbagDamping(sd_, comm_);
   if (!damping_.empty()) damping_.addForces(model_, time_, sd_);
   if (rigid_) {
     rigid_->addJointForces(dt_next_, sd_, comm_);
