@@ -44,11 +44,9 @@ nlohmann::json checkJson(const model::Model& m, const std::string& status,
                             {"keyword", i.keyword},
                             {"field", i.field},
                             {"reason", i.reason}});
-  j["counts"] = {{"nodes", m.nodes.size()},
-                 {"solids", m.solids.size()},
-                 {"shells", m.shells.size()},
-                 {"beams", m.beams.size()},
-                 {"discretes", m.discretes.size()}};
+  j["counts"] = {{"nodes", m.nodes.size()},         {"solids", m.solids.size()},
+                 {"shells", m.shells.size()},       {"beams", m.beams.size()},
+                 {"discretes", m.discretes.size()}, {"sph_particles", m.sph.size()}};
   j["initial_dt"] = dt_end ? nlohmann::json(dt_end->first) : nlohmann::json(nullptr);
   j["end_time"] = m.controls.end_time;
   return j;

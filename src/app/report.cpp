@@ -51,6 +51,7 @@ std::string modelSummary(const model::Model& m, const solver::Solver& s) {
   if (m.shells.size() > 0) out += fmt::format("shell elements: {}\n", m.shells.size());
   if (m.beams.size() > 0) out += fmt::format("beam elements: {}\n", m.beams.size());
   if (m.discretes.size() > 0) out += fmt::format("discrete elements: {}\n", m.discretes.size());
+  if (m.sph.size() > 0) out += fmt::format("SPH particles: {}\n", m.sph.size());
   std::map<std::pair<int32_t, int>, std::size_t> per_part;
   for (std::size_t g = 0; g < m.numElements(); ++g)
     ++per_part[{m.elementPart(g), int(m.element(g).first)}];

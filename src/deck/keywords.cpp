@@ -73,6 +73,10 @@ std::vector<KeywordSpec> makeTables() {
   t.push_back({"*ELEMENT_MASS",
                {{"card 1",
                  {I("EID", 0, 0, 8), I("NID", 0, 0, 8), R("MASS", 0, 0, 16), I("PID", 0, 0, 8)}}}});
+  // *ELEMENT_SPH I8,I8,E16: NID PID MASS (MASS < 0: the particle's volume, its mass from the
+  // part's density; Keyword Manual, *ELEMENT_SPH).
+  t.push_back(
+      {"*ELEMENT_SPH", {{"card 1", {I("NID", 0, 0, 8), I("PID", 0, 0, 8), R("MASS", 0, 0, 16)}}}});
   // *ELEMENT_SHELL 10I8; _THICKNESS adds THIC1-4 and BETA (E16 each).
   t.push_back({"*ELEMENT_SHELL",
                {{"card 1",
@@ -118,6 +122,12 @@ std::vector<KeywordSpec> makeTables() {
                 {"card 1",
                  {I("SECID"), I("ELFORM", 1), I("AET"), A("UNUSED1", 10, {}, Q),
                   A("UNUSED2", 10, {}, Q), A("UNUSED3", 10, {}, Q), R("COHOFF"), R("GASKETT")}}}});
+  // *SECTION_SPH: SECID CSLH HMIN HMAX SPHINI DEATH START SPHKERN (Keyword Manual vol. I).
+  t.push_back({"*SECTION_SPH",
+               {titleCard(),
+                {"card 1",
+                 {I("SECID"), R("CSLH", 1.2, Z), R("HMIN", 0.2, Z), R("HMAX", 2.0, Z), R("SPHINI"),
+                  R("DEATH", 1e20, Z), R("START"), I("SPHKERN")}}}});
   t.push_back(
       {"*SECTION_SHELL",
        {titleCard(),
@@ -196,6 +206,18 @@ std::vector<KeywordSpec> makeTables() {
   t.push_back(
       {"*CONTROL_ENERGY",
        {{"card 1", {I("HGEN", 1, Z), I("RWEN", 2, Z), I("SLNTEN", 1, Z), I("RYLEN", 1, Z)}}}});
+  // *CONTROL_SPH (Keyword Manual vol. I): card 1 NCBS BOXID DT IDIM NMNEIGH FORM START MAXV,
+  // card 2 CONT DERIV INI ISHOW IEROD ICONT IAVIS ISYMP, card 3 ITHK ISTAB QL - SPHSORT ISHIFT.
+  t.push_back({"*CONTROL_SPH",
+               {{"card 1",
+                 {I("NCBS", 1, Z), I("BOXID"), R("DT", 1e20, Z), I("IDIM"), I("NMNEIGH", 150, Z),
+                  I("FORM"), R("START"), R("MAXV", 1e15, Z)}},
+                {"card 2",
+                 {I("CONT"), I("DERIV"), I("INI"), I("ISHOW", 0, Q), I("IEROD"), I("ICONT"),
+                  I("IAVIS"), I("ISYMP", 100, Z)}},
+                {"card 3",
+                 {I("ITHK"), I("ISTAB"), R("QL", 0.01, Z), I("UNUSED", 0, Q), I("SPHSORT", 0, Q),
+                  I("ISHIFT")}}}});
   t.push_back({"*CONTROL_SOLID",
                {{"card 1",
                  {I("ESORT"), I("FMATRX"), I("NIPTETS", 4, Z), I("SWLOCL", 1, Z), I("PSFAIL"),

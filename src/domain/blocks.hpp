@@ -234,4 +234,31 @@ struct DiscreteBlock : BlockBase {
   std::vector<double> elongation;  // elongation at the last cycle (energy increments)
 };
 
+// SPH particles (*ELEMENT_SPH; src/elements/sph_family.hpp): those at the nodes this rank
+// holds, ascending node. A particle is a node of its own (no element uses it), so all of them
+// live on the rank that holds the element-less nodes, and their pair sums run there in one
+// fixed order (ARCHITECTURE.md, Determinism).
+struct SphBlock {
+  // One per SPH part: its law and *SECTION_SPH smoothing-length rule.
+  struct Group {
+    int32_t part = model::kNone;  // model part index
+    int64_t part_id = 0;
+    materials::Law law;
+    double rho0 = 0.0;
+    double cslh = 1.2, hmin = 0.2, hmax = 2.0, sphini = 0.0;
+    double h0 = 0.0;  // the part's initial smoothing length (set by initializeSph)
+  };
+  std::vector<Group> groups;
+  double alpha = 1.0, beta = 1.0;  // Monaghan's viscosity (linear, quadratic)
+  std::vector<int32_t> node;       // local node
+  std::vector<int32_t> group;      // index into groups
+  std::vector<double> mass;
+  // State at the last pass (initializeSph sizes it): density, smoothing length, sound speed,
+  // internal energy, effective plastic strain; Cauchy stress, back stress and law history.
+  std::vector<double> rho, h, c, e_int, eps_p;
+  std::vector<std::array<double, 6>> sig, alpha_back;
+  std::vector<std::array<double, materials::kMaxHistory>> hist;
+  std::size_t size() const { return node.size(); }
+};
+
 }  // namespace crumple::domain

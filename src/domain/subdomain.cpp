@@ -244,6 +244,7 @@ class SubdomainBuilder {
     for (auto& [key, elems, shared] : groupByPart(model::Family::Discrete, model.discretes))
       addBlock(discreteBlock(key.first, elems, shared), model::Family::Discrete,
                sd.discrete_blocks);
+    sphParticles();
     pressureSegments();
     if (num_ranks > 1) neighbours();
     sd.slots.assign(3 * slot, 0.0);
@@ -266,6 +267,39 @@ class SubdomainBuilder {
           static_cast<int64_t>(model.familyOffset(static_cast<model::Family>(f)));
       sd.global_family[std::size_t(f)] =
           static_cast<int64_t>(model.familySize(static_cast<model::Family>(f)));
+    }
+  }
+
+  // The SPH particles at nodes held here (all on the rank of the element-less nodes), one group
+  // per part in ascending part order.
+  void sphParticles() {
+    const auto& in = model.sph;
+    auto& out = sd.sph;
+    out.alpha = model.controls.q_linear;
+    out.beta = model.controls.q_quadratic;
+    std::vector<int32_t> group_of(model.parts.size(), model::kNone);
+    for (std::size_t k = 0; k < in.size(); ++k) {
+      const int32_t n = local_of[std::size_t(in.node[k])];
+      if (n == model::kNone) continue;
+      const auto part = std::size_t(in.part[k]);
+      if (group_of[part] == model::kNone) {
+        const auto& p = model.parts[part];
+        const auto& s = model.sph_sections[std::size_t(p.section)];
+        SphBlock::Group g;
+        g.part = in.part[k];
+        g.part_id = p.id;
+        g.law = lawOf(model, p, true);
+        g.rho0 = model.materials[std::size_t(p.material)].rho;
+        g.cslh = s.cslh;
+        g.hmin = s.hmin;
+        g.hmax = s.hmax;
+        g.sphini = s.sphini;
+        group_of[part] = int32_t(out.groups.size());
+        out.groups.push_back(std::move(g));
+      }
+      out.node.push_back(n);
+      out.group.push_back(group_of[part]);
+      out.mass.push_back(in.mass[k]);
     }
   }
 

@@ -148,6 +148,7 @@ struct Subdomain {
   std::vector<ShellBlock> shell_blocks;
   std::vector<BeamBlock> beam_blocks;
   std::vector<DiscreteBlock> discrete_blocks;
+  SphBlock sph;  // the SPH particles held here (none on most ranks)
   // Calls visit(blocks, family) for the block list of every element family, in family order (the
   // global element order): code that treats the families alike goes through here, so that a
   // new family is added to it once.

@@ -202,8 +202,9 @@ double viscosity(const Particles& p, std::size_t i, std::size_t j, const Vec3& d
 }  // namespace
 
 void computeForces(const Particles& p, std::span<const std::pair<int32_t, int32_t>> pairs,
-                   std::vector<Vec3>& force) {
+                   std::vector<Vec3>& force, std::vector<double>* heat) {
   force.assign(p.x.size(), Vec3{});
+  if (heat) heat->assign(p.x.size(), 0.0);
   for (const auto& [a, b] : pairs) {
     const auto i = static_cast<std::size_t>(a), j = static_cast<std::size_t>(b);
     const Vec3 d = util::sub(p.x[i], p.x[j]);
@@ -217,6 +218,11 @@ void computeForces(const Particles& p, std::span<const std::pair<int32_t, int32_
       const double fk = mm * (si[k] * ri + sj[k] * rj - pi * gw[k]);
       force[i][k] += fk;
       force[j][k] -= fk;
+    }
+    if (heat && pi != 0.0) {
+      const double q = 0.5 * mm * pi * util::dot(util::sub(p.v[i], p.v[j]), gw);
+      (*heat)[i] += q;
+      (*heat)[j] += q;
     }
   }
 }

@@ -2,9 +2,8 @@
 // "Smoothed Particle Hydrodynamics"; J. J. Monaghan, "Smoothed particle hydrodynamics", Annu.
 // Rev. Astron. Astrophys. 30, 1992, 543-574; L. D. Libersky, A. G. Petschek, T. C. Carney, J. R.
 // Hipp and F. A. Allahdadi, "High strain Lagrangian hydrodynamics", J. Comput. Phys. 109, 1993,
-// 67-75). Not yet an element family: *ELEMENT_SPH decks are still refused (docs/keywords.md);
-// these are the kernel, the neighbour search and the particle sums that the family will call,
-// verified on their own (tests/unit/test_sph.cpp).
+// 67-75): the kernel, the neighbour search and the particle sums, verified on their own
+// (tests/unit/test_sph.cpp); the element family that runs them is src/elements/sph_family.hpp.
 //
 // Kernel: the cubic B-spline of support 2h (Monaghan 1992, eq. 2.6; the Theory Manual's
 // "smoothing kernel"), W(r, h) = C_d / h^d theta(q), q = r / h,
@@ -65,8 +64,10 @@ struct Particles {
 void computeRates(const Particles& p, std::span<const std::pair<int32_t, int32_t>> pairs,
                   std::vector<double>& drho, std::vector<std::array<double, 9>>& grad_v);
 
-// The force m_i dv_i/dt on every particle (stress and artificial viscosity).
+// The force m_i dv_i/dt on every particle (stress and artificial viscosity). With `heat`, also
+// the rate at which the viscosity turns kinetic into internal energy, half of each pair's
+// m_i m_j Pi_ij v_ij . grad_i W_ij to each of its particles (>= 0).
 void computeForces(const Particles& p, std::span<const std::pair<int32_t, int32_t>> pairs,
-                   std::vector<Vec3>& force);
+                   std::vector<Vec3>& force, std::vector<double>* heat = nullptr);
 
 }  // namespace crumple::elements::sph

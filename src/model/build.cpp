@@ -321,6 +321,7 @@ const std::vector<Meaning>& meanings() {
        U::Definition,
        Kind::Section},
       {"*SECTION_SOLID", 1, readSectionSolid, {"TITLE"}, U::Definition, Kind::Section},
+      {"*SECTION_SPH", 1, readSectionSph, {"TITLE"}, U::Definition, Kind::Section},
       {"*SECTION_SHELL", 1, readSectionShell, {"TITLE"}, U::Definition, Kind::Section},
       {"*SECTION_BEAM", 1, readSectionBeam, {"TITLE"}, U::Definition, Kind::Section},
       {"*SECTION_DISCRETE", 1, readSectionDiscrete, {"TITLE"}, U::Definition, Kind::Section},
@@ -340,6 +341,7 @@ const std::vector<Meaning>& meanings() {
       {"*PART", 2, readParts, {"INERTIA", "CONTACT"}, U::Reject},
       {"*MAT_ADD_EROSION", 2, readAddErosion, {"TITLE"}, U::Reject},
       {"*ELEMENT_SOLID", 3, readSolids, {}, U::Reject},
+      {"*ELEMENT_SPH", 3, readElementSph, {}, U::Reject},
       {"*ELEMENT_SHELL", 3, readShells, {"THICKNESS"}, U::Reject},
       {"*ELEMENT_BEAM", 3, readBeams, {"THICKNESS"}, U::Reject},
       {"*ELEMENT_DISCRETE", 3, readDiscretes, {}, U::Reject},
@@ -437,6 +439,7 @@ const std::vector<Meaning>& meanings() {
       {"*CONTROL_BULK_VISCOSITY", 6, readControlBulkViscosity, {}},
       {"*CONTROL_ENERGY", 6, readControlEnergy, {}},
       {"*CONTROL_SOLID", 6, readControlSolid, {}},
+      {"*CONTROL_SPH", 6, readControlSph, {}},
       {"*CONTROL_ACCURACY", 6, readIgnoredControl, {}},
       {"*CONTROL_OUTPUT", 6, readIgnoredControl, {}},
       {"*CONTROL_SHELL", 6, readControlShell, {}},
@@ -497,7 +500,6 @@ Unsupported unsupportedReason(std::string_view name) {
       {"*CONTROL_STRUCTURED", {"ignored: structured-file output", false}},
       {"*CONTROL_DEBUG", {"ignored: diagnostic output", false}},
       {"*CONTROL_REPORT", {"ignored: diagnostic output", false}},
-      {"*CONTROL_SPH", {"SPH controls: used only with SPH particles", false}},
       {"*CONTROL_THERMAL", {"thermal analysis not supported", true}},
       {"*MAT_THERMAL", {"thermal analysis not supported", true}},
       {"*BOUNDARY_TEMPERATURE", {"thermal analysis not supported", true}},
@@ -642,6 +644,7 @@ void finishPhase(Context& ctx, int phase) {
       break;
     case 3:
       finishSolids(ctx);
+      finishSph(ctx);
       break;
     default:
       break;
@@ -749,10 +752,10 @@ Model buildModel(const deck::Deck& deck, const std::filesystem::path& path,
   ctx.attempt([&] { noteDegenerateSolids(ctx); });
   if (model.nodes.size() == 0)
     ctx.fail(path.string() + ": the deck defines no nodes (*NODE)");
-  else if (model.numElements() == 0 && !options.allow_unsupported)
+  else if (model.numElements() == 0 && model.sph.size() == 0 && !options.allow_unsupported)
     ctx.fail(path.string() +
-             ": the deck defines no elements Crumple can run (*ELEMENT_SOLID, _SHELL, _BEAM or "
-             "_DISCRETE)");
+             ": the deck defines no elements Crumple can run (*ELEMENT_SOLID, _SHELL, _BEAM, "
+             "_DISCRETE or _SPH)");
   model.finalize();
   noteUnusedPartProblems(ctx);
   return model;

@@ -30,7 +30,8 @@ double bulkModulus(const Model& m, int32_t part) {
   if (mat == kNone) return 0.0;
   // Solids whose pressure comes from an equation of state: its bulk modulus at the initial
   // state, the one that sets their wave speed (*MAT_NULL: YM and PR serve shells and beams).
-  if (p.eos != kNone && p.section_kind == SectionKind::Solid)
+  if (p.eos != kNone &&
+      (p.section_kind == SectionKind::Solid || p.section_kind == SectionKind::Sph))
     return materials::eosBulkModulus(m.eos[std::size_t(p.eos)].eos,
                                      m.materials[std::size_t(mat)].rho);
   const auto& law = m.materials[static_cast<std::size_t>(mat)].law;

@@ -256,6 +256,13 @@ void readSectionBeam(Context&, const deck::Keyword&, const KeywordOptions&);
 void readSectionDiscrete(Context&, const deck::Keyword&, const KeywordOptions&);
 
 void readControlShell(Context&, const deck::Keyword&, const KeywordOptions&);
+
+// build_sph.cpp: SPH particles, their sections and controls
+void readSectionSph(Context&, const deck::Keyword&, const KeywordOptions&);
+void readElementSph(Context&, const deck::Keyword&, const KeywordOptions&);
+void readControlSph(Context&, const deck::Keyword&, const KeywordOptions&);
+// After the elements: the particles sorted by node, one per node, at nodes of no element.
+void finishSph(Context&);
 // *CONTROL_SOLID: ESORT sorts tetrahedra and pentahedra written as hexahedra into ELFORM 10
 // and 15; the other fields are reported when set.
 void readControlSolid(Context&, const deck::Keyword&, const KeywordOptions&);

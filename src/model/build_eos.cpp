@@ -68,11 +68,13 @@ void checkPartEos(Context& ctx, const Part& p) {
              " has its own pressure response and cannot use one");
   // The Keyword Manual (*MAT_NULL) requires an equation of state on solids; shells and beams
   // of such a law are bypassed and need none.
-  else if (p.eos == kNone && uses && p.section_kind == SectionKind::Solid)
+  else if (p.eos == kNone && uses &&
+           (p.section_kind == SectionKind::Solid || p.section_kind == SectionKind::Sph))
     ctx.fail(p.where.str() + ": *PART card 2 field 4 (EOSID): " + part +
              " has solid elements and " + mat +
              ", which needs an equation of state (*EOS_LINEAR_POLYNOMIAL, *EOS_GRUNEISEN)");
-  else if (p.eos != kNone && p.section_kind != SectionKind::Solid)
+  else if (p.eos != kNone && p.section_kind != SectionKind::Solid &&
+           p.section_kind != SectionKind::Sph)
     ctx.ignore("*PART", "EOSID",
                part + " has no solid elements: its equation of state acts on nothing", p.where);
 }

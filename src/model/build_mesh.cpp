@@ -39,6 +39,7 @@ std::vector<std::size_t> ascending(std::size_t n, Get id) {
 materials::Family lawFamily(SectionKind k) {
   switch (k) {
     case SectionKind::Solid:
+    case SectionKind::Sph:  // particles take the 3-D stress update
       return materials::Family::Solid;
     case SectionKind::Shell:
       return materials::Family::Shell;
@@ -52,7 +53,8 @@ materials::Family lawFamily(SectionKind k) {
 
 const char* sectionName(SectionKind k) {
   static constexpr const char* kNames[] = {"a *SECTION_SOLID", "a *SECTION_SHELL",
-                                           "a *SECTION_BEAM", "a *SECTION_DISCRETE"};
+                                           "a *SECTION_BEAM", "a *SECTION_DISCRETE",
+                                           "a *SECTION_SPH"};
   return kNames[static_cast<int>(k)];
 }
 
@@ -61,7 +63,8 @@ const char* updateName(SectionKind k) {
   static constexpr const char* kNames[] = {
       "update for solid elements", "plane-stress update for shell elements",
       "uniaxial (fibre) update for beam elements",
-      "force law for discrete elements (they need a *MAT_S01, S02 or S04 law)"};
+      "force law for discrete elements (they need a *MAT_S01, S02 or S04 law)",
+      "update for solid elements (SPH particles take the 3-D stress update)"};
   return kNames[static_cast<int>(k)];
 }
 
@@ -502,6 +505,7 @@ void finishDefinitions(Context& ctx) {
   sections(ctx.model.shell_sections, SectionKind::Shell);
   sections(ctx.model.beam_sections, SectionKind::Beam);
   sections(ctx.model.discrete_sections, SectionKind::Discrete);
+  sections(ctx.model.sph_sections, SectionKind::Sph);
   sortById(ctx.model.hourglass, ctx.hourglass_index);
   sortById(ctx.model.eos, ctx.eos_index);
 }

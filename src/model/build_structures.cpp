@@ -27,6 +27,8 @@ const char* sectionKeyword(SectionKind k) {
       return "*SECTION_BEAM";
     case SectionKind::Discrete:
       return "*SECTION_DISCRETE";
+    case SectionKind::Sph:
+      return "*SECTION_SPH";
   }
   return "*SECTION";
 }

@@ -177,6 +177,7 @@ void Model::releaseMesh() {
   shells = Shells{};
   beams = Beams{};
   discretes = Discretes{};
+  sph = SphParticles{};
   node_sets.clear();
   part_sets.clear();
   segment_sets.clear();

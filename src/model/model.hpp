@@ -93,6 +93,25 @@ struct SectionSolid {
   util::SourceLoc where;
 };
 
+// *SECTION_SPH (Keyword Manual vol. I, *SECTION_SPH): the smoothing length of a part's SPH
+// particles. h0 = CSLH x the largest of the part's nearest-neighbour distances (or SPHINI when
+// positive); h then follows the particle's volume, held in [HMIN h0, HMAX h0].
+struct SectionSph {
+  int64_t id = 0;
+  double cslh = 1.2;
+  double hmin = 0.2, hmax = 2.0;
+  double sphini = 0.0;  // 0: h0 from CSLH
+  util::SourceLoc where;
+};
+
+// *ELEMENT_SPH: one particle per node (the node carries its mass), ascending node index.
+struct SphParticles {
+  std::vector<int32_t> node;  // model node index
+  std::vector<int32_t> part;  // model part index (a part with a *SECTION_SPH)
+  std::vector<double> mass;
+  std::size_t size() const { return node.size(); }
+};
+
 // The 8-point hexahedra: ELFORM 2 and its variants -1 and -2 for poor aspect ratios.
 inline bool isFullyIntegratedHex(int elform) {
   return elform == 2 || elform == -1 || elform == -2;
@@ -131,7 +150,7 @@ struct SectionDiscrete {
   util::SourceLoc where;
 };
 
-enum class SectionKind : uint8_t { Solid = 0, Shell = 1, Beam = 2, Discrete = 3 };
+enum class SectionKind : uint8_t { Solid = 0, Shell = 1, Beam = 2, Discrete = 3, Sph = 4 };
 
 // *HOURGLASS / *CONTROL_HOURGLASS. IHQ 1-3 viscous, 4-5 Flanagan-Belytschko stiffness.
 struct Hourglass {
@@ -447,11 +466,13 @@ struct Model {
   Shells shells;
   Beams beams;
   Discretes discretes;
+  SphParticles sph;         // *ELEMENT_SPH (src/elements/sph_family.hpp)
   std::vector<Part> parts;  // ascending id
   std::vector<SectionSolid> solid_sections;
   std::vector<SectionShell> shell_sections;
   std::vector<SectionBeam> beam_sections;
   std::vector<SectionDiscrete> discrete_sections;
+  std::vector<SectionSph> sph_sections;
   std::vector<Material> materials;
   std::vector<EquationOfState> eos;  // ascending id
   std::vector<Hourglass> hourglass;

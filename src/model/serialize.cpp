@@ -48,6 +48,9 @@ void fields(A& a, M& m) {
   a(m.discretes.nodes);
   a(m.discretes.scale);
   a(m.discretes.offset);
+  a(m.sph.node);
+  a(m.sph.part);
+  a(m.sph.mass);
   a.count(
       m.parts.size(),
       [&](auto& p) {
@@ -118,6 +121,18 @@ void fields(A& a, M& m) {
         loc(a, s.where);
       },
       m.discrete_sections);
+  a.count(
+      m.sph_sections.size(),
+      [&](auto& s) {
+        util::fieldCount<6>(s);
+        a(s.id);
+        a(s.cslh);
+        a(s.hmin);
+        a(s.hmax);
+        a(s.sphini);
+        loc(a, s.where);
+      },
+      m.sph_sections);
   a.count(
       m.materials.size(),
       [&](auto& mat) {

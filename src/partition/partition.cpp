@@ -62,6 +62,7 @@ std::vector<int32_t> elementWeights(const model::Model& model, const Options& op
       case model::SectionKind::Discrete:
         return kWeightDiscrete;
       case model::SectionKind::Solid:
+      case model::SectionKind::Sph:  // no element: particles live with element-less nodes
         break;
     }
     const int32_t base = plastic ? kWeightSolidPlastic : kWeightSolidElastic;

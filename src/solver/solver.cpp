@@ -13,6 +13,7 @@
 #include "elements/discrete.hpp"
 #include "elements/shell.hpp"
 #include "elements/solid2d.hpp"
+#include "elements/sph_family.hpp"
 #include "util/error.hpp"
 #include "util/timer.hpp"
 
@@ -129,6 +130,11 @@ void Solver::initialize() {
   const std::vector<double> physical_mass = sd_.mass;
   if (model_.controls.dt2ms != 0.0) scaleMasses(steps);
   keepMin(steps.other, steps.other_elem, steps.dt_min, steps.dt_elem);
+  // SPH particles: never mass-scaled; no element index to name when they control the step.
+  if (const double sph = elements::initializeSph(sd_.sph, sd_.x0).dt_min; sph < steps.dt_min) {
+    steps.dt_min = sph;
+    steps.dt_elem = -1;
+  }
   // Rigid elements give mass only: their slots stay zero from here on.
   sd_.forEachBlock([&](const auto& blk) {
     if (blk.rigid) zeroSlots(blk, sd_.slots);
@@ -264,6 +270,9 @@ void Solver::assembleNodalMasses() {
   for (const auto& pm : model_.point_masses)
     if (const int32_t n = sd_.localNode(pm.node); n != model::kNone)
       sd_.mass[static_cast<std::size_t>(n)] += pm.mass;
+  // SPH particles (*ELEMENT_SPH) carry their mass at their node.
+  for (std::size_t i = 0; i < sd_.sph.size(); ++i)
+    sd_.mass[static_cast<std::size_t>(sd_.sph.node[i])] += sd_.sph.mass[i];
 }
 
 void Solver::scaleMasses(InitialSteps& steps) {
@@ -429,6 +438,8 @@ Solver::ElementPass Solver::computeInternalForces() {
   gather(sd_.internal, sd_.f, 3);
   if (sd_.rotations) gather(sd_.rotational, sd_.moment, 3);
   gather(sd_.pressure, sd_.f_ext, 3);
+  if (sd_.sph.size() > 0)
+    pass.sph_dt = elements::computeSphForces(sd_.sph, sd_.x, sd_.v, dt_, sd_.f).dt_min;
   forces_computed_ = true;
   return pass;
 }
@@ -482,7 +493,7 @@ void Solver::checkElementGeometry(const ElementPass& pass) const {
 
 Solver::StableStep Solver::stableTimeStep(const ElementPass& pass) const {
   const auto& ctl = model_.controls;
-  const double dt_global = comm_.minAll(pass.dt_min);
+  const double dt_global = comm_.minAll(std::min(pass.dt_min, pass.sph_dt));
   const int64_t element =
       controllingElement(pass.dt_elem, pass.dt_elem >= 0 && pass.dt_min == dt_global);
   // No deformable element anywhere (rigid parts only): the initial step stays.
@@ -710,6 +721,7 @@ Energies Solver::energies() const {
         if constexpr (requires { blk.e_hg; }) e.hourglass += blk.e_hg[k];
       }
   });
+  for (double u : sd_.sph.e_int) e.internal += u;
   // Energies are reported at t(n), the time level of the stresses from the last element pass
   // and of the work integrals. The kinetic energy there is the one central differences
   // conserve, 1/2 m v(n-1/2) . v(n+1/2) (docs/theory.md, "Energy balance"): with the
@@ -809,6 +821,18 @@ std::vector<PartSums> Solver::partSums() const {
     double* p = &local[kFields * static_cast<std::size_t>(blk.part)];
     p[0] += double(blk.size());
     for (std::size_t k = 0; k < blk.size(); ++k) p[2] += blk.e_int[k];
+  }
+  // SPH particles: each carries its mass at the velocity of its node.
+  const auto& sph = sd_.sph;
+  for (std::size_t i = 0; i < sph.size(); ++i) {
+    double* p =
+        &local[kFields * static_cast<std::size_t>(sph.groups[std::size_t(sph.group[i])].part)];
+    const double* v = &sd_.v[3 * static_cast<std::size_t>(sph.node[i])];
+    p[0] += 1.0;
+    p[1] += 0.5 * sph.mass[i] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    p[2] += sph.e_int[i];
+    for (int c = 0; c < 3; ++c) p[4 + c] += sph.mass[i] * v[c];
+    p[7] += sph.mass[i];
   }
   auto total = comm_.sumOrdered(local);
   if (rigid_) rigidPartSums(total, kFields);

@@ -6,7 +6,8 @@
 //                           elements at nodes shared with other ranks, then (while their
 //                           forces travel: begin/endSharedExchange) all the others; nodes sum
 //                           their slots, local and received, in global element order (gather;
-//                           follower pressure travels the same way)
+//                           follower pressure travels the same way); SPH particles add their
+//                           pair forces (elements/sph_family.hpp)
 //   checkElementGeometry    an inverted or collapsed element ends every rank
 //   stableTimeStep          next step = TSSFAC x global min of the element steps
 //   computeExternalForces   nodal loads, gravity (Boundary), joint forces (RigidBodies)
@@ -125,8 +126,9 @@ class Solver {
   // One element pass: the minimum stable step found and any inverted element.
   struct ElementPass {
     double dt_min = 1e300;
-    int64_t dt_elem = -1;  // global element index
-    int64_t bad = -1;      // global element index
+    int64_t dt_elem = -1;   // global element index
+    int64_t bad = -1;       // global element index
+    double sph_dt = 1e300;  // the SPH particles' smallest step (elements/sph_family.hpp)
   };
   enum class Group { Shared, Interior };
   // Element kernels over one group of every block (elements at shared nodes, or the rest).

@@ -141,9 +141,18 @@ std::size_t nodeFields(bool rotations) {
   throw util::InputError("the restart dump does not belong to this deck: " + what);
 }
 
+// The dumps do not hold the SPH particles' state (density, smoothing length, stress).
+[[noreturn]] void refuseSphRestart() {
+  throw util::InputError(
+      "restart dumps (*DATABASE_BINARY_D3DUMP, --restart) of a deck with SPH particles "
+      "(*SECTION_SPH) are not supported yet");
+}
+
 }  // namespace
 
 std::vector<char> Solver::saveState(StateSection which) const {
+  // Every rank has the same model: all refuse together.
+  if (!model_.sph_sections.empty()) refuseSphRestart();
   switch (which) {
     case StateSection::Scalars: {
       // Per-rank accumulators are kept per rank: restarted at the same number of ranks each
@@ -270,6 +279,7 @@ std::vector<char> Solver::saveState(StateSection which) const {
 }
 
 void Solver::loadState(StateSection which, const std::vector<char>& bytes) {
+  if (!model_.sph_sections.empty()) refuseSphRestart();
   util::ArchiveReader r(bytes);
   switch (which) {
     case StateSection::Scalars: {

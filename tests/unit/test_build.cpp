@@ -414,8 +414,8 @@ TEST(BuildErrors, ExactMessages) {
   const auto empty = t.write("n.k", "*KEYWORD\n*NODE\n1,0,0,0\n");
   EXPECT_EQ(errorOf([&] { readModel(empty); }),
             empty.string() +
-                ": the deck defines no elements Crumple can run (*ELEMENT_SOLID, _SHELL, _BEAM "
-                "or _DISCRETE)");
+                ": the deck defines no elements Crumple can run (*ELEMENT_SOLID, _SHELL, _BEAM, "
+                "_DISCRETE or _SPH)");
 }
 
 // *CONTROL_RIGID: defaults accepted; PLOTEL (output only) noted; LMF 1 (Lagrange multiplier
