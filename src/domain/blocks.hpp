@@ -250,6 +250,7 @@ struct SphBlock {
   };
   std::vector<Group> groups;
   double alpha = 1.0, beta = 1.0;  // Monaghan's viscosity (linear, quadratic)
+  int dim = 3;                     // 3, or 2: plane strain in the x-y plane (model::SphParticles)
   std::vector<int32_t> node;       // local node
   std::vector<int32_t> group;      // index into groups
   std::vector<double> mass;

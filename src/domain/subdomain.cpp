@@ -277,6 +277,7 @@ class SubdomainBuilder {
     auto& out = sd.sph;
     out.alpha = model.controls.q_linear;
     out.beta = model.controls.q_quadratic;
+    out.dim = in.dim;
     std::vector<int32_t> group_of(model.parts.size(), model::kNone);
     for (std::size_t k = 0; k < in.size(); ++k) {
       const int32_t n = local_of[std::size_t(in.node[k])];

@@ -109,8 +109,9 @@ void advanceParticle(domain::SphBlock& b, std::size_t i, double drho,
     throw util::NumericalError("SPH particle at node index " + std::to_string(b.node[i]) +
                                " (part " + std::to_string(g.part_id) +
                                "): its density fell to zero or below");
+  // The particle's volume m / rho ~ h^d: dh/dt = h div(v) / d.
   const double div = L[0] + L[4] + L[8];
-  b.h[i] = std::clamp(b.h[i] * (1.0 + dt * div / 3.0), g.hmin * g.h0, g.hmax * g.h0);
+  b.h[i] = std::clamp(b.h[i] * (1.0 + dt * div / b.dim), g.hmin * g.h0, g.hmax * g.h0);
   rotateStress(b.sig[i], L, dt);
   std::array<double, 6> de{};
   de[0] = L[0] * dt;
@@ -170,7 +171,7 @@ SphStatus computeSphForces(domain::SphBlock& b, const domain::NodeVector& x,
   const std::vector<Vec3> xs = particleVectors(b, x), vs = particleVectors(b, v);
   const auto pairs = sph::neighbourPairs(xs, b.h);
   sph::Particles p;
-  p.dim = 3;
+  p.dim = b.dim;
   p.x = xs;
   p.v = vs;
   p.mass = b.mass;

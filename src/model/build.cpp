@@ -748,6 +748,7 @@ Model buildModel(const deck::Deck& deck, const std::filesystem::path& path,
   ctx.attempt([&] { finishDamping(ctx); });
   ctx.attempt([&] { finishControls(ctx); });
   ctx.attempt([&] { finishPlanar(ctx); });
+  ctx.attempt([&] { finishPlaneSph(ctx); });
   inferUnits(ctx.model);
   ctx.attempt([&] { noteDegenerateSolids(ctx); });
   if (model.nodes.size() == 0)

@@ -263,6 +263,8 @@ void readElementSph(Context&, const deck::Keyword&, const KeywordOptions&);
 void readControlSph(Context&, const deck::Keyword&, const KeywordOptions&);
 // After the elements: the particles sorted by node, one per node, at nodes of no element.
 void finishSph(Context&);
+// After every keyword (*CONTROL_SPH is read late): the checks and constraints of plane SPH.
+void finishPlaneSph(Context&);
 // *CONTROL_SOLID: ESORT sorts tetrahedra and pentahedra written as hexahedra into ELFORM 10
 // and 15; the other fields are reported when set.
 void readControlSolid(Context&, const deck::Keyword&, const KeywordOptions&);

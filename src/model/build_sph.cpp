@@ -2,6 +2,8 @@
 // *CONTROL_SPH (LS-DYNA Keyword Manual vol. I). The particles run as the SPH family
 // (src/elements/sph_family.hpp); what a card sets that Crumple does not do is refused by name
 // or, where it cannot change the answer here, reported by Context::collect.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <numeric>
 #include <string>
@@ -73,8 +75,9 @@ void readElementSph(Context& ctx, const deck::Keyword& kw, const KeywordOptions&
   }
 }
 
-// *CONTROL_SPH: IDIM (0 or 3: three-dimensional) and FORM 0 (the default formulation, the one
-// src/elements/sph.hpp implements) are what Crumple runs, and other values are refused. NCBS,
+// *CONTROL_SPH: IDIM (0 or 3: three-dimensional; 2: plane strain in the x-y plane) and FORM 0
+// (the default formulation, the one src/elements/sph.hpp implements) are what Crumple runs, and
+// other values (IDIM -2, axisymmetric; IDIM 1) are refused. NCBS,
 // BOXID, DT, NMNEIGH, START, MAXV, CONT, DERIV, INI, IEROD, ICONT, IAVIS, ISYMP, ITHK, ISTAB,
 // QL and ISHIFT are read and, when not their defaults, reported as not honoured (Crumple
 // searches the neighbours every cycle, has no neighbour limit and no particle deactivation).
@@ -83,13 +86,42 @@ void readControlSph(Context& ctx, const deck::Keyword& kw, const KeywordOptions&
   CardCursor cur(kw, ctx.deck);
   const Card& c1 = cur.readOptional(spec.card("card 1"));
   const int64_t idim = c1.integer("IDIM");
-  if (idim != 0 && idim != 3)
-    ctx.reject(c1, "IDIM", "only three-dimensional SPH (IDIM 0 or 3) is supported");
+  if (idim == 2)
+    ctx.model.sph.dim = 2;
+  else if (idim != 0 && idim != 3)
+    ctx.reject(c1, "IDIM",
+               "only three-dimensional (IDIM 0 or 3) and plane-strain (IDIM 2) SPH are supported");
   if (c1.integer("FORM") != 0)
     ctx.reject(c1, "FORM", "only the default SPH formulation (FORM 0) is supported");
   if (!cur.atEnd()) cur.readOptional(spec.card("card 2"));
   if (!cur.atEnd()) cur.readOptional(spec.card("card 3"));
   ctx.collect(cur);
+}
+
+// Plane-strain SPH (*CONTROL_SPH IDIM 2; Keyword Manual vol. I): the particles lie in one plane
+// z = const and move in it. LS-DYNA's 2D SPH runs in a 2D model; Crumple's 2D model has no room
+// for 3-D elements beside it, so they are refused, as with the 2D solids.
+void finishPlaneSph(Context& ctx) {
+  Model& m = ctx.model;
+  if (m.sph.dim != 2 || m.sph.size() == 0) return;
+  if (m.numElements() > 0)
+    ctx.fail(fmt::format(
+        "*CONTROL_SPH IDIM 2 (plane-strain SPH) runs only with SPH particles: the deck also has "
+        "{} elements",
+        m.numElements()));
+  const double z0 = m.nodes.x[std::size_t(m.sph.node.front())][2];
+  for (int32_t n : m.sph.node)
+    if (m.nodes.x[std::size_t(n)][2] != z0) {
+      ctx.fail(fmt::format(
+          "*NODE {}: z = {} but SPH particle node {} has z = {}: with *CONTROL_SPH IDIM 2 "
+          "(plane strain) every particle lies in one plane z = const",
+          m.nodes.id[std::size_t(n)], m.nodes.x[std::size_t(n)][2],
+          m.nodes.id[std::size_t(m.sph.node.front())], z0));
+      return;
+    }
+  // Two freedoms per particle: z and the rotations are held (as the 2D solids' nodes).
+  constexpr DofMask kOutOfPlane = 0b111100;
+  for (int32_t n : m.sph.node) m.spcs.push_back({n, kOutOfPlane});
 }
 
 // After the elements: the particles in ascending node order, one per node, at nodes no element
@@ -102,6 +134,7 @@ void finishSph(Context& ctx) {
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return sph.node[a] < sph.node[b]; });
   SphParticles sorted;
+  sorted.dim = sph.dim;
   for (std::size_t k : order) {
     if (!sorted.node.empty() && sorted.node.back() == sph.node[k])
       throw util::InputError(ctx.model.deck_path + ": *ELEMENT_SPH: node " +

@@ -106,6 +106,9 @@ struct SectionSph {
 
 // *ELEMENT_SPH: one particle per node (the node carries its mass), ascending node index.
 struct SphParticles {
+  // *CONTROL_SPH IDIM: 3, or 2 for plane strain in the x-y plane (each particle then stands
+  // for a prism of unit depth: its MASS is per unit thickness, as LS-DYNA's 2D solids).
+  int32_t dim = 3;
   std::vector<int32_t> node;  // model node index
   std::vector<int32_t> part;  // model part index (a part with a *SECTION_SPH)
   std::vector<double> mass;

@@ -48,6 +48,7 @@ void fields(A& a, M& m) {
   a(m.discretes.nodes);
   a(m.discretes.scale);
   a(m.discretes.offset);
+  a(m.sph.dim);
   a(m.sph.node);
   a(m.sph.part);
   a(m.sph.mass);

@@ -303,10 +303,11 @@ std::vector<int32_t> partitionElements(const model::Model& model, int parts, con
   if (parts < 1)
     throw util::InputError("cannot split " + std::to_string(ne) + " elements over " +
                            std::to_string(parts) + " ranks: the rank count must be at least 1");
+  // One rank takes everything, also a deck of SPH particles only (no elements to split).
+  if (parts == 1) return std::vector<int32_t>(ne, 0);
   if (std::size_t(parts) > ne)
     throw util::InputError("cannot split " + std::to_string(ne) + " elements over " +
                            std::to_string(parts) + " ranks");
-  if (parts == 1) return std::vector<int32_t>(ne, 0);
   const std::vector<int32_t> weights = elementWeights(model, opt);
   if (opt.method == Method::Rcb) return rcbPartition(model, weights, parts);
   const DualGraph g = buildDualGraph(model);

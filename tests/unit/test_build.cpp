@@ -1,6 +1,7 @@
 #include <algorithm>
 // Deck -> Model (src/model/build*.cpp): ordering, defaulting, curves, sets, conditions,
 // unsupported and ignored reports, exact error messages, and the real decks in ../shared.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -889,4 +890,35 @@ TEST(BuildModel, UnitsFromControlUnitsOrInferredFromTheMetals) {
   const Model unknown = readModel(t.write("rubber.k", rubbery));
   EXPECT_TRUE(unknown.units.name.empty());
   EXPECT_NE(unknown.units.source.find("not known"), std::string::npos);
+}
+
+// Plane-strain SPH (*CONTROL_SPH IDIM 2): particles in one plane z = const, held in it (z and
+// the rotations fixed), and no other elements; IDIM -2 (axisymmetric) is refused by name.
+TEST(BuildSph, PlaneStrainParticles) {
+  TempDir t;
+  const std::string particles =
+      "*SECTION_SPH\n1\n*MAT_ELASTIC\n1,7.8e-9,2.0e5,0.3\n*PART\nsph\n1,1,1\n"
+      "*NODE\n1,0,0,0.5\n2,1,0,0.5\n3,0,1,0.5\n*ELEMENT_SPH\n1,1,1e-9\n2,1,1e-9\n3,1,1e-9\n";
+  const auto plane = [](int idim) { return fmt::format("*CONTROL_SPH\n0,0,1e20,{}\n", idim); };
+  const Model m = readModel(t.write("p.k", "*KEYWORD\n" + plane(2) + particles));
+  EXPECT_EQ(m.sph.dim, 2);
+  ASSERT_EQ(m.spcs.size(), 3u);
+  for (const auto& s : m.spcs) EXPECT_EQ(s.dofs, crumple::model::DofMask{0b111100});
+  EXPECT_EQ(readModel(t.write("q.k", "*KEYWORD\n" + plane(0) + particles)).sph.dim, 3);
+  const auto off = t.write("o.k", "*KEYWORD\n" + plane(2) + particles + "*NODE\n4,0,2,0.7\n" +
+                                      "*ELEMENT_SPH\n4,1,1e-9\n");
+  EXPECT_EQ(errorOf([&] { readModel(off); }),
+            "*NODE 4: z = 0.7 but SPH particle node 1 has z = 0.5: with *CONTROL_SPH IDIM 2 "
+            "(plane strain) every particle lies in one plane z = const");
+  const auto mixed = t.write("m.k", kMesh + plane(2) +
+                                        "*SECTION_SPH\n2\n*PART\nsph\n2,2,1\n*NODE\n41,0,0,0.5\n"
+                                        "42,1,0,0.5\n*ELEMENT_SPH\n41,2,1e-9\n42,2,1e-9\n");
+  EXPECT_EQ(errorOf([&] { readModel(mixed); }),
+            "*CONTROL_SPH IDIM 2 (plane-strain SPH) runs only with SPH particles: the deck also "
+            "has 2 elements");
+  const auto axi = t.write("a.k", "*KEYWORD\n" + plane(-2) + particles);
+  EXPECT_NE(errorOf([&] { readModel(axi); })
+                .find("only three-dimensional (IDIM 0 or 3) and plane-strain (IDIM 2) SPH are "
+                      "supported"),
+            std::string::npos);
 }
