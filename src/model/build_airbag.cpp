@@ -81,10 +81,14 @@ void readAirbagSimplePressureVolume(Context& ctx, const deck::Keyword& kw,
         law.fail(bag.cn == 0.0 ? "CN" : "BETA",
                  "the bag would hold no pressure: give CN and BETA, or LCID");
     }
-    // LCIDDR acts in a dynamic-relaxation phase, which Crumple does not run (a deck that asks
-    // for one is refused where it does).
-    if (law.integer("LCIDDR") != 0)
-      ctx.ignore(kw.name, "LCIDDR", "acts only during dynamic relaxation", law.where());
+    // LCIDDR: CN vs time in the dynamic-relaxation phase (without it, CN as in the transient).
+    if (const int64_t lciddr = law.integer("LCIDDR"); lciddr != 0) {
+      if (lcid != 0)
+        ctx.ignore(kw.name, "LCIDDR", "LCID (pressure vs volume) replaces CN in both phases",
+                   law.where());
+      else
+        bag.cn_dr_curve = ctx.curve(law, "LCIDDR", lciddr);
+    }
     const auto segments = bagSurface(ctx, c);
     if (segments.size() < 4) c.fail("SID", "a closed surface needs at least 4 segments");
     bag.first = ctx.model.pressure_loads.size();
