@@ -360,6 +360,9 @@ void Run::start() {
                  s.contact()->initialPenetrations().size(),
                  s.contact()->movedInitialPenetrations() ? "moved back onto the surface"
                                                          : "kept as an offset (IGNORE)");
+  // A restart continues the transient: a dump is written only in the cycle loop, after the
+  // relaxation phase.
+  if (!restart_ && model_.controls.relaxation.active()) relax();
   writer_ = std::make_unique<output::ResultsWriter>(dir_, model_, s, comm_, restart_);
   // Set-up is over: each rank keeps its subdomain, nobody the whole mesh.
   model_.releaseMesh();
@@ -372,6 +375,25 @@ void Run::start() {
   // The state at the dump was written by the dumped run.
   if (!restart_) writeResults();
   started_ = true;
+}
+
+void Run::relax() {
+  auto& s = *solver_;
+  log_.say("dynamic relaxation (*CONTROL_DYNAMIC_RELAXATION, SIDR curves) ...\n");
+  const solver::Solver::Relaxation r = s.relax();
+  const auto& dr = model_.controls.relaxation;
+  log_.say(fmt::format(
+      "dynamic relaxation {} after {} cycles at relaxation time {:.6g}: distortional kinetic "
+      "energy {:.4g} x its peak {:.6g} (DRTOL {:.4g}); relaxed internal + hourglass energy "
+      "{:.6g}; the transient starts at t = 0 from the relaxed state, its energy balance "
+      "from there\n",
+      r.converged ? "converged" : "ended by DRTERM", r.cycles, r.time, r.ratio, r.peak, dr.drtol,
+      r.energy));
+  info_.relaxation_cycles = r.cycles;
+  // The phase's element, contact and constraint time is set-up time ("relax"), not the
+  // transient's.
+  s.timing() = {};
+  endSetupPhase("relax");
 }
 
 void Run::restoreDump() {

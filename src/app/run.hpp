@@ -69,6 +69,8 @@ class Run {
 
   // The cycle loop and its two ends. Errors are handled in execute().
   void start();
+  // The dynamic-relaxation phase of the deck (Solver::relax), reported in run.log.
+  void relax();
   void restoreDump();
   void cycleLoop();
   // Writes the histories due now and puts what the energy audit found into run.log.

@@ -77,6 +77,7 @@ Airbags::Airbags(const model::Model& m, const domain::Subdomain& sd) : model_(&m
     bag.def = &def;
     if (def.cn_curve != model::kNone) bag.cn_curve = &m.curves[std::size_t(def.cn_curve)];
     if (def.pv_curve != model::kNone) bag.pv_curve = &m.curves[std::size_t(def.pv_curve)];
+    if (def.cn_dr_curve != model::kNone) bag.cn_dr_curve = &m.curves[std::size_t(def.cn_dr_curve)];
     for (std::size_t s = def.first; s < def.first + def.count; ++s)
       for (int32_t n : m.pressure_loads[s].nodes)
         if (const int32_t l = sd.localNode(n); l != model::kNone) bag.nodes.push_back(l);
@@ -138,7 +139,10 @@ void Airbags::update(double t, const domain::Subdomain& sd, const comm::Communic
     if (bag.pv_curve) {
       bag.pressure = d.psca * bag.pv_curve->value(relative);
     } else {
-      const double cn = bag.cn_curve ? bag.cn_curve->value(t) : d.cn;
+      const double cn = phase_ == model::Phase::Relaxation && bag.cn_dr_curve
+                            ? bag.cn_dr_curve->value(t)
+                        : bag.cn_curve ? model::loadFactor(bag.cn_curve, t, phase_)
+                                       : d.cn;
       bag.pressure = relative > 0.0 ? d.psca * d.beta * cn / relative : 0.0;
     }
     bag.q = bag.sign * bag.pressure;

@@ -43,6 +43,8 @@ class Airbags {
   double volume(int32_t bag) const { return bags_[std::size_t(bag)].volume; }
   double pressure(int32_t bag) const { return bags_[std::size_t(bag)].pressure; }
   std::size_t size() const { return bags_.size(); }
+  // Dynamic relaxation: CN from LCIDDR when the bag has one, else as model::loadFactor says.
+  void setPhase(model::Phase phase) { phase_ = phase; }
 
   // MWD: -D m (v - v_bag) at every local node of the bags that damp, from v(n-1/2), added to
   // f_ext (so its negative work is in the external work). Collective.
@@ -51,7 +53,7 @@ class Airbags {
  private:
   struct Bag {
     const model::Airbag* def = nullptr;
-    const model::Curve *cn_curve = nullptr, *pv_curve = nullptr;
+    const model::Curve *cn_curve = nullptr, *pv_curve = nullptr, *cn_dr_curve = nullptr;
     double initial = 0.0, volume = 0.0, pressure = 0.0, q = 0.0, sign = 1.0;
     std::vector<int32_t> nodes;  // local nodes of the bag's segments, ascending
   };
@@ -72,6 +74,7 @@ class Airbags {
   };
   std::vector<Segment> segments_;
   bool initialised_ = false;
+  model::Phase phase_ = model::Phase::Transient;
 };
 
 }  // namespace crumple::constraints

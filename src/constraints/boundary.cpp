@@ -12,9 +12,6 @@ namespace {
 const model::Curve* curveOf(const model::Model& m, int32_t index) {
   return index == model::kNone ? nullptr : &m.curves[static_cast<std::size_t>(index)];
 }
-double curveValue(const model::Curve* c, double t) {
-  return c ? c->value(t) : 1.0;
-}
 
 double dot(const model::Vec3& a, const double* b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
@@ -99,7 +96,8 @@ Boundary::Boundary(const model::Model& m, const domain::Subdomain& sd) {
     for (int c = 0; c < 4; ++c) q.nodes[c] = sd.localNode(p.nodes[c]);
     pressure_.push_back(q);
   }
-  for (const auto& b : m.body_loads) body_.push_back({b.dof, curveOf(m, b.curve), b.sf});
+  for (const auto& b : m.body_loads)
+    body_.push_back({b.dof, curveOf(m, b.curve), b.sf, curveOf(m, b.dr_curve)});
   if (!m.airbags.empty()) airbags_ = Airbags(m, sd);
   for (const auto& w : m.rigid_walls) {
     WallState ws;
@@ -130,7 +128,7 @@ void Boundary::pressureForces(double t, domain::Subdomain& sd) const {
     }
     std::fill(slot, slot + 12, 0.0);
     if (t < p.at) continue;
-    const double pr = p.sf * curveValue(p.curve, t - p.at);
+    const double pr = p.sf * model::loadFactor(p.curve, t - p.at, phase_);
     if (pr == 0.0) continue;
     const double* x1 = &sd.x[3 * static_cast<std::size_t>(p.nodes[0])];
     const double* x2 = &sd.x[3 * static_cast<std::size_t>(p.nodes[1])];
@@ -152,10 +150,14 @@ void Boundary::pressureForces(double t, domain::Subdomain& sd) const {
 void Boundary::externalForces(double t, const domain::Subdomain& sd,
                               domain::NodeVector& f_ext) const {
   for (const auto& l : loads_)
-    f_ext[3 * static_cast<std::size_t>(l.node) + l.dof] += l.sf * curveValue(l.curve, t);
+    f_ext[3 * static_cast<std::size_t>(l.node) + l.dof] +=
+        l.sf * model::loadFactor(l.curve, t, phase_);
   // Base acceleration: body force -m a on every node.
   for (const auto& b : body_) {
-    const double acc = b.sf * curveValue(b.curve, t);
+    // Dynamic relaxation: the LCIDDR curve, or no load without one.
+    const double acc = phase_ == model::Phase::Relaxation
+                           ? (b.dr_curve ? b.sf * b.dr_curve->value(t) : 0.0)
+                           : b.sf * model::loadFactor(b.curve, t, phase_);
     if (acc == 0.0) continue;
     for (std::size_t n = 0; n < sd.numNodes(); ++n) f_ext[3 * n + b.dof] -= sd.mass[n] * acc;
   }
@@ -206,17 +208,18 @@ StepWork Boundary::applyKinematics(double t, double dt_n, double dt_half, domain
     double v_new = sd.v[i];
     switch (m.kind) {
       case model::MotionKind::Velocity:
-        v_new = m.sf * curveValue(m.curve, t_half);
+        v_new = m.sf * model::loadFactor(m.curve, t_half, phase_);
         break;
       case model::MotionKind::Acceleration:
-        v_new = v_old[i] + dt_n * m.sf * curveValue(m.curve, t);
+        v_new = v_old[i] + dt_n * m.sf * model::loadFactor(m.curve, t, phase_);
         break;
       case model::MotionKind::Displacement: {
         // The displacement since t = 0 is the curve's change since then, sf (f(t) - f(0)):
         // LS-DYNA moves the node by the curve's increments, so a curve that starts at a
         // non-zero value (the node's coordinate, say) does not make it jump at the first
         // step (docs/theory.md, "Loads and constraints").
-        const double u_next = m.sf * (curveValue(m.curve, t_next) - curveValue(m.curve, 0.0));
+        const double u_next = m.sf * (model::loadFactor(m.curve, t_next, phase_) -
+                                      model::loadFactor(m.curve, 0.0, phase_));
         v_new = dt_half > 0.0 ? (u_next - (sd.x[i] - sd.x0[i])) / dt_half : 0.0;
         break;
       }

@@ -49,6 +49,13 @@ class Boundary {
   }
   const Airbags& airbags() const { return airbags_; }
 
+  // The phase the loads' and motions' curves are evaluated in (model::loadFactor): dynamic
+  // relaxation or the transient analysis.
+  void setPhase(model::Phase phase) {
+    phase_ = phase;
+    airbags_.setPhase(phase);
+  }
+
   // Follower pressure of the segments this rank computes, into their corner slots (they are
   // exchanged and gathered like element forces, so every rank sums them in the same order).
   void pressureForces(double t, domain::Subdomain& sd) const;
@@ -113,6 +120,7 @@ class Boundary {
     int dof;
     const model::Curve* curve;
     double sf;
+    const model::Curve* dr_curve;  // LCIDDR
   };
   // The wall's resultant and normal force from its nodes' (fx, fy, fz, fn) on every rank,
   // added in node id order (the same bits at any rank count).
@@ -132,6 +140,7 @@ class Boundary {
   std::vector<WallState> walls_;
   Airbags airbags_;
   bool has_external_ = false;
+  model::Phase phase_ = model::Phase::Transient;
 };
 
 }  // namespace crumple::constraints

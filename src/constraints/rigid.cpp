@@ -431,6 +431,8 @@ void RigidBodies::initBody(Body& b, const model::RigidBodyDef* def, const model:
   double ainv[3][3];
   inverseInertia(b, b.q, ainv);
   b.omega = matVec(ainv, b.L);
+  b.V_init = b.V;
+  b.omega_init = b.omega;
   double r[3][3];
   matrix(b.q, r);
   for (int32_t n : b.local) {
@@ -587,7 +589,7 @@ void RigidBodies::computeBodyLoads(double t) {
   std::fill(load_f_.begin(), load_f_.end(), Vec3{});
   std::fill(load_m_.begin(), load_m_.end(), Vec3{});
   for (const BodyLoad& l : loads_) {
-    const double value = l.sf * (l.curve ? l.curve->value(t) : 1.0);
+    const double value = l.sf * model::loadFactor(l.curve, t, phase_);
     Vec3& target = l.dof < 3 ? load_f_[std::size_t(l.body)] : load_m_[std::size_t(l.body)];
     target[std::size_t(l.dof % 3)] += value;
   }
@@ -647,6 +649,22 @@ std::vector<JointState> RigidBodies::joints() const {
   return joint_states_;
 }
 
+void RigidBodies::scaleVelocities(double factor) {
+  for (Body& b : bodies_) {
+    b.V = scaled(b.V, factor);
+    b.L = scaled(b.L, factor);
+    b.omega = scaled(b.omega, factor);
+  }
+}
+
+void RigidBodies::restoreInitialVelocities() {
+  for (Body& b : bodies_) {
+    b.V = b.V_prev = b.V_init;
+    b.omega = b.omega_init;
+    b.L = b.L_prev = angularMomentum(b, b.q, b.omega);
+  }
+}
+
 void RigidBodies::setInitialVelocities(domain::Subdomain& sd) const {
   for (const Body& b : bodies_) {
     for (int32_t node : b.local) {
@@ -681,7 +699,7 @@ StepWork RigidBodies::advance(Body& b, const Vec3& F, const Vec3& M, double t, d
     if (t_half < mo.birth || t_half > mo.death) continue;
     const auto d = static_cast<std::size_t>(mo.dof % 3);
     const bool rot = mo.dof >= 3;
-    auto value = [&](double time) { return mo.sf * (mo.curve ? mo.curve->value(time) : 1.0); };
+    auto value = [&](double time) { return mo.sf * model::loadFactor(mo.curve, time, phase_); };
     double v = 0.0;
     switch (mo.kind) {
       case model::MotionKind::Velocity:

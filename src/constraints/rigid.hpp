@@ -130,6 +130,12 @@ class RigidBodies {
   // the *CONSTRAINED_JOINT_STIFFNESS_GENERALIZED friction springs from the bodies'
   // orientations at t(n). apply() adds them to the bodies' force and moment sums.
   void computeBodyLoads(double t);
+  // The phase their loads' and prescribed motions' curves are evaluated in (model::loadFactor).
+  void setPhase(model::Phase phase) { phase_ = phase; }
+  // Dynamic relaxation: every body's velocities scaled by DRFCTR each cycle, and back to the
+  // initial motion when the phase ends (then setInitialVelocities carries it to the nodes).
+  void scaleVelocities(double factor);
+  void restoreInitialVelocities();
   std::vector<JointState> joints() const;
 
   // Kinetic energy of the bodies at t(n) (translation and rotation, from the mean of the
@@ -149,6 +155,7 @@ class RigidBodies {
   std::vector<WeldState> welds() const;
 
  private:
+  model::Phase phase_ = model::Phase::Transient;
   using Quat = std::array<double, 4>;  // unit quaternion w, x, y, z
   struct Motion {
     int dof;
@@ -164,6 +171,7 @@ class RigidBodies {
     Quat q{1, 0, 0, 0}, q_prev{1, 0, 0, 0};  // principal axes -> global, t(n+1) and t(n)
     Vec3 x_cm{}, x_cm_prev{}, x_cm0{};
     Vec3 V{}, V_prev{}, L{}, L_prev{}, omega{};
+    Vec3 V_init{}, omega_init{};  // the initial motion (restored after dynamic relaxation)
     Vec3 angle{};  // accumulated rotation about the global axes (prescribed rotations)
     Vec3 reaction_f{}, reaction_m{};
     Vec3 acc{}, angular_acc{};  // of the last step (rbdout)

@@ -293,13 +293,13 @@ std::vector<KeywordSpec> makeTables() {
       {"*CONTROL_UNITS",
        {{"card 1", {A("LENGTH"), A("TIME"), A("MASS"), A("TEMP"), A("VERSION"), A("SI")}}}});
   // Dynamic relaxation (*CONTROL_DAMPING is its name in LS-DYNA 93x-94x decks); the
-  // parameters act only when IDRFLG or a curve's SIDR turns it on.
+  // parameters act only when IDRFLG or a curve's SIDR turns it on. EDTTL acts only with
+  // IRELAL = 1 (refused).
   for (std::string_view name : {"*CONTROL_DYNAMIC_RELAXATION", "*CONTROL_DAMPING"})
-    t.push_back(
-        {name,
-         {{"card 1",
-           {I("NRCYCK", 250, Q), R("DRTOL", 0.001, Q), R("DRFCTR", 0.995, Q), R("DRTERM", 0, Q),
-            R("TSSFDR", 0, Q), I("IRELAL", 0, Q), R("EDTTL", 0, Q), I("IDRFLG")}}}});
+    t.push_back({name,
+                 {{"card 1",
+                   {I("NRCYCK", 250, Z), R("DRTOL", 0.001, Z), R("DRFCTR", 0.995, Z), R("DRTERM"),
+                    R("TSSFDR"), I("IRELAL"), R("EDTTL", 0.04, Z | Q), I("IDRFLG")}}}});
   // IMFLAG 0 explicit, 1 implicit, 2 explicit then implicit springback, < 0 a curve of time.
   t.push_back({"*CONTROL_IMPLICIT_GENERAL",
                {{"card 1",

@@ -417,7 +417,7 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
       double* sig_batch = blk.sig.data() + first * static_cast<std::size_t>(p.fields);
       double* ep_batch =
           Law::kPlastic ? blk.eps_p.data() + first * static_cast<std::size_t>(p.nip) : nullptr;
-      double* alpha_batch = Law::kKinematic
+      double* alpha_batch = materials::shellAlphaOf<Law>()
                                 ? blk.alpha.data() + first * static_cast<std::size_t>(3 * p.nip)
                                 : nullptr;
       const double* hg_old = p.hg_state ? blk.hgq.data() + first * 5 : s.zeros;
@@ -538,7 +538,7 @@ void resizeShellBlock(domain::ShellBlock& blk, std::size_t n) {
   } else {
     blk.eps_p.clear();
   }
-  if (materials::isKinematic(blk.law)) {
+  if (materials::hasShellAlpha(blk.law)) {
     blk.alpha.assign(padded * static_cast<std::size_t>(blk.alphaFields()), 0.0);
   } else {
     blk.alpha.clear();

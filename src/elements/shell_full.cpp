@@ -276,7 +276,7 @@ inline void fullPointStresses(const Law& law, const ShellParams& p, domain::Shel
   double* ep_batch = Law::kPlastic
                          ? blk.eps_p.data() + first * static_cast<std::size_t>(blk.epsFields())
                          : nullptr;
-  double* alpha_batch = Law::kKinematic
+  double* alpha_batch = materials::shellAlphaOf<Law>()
                             ? blk.alpha.data() + first * static_cast<std::size_t>(blk.alphaFields())
                             : nullptr;
   Lanes alive;
@@ -285,7 +285,7 @@ inline void fullPointStresses(const Law& law, const ShellParams& p, domain::Shel
   for (int q = 0; q < kPoints; ++q) {
     double* sig_q = sig_batch + q * blk.pointFields() * B;
     double* ep_q = Law::kPlastic ? ep_batch + q * p.nip * B : nullptr;
-    double* alpha_q = Law::kKinematic ? alpha_batch + q * 3 * p.nip * B : nullptr;
+    double* alpha_q = materials::shellAlphaOf<Law>() ? alpha_batch + q * 3 * p.nip * B : nullptr;
     Lanes failed_q;
     double* ero_q = p.erosion
                         ? blk.erosion_state.data() + first * std::size_t(blk.erosionFields()) +

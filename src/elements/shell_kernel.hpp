@@ -294,7 +294,7 @@ inline void pointStresses(const Law& law, const ShellParams& p, ShellScratch& s,
   }
   if constexpr (Law::kPlastic)
     for (int i = 0; i < npts; ++i) s.ep[i] = ep_batch[i];
-  if constexpr (Law::kKinematic)
+  if constexpr (materials::shellAlphaOf<Law>())
     for (int k = 0; k < 3; ++k)
       for (int ip = 0; ip < nip; ++ip)
         for (int l = 0; l < B; ++l) s.alpha[k][ip * B + l] = alpha_batch[(3 * ip + k) * B + l];
@@ -305,7 +305,7 @@ inline void pointStresses(const Law& law, const ShellParams& p, ShellScratch& s,
     for (int k = 0; k < 3; ++k) {
       pts.s[k] = s.s[k];
       pts.de[k] = s.de[k];
-      pts.alpha[k] = Law::kKinematic ? s.alpha[k] : nullptr;
+      pts.alpha[k] = materials::shellAlphaOf<Law>() ? s.alpha[k] : nullptr;
     }
     pts.de_zz = s.dzz;
     pts.eps_p = Law::kPlastic ? s.ep : nullptr;
@@ -492,7 +492,7 @@ inline void storePoints(const ShellParams& p, const ShellScratch& s, const Lanes
       const int l = i % B;
       ep_batch[i] = alive[l] != 0.0 ? s.ep[i] : ep_batch[i];
     }
-  if constexpr (Law::kKinematic)
+  if constexpr (materials::shellAlphaOf<Law>())
     for (int k = 0; k < 3; ++k)
       for (int ip = 0; ip < nip; ++ip)
         for (int l = 0; l < B; ++l) alpha_batch[(3 * ip + k) * B + l] = s.alpha[k][ip * B + l];

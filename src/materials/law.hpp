@@ -17,6 +17,10 @@
 //   kDeformationGradient (opt.) its stress is a function of the deformation gradient F
 //                              (hyperelastic laws): the one-point solids give PointBatch::F,
 //                              and parts of other solid formulations are refused
+//   kShellStrain (optional)    its shell points keep the accumulated in-plane logarithmic
+//                              strain (xx, yy, xy in the element frame) in the 3 alpha fields
+//                              of a point (hyperelastic laws, whose shell stress is a function
+//                              of it: PlaneStressPoints::alpha)
 //   kBeamOnly (optional)       the one *SECTION_BEAM ELFORM its parts may use (a BeamOnly);
 //                              parts of other sections are refused (model/build_mesh.cpp)
 //   massDensity(ro) (optional) the density of its beams' nodal masses from RO (else RO)
@@ -77,6 +81,22 @@ constexpr bool needsDeformationGradient() {
     return L::kDeformationGradient;
   else
     return false;
+}
+
+// Whether the law's shell points keep their in-plane strain (its kShellStrain, else false).
+template <class L>
+constexpr bool keepsShellStrain() {
+  if constexpr (requires { L::kShellStrain; })
+    return L::kShellStrain;
+  else
+    return false;
+}
+
+// Whether the law's shell points keep 3 alpha fields each: the back stress of kinematic
+// hardening, or the strain of kShellStrain.
+template <class L>
+constexpr bool shellAlphaOf() {
+  return L::kKinematic || keepsShellStrain<L>();
 }
 
 // A batch of n integration points; every pointer addresses n contiguous values.

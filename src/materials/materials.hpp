@@ -142,6 +142,10 @@ inline bool needsDeformationGradient(const Law& law) {
 inline bool isKinematic(const Law& law) {
   return std::visit([](const auto& l) { return std::decay_t<decltype(l)>::kKinematic; }, law);
 }
+// Whether the law's shell points keep 3 alpha fields (materials::shellAlphaOf).
+inline bool hasShellAlpha(const Law& law) {
+  return std::visit([](const auto& l) { return shellAlphaOf<std::decay_t<decltype(l)>>(); }, law);
+}
 // The density of a beam block's nodal masses for the material density ro (the unit's
 // massDensity, else ro).
 inline double massDensityOf(const Law& law, double ro) {

@@ -31,11 +31,13 @@ namespace crumple::materials {
 struct PlaneStressPoints {
   int n = 0;
   double dt = 0.0;
-  double* s[3] = {};          // in-plane stress xx, yy, xy in the element frame, in/out
-  const double* de[3] = {};   // in-plane strain increment xx, yy, xy, in
-  double* de_zz = nullptr;    // out: thickness strain increment (sigma_zz stays 0)
-  double* eps_p = nullptr;    // effective plastic strain, in/out (plastic laws)
-  double* alpha[3] = {};      // back stress xx, yy, xy in plane-stress form (kinematic laws)
+  double* s[3] = {};         // in-plane stress xx, yy, xy in the element frame, in/out
+  const double* de[3] = {};  // in-plane strain increment xx, yy, xy, in
+  double* de_zz = nullptr;   // out: thickness strain increment (sigma_zz stays 0)
+  double* eps_p = nullptr;   // effective plastic strain, in/out (plastic laws)
+  // Back stress xx, yy, xy in plane-stress form (kinematic laws), or the accumulated in-plane
+  // logarithmic strain xx, yy, xy (tensor shear) of kShellStrain laws; in/out.
+  double* alpha[3] = {};
   uint8_t* failed = nullptr;  // out: 1 where the point has reached the failure strain, else 0
 };
 

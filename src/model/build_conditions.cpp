@@ -363,7 +363,13 @@ void readLoadBody(Context& ctx, const deck::Keyword& kw, const KeywordOptions& o
   cur.skipBlankLines();
   const Card& c = cur.read(spec);
   checkNoLocalSystem(ctx, c, "CID");
-  ctx.model.body_loads.push_back({dof, ctx.curve(c, "LCID", c.integer("LCID")), c.real("SF")});
+  model::BodyLoad load;
+  load.dof = dof;
+  load.curve = ctx.curve(c, "LCID", c.integer("LCID"));
+  load.sf = c.real("SF");
+  if (const int64_t lciddr = c.integer("LCIDDR"); lciddr != 0)
+    load.dr_curve = ctx.curve(c, "LCIDDR", lciddr);
+  ctx.model.body_loads.push_back(load);
   ctx.collect(cur);
 }
 

@@ -63,16 +63,41 @@ void readControlImplicitGeneral(Context& ctx, const deck::Keyword& kw, const Key
   ctx.collect(cur);
 }
 
-// *CONTROL_DYNAMIC_RELAXATION (and its old name *CONTROL_DAMPING): IDRFLG 0 leaves dynamic
-// relaxation off unless a curve's SIDR asks for it (refused in readCurve); any other IDRFLG
-// runs a relaxation phase Crumple does not have.
+// *CONTROL_DYNAMIC_RELAXATION (and its old name *CONTROL_DAMPING; Keyword Manual vol. I):
+// IDRFLG 1 (and -1, whose extra time-history output during the phase Crumple does not write)
+// runs the relaxation phase, 0 runs it when a curve has SIDR 1 or 2, -999 never; the other
+// values (initialisation to a prescribed geometry, implicit relaxation) are refused, as is the
+// automatic control of IRELAL = 1. NRCYCK, DRTOL, DRFCTR: 0 is the default; DRTERM 0 = none;
+// TSSFDR 0 = TSSFAC.
 void readControlDynamicRelaxation(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
   CardCursor cur(kw, ctx.deck);
   const Card& c = cur.readOptional(keywordSpec(kw.name).card("card 1"));
-  if (const int64_t idrflg = c.integer("IDRFLG"); idrflg != 0)
+  auto& dr = ctx.model.controls.relaxation;
+  dr.idrflg = c.integer("IDRFLG");
+  if (dr.idrflg == -1)
+    ctx.ignore(kw.name, "IDRFLG",
+               "-1: the relaxation runs as with 1, without time-history output during it",
+               c.where());
+  else if (dr.idrflg != 0 && dr.idrflg != 1 && dr.idrflg != -999)
     ctx.reject(c, "IDRFLG",
-               "IDRFLG " + std::to_string(idrflg) + ": dynamic relaxation is not supported",
-               "dynamic relaxation");
+               "IDRFLG " + std::to_string(dr.idrflg) +
+                   ": only explicit dynamic relaxation (IDRFLG 0, 1, -1, -999) is supported",
+               "dynamic relaxation IDRFLG " + std::to_string(dr.idrflg));
+  if (c.integer("IRELAL") != 0)
+    ctx.reject(c, "IRELAL",
+               "IRELAL " + std::to_string(c.integer("IRELAL")) +
+                   ": the automatic relaxation control (Papadrakakis) is not supported",
+               "dynamic relaxation IRELAL");
+  dr.nrcyck = c.integer("NRCYCK");
+  if (dr.nrcyck <= 0) c.fail("NRCYCK", "must be positive");
+  dr.drtol = c.real("DRTOL");
+  if (!(dr.drtol > 0.0 && dr.drtol < 1.0)) c.fail("DRTOL", "must lie in (0, 1)");
+  dr.drfctr = c.real("DRFCTR");
+  if (!(dr.drfctr > 0.0 && dr.drfctr <= 1.0)) c.fail("DRFCTR", "must lie in (0, 1]");
+  dr.drterm = c.real("DRTERM");
+  if (dr.drterm < 0.0) c.fail("DRTERM", "must not be negative");
+  dr.tssfdr = c.real("TSSFDR");
+  if (dr.tssfdr < 0.0) c.fail("TSSFDR", "must not be negative");
   ctx.collect(cur);
 }
 

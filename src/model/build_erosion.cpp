@@ -48,7 +48,7 @@ void readCriteria(Context& ctx, const Card& c1, const Card& c2, materials::Erosi
                  "supported");
       continue;
     }
-    // FAILTM < 0: |FAILTM|, inactive during dynamic relaxation, which Crumple does not run.
+    // FAILTM < 0: |FAILTM|; its inactivity during dynamic relaxation is not modelled.
     if (f.name == "FAILTM") v = std::abs(v);
     er.set(f.criterion, v);
   }

@@ -119,10 +119,12 @@ void readCurve(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts
   CardCursor cur(kw, ctx.deck);
   Curve curve;
   const Card& c = curveHead(ctx, cur, spec, opts, "LCID", curve.id);
-  // SIDR 1 and 2 apply the curve in a dynamic-relaxation phase, which Crumple does not have.
-  if (const int64_t sidr = c.integer("SIDR"); sidr != 0)
-    ctx.reject(c, "SIDR", "SIDR " + std::to_string(sidr) + ": dynamic relaxation is not supported",
-               "dynamic relaxation");
+  // SIDR 1 and 2 apply the curve in a dynamic-relaxation phase (and turn that phase on unless
+  // *CONTROL_DYNAMIC_RELAXATION IDRFLG = -999), 1 only there (model::loadFactor).
+  const int64_t sidr = c.integer("SIDR");
+  if (sidr < 0 || sidr > 2) c.fail("SIDR", "must be 0, 1 or 2");
+  curve.sidr = int32_t(sidr);
+  if (sidr != 0) ctx.model.controls.relaxation.sidr_curves = true;
   const double sfa = c.real("SFA"), sfo = c.real("SFO"), offa = c.real("OFFA"),
                offo = c.real("OFFO");
   // Keyword Manual, *DEFINE_CURVE, remarks: the values are scaled after the offsets are

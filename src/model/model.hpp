@@ -37,11 +37,26 @@ struct PointMass {
 struct Curve {
   int64_t id = 0;
   std::vector<double> x, y;
+  // SIDR (Keyword Manual vol. I, *DEFINE_CURVE): 0 the curve acts in the transient analysis
+  // only, 1 in the dynamic-relaxation phase only, 2 in both.
+  int32_t sidr = 0;
   // Piecewise-linear value; held constant beyond the end points (time-dependent loads).
   double value(double t) const;
   // Piecewise-linear value; extrapolated with the slope of the end segments (hardening curves).
   double valueExtrapolated(double t) const;
 };
+
+// The two phases of a run with dynamic relaxation (*CONTROL_DYNAMIC_RELAXATION): the
+// relaxation, on its own time axis from 0, then the transient analysis from t = 0 again.
+enum class Phase { Transient, Relaxation };
+
+// The factor of a load whose time curve is `c` in `phase` (SIDR above): the curve's value in
+// a phase it acts in, 0 in the other; a load without a curve (nullptr) is constant, 1 in both.
+inline double loadFactor(const Curve* c, double t, Phase phase) {
+  if (!c) return 1.0;
+  const bool acts = phase == Phase::Relaxation ? c->sidr != 0 : c->sidr != 1;
+  return acts ? c->value(t) : 0.0;
+}
 
 // *DEFINE_TABLE: one curve per value (for *MAT_024 LCSS, one yield curve per strain rate),
 // the values SFA (VALUE + OFFA) strictly increasing. Each value's curve is the one its LCID
@@ -298,14 +313,19 @@ struct Airbag {
   double cn = 0.0, beta = 1.0;
   int32_t cn_curve = kNone;  // coefficient vs time (CN < 0)
   int32_t pv_curve = kNone;  // LCID: pressure vs relative volume
+  // LCIDDR: CN vs time during dynamic relaxation (kNone: CN, or its curve, as in the transient)
+  int32_t cn_dr_curve = kNone;
 };
 
 // *LOAD_BODY_X/Y/Z: base acceleration a = sf * curve(t) along dof; the body force on a node
 // is -m * a (a positive Z acceleration is gravity pointing down, the LS-DYNA convention).
+// LCIDDR: the curve of the dynamic-relaxation phase; without it the load does not act there
+// (Keyword Manual vol. I, *LOAD_BODY: LCID acts in the transient only).
 struct BodyLoad {
   int dof = 0;
   int32_t curve = kNone;
   double sf = 1.0;
+  int32_t dr_curve = kNone;
 };
 
 // *RIGIDWALL_PLANAR (stonewall), fixed or _MOVING, infinite or _FINITE.
@@ -391,6 +411,18 @@ struct Controls {
     bool elout = false;
   } ascii;
   int64_t d3dump_cycles = 0;  // *DATABASE_BINARY_D3DUMP CYCL; 0 = no cycle-driven dumps
+  // *CONTROL_DYNAMIC_RELAXATION (Keyword Manual vol. I; its older name *CONTROL_DAMPING), with
+  // the manual's defaults: an explicit relaxation phase before the transient (solver/relax.cpp).
+  struct Relaxation {
+    int64_t nrcyck = 250;      // cycles between convergence checks
+    double drtol = 1e-3;       // converged: distortional kinetic energy < DRTOL x its peak
+    double drfctr = 0.995;     // velocities scaled by DRFCTR each cycle
+    double drterm = 0.0;       // relaxation time that ends the phase; 0 = none
+    double tssfdr = 0.0;       // time step scale factor during the phase; 0 = TSSFAC
+    int64_t idrflg = 0;        // 1, -1: on; -999: off even with SIDR curves; 0: on with them
+    bool sidr_curves = false;  // a *DEFINE_CURVE with SIDR 1 or 2
+    bool active() const { return idrflg != -999 && (idrflg != 0 || sidr_curves); }
+  } relaxation;
 };
 
 // *DATABASE_CROSS_SECTION_PLANE (Keyword Manual Vol. I): a plane through `center` with

@@ -160,10 +160,11 @@ void fields(A& a, M& m) {
   a.count(
       m.curves.size(),
       [&](auto& c) {
-        util::fieldCount<3>(c);
+        util::fieldCount<4>(c);
         a(c.id);
         a(c.x);
         a(c.y);
+        a(c.sidr);
       },
       m.curves);
   a.count(

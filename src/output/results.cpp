@@ -743,6 +743,7 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
   if (!info.ignored_unsupported.empty()) j["ignored_unsupported"] = info.ignored_unsupported;
   j["end_time"] = s.time();
   j["cycles"] = s.cycle();
+  if (info.relaxation_cycles > 0) j["relaxation_cycles"] = info.relaxation_cycles;
   j["wall_s"] = info.wall_s;
   const auto& sd = s.subdomain();
   const double element_cycles = double(sd.global_elements) * double(s.cycle() - info.first_cycle);

@@ -35,6 +35,9 @@ struct RunInfo {
   // (subdomain and solver), output (results folder, log, writers; a restart's dump restored).
   std::vector<std::pair<std::string, double>> setup_phases;
   int64_t first_cycle = 0;  // a restarted run's first cycle: the rate counts this run's cycles
+  // Cycles of the dynamic-relaxation phase before the transient (summary.json
+  // "relaxation_cycles" when there was one; its time is set-up phase "relax").
+  int64_t relaxation_cycles = 0;
   // --ignore-unsupported: the features left out (summary.json "ignored_unsupported").
   std::vector<std::string> ignored_unsupported;
 };

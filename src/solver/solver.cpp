@@ -497,7 +497,8 @@ Solver::StableStep Solver::stableTimeStep(const ElementPass& pass) const {
   const int64_t element =
       controllingElement(pass.dt_elem, pass.dt_elem >= 0 && pass.dt_min == dt_global);
   // No deformable element anywhere (rigid parts only): the initial step stays.
-  double dt = dt_global >= 1e300 ? dt_initial_ : ctl.tssfac * dt_global;
+  const double tssf = dr_tssf_ > 0.0 ? dr_tssf_ : ctl.tssfac;
+  double dt = dt_global >= 1e300 ? dt_initial_ : tssf * dt_global;
   if (ctl.dt_max_curve != model::kNone)
     dt = std::min(dt, model_.curves[static_cast<std::size_t>(ctl.dt_max_curve)].value(time_));
   if (!(dt > 0.0) || !std::isfinite(dt)) {

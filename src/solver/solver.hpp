@@ -74,6 +74,27 @@ class Solver {
 
   // Masses (with mass scaling), initial velocities, the first stable time step.
   void initialize();
+  // Dynamic relaxation (*CONTROL_DYNAMIC_RELAXATION; src/solver/relax.cpp, docs/theory.md
+  // "Dynamic relaxation"): the explicit cycle on the relaxation phase's loads (SIDR, LCIDDR)
+  // with the step scaled by TSSFDR and the velocities by DRFCTR each cycle, until the
+  // distortional kinetic energy at a check (every NRCYCK cycles) is below DRTOL x its peak, or
+  // the phase's time reaches DRTERM. Then the transient starts at t = 0 from the relaxed
+  // displacements, stresses and element state, with the deck's initial velocities, and its
+  // energy balance starts there (external work 0, initial energy = the total energy then).
+  // Collective; after initialize(), before the first step.
+  struct Relaxation {
+    int64_t cycles = 0;
+    double time = 0.0;       // the phase's time at its end
+    double ratio = 0.0;      // distortional kinetic energy / peak at the last check
+    double peak = 0.0;       // the peak distortional kinetic energy
+    double energy = 0.0;     // internal + hourglass energy at the end
+    bool converged = false;  // false: DRTERM ended it
+  };
+  Relaxation relax();
+  // The kinetic energy of the deformable nodes less that of their mean translation,
+  // sum 1/2 m v.v + 1/2 I w.w - |sum m v|^2 / (2 sum m), summed exactly (the same bits for any
+  // number of ranks and threads). Collective.
+  double distortionalKineticEnergy() const;
   // Advances one cycle: t(n) -> t(n+1).
   void step();
 
@@ -180,6 +201,10 @@ class Solver {
   // Element state from the initial geometry: corner masses in the slots, element steps.
   InitialSteps initializeElements();
   void setInitialVelocities();
+  // The end of dynamic relaxation: t = 0, the initial velocities, the energy balance restarted.
+  void startTransient();
+  // v and omega of every node and rigid body scaled by `factor`.
+  void scaleVelocities(double factor);
   void checkInitialGeometry(int64_t bad) const;
   // Element masses of shells and beams (matsum), from their corner masses in the slots.
   void computeStructuralMasses();
@@ -212,6 +237,7 @@ class Solver {
 
   double time_ = 0.0, end_time_ = 0.0;
   int64_t cycle_ = 0;
+  double dr_tssf_ = 0.0;  // TSSFDR while relaxing (relax.cpp), else 0: TSSFAC
   double dt_ = 0.0;       // dt(n-1/2): the step that brought the state to time_
   double dt_next_ = 0.0;  // dt(n+1/2) from the latest element pass
   double dt_initial_ = 0.0;

@@ -261,7 +261,7 @@ TEST(Hyperelastic, CurveFitsRecoverTheCoefficients) {
 
 // Read from the deck; refused on shells (no plane-stress update) and on the fully integrated
 // hexahedron (no deformation gradient there), each naming the part and the law.
-TEST(Hyperelastic, ReadAndRefusedOnShellsAndElform2) {
+TEST(Hyperelastic, ReadOnShellsAndRefusedOnElform2) {
   crumple::testing::TempDir t("crumple_test_rubber");
   const std::string nodes =
       "*KEYWORD\n*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,0,0,1\n6,1,0,1\n7,1,1,1\n8,0,1,1\n"
@@ -274,13 +274,11 @@ TEST(Hyperelastic, ReadAndRefusedOnShellsAndElform2) {
   EXPECT_EQ(params.b, 0.2);
   EXPECT_EQ(params.nu, 0.495);
 
+  // Shells take the plane-stress update (MooneyRivlinShell* tests below).
   const auto shell = t.write("s.k", nodes +
                                         "*SECTION_SHELL\n1,2\n0.1,0.1,0.1,0.1\n"
                                         "*PART\nskin\n1,1,5\n*ELEMENT_SHELL\n1,1,1,2,3,4\n");
-  EXPECT_NE(crumple::testing::errorOf([&] { crumple::model::readModel(shell); })
-                .find("part 1 has a *SECTION_SHELL section but material 5 "
-                      "(*MAT_MOONEY-RIVLIN_RUBBER) has no plane-stress update"),
-            std::string::npos);
+  EXPECT_EQ(crumple::model::readModel(shell).shells.size(), 1u);
   const auto full = t.write("f.k", nodes +
                                        "*SECTION_SOLID\n1,2\n*PART\nrubber\n1,1,5\n"
                                        "*ELEMENT_SOLID\n1,1,1,2,3,4,5,6,7,8\n");
@@ -288,4 +286,101 @@ TEST(Hyperelastic, ReadAndRefusedOnShellsAndElform2) {
                 .find("(*MAT_MOONEY-RIVLIN_RUBBER), a hyperelastic law (a function of the "
                       "deformation gradient), which only the one-point solids"),
             std::string::npos);
+}
+
+namespace {
+
+// The in-plane stretch V = exp(e) of the logarithmic strain e (xx, yy, xy) as a 3x3 F with
+// F_33 = l3: exp of a 2x2 symmetric tensor, e^m (cosh(r) I + sinh(r) / r (e - m I)).
+Mat3 stretchOf(const double (&e)[3], double l3) {
+  const double mean = 0.5 * (e[0] + e[1]), h = 0.5 * (e[0] - e[1]);
+  const double r = std::hypot(h, e[2]);
+  const double ch = std::cosh(r), sh = r > 0.0 ? std::sinh(r) / r : 1.0, em = std::exp(mean);
+  return {em * (ch + sh * h), em * sh * e[2], 0, em * sh * e[2], em * (ch - sh * h), 0, 0, 0, l3};
+}
+
+// sigma_yy = 0 in a uniaxial membrane stretch lambda along x: e_yy by bisection.
+double uniaxialLateralStrain(const m::MooneyRivlin& law, double lambda) {
+  double lo = -std::log(lambda), hi = 0.0;
+  for (int k = 0; k < 200; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    double s[3];
+    law.planeStress({std::log(lambda), mid, 0.0}, s);
+    (s[1] > 0.0 ? hi : lo) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+// *MAT_027 on shells: the plane-stress stress at an in-plane strain is the solid law's at
+// F = diag(V, lambda_3), with sigma_33 = 0 there.
+TEST(Hyperelastic, MooneyRivlinShellIsTheSolidLawInPlaneStress) {
+  const auto law = mooney(0.5, 0.2, 0.45);
+  for (const auto& e :
+       {std::array<double, 3>{0.2, -0.05, 0.1}, {0.3, 0.3, 0.0}, {-0.1, 0.15, -0.2}}) {
+    const double ev[3] = {e[0], e[1], e[2]};
+    double s[3];
+    const double l3 = law.planeStress(ev, s);
+    const Stress solid = stressAt(law, stretchOf(ev, l3));
+    const double scale = std::fabs(s[0]) + std::fabs(s[1]) + std::fabs(s[2]);
+    EXPECT_NEAR(solid[2], 0.0, 1e-12 * scale);
+    EXPECT_NEAR(s[0], solid[0], 1e-12 * scale);
+    EXPECT_NEAR(s[1], solid[1], 1e-12 * scale);
+    EXPECT_NEAR(s[2], solid[3], 1e-12 * scale);
+  }
+}
+
+// Nearly incompressible (PR = 0.49999): the membrane's Cauchy stress against the incompressible
+// Mooney-Rivlin closed forms (Holzapfel 2000, sec. 6.5): equibiaxial
+// sigma = 2 (lambda^2 - lambda^-4)(A + B lambda^2), uniaxial sigma = 2 (lambda^2 - 1/lambda)
+// (A + B / lambda), within 1e-3; lambda_3 = 1 / (lambda_1 lambda_2).
+TEST(Hyperelastic, MooneyRivlinMembraneIncompressibleLimit) {
+  const double A = 0.5, B = 0.2;
+  const auto law = mooney(A, B, 0.49999);
+  for (double l : {1.1, 1.5, 2.0}) {
+    double s[3];
+    const double l3 = law.planeStress({std::log(l), std::log(l), 0.0}, s);
+    const double biaxial = 2.0 * (l * l - std::pow(l, -4.0)) * (A + B * l * l);
+    EXPECT_NEAR(s[0], biaxial, 1e-3 * biaxial) << "lambda " << l;
+    EXPECT_NEAR(s[1], biaxial, 1e-3 * biaxial);
+    EXPECT_NEAR(l3, 1.0 / (l * l), 1e-3 / (l * l));
+    const double eyy = uniaxialLateralStrain(law, l);
+    const double l3u = law.planeStress({std::log(l), eyy, 0.0}, s);
+    const double uniaxial = 2.0 * (l * l - 1.0 / l) * (A + B / l);
+    EXPECT_NEAR(s[0], uniaxial, 1e-3 * uniaxial) << "lambda " << l;
+    EXPECT_NEAR(std::exp(eyy), 1.0 / std::sqrt(l), 1e-3);
+    EXPECT_NEAR(l3u, 1.0 / std::sqrt(l), 1e-3);
+  }
+}
+
+// The shell update accumulates the strain increments in the points' alpha fields and returns
+// thickness increments whose product is the final lambda_3.
+TEST(Hyperelastic, MooneyRivlinShellUpdateAccumulatesStrainAndThickness) {
+  const auto law = mooney(0.5, 0.2, 0.45);
+  double s[3][1] = {}, de[3][1] = {}, al[3][1] = {}, dzz[1] = {};
+  m::PlaneStressPoints pts;
+  pts.n = 1;
+  for (int k = 0; k < 3; ++k) {
+    pts.s[k] = s[k];
+    pts.de[k] = de[k];
+    pts.alpha[k] = al[k];
+  }
+  pts.de_zz = dzz;
+  const int steps = 40;
+  double thickness = 1.0;
+  de[0][0] = 0.4 / steps;
+  de[1][0] = 0.1 / steps;
+  de[2][0] = -0.05 / steps;
+  for (int i = 0; i < steps; ++i) {
+    law.updatePlaneStress(pts);
+    thickness *= 1.0 + dzz[0];
+  }
+  double want[3];
+  const double l3 = law.planeStress({0.4, 0.1, -0.05}, want);
+  EXPECT_NEAR(al[0][0], 0.4, 1e-14);
+  EXPECT_NEAR(al[1][0], 0.1, 1e-14);
+  EXPECT_NEAR(al[2][0], -0.05, 1e-14);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(s[k][0], want[k], 1e-12);
+  EXPECT_NEAR(thickness, l3, 1e-12);
 }

@@ -143,3 +143,29 @@ TEST(Airbag, GasWorkIsExternalWorkAndBalances) {
 }
 
 }  // namespace
+
+// A bag surface given with mixed normals (every other shell of the sphere reversed, as half of
+// the LSTC airfilled sphere's are): the segments are turned to agree (build_airbag.cpp), so the
+// bag holds the same volume as the consistently oriented deck, and the turn is reported.
+TEST(Airbag, MixedNormalsAreTurnedToAgree) {
+  const std::string text = deckText();
+  std::string mixed;
+  std::istringstream in(text);
+  bool shells = false;
+  int count = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty() && line[0] == '*') shells = line == "*ELEMENT_SHELL";
+    if (shells && line.size() >= 48 && line[0] != '*' && (count++ % 2 == 1))
+      line = line.substr(0, 16) + line.substr(16, 8) + line.substr(40, 8) + line.substr(32, 8) +
+             line.substr(24, 8);
+    mixed += line + "\n";
+  }
+  auto ref = Simulation::fromText("airbag_sphere_ref", text);
+  auto sim = Simulation::fromText("airbag_sphere_mixed", mixed);
+  double v_ref = 0.0, a_ref = 0.0, v = 0.0, a = 0.0;
+  volumeAndArea(*ref, ref->sd.x0, v_ref, a_ref);
+  volumeAndArea(*sim, sim->sd.x0, v, a);
+  EXPECT_NEAR(std::fabs(v), v_ref, 1e-12 * v_ref);
+  ASSERT_FALSE(sim->model.ignored.empty());
+  EXPECT_NE(sim->model.ignored.back().reason.find("segments turned"), std::string::npos);
+}

@@ -82,4 +82,76 @@ void MooneyRivlin::update(PointBatch& p) const {
   }
 }
 
+namespace {
+
+// lambda_3^2 with sigma_33 = 0 in B = diag(b1, b2, b3): 2/J times
+//   g(b3) = b3 (A + B (b1 + b2)) + I3 W3,   I3 W3 = -2 C / (p^2 b3^2) + 2 D p b3 (p b3 - 1),
+// p = b1 b2, is zero (the b3^2 terms of (W1 + I1 W2) b3 - W2 b3^2 cancel). g rises from -inf
+// at b3 -> 0 (C > 0); Newton's method from the incompressible 1 / p inside a bracket that
+// bisection keeps.
+double thicknessSquare(double A, double B, double C, double D, double b1, double b2) {
+  const double p = b1 * b2, k = A + B * (b1 + b2);
+  auto g = [&](double x) {
+    return x * k - 2.0 * C / (p * p * x * x) + 2.0 * D * p * x * (p * x - 1.0);
+  };
+  auto dg = [&](double x) {
+    return k + 4.0 * C / (p * p * x * x * x) + 2.0 * D * p * (2.0 * p * x - 1.0);
+  };
+  double lo = 1.0 / p, hi = 1.0 / p;
+  while (g(lo) > 0.0) lo *= 0.5;
+  while (g(hi) < 0.0) hi *= 2.0;
+  double x = 1.0 / p;
+  for (int it = 0; it < 200; ++it) {
+    const double gx = g(x);
+    if (gx == 0.0) return x;
+    (gx < 0.0 ? lo : hi) = x;
+    double next = x - gx / dg(x);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::fabs(next - x) <= 1e-15 * x) return next;
+    x = next;
+  }
+  return x;
+}
+
+}  // namespace
+
+double MooneyRivlin::principalStress(double b1, double b2, double b3, double bi) const {
+  const double I1 = b1 + b2 + b3, I3 = b1 * b2 * b3, J = std::sqrt(I3);
+  const double w3 = -2.0 * c / (I3 * I3 * I3) + 2.0 * d * (I3 - 1.0);
+  return 2.0 / J * ((a + I1 * b) * bi - b * bi * bi + I3 * w3);
+}
+
+double MooneyRivlin::planeStress(const double (&e)[3], double (&s)[3]) const {
+  // Principal strains of [[exx, exy], [exy, eyy]] and the direction of the first.
+  const double mean = 0.5 * (e[0] + e[1]), half = 0.5 * (e[0] - e[1]);
+  const double r = std::hypot(half, e[2]);
+  const double theta = 0.5 * std::atan2(e[2], half);
+  const double cs = std::cos(theta), sn = std::sin(theta);
+  const double b1 = std::exp(2.0 * (mean + r)), b2 = std::exp(2.0 * (mean - r));
+  const double b3 = thicknessSquare(a, b, c, d, b1, b2);
+  const double s1 = principalStress(b1, b2, b3, b1), s2 = principalStress(b1, b2, b3, b2);
+  s[0] = s1 * cs * cs + s2 * sn * sn;
+  s[1] = s1 * sn * sn + s2 * cs * cs;
+  s[2] = (s1 - s2) * cs * sn;
+  return std::sqrt(b3);
+}
+
+void MooneyRivlin::updatePlaneStress(PlaneStressPoints& pts) const {
+  for (int i = 0; i < pts.n; ++i) {
+    double e_old[3], e_new[3], s_old[3], s_new[3];
+    for (int k = 0; k < 3; ++k) {
+      e_old[k] = pts.alpha[k][i];
+      e_new[k] = e_old[k] + pts.de[k][i];
+    }
+    const double l3_old = planeStress(e_old, s_old);
+    const double l3_new = planeStress(e_new, s_new);
+    pts.de_zz[i] = l3_new / l3_old - 1.0;
+    for (int k = 0; k < 3; ++k) {
+      pts.alpha[k][i] = e_new[k];
+      pts.s[k][i] = s_new[k];
+    }
+    if (pts.failed) pts.failed[i] = 0;
+  }
+}
+
 }  // namespace crumple::materials

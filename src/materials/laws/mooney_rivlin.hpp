@@ -10,6 +10,13 @@
 // test curve (force vs change in gauge length; SGL, SW, ST), the nominal stress of an
 // incompressible Mooney-Rivlin solid being P = 2 (lambda - lambda^-2) (A + B / lambda).
 // REF = 1 (*INITIAL_FOAM_REFERENCE_GEOMETRY) is refused.
+// Shells (plane stress): each point keeps its in-plane logarithmic strain e (xx, yy, xy in the
+// corotational element frame, the sum of the strain increments D dt: the Hencky strain of the
+// membrane when its principal axes do not turn in the element); the principal stretches
+// lambda_i = exp(e_i) give B = diag(lambda_1^2, lambda_2^2, lambda_3^2), and lambda_3 is the
+// stretch at which the stress above has sigma_33 = 0 (with the law's own compressibility D);
+// the thickness follows it (de_zz = lambda_3(new) / lambda_3(old) - 1). docs/theory.md,
+// "Mooney-Rivlin shells".
 #pragma once
 
 #include <array>
@@ -18,6 +25,7 @@
 #include <string_view>
 
 #include "materials/law.hpp"
+#include "materials/plane_stress.hpp"
 
 namespace crumple::materials {
 
@@ -29,6 +37,7 @@ struct MooneyRivlin {
   static constexpr bool kKinematic = false;
   static constexpr bool kDensity = true;
   static constexpr bool kDeformationGradient = true;
+  static constexpr bool kShellStrain = true;
 
   struct Params {
     using Law = MooneyRivlin;
@@ -43,6 +52,12 @@ struct MooneyRivlin {
   Moduli moduli;  // the small-strain K and G (wave speed, hourglass control)
   double a = 0, b = 0, c = 0, d = 0;
   void update(PointBatch& p) const;
+  void updatePlaneStress(PlaneStressPoints& pts) const;
+  // The plane-stress Cauchy stress s (xx, yy, xy) at the in-plane logarithmic strain e (xx, yy,
+  // xy; tensor shear), sigma_33 = 0; returns the thickness stretch lambda_3.
+  double planeStress(const double (&e)[3], double (&s)[3]) const;
+  // The principal Cauchy stress of the diagonal B = diag(b1, b2, b3) along axis bi.
+  double principalStress(double b1, double b2, double b3, double bi) const;
   double failureStrain() const { return 0.0; }
   double deletionStep() const { return 0.0; }
 };
