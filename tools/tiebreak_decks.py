@@ -22,7 +22,12 @@ def _node(i, j, k, upper):
     return (101 if upper else 1) + i + 3 * j + 9 * k
 
 
-def blocks(direction="z", speed=0.02, ramp=0.05, end=1.0, nfls=0.1, sfls=0.1, dt_out=0.005,
+def _ids(ids):
+    """Node ids eight a line (the card's eight fields)."""
+    return "\n".join(",".join(str(n) for n in ids[k:k + 8]) for k in range(0, len(ids), 8))
+
+
+def blocks(direction="z", speed=0.1, ramp=0.05, end=1.5, nfls=0.1, sfls=0.1, dt_out=0.005,
            nodes_to_surface=False, option=1):
     nodes, solids = {}, []
     for upper in (False, True):
@@ -87,10 +92,10 @@ upper block
 1,0,1,1,1,0,0,0
 *SET_NODE_LIST
 1
-{",".join(str(n) for n in bottom)}
+{_ids(bottom)}
 *SET_NODE_LIST
 2
-{",".join(str(n) for n in top)}
+{_ids(top)}
 *BOUNDARY_PRESCRIBED_MOTION_SET
 2,{dof},0,1,1.0
 """
@@ -98,7 +103,7 @@ upper block
         s += "*BOUNDARY_SPC_SET\n2,0,0,1,1,0,0,0\n"
     if nodes_to_surface:
         upper_bottom = [_node(i, j, 0, True) for j in range(3) for i in range(3)]
-        s += f"*SET_NODE_LIST\n3\n{','.join(str(n) for n in upper_bottom)}\n"
+        s += f"*SET_NODE_LIST\n3\n{_ids(upper_bottom)}\n"
     s += bond
     s += "*NODE\n" + "".join(f"{n},{x},{y},{z}\n" for n, (x, y, z) in sorted(nodes.items()))
     s += "*ELEMENT_SOLID\n" + "".join(",".join(str(v) for v in e) + "\n" for e in solids)
@@ -111,5 +116,5 @@ if __name__ == "__main__":
     with open(path, "w", encoding="utf-8") as f:
         # Pulled apart past the failure, the blocks then sliding back into contact is not
         # reached: short, for the rank determinism test.
-        f.write(blocks(end=0.6, dt_out=0.05))
+        f.write(blocks(end=1.2, dt_out=0.05))
     sys.stdout.write(f"wrote {path}\n")

@@ -74,8 +74,9 @@ def t_joint(merged=False, support="clamped", force=0.01, ramp=6.0, end=20.0, dam
     per = force / sum(share)
 
     def node_list(sid, ids):
-        rows = ",".join(str(n) for n in ids)
-        return f"*SET_NODE_LIST\n{sid}\n{rows}\n"
+        # Eight ids a line (the card's eight fields).
+        rows = "".join(",".join(str(n) for n in ids[k:k + 8]) + "\n" for k in range(0, len(ids), 8))
+        return f"*SET_NODE_LIST\n{sid}\n{rows}"
 
     s = f"""*KEYWORD
 *TITLE

@@ -135,8 +135,8 @@ bool tieBreaks(const Record& r, const NodeAndSegment& m, int side,
 // (docs/theory.md, "Tied shell edges"): a rotational penalty spring between the node's
 // angular velocity and the segment's at the tied point, sum N_a w_a, in rate form
 // M(n) = M(n-1) + k_r (w_seg - w_node) dt, the history turned with the pair's mean spin;
-// k_r = 0.1 I* / dt_stiff^2 (I* the pair's rotary inertia; the stability cap of the
-// translational tie; VDC damps the translation only); and the moment of the tie force about
+// k_r = 2 I* / dt_stiff^2 (I* the pair's rotary inertia, scaled so that rotations never set
+// the step; VDC damps the translation only); and the moment of the tie force about
 // the tied point, for the segment. `moment`: the history of the last cycle. No rotational
 // spring where the node or the segment has no rotary inertia (a solid).
 void addTiedMoment(Record& r, const NodeAndSegment& m, const Vec3& moment, double dt_stiff,

@@ -4,8 +4,8 @@ standing on a plate, its bottom edge tied to the plate, pushed sideways at its t
 rest by global damping.
 
   - on a rigid base (every plate node held) the strip is a cantilever: its tip deflection is
-    within 1% of the model with the edge merged into the plate (both 7.4% above cantilever
-    theory F L^3 / (3 E I): the coarse shells' own error, the same for both);
+    F L^3 / (3 E I) within 1.5% (the merged model: 0.997 of it) and within 1% of the model with
+    the edge merged into the plate;
   - on a plate held at two edges only, the moment goes into the plate's rotations: the tip
     deflection (strip bending + plate rotation) within 1% of the merged model;
   - without the rotational tie (*CONTACT_TIED_NODES_TO_SURFACE) the edge is a hinge and the
@@ -48,9 +48,7 @@ class TiedShellEdge(TempDirTest):
         tied, out = self.run_tee("tied", force=force)
         merged, _ = self.run_tee("merged", force=force, merged=True)
         theory = d.tip_deflection_theory(force)
-        # The shells themselves (4 x 10 Belytschko-Tsay) come out 7.4% more flexible than
-        # beam theory, tied or merged: that is the elements', not the tie's (not looked into).
-        self.assertAlmostEqual(merged / theory, 1.074, delta=0.01)
+        self.assertAlmostEqual(merged / theory, 1.0, delta=0.015)
         self.assertAlmostEqual(tied / merged, 1.0, delta=0.01)
         # Energy: damping takes what the load put in beyond the stored strain energy.
         glstat = rows(out, "glstat.csv")
@@ -60,8 +58,8 @@ class TiedShellEdge(TempDirTest):
         tied, _ = self.run_tee("tied_plate", support="edges")
         merged, _ = self.run_tee("merged_plate", support="edges", merged=True)
         rigid, _ = self.run_tee("merged_rigid", merged=True)
-        # The plate's rotation adds visibly to the tip deflection.
-        self.assertGreater(merged, 1.05 * rigid)
+        # The plate's rotation adds to the tip deflection (1.3% with this 2 mm plate).
+        self.assertGreater(merged, 1.01 * rigid)
         self.assertAlmostEqual(tied / merged, 1.0, delta=0.01)
 
     def test_translational_tie_alone_is_a_hinge(self):
