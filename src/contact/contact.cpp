@@ -26,9 +26,11 @@ struct Contact::Candidate {
 Contact::Contact(const model::Model& model, domain::Subdomain& sd, comm::Communicator& comm)
     : model_(model), sd_(sd), comm_(comm), partition_(comm) {
   if (model.contacts.empty()) return;
-  // Contact nodes: the union of every side's nodes and segment nodes.
+  // Contact nodes: the union of every side's nodes and segment nodes (a force transducer's
+  // are only compared with the others' records).
   for (const auto& ci : model.contacts)
     for (const auto* s : {&ci.a, &ci.b}) {
+      if (ci.kind == model::ContactKind::Transducer) break;
       cn_model_.insert(cn_model_.end(), s->nodes.begin(), s->nodes.end());
       for (const auto& seg : s->segments) cn_model_.insert(cn_model_.end(), seg.begin(), seg.end());
       for (const auto& e : s->edges) cn_model_.insert(cn_model_.end(), e.begin(), e.end());
@@ -61,9 +63,11 @@ Contact::Contact(const model::Model& model, domain::Subdomain& sd, comm::Communi
     switch (ci.kind) {
       case model::ContactKind::NodesToSurface:
         addPass(iface, ci.a, ci.b, ci.sfm, false);
+        if (ci.tiebreak.on) makeTiebreak(passes_.back(), ci.a);
         break;
       case model::ContactKind::SurfaceToSurface:
         addPass(iface, ci.a, ci.b, ci.sfm, false);
+        if (ci.tiebreak.on) makeTiebreak(passes_.back(), ci.a);
         addPass(iface, ci.b, ci.a, ci.sfs, false);
         break;
       case model::ContactKind::SingleSurface:
@@ -74,6 +78,10 @@ Contact::Contact(const model::Model& model, domain::Subdomain& sd, comm::Communi
       case model::ContactKind::Tied:
         addPass(iface, ci.a, ci.b, ci.sfm, false);
         passes_.back().tied = true;
+        passes_.back().tie_rotations = ci.tie_rotations;
+        rotations_ = rotations_ || (ci.tie_rotations && sd.rotations);
+        break;
+      case model::ContactKind::Transducer:
         break;
     }
   }
@@ -89,6 +97,11 @@ Contact::Contact(const model::Model& model, domain::Subdomain& sd, comm::Communi
   tie_seg_.assign(std::size_t(num_checks_), -1);
   tie_weight_.assign(std::size_t(num_checks_), {});
   tie_offset_.assign(std::size_t(num_checks_), 0.0);
+  tie_moment_.assign(3 * std::size_t(num_checks_), 0.0);
+  if (rotations_) {
+    w_.assign(3 * ncn, 0.0);
+    inertia_.assign(ncn, 0.0);
+  }
   stored_.assign(model.contacts.size(), 0.0);
   dissipated_.assign(model.contacts.size(), 0.0);
 }
@@ -142,6 +155,37 @@ void Contact::addPass(int32_t iface, const model::ContactSurface& nodes,
   registerPass(std::move(p));
 }
 
+void Contact::makeTiebreak(Pass& p, const model::ContactSurface& nodes) {
+  p.tied = true;
+  p.tiebreak = true;
+  for (const auto& s : nodes.segments) {
+    std::array<int32_t, 4> f{};
+    for (std::size_t a = 0; a < 4; ++a) {
+      const auto it = std::lower_bound(nodes.nodes.begin(), nodes.nodes.end(), s[a]);
+      f[a] = it != nodes.nodes.end() && *it == s[a] ? int32_t(it - nodes.nodes.begin()) : -1;
+    }
+    p.own_faces.push_back(f);
+  }
+}
+
+void Contact::bondAreas(Pass& p) {
+  // The faces of the bond: those whose corners are all tied, their area shared among the
+  // corners (a node set side has none: with failure stresses its nodes hold nothing).
+  p.node_area.assign(p.node.size(), 0.0);
+  for (const auto& f : p.own_faces) {
+    const bool tri = f[2] == f[3];
+    const std::size_t n = tri ? 3 : 4;
+    bool bonded = true;
+    for (std::size_t a = 0; a < n; ++a)
+      bonded = bonded && f[a] >= 0 && tie_seg_[std::size_t(p.first_check + f[a])] >= 0;
+    if (!bonded) continue;
+    auto xa = [&](std::size_t a) { return at(x_, std::size_t(p.node[std::size_t(f[a])])); };
+    const Vec3 c = cross(sub(xa(2), xa(0)), sub(xa(3), xa(1)));
+    const double share = 0.5 * norm(c) / double(n);
+    for (std::size_t a = 0; a < n; ++a) p.node_area[std::size_t(f[a])] += share;
+  }
+}
+
 void Contact::registerPass(Pass p) {
   num_checks_ += int32_t(p.node.size());
   for (int32_t node : p.node) {
@@ -158,6 +202,7 @@ struct OwnedNode {
   int32_t owner = 0;
   int32_t node = 0;  // contact node index
   Vec3 x{}, v{}, x_prev{};
+  Vec3 w{};  // angular velocity (rotational ties; else 0)
 };
 }  // namespace
 
@@ -167,7 +212,8 @@ void Contact::gatherNodes() {
   for (std::size_t i = 0; i < cn_model_.size(); ++i) {
     if (!cn_owned_[i]) continue;
     const auto l = std::size_t(cn_local_[i]);
-    mine.push_back({comm_.rank(), int32_t(i), at(sd_.x, l), at(sd_.v, l), at(x_owned_prev_, i)});
+    mine.push_back({comm_.rank(), int32_t(i), at(sd_.x, l), at(sd_.v, l), at(x_owned_prev_, i),
+                    rotations_ ? at(sd_.w, l) : Vec3{}});
   }
   for (const OwnedNode& n : comm_.allGather(mine)) {
     const auto i = std::size_t(n.node);
@@ -176,6 +222,7 @@ void Contact::gatherNodes() {
       x_[3 * i + c] = n.x[c];
       v_[3 * i + c] = n.v[c];
       x_prev_[3 * i + c] = n.x_prev[c];
+      if (rotations_) w_[3 * i + c] = n.w[c];
     }
   }
 }
@@ -189,9 +236,16 @@ void Contact::gatherNeeded() {
     for (int c = 0; c < 3; ++c) {
       x_[3 * std::size_t(i) + std::size_t(c)] = sd_.x[3 * l + std::size_t(c)];
       v_[3 * std::size_t(i) + std::size_t(c)] = sd_.v[3 * l + std::size_t(c)];
+      if (rotations_) w_[3 * std::size_t(i) + std::size_t(c)] = sd_.w[3 * l + std::size_t(c)];
     }
   }
-  // Positions and velocities together, one message per owner.
+  // Positions and velocities together (and angular velocities for rotational ties), one
+  // message per owner.
+  if (rotations_) {
+    needed_.begin({sd_.x, sd_.v, sd_.w});
+    needed_.end({x_, v_, w_});
+    return;
+  }
   needed_.begin({sd_.x, sd_.v});
   needed_.end({x_, v_});
 }
@@ -201,11 +255,18 @@ void Contact::gatherMasses() {
   struct NodeMass {
     int64_t node = 0;  // contact node index (64 bits: no padding travels)
     double mass = 0.0;
+    double inertia = 0.0;  // rotary inertia (rotational ties)
   };
   std::vector<NodeMass> mine;
   for (std::size_t i = 0; i < cn_model_.size(); ++i)
-    if (cn_owned_[i]) mine.push_back({int64_t(i), sd_.mass[std::size_t(cn_local_[i])]});
-  for (const NodeMass& n : comm_.allGather(mine)) mass_[std::size_t(n.node)] = n.mass;
+    if (cn_owned_[i]) {
+      const auto l = std::size_t(cn_local_[i]);
+      mine.push_back({int64_t(i), sd_.mass[l], rotations_ ? sd_.inertia[l] : 0.0});
+    }
+  for (const NodeMass& n : comm_.allGather(mine)) {
+    mass_[std::size_t(n.node)] = n.mass;
+    if (rotations_) inertia_[std::size_t(n.node)] = n.inertia;
+  }
 }
 
 void Contact::buildRoutes() {
@@ -252,7 +313,7 @@ void Contact::buildRoutes() {
     if (owner == comm_.rank()) peers[std::size_t(who)].send.push_back(cn_local_[std::size_t(node)]);
     if (who == comm_.rank()) peers[std::size_t(owner)].recv.push_back(node);
   }
-  needed_ = comm::Exchange(comm_, std::move(peers), 3, 2);
+  needed_ = comm::Exchange(comm_, std::move(peers), 3, rotations_ ? 3 : 2);
 }
 
 void Contact::sortAll() {
@@ -499,9 +560,10 @@ void Contact::initialize(double dt0) {
   search_.updateBoxes(passes_, x_, false);
   for (std::size_t pass = 0; pass < passes_.size(); ++pass) {
     const Pass& p = passes_[pass];
-    if (p.tied)
-      tieNodes(pass, model_.contacts[std::size_t(p.iface)].offset);
-    else if (p.edges)
+    if (p.tied) {  // tiebreak: tied where they are
+      tieNodes(pass, p.tiebreak || model_.contacts[std::size_t(p.iface)].offset);
+      if (p.tiebreak) bondAreas(passes_[pass]);
+    } else if (p.edges)
       listInitialEdgeOverlaps(pass);
     else if (p.segpairs)
       listInitialSegmentOverlaps(pass);
@@ -550,6 +612,13 @@ NodeAndSegment Contact::nodeAndSegment(std::size_t node, const std::array<int32_
     m.m_seg[a] = mass_[n];
   }
   m.triangle = seg[3] == seg[2];
+  if (!rotations_) return m;
+  m.w_node = at(w_, node);
+  m.i_node = inertia_[node];
+  for (std::size_t a = 0; a < 4; ++a) {
+    m.w_seg[a] = at(w_, std::size_t(seg[a]));
+    m.i_seg[a] = inertia_[std::size_t(seg[a])];
+  }
   return m;
 }
 
@@ -562,13 +631,19 @@ std::optional<Record> Contact::checkOne(std::size_t i, double time, double dt_pr
   const auto& ci = model_.contacts[std::size_t(p.iface)];
   if (time < ci.birth || time > ci.death) return std::nullopt;
   const auto node = std::size_t(check_node_[c]);
-  if (p.tied) {
+  if (p.tied && (!p.tiebreak || tie_seg_[c] >= 0)) {
     const int32_t s = tie_seg_[c];
     if (s < 0) return std::nullopt;
     // A tie is as stiff as the elements it joins: the penalty without SLSFAC.
-    return tiedForce(
-        check, s, tie_weight_[c], tie_offset_[c], nodeAndSegment(node, p.seg[std::size_t(s)]),
-        p.seg_k[std::size_t(s)] / model_.contact_controls.slsfac, ci, dt_stiff_, dt_prev);
+    const NodeAndSegment m = nodeAndSegment(node, p.seg[std::size_t(s)]);
+    Record r =
+        tiedForce(check, s, tie_weight_[c], tie_offset_[c], m,
+                  p.seg_k[std::size_t(s)] / model_.contact_controls.slsfac, ci, dt_stiff_, dt_prev);
+    if (p.tie_rotations && rotations_) addTiedMoment(r, m, at(tie_moment_, c), dt_stiff_, dt_prev);
+    if (p.tiebreak)
+      r.released = tieBreaks(r, m, tie_offset_[c] >= 0.0 ? 1 : -1, ci.tiebreak,
+                             p.node_area[c - std::size_t(p.first_check)]);
+    return r;
   }
   auto best = chooseSegment(pass, check, search_.candidates(i), tests, false);
   if (!best) return std::nullopt;
@@ -656,6 +731,7 @@ bool Contact::sortIfDue() {
         (max_sort_interval_ > 0 && cycles_since_sort_ >= max_sort_interval_)))
     return false;
   cycles_since_sort_ = 0;
+  need_sort_ = false;
   // Every node, from its owner (with its position of the last pass, for the crossing rule);
   // serially too: serial is one rank.
   gatherNodes();
@@ -726,7 +802,10 @@ void Contact::applyRecords() {
   // the cycle's hot path, and most checks are never in contact), then set from the records.
   for (const int32_t c : in_contact_) {
     const auto check = std::size_t(c);
-    for (std::size_t k = 0; k < 3; ++k) friction_[3 * check + k] = 0.0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      friction_[3 * check + k] = 0.0;
+      tie_moment_[3 * check + k] = 0.0;
+    }
     last_seg_[check] = -1;
     last_side_[check] = 0;
     entry_[check] = 0.0;
@@ -740,7 +819,15 @@ void Contact::applyRecords() {
     const Pass& p = passes_[std::size_t(check_pass_[check])];
     const auto seg = std::size_t(r.segment);
     const auto& sn = p.seg[seg];
-    stored_[std::size_t(p.iface)] += r.energy;
+    if (r.released) {
+      // The bond is gone from the next cycle on: its spring's energy stays in the contact
+      // energy (as work done on the interface), the check searches like any other.
+      dissipated_[std::size_t(p.iface)] += r.energy;
+      tie_seg_[check] = -1;
+      need_sort_ = true;
+    } else {
+      stored_[std::size_t(p.iface)] += r.energy;
+    }
     dissipated_[std::size_t(p.iface)] += r.dissipated;
     notePenetration(p, r);
     if (p.edges) {
@@ -762,6 +849,7 @@ void Contact::applyRecords() {
       if (a == 3 && sn[3] == sn[2]) break;
       addNodeForce(sn[a], segmentReaction(r, a));
     }
+    if (p.tie_rotations) applyTiedMoment(p, r);
   }
   bookEndedSegmentPairs();
 }
@@ -784,6 +872,26 @@ void Contact::bookEndedSegmentPairs() {
     if (p.segpairs && !findEdgePair(e.check, e.segment))
       dissipated_[std::size_t(p.iface)] += e.energy + 0.5 * e.dissipated;
   }
+}
+
+void Contact::applyTiedMoment(const Pass& p, const Record& r) {
+  // The node takes the rotational spring's moment, the segment's nodes -N_a of it and of the
+  // moment of the tie force about the tied point (penalty.hpp, Record::arm).
+  const auto check = std::size_t(r.check);
+  for (std::size_t c = 0; c < 3; ++c) tie_moment_[3 * check + c] = r.moment[c];
+  addNodeMoment(check_node_[check], r.moment);
+  const auto& sn = p.seg[std::size_t(r.segment)];
+  const Vec3 total = add(r.moment, r.arm);
+  for (std::size_t a = 0; a < 4; ++a) {
+    if (a == 3 && sn[3] == sn[2]) break;
+    addNodeMoment(sn[a], scale(total, -r.N[a]));
+  }
+}
+
+void Contact::addNodeMoment(int32_t node, const Vec3& m) {
+  const int32_t l = cn_local_[std::size_t(node)];
+  if (l < 0 || !sd_.rotations) return;
+  for (std::size_t c = 0; c < 3; ++c) sd_.moment[3 * std::size_t(l) + c] += m[c];
 }
 
 void Contact::addNodeForce(int32_t node, const Vec3& f) {
@@ -831,7 +939,49 @@ std::vector<InterfaceForces> Contact::interfaceForces() const {
     }
     ++o.pairs;
   }
+  for (std::size_t i = 0; i < out.size(); ++i)
+    if (model_.contacts[i].kind == model::ContactKind::Transducer) measure(i, out[i]);
   return out;
+}
+
+void Contact::measure(std::size_t iface, InterfaceForces& o) const {
+  // The node-to-segment records of the other interfaces between the transducer's sides (the
+  // force on side A's nodes, minus it on B's), or on side A alone when B is empty (its nodes'
+  // forces and their segments' reactions). Beam edge and segment pair records are not seen.
+  const auto& ci = model_.contacts[iface];
+  auto in = [&](const model::ContactSurface& s, int32_t cn) {
+    return std::binary_search(s.nodes.begin(), s.nodes.end(), cn_model_[std::size_t(cn)]);
+  };
+  const bool one_side = ci.b.nodes.empty();
+  o = InterfaceForces{ci.id, {}, {}, 0.0, 0};
+  for (const Record& r : records_) {
+    const Pass& p = passes_[std::size_t(check_pass_[std::size_t(r.check)])];
+    if (p.edges || p.segpairs) continue;
+    const int32_t node = check_node_[std::size_t(r.check)];
+    const auto& sn = p.seg[std::size_t(r.segment)];
+    const std::size_t corners = sn[2] == sn[3] ? 3 : 4;
+    auto all_in = [&](const model::ContactSurface& s) {
+      return std::all_of(sn.begin(), sn.begin() + std::ptrdiff_t(corners),
+                         [&](int32_t a) { return in(s, a); });
+    };
+    Vec3 f{};
+    if (one_side) {
+      if (in(ci.a, node)) f = r.force;
+      for (std::size_t a = 0; a < corners; ++a)
+        if (in(ci.a, sn[a])) f = add(f, segmentReaction(r, a));
+    } else if (in(ci.a, node) && all_in(ci.b)) {
+      f = r.force;
+    } else if (in(ci.b, node) && all_in(ci.a)) {
+      f = scale(r.force, -1.0);
+    } else {
+      continue;
+    }
+    for (std::size_t c = 0; c < 3; ++c) {
+      o.side_a[c] += f[c];
+      if (!one_side) o.side_b[c] -= f[c];
+    }
+    ++o.pairs;
+  }
 }
 
 std::vector<char> Contact::saveState() const {
@@ -883,7 +1033,6 @@ void Contact::loadState(const std::vector<char>& bytes) {
     if (cn_owned_[i])
       for (int c = 0; c < 3; ++c)
         x_owned_prev_[3 * i + std::size_t(c)] = x_[3 * i + std::size_t(c)];
-  need_sort_ = false;
 }
 
 }  // namespace crumple::contact

@@ -79,6 +79,9 @@ class Contact {
   // have dissipated. Every rank holds every record, so these are the same on every rank.
   double energy() const;
   std::vector<InterfaceForces> interfaceForces() const;
+  // A force transducer's resultants (*CONTACT_FORCE_TRANSDUCER_PENALTY) from the other
+  // interfaces' records.
+  void measure(std::size_t iface, InterfaceForces& o) const;
   const std::vector<InitialPenetration>& initialPenetrations() const { return initial_; }
   bool movedInitialPenetrations() const { return moved_initial_; }
   const Statistics& statistics() const { return stats_; }
@@ -111,9 +114,16 @@ class Contact {
     f(stats_.max_penetration_ratio);
     f(dt_stiff_);
     f(edge_pairs_);
+    f(tie_moment_);
+    f(tie_seg_);    // tiebreak: -1 once the bond has failed
+    f(need_sort_);  // a bond failed last cycle: its node searches from the next sort on
   }
   struct Candidate;
   int32_t contactNode(int32_t model_node) const;
+  // Makes pass p (its nodes from `nodes`) a tiebreak pass: tied until the bond fails.
+  void makeTiebreak(Pass& p, const model::ContactSurface& nodes);
+  // After the ties: the area of each node of tiebreak pass p on the bond (Pass::node_area).
+  void bondAreas(Pass& p);
   // Appends a pass, numbering its checks after the others'.
   void registerPass(Pass p);
   // The checks of `nodes` against the segments of `segs`, their penalty scaled by sf (SFS or
@@ -148,6 +158,10 @@ class Contact {
   void listInitialEdgeOverlaps(std::size_t pass);
   // f added to contact node `node` where this rank holds it.
   void addNodeForce(int32_t node, const Vec3& f);
+  // A moment added to contact node `node` where this rank holds it (rotational ties).
+  void addNodeMoment(int32_t node, const Vec3& m);
+  // The moments of a rotational tie's record on its node and segment nodes.
+  void applyTiedMoment(const Pass& p, const Record& r);
   // The largest penetration ratio of the statistics, with record r of pass p.
   void notePenetration(const Pass& p, const Record& r);
   // The forces of an edge record on the four nodes of its pair.
@@ -212,6 +226,11 @@ class Contact {
   // Positions and velocities (3 per node) of the nodes this rank reads, all of them after a
   // sort; masses (1 per node) of all.
   std::vector<double> x_, v_, mass_;
+  // Rotational ties (tied shell edges, spot welds; only when some interface has them and the
+  // model has rotational freedoms): angular velocities (3 per node, read as x_ and v_ are)
+  // and rotary inertias (1 per node, of all).
+  bool rotations_ = false;
+  std::vector<double> w_, inertia_;
   std::vector<int32_t> owner_;         // rank owning each contact node
   std::vector<double> x_owned_prev_;   // owned nodes: position at the last contact pass
   std::vector<int32_t> needed_local_;  // nodes read between sorts that this rank holds
@@ -228,6 +247,7 @@ class Contact {
   std::vector<int32_t> tie_seg_;
   std::vector<std::array<double, 4>> tie_weight_;
   std::vector<double> tie_offset_;
+  std::vector<double> tie_moment_;  // rotational ties: the moment of the last cycle, 3 per check
   std::vector<Pass> passes_;
   int32_t num_checks_ = 0;
   std::vector<int32_t> check_pass_;  // pass of each global check

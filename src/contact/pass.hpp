@@ -11,9 +11,17 @@ namespace crumple::contact {
 // Contact nodes are numbered over every interface, in ascending model index ("cn" numbering);
 // a check is one node of a pass against that pass's segments, numbered over every pass.
 struct Pass {
-  int32_t iface = 0;                        // index into Model::contacts
-  bool self = false;                        // single surface: skip segments next to the node
-  bool tied = false;                        // nodes held to the point of the segment they start on
+  int32_t iface = 0;           // index into Model::contacts
+  bool self = false;           // single surface: skip segments next to the node
+  bool tied = false;           // nodes held to the point of the segment they start on
+  bool tie_rotations = false;  // tied: the node's rotation held to the segment's too (moments)
+  // Tied until the bond fails, then ordinary contact (ContactInterface::tiebreak): the faces of
+  // the checks' own surface (as local check indices; -1 a corner not among them) and the area
+  // of each check's node on the bond, a quarter of each quadrilateral (a third of each
+  // triangle) whose corners are all tied, for failure stresses.
+  bool tiebreak = false;
+  std::vector<std::array<int32_t, 4>> own_faces;
+  std::vector<double> node_area;
   int32_t first_check = 0;                  // global index of the first check
   std::vector<int32_t> node;                // contact node of each check
   std::vector<double> node_half;            // half shell thickness at the node

@@ -14,6 +14,10 @@ namespace {
 // step, raised when the step grows), never the current one: a cap that rose when the step fell
 // would multiply the force of every penetration already there in one cycle, and make energy.
 constexpr double kStableFraction = 0.1;
+// The rotational tie (addTiedMoment): the shells' rotary inertia is scaled up so that their
+// rotations never set the step, which leaves room for a stiffer spring than the translational
+// cap; at 0.1 the tied edge of a T-joint was 13% more flexible than the merged joint.
+constexpr double kRotationalFraction = 2.0;
 
 // m* = m_node m_seg / (m_node + m_seg), the mass of the node-segment pair.
 double pairMass(double m_node, double m_seg) {
@@ -131,6 +135,44 @@ Record tiedForce(int32_t check, int32_t segment, const std::array<double, 4>& N,
   r.energy = 0.5 * k * gap * gap;
   r.dissipated = dissipated;
   return r;
+}
+
+bool tieBreaks(const Record& r, const NodeAndSegment& m, int side,
+               const model::ContactInterface::Tiebreak& tb, double area) {
+  const Vec3 n = segmentNormal(m.x_seg[0], m.x_seg[1], m.x_seg[2], m.x_seg[3]);
+  // The force on the node pulls it back towards the segment when the bond is in tension.
+  const double along = dot(r.force, n);
+  const double tension = std::max(0.0, -side * along);
+  const double shear = norm(sub(r.force, scale(n, along)));
+  const double scale_by = tb.stress ? area : 1.0;
+  const double fn = tb.normal * scale_by, fs = tb.shear * scale_by;
+  if (!(fn > 0.0) || !(fs > 0.0)) return true;  // a node with no area holds nothing
+  return std::pow(tension / fn, tb.nen) + std::pow(shear / fs, tb.mes) >= 1.0;
+}
+
+void addTiedMoment(Record& r, const NodeAndSegment& m, const Vec3& moment, double dt_stiff,
+                   double dt_prev) {
+  Vec3 xc{}, wc{};
+  double i_seg = 0.0;
+  for (std::size_t a = 0; a < 4; ++a) {
+    if (a == 3 && m.triangle) break;
+    xc = add(xc, scale(m.x_seg[a], r.N[a]));
+    wc = add(wc, scale(m.w_seg[a], r.N[a]));
+    i_seg += r.N[a] * m.i_seg[a];
+  }
+  // The force acts at the node, its reaction at the tied point: their moment goes to the
+  // segment's nodes as moments (the nodes of a solid have none to take it).
+  r.arm = cross(sub(m.x_node, xc), r.force);
+  const double i_eff = pairMass(m.i_node, i_seg);
+  if (!(m.i_node > 0.0) || !(i_seg > 0.0) || !(dt_stiff > 0.0)) return;
+  const double k = kRotationalFraction * i_eff / (dt_stiff * dt_stiff);
+  const Vec3 dw = sub(wc, m.w_node);
+  // The stored moment turns with the pair (objective under a rigid spin of the joint).
+  const Vec3 spin = scale(add(wc, m.w_node), 0.5);
+  Vec3 mo = add(moment, scale(cross(spin, moment), dt_prev));
+  mo = add(mo, scale(dw, k * dt_prev));
+  r.moment = mo;
+  r.energy += 0.5 * dot(mo, mo) / k;
 }
 
 }  // namespace crumple::contact

@@ -34,6 +34,12 @@ struct Record {
   // Segment pairs: the weights of the check's segment nodes at its contact point; they take
   // M_a `force`, the other segment's nodes -N_a force.
   std::array<double, 4> M{};
+  // Rotational ties (tied shell edges, spot welds): the moment on the node, its history for
+  // the next cycle; the segment's nodes take -N_a (moment + arm), arm the moment of `force`
+  // about the tied point (x_node - sum N_a x_a) x force, so that the pair's moments sum to zero.
+  Vec3 moment{};
+  Vec3 arm{};
+  int8_t released = 0;  // tiebreak: the bond failed this cycle (ordinary contact from the next)
 };
 
 // The fields of a record in wire order (records travel between ranks as doubles, one per
@@ -53,6 +59,9 @@ constexpr void forEachField(R& r, F&& f) {
   f(r.entry);
   f(r.edge_s);
   for (auto& m : r.M) f(m);
+  for (auto& c : r.moment) f(c);
+  for (auto& c : r.arm) f(c);
+  f(r.released);
 }
 
 constexpr std::size_t recordDoubles() {
@@ -81,6 +90,12 @@ struct NodeAndSegment {
   std::array<Vec3, 4> x_seg{}, v_seg{};
   std::array<double, 4> m_seg{};
   bool triangle = false;
+  // Rotational ties only: angular velocities and rotary inertias (0 where a node has no
+  // rotational freedom).
+  Vec3 w_node{};
+  double i_node = 0.0;
+  std::array<Vec3, 4> w_seg{};
+  std::array<double, 4> i_seg{};
 };
 
 // A node the search found penetrating a segment.
@@ -109,5 +124,22 @@ Record penaltyForce(const Penetration& p, const NodeAndSegment& m, double stiffn
 Record tiedForce(int32_t check, int32_t segment, const std::array<double, 4>& N, double offset,
                  const NodeAndSegment& m, double stiffness, const model::ContactInterface& ci,
                  double dt_stiff, double dt_prev);
+
+// Whether the tie of record r (tiedForce) breaks: (f_n / N)^nen + (f_s / S)^mes >= 1, f_n the
+// tensile part of the force along the segment normal (the node on side `side` of it), f_s the
+// rest, N and S the interface's failure forces (times `area` when they are stresses).
+bool tieBreaks(const Record& r, const NodeAndSegment& m, int side,
+               const model::ContactInterface::Tiebreak& tb, double area);
+
+// Adds to a tied record (tiedForce) the rotational tie of a shell edge or spot weld node
+// (docs/theory.md, "Tied shell edges"): a rotational penalty spring between the node's
+// angular velocity and the segment's at the tied point, sum N_a w_a, in rate form
+// M(n) = M(n-1) + k_r (w_seg - w_node) dt, the history turned with the pair's mean spin;
+// k_r = 2 I* / dt_stiff^2 (I* the pair's rotary inertia, scaled so that rotations never set
+// the step; VDC damps the translation only); and the moment of the tie force about
+// the tied point, for the segment. `moment`: the history of the last cycle. No rotational
+// spring where the node or the segment has no rotary inertia (a solid).
+void addTiedMoment(Record& r, const NodeAndSegment& m, const Vec3& moment, double dt_stiff,
+                   double dt_prev);
 
 }  // namespace crumple::contact

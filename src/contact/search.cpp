@@ -253,7 +253,9 @@ void BucketSearch::buildCandidateLists(const std::vector<Pass>& passes,
     const auto check = std::size_t(checks[i]);
     const auto pass = std::size_t(check_pass[check]);
     const Pass& p = passes[pass];
-    if (!p.tied) collectCandidates(p, pass, int32_t(check), 1.1 * margin_, x, cand_seg_);
+    // A tiebreak check whose bond has failed (or never formed) is an ordinary one.
+    if (!p.tied || (p.tiebreak && tie_seg[check] < 0))
+      collectCandidates(p, pass, int32_t(check), 1.1 * margin_, x, cand_seg_);
     cand_ptr_.push_back(int32_t(cand_seg_.size()));
     // Only checks that can meet something before the next sort are visited each cycle.
     if (cand_ptr_[i + 1] > cand_ptr_[i] || (p.tied && tie_seg[check] >= 0))

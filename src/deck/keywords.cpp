@@ -274,6 +274,12 @@ std::vector<KeywordSpec> makeTables() {
         {"card 3",
          {R("SFS", 1, Z), R("SFM", 1, Z), R("SST"), R("MST"), R("SFST", 1, Z), R("SFMT", 1, Z),
           R("FSF", 1, Z), R("VSF", 1, Z)}},
+        // _TIEBREAK: the card after card 3 (Keyword Manual, *CONTACT, tiebreak cards):
+        // AUTOMATIC_..._TIEBREAK's failure stresses, TIEBREAK_NODES_TO_SURFACE's forces.
+        {"tiebreak card",
+         {I("OPTION", 1, Z), R("NFLS"), R("SFLS"), R("PARAM"), R("ERATEN"), R("ERATES"), R("CT2CN"),
+          R("CN")}},
+        {"tiebreak force card", {R("NFLF"), R("SFLF"), R("NEN", 2, Z), R("MES", 2, Z)}},
         {"card A",
          {I("SOFT"), R("SOFSCL", 0.1, Z), I("LCIDAB"), R("MAXPAR", 1.025, Z), R("SBOPT"),
           I("DEPTH"), I("BSORT"), I("FRCFRQ", 1, Z)}},

@@ -362,6 +362,33 @@ void readCardC(const Card& cc, const Card& ca, ContactInterface& ci) {
   if (ci.dtstif < 0.0) cc.fail("DTSTIF", "a time step from a curve (< 0) is not supported");
 }
 
+// The tiebreak card (Keyword Manual, *CONTACT_..._TIEBREAK): OPTION 1 of the automatic type
+// (failure stresses NFLS, SFLS; the exponents 2), or the failure forces NFLF, SFLF and the
+// exponents NEN, MES of TIEBREAK_NODES_TO_SURFACE.
+void readTiebreak(Context& ctx, CardCursor& cur, ContactInterface& ci) {
+  const auto& spec = keywordSpec("*CONTACT");
+  auto& tb = ci.tiebreak;
+  const char* normal = tb.stress ? "NFLS" : "NFLF";
+  const char* shear = tb.stress ? "SFLS" : "SFLF";
+  const Card& c = cur.read(spec.card(tb.stress ? "tiebreak card" : "tiebreak force card"));
+  if (tb.stress) {
+    const int64_t option = c.integer("OPTION");
+    if (option != 1)
+      ctx.reject(c, "OPTION",
+                 "only OPTION 1 (tied until the stress criterion, then penalty contact) is "
+                 "supported");
+  } else {
+    tb.nen = c.real("NEN");
+    tb.mes = c.real("MES");
+    if (!(tb.nen > 0.0)) c.fail("NEN", "must be positive");
+    if (!(tb.mes > 0.0)) c.fail("MES", "must be positive");
+  }
+  tb.normal = c.real(normal);
+  tb.shear = c.real(shear);
+  if (!(tb.normal > 0.0)) c.fail(normal, "the failure value must be positive");
+  if (!(tb.shear > 0.0)) c.fail(shear, "the failure value must be positive");
+}
+
 }  // namespace
 
 void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
@@ -378,7 +405,11 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
   ContactInterface ci;
   if (name == "*CONTACT_NODES_TO_SURFACE") {
     ci.kind = ContactKind::NodesToSurface;
-  } else if (name == "*CONTACT_AUTOMATIC_NODES_TO_SURFACE") {
+  } else if (name == "*CONTACT_AUTOMATIC_NODES_TO_SURFACE" ||
+             name == "*CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE") {
+    // ONE_WAY_SURFACE_TO_SURFACE (Keyword Manual, *CONTACT): the nodes of the SURFA segments
+    // against the SURFB segments only, with the automatic search (both sides of shells, the
+    // contact thickness): what the automatic nodes-to-surface pass does.
     ci.kind = ContactKind::NodesToSurface;
     ci.automatic = true;
   } else if (name == "*CONTACT_SURFACE_TO_SURFACE") {
@@ -397,6 +428,33 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
              name == "*CONTACT_TIED_SURFACE_TO_SURFACE_OFFSET") {
     ci.kind = ContactKind::Tied;
     ci.offset = name.find("_OFFSET") != std::string::npos;
+  } else if (name == "*CONTACT_TIED_SHELL_EDGE_TO_SURFACE" ||
+             name == "*CONTACT_TIED_SHELL_EDGE_TO_SURFACE_OFFSET" ||
+             name == "*CONTACT_TIED_SHELL_EDGE_TO_SURFACE_BEAM_OFFSET" ||
+             name == "*CONTACT_SPOTWELD") {
+    // Keyword Manual, *CONTACT_TIED_SHELL_EDGE_TO_SURFACE: the SURFA nodes (shell edges, beam
+    // ends) are tied in translation and rotation, so the tie carries moments; _OFFSET and
+    // _BEAM_OFFSET keep the initial gap (the moment of the force about it goes to the
+    // segment). *CONTACT_SPOTWELD ties weld beam ends to the sheets alike (docs/theory.md,
+    // "Tied shell edges").
+    ci.kind = ContactKind::Tied;
+    ci.offset = name.find("_OFFSET") != std::string::npos;
+    ci.tie_rotations = true;
+  } else if (name == "*CONTACT_FORCE_TRANSDUCER_PENALTY" ||
+             name == "*CONTACT_FORCE_TRANSDUCER_CONSTRAINT") {
+    // Keyword Manual, *CONTACT_FORCE_TRANSDUCER_PENALTY: measures the contact forces between
+    // its surfaces that the other interfaces find; it adds none (docs/theory.md, "Force
+    // transducers"). Friction, scale factors and optional cards do nothing here.
+    ci.kind = ContactKind::Transducer;
+  } else if (name == "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK" ||
+             name == "*CONTACT_TIEBREAK_NODES_TO_SURFACE") {
+    // The SURFA nodes that touch SURFB are tied (where they are) until the bond fails, then
+    // the interface is the ordinary one: two-way for the surface-to-surface type.
+    ci.kind = name == "*CONTACT_TIEBREAK_NODES_TO_SURFACE" ? ContactKind::NodesToSurface
+                                                           : ContactKind::SurfaceToSurface;
+    ci.automatic = ci.kind == ContactKind::SurfaceToSurface;
+    ci.tiebreak.on = true;
+    ci.tiebreak.stress = ci.kind == ContactKind::SurfaceToSurface;
   } else {
     ctx.reportUnsupported(kw, "contact type not supported");
     return;
@@ -432,6 +490,7 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
   const Card& c1 = cur.read(spec.card("card 1"));
   const Card& c2 = cur.readOptional(spec.card("card 2"));
   const Card& c3 = cur.readOptional(spec.card("card 3"));
+  if (ci.tiebreak.on) readTiebreak(ctx, cur, ci);
   const Card& ca = cur.readOptional(spec.card("card A"));
   if (!cur.atEnd()) cur.read(spec.card("card B"));
   if (!cur.atEnd()) readCardC(cur.read(spec.card("card C")), ca, ci);
@@ -462,7 +521,10 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
   ci.soft = int(ca.integer("SOFT"));
   if (ci.soft < 0 || ci.soft > 2) ctx.reject(ca, "SOFT", "only SOFT 0, 1 and 2 are supported");
   ci.sofscl = ca.real("SOFSCL");
-  if (ci.soft == 2) readSegmentBased(ctx, kw, ca, ci);
+  if (ci.soft == 2 && ci.tiebreak.on)
+    ctx.reject(ca, "SOFT", "SOFT = 2 (segment-based contact) is not supported with a tiebreak");
+  else if (ci.soft == 2)
+    readSegmentBased(ctx, kw, ca, ci);
   ci.bsort = int(ca.integer("BSORT"));
   if (ci.bsort < 0) ca.fail("BSORT", "must not be negative");
   if (ci.sofscl <= 0) ca.fail("SOFSCL", "must be positive");
@@ -477,9 +539,21 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
     if (a.nodes_only) c1.fail("SSTYP", "a single surface needs segments, not a node set");
     if (c1.integer("MSID") != 0 || c1.integer("MSTYP") != 0)
       ctx.ignore(kw.name, "MSID", "a single surface has one side", c1.where());
-  } else {
+  } else if (ci.kind != ContactKind::Transducer || c1.integer("MSID") != 0 ||
+             c1.integer("MSTYP") != 0) {
     b = readSide(ctx, c1, "MSID", "MSTYP", false);
     applyBox(ctx, c1, "MBOXID", b);
+  }
+  if (ci.kind == ContactKind::Transducer) {
+    // A side B of no segments (MSID 0, a node set) is fine: it is its nodes that count.
+    if (a.nodes.empty()) c1.fail("SSID", "the transducer's side A has no nodes");
+    ci.a = makeSurface(ctx.model, a, 0.0);
+    ci.b = makeSurface(ctx.model, b, 0.0);
+    ctx.model.contacts.push_back(std::move(ci));
+    ctx.collect(cur);
+    return;
+  }
+  if (ci.kind != ContactKind::SingleSurface) {
     if (b.nodes_only) c1.fail("MSTYP", "the master side needs segments, not a node set");
     if (ci.kind == ContactKind::SurfaceToSurface && a.nodes_only)
       c1.fail("SSTYP", "a surface-to-surface contact needs segments on both sides");

@@ -47,6 +47,9 @@ enum class ContactKind : uint8_t {
   SurfaceToSurface,  // two way (symmetric): both of the above
   SingleSurface,     // the nodes of one surface against its own segments
   Tied,              // nodes of side A held to the points of side B's segments they start on
+  // *CONTACT_FORCE_TRANSDUCER_PENALTY: adds no force; measures the forces of the other
+  // interfaces between side A and side B (on side A from all of them when B is empty).
+  Transducer,
 };
 
 struct ContactInterface {
@@ -54,8 +57,24 @@ struct ContactInterface {
   std::string title;
   std::string keyword;  // as written, for messages
   ContactKind kind = ContactKind::NodesToSurface;
-  bool automatic = false;         // _AUTOMATIC_: segment orientation found from the approach side
-  bool offset = false;            // tied _OFFSET: keep the initial gap (else nodes move onto B)
+  bool automatic = false;  // _AUTOMATIC_: segment orientation found from the approach side
+  bool offset = false;     // tied _OFFSET: keep the initial gap (else nodes move onto B)
+  // Tied shell edge (*CONTACT_TIED_SHELL_EDGE_TO_SURFACE...) and *CONTACT_SPOTWELD: the node's
+  // rotation is tied to the segment's too, so that the tie carries moments (docs/theory.md,
+  // "Tied shell edges").
+  bool tie_rotations = false;
+  // *CONTACT_..._TIEBREAK (Keyword Manual, *CONTACT, tiebreak card; OPTION 1): SURFA nodes
+  // touching SURFB are tied until (f_n / N)^nen + (f_s / S)^mes >= 1, f_n the tensile normal
+  // and f_s the shear force of the tie, N and S the failure forces (NFLS and SFLS times the
+  // node's area for AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK, NFLF and SFLF for
+  // TIEBREAK_NODES_TO_SURFACE); then ordinary penalty contact (docs/theory.md, "Tiebreak").
+  struct Tiebreak {
+    bool on = false;
+    bool stress = false;  // normal and shear are stresses (times the node's area)
+    double normal = 0.0, shear = 0.0;
+    double nen = 2.0, mes = 2.0;
+  };
+  Tiebreak tiebreak;
   ContactSurface a, b;            // SURFA (slave) and SURFB (master); b empty for single surface
   double fs = 0, fd = 0, dc = 0;  // Coulomb friction: mu = FD + (FS - FD) exp(-DC |v_rel|)
   double vdc = 0;                 // viscous damping, % of critical

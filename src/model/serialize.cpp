@@ -359,13 +359,15 @@ void fields(A& a, M& m) {
   a.count(
       m.contacts.size(),
       [&](auto& c) {
-        util::fieldCount<27>(c);
+        util::fieldCount<29>(c);
         a(c.id);
         a(c.title);
         a(c.keyword);
         a(c.kind);
         a(c.automatic);
         a(c.offset);
+        a(c.tie_rotations);
+        a(c.tiebreak);
         surface(c.a);
         surface(c.b);
         a(c.fs);

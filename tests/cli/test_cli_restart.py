@@ -80,6 +80,8 @@ class RestartEquality(RestartCase):
             (data_deck("mixed_conditions.k"), [], 40),
             (data_deck("contact_tube.k"), ["--endtime", "0.5"], 700),
             (data_deck("contact_blocks.k"), [], 150),
+            (data_deck("contact_tied_edge.k"), [], 1500),
+            (data_deck("contact_tiebreak.k"), [], 1100),
             (data_deck("tet_blocks.k"), [], 150),
             (data_deck("prism_blocks.k"), [], 300),
             (data_deck("axisym_rod.k"), [], 80),

@@ -45,7 +45,8 @@ class ContactVerification(TempDirTest):
     def test_colliding_blocks(self):
         for kind, n2, offset in (("NODES_TO_SURFACE", 4, 0.0), ("SURFACE_TO_SURFACE", 5, 0.001),
                                  ("AUTOMATIC_SURFACE_TO_SURFACE", 5, 0.0013),
-                                 ("SURFACE_TO_SURFACE", 4, 0.0)):
+                                 ("SURFACE_TO_SURFACE", 4, 0.0),
+                                 ("AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE", 4, 0.0)):
             with self.subTest(kind=kind, n2=n2, offset=offset):
                 out = self.run_deck(f"blocks_{kind}_{n2}",
                                     decks().colliding_blocks(kind, 4, n2, offset))
@@ -70,6 +71,34 @@ class ContactVerification(TempDirTest):
                 s = read_summary(out)
                 self.assertEqual(s["contact"]["initial_penetrations"], 0)
                 self.assertLess(s["contact"]["max_penetration_ratio"], 0.2)
+
+    def test_force_transducer_measures_and_adds_nothing(self):
+        # *CONTACT_FORCE_TRANSDUCER_PENALTY between the two blocks (and one on block a alone)
+        # reads the symmetric contact's force and changes nothing.
+        base = decks().colliding_blocks("SURFACE_TO_SURFACE", 4, 5, 0.001)
+        transducers = ("*CONTACT_FORCE_TRANSDUCER_PENALTY_ID\n         8\n         1         2"
+                       "         3         3\n*CONTACT_FORCE_TRANSDUCER_PENALTY_ID\n         9\n"
+                       "         1         0         3         0\n")
+        plain = self.run_deck("plain", base)
+        out = self.run_deck("measured", base.replace("*INITIAL_VELOCITY_NODE",
+                                                     transducers + "*INITIAL_VELOCITY_NODE"))
+        self.assertEqual(rows(plain, "glstat.csv"), rows(out, "glstat.csv"))
+        by = {}
+        for r in rows(out, "rcforc.csv"):
+            by.setdefault((r["time"], int(r["contact"]), int(r["side"])), r)
+        met = 0
+        for (t, cid, side), r in by.items():
+            if cid != 7:
+                continue
+            for sensor in (8, 9):
+                m = by[(t, sensor, side if sensor == 8 else 1)]
+                if sensor == 9 and side == 2:
+                    continue
+                for c in ("fx", "fy", "fz"):
+                    self.assertAlmostEqual(m[c], r[c], delta=1e-9 * (abs(r[c]) + 1e-3))
+                self.assertEqual(m["energy"], 0.0)
+            met += r["fz"] != 0.0
+        self.assertGreater(met, 10, "the blocks never met")
 
     def test_sliding_block_stops_at_v0_squared_over_2_mu_g(self):
         mu, v0, g = 0.3, 1.0, 9.81
