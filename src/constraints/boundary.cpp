@@ -5,6 +5,8 @@
 #include <limits>
 #include <numeric>
 
+#include "constraints/blast.hpp"
+
 namespace crumple::constraints {
 
 namespace {
@@ -92,7 +94,13 @@ Boundary::Boundary(const model::Model& m, const domain::Subdomain& sd) {
   }
   for (std::size_t k = 0; k < sd.pressure_segments.size(); ++k) {
     const auto& p = m.pressure_loads[static_cast<std::size_t>(sd.pressure_segments[k])];
-    Pressure q{{}, curveOf(m, p.curve), p.sf, p.at, sd.pressure_slot_offset + 4 * k, p.airbag};
+    Pressure q{{},
+               curveOf(m, p.curve),
+               p.sf,
+               p.at,
+               sd.pressure_slot_offset + 4 * k,
+               p.airbag,
+               p.blast == model::kNone ? nullptr : &m.blasts[std::size_t(p.blast)]};
     for (int c = 0; c < 4; ++c) q.nodes[c] = sd.localNode(p.nodes[c]);
     pressure_.push_back(q);
   }
@@ -113,6 +121,24 @@ Boundary::Boundary(const model::Model& m, const domain::Subdomain& sd) {
   }
 }
 
+namespace {
+// The blast pressure on a segment at time t (constraints/blast.hpp): the range and the angle
+// of incidence at its centroid, the angle between its normal (along area) and the charge.
+double segmentBlastPressure(const model::BlastCharge& charge, const std::array<const double*, 4>& x,
+                            const double area[3], int corners, double t) {
+  double centre[3] = {0.0, 0.0, 0.0};
+  for (int k = 0; k < corners; ++k)
+    for (int c = 0; c < 3; ++c) centre[c] += x[static_cast<std::size_t>(k)][c] / corners;
+  const double to[3] = {charge.origin[0] - centre[0], charge.origin[1] - centre[1],
+                        charge.origin[2] - centre[2]};
+  const double range = std::sqrt(to[0] * to[0] + to[1] * to[1] + to[2] * to[2]);
+  const double a = std::sqrt(area[0] * area[0] + area[1] * area[1] + area[2] * area[2]);
+  if (!(range > 0.0) || !(a > 0.0)) return 0.0;
+  const double cos_angle = (to[0] * area[0] + to[1] * area[1] + to[2] * area[2]) / (range * a);
+  return blastPressure(charge, blastPulse(charge, range), t, cos_angle);
+}
+}  // namespace
+
 void Boundary::pressureForces(double t, domain::Subdomain& sd) const {
   // Follower pressure on the current geometry: F = -p A, A = (x3 - x1) x (x4 - x2) / 2 the
   // area vector along the right-hand normal of n1..n4 (LS-DYNA: positive pressure pushes
@@ -127,9 +153,8 @@ void Boundary::pressureForces(double t, domain::Subdomain& sd) const {
       continue;
     }
     std::fill(slot, slot + 12, 0.0);
-    if (t < p.at) continue;
-    const double pr = p.sf * model::loadFactor(p.curve, t - p.at, phase_);
-    if (pr == 0.0) continue;
+    // A blast acts in the transient only (it has no SIDR); a curve's pressure follows its SIDR.
+    if (p.blast != nullptr ? phase_ == model::Phase::Relaxation : t < p.at) continue;
     const double* x1 = &sd.x[3 * static_cast<std::size_t>(p.nodes[0])];
     const double* x2 = &sd.x[3 * static_cast<std::size_t>(p.nodes[1])];
     const double* x3 = &sd.x[3 * static_cast<std::size_t>(p.nodes[2])];
@@ -141,6 +166,10 @@ void Boundary::pressureForces(double t, domain::Subdomain& sd) const {
                             0.5 * (d1[0] * d2[1] - d1[1] * d2[0])};
     const bool triangle = p.nodes[2] == p.nodes[3];
     const int corners = triangle ? 3 : 4;
+    const double pr = p.blast != nullptr ? p.sf * segmentBlastPressure(*p.blast, {x1, x2, x3, x4},
+                                                                       area, corners, t)
+                                         : p.sf * model::loadFactor(p.curve, t - p.at, phase_);
+    if (pr == 0.0) continue;
     const double share = -pr / corners;
     for (int k = 0; k < corners; ++k)
       for (int c = 0; c < 3; ++c) slot[3 * k + c] = share * area[c];

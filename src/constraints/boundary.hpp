@@ -114,7 +114,8 @@ class Boundary {
     const model::Curve* curve;
     double sf, at;
     std::size_t first_slot;
-    int32_t airbag;  // model::kNone: a *LOAD_SEGMENT
+    int32_t airbag;                   // model::kNone: a *LOAD_SEGMENT
+    const model::BlastCharge* blast;  // *LOAD_BLAST_SEGMENT_SET, else nullptr
   };
   struct Body {
     int dof;

@@ -144,6 +144,13 @@ std::vector<KeywordSpec> makeTables() {
           R("NSM"), R("NAUPD", 0, Q)}},
         {"integrated card", {R("TS1"), R("TS2"), R("TT1"), R("TT2"), R("NSLOC"), R("NTLOC")}},
         {"resultant card", {R("A"), R("ISS"), R("ITT"), R("J"), R("SA"), R("IST")}}}});
+  // *INTEGRATION_BEAM (Keyword Manual vol. I): card 2 for a standard shape (ICST > 0), a
+  // point card per user point (NIP).
+  t.push_back(
+      {"*INTEGRATION_BEAM",
+       {{"card 1", {I("IRID"), I("NIP"), R("RA"), I("ICST"), I("K")}},
+        {"card 2", {R("D1"), R("D2"), R("D3"), R("D4"), R("D5"), R("D6"), R("SREF"), R("TREF")}},
+        {"point card", {R("S"), R("T"), R("WF"), I("PID")}}}});
   t.push_back({"*SECTION_DISCRETE",
                {titleCard(),
                 {"card 1", {I("SECID"), I("DRO"), R("KD"), R("V0"), R("CL"), R("FD")}},
@@ -490,6 +497,17 @@ std::vector<KeywordSpec> makeTables() {
        {{"card 1",
          {I("LCID"), R("SF", 1, Z), R("AT"), I("N1"), I("N2"), I("N3"), I("N4"), I("N5")}}}});
   t.push_back({"*LOAD_SEGMENT_SET", {{"card 1", {I("SSID"), I("LCID"), R("SF", 1, Z), R("AT")}}}});
+  // *LOAD_BLAST_ENHANCED (Keyword Manual vol. I, *LOAD): UNIT 2 (SI) and BLAST 2 (surface
+  // burst) by default, DEATH 1e20.
+  t.push_back(
+      {"*LOAD_BLAST_ENHANCED",
+       {{"card 1",
+         {I("BID"), R("M"), R("XBO"), R("YBO"), R("ZBO"), R("TBO"), I("UNIT", 2, Z),
+          I("BLAST", 2, Z)}},
+        {"card 2",
+         {R("CFM"), R("CFL"), R("CFT"), R("CFP"), I("NIDBO"), R("DEATH", 1e20, Z), I("NEGPHS")}}}});
+  t.push_back({"*LOAD_BLAST_SEGMENT_SET",
+               {{"card 1", {I("BID"), I("SSID"), I("ALEPID"), R("SFNRB"), R("SCALEP", 1, Z)}}}});
   t.push_back(
       {"*LOAD_BODY",
        {{"card 1", {I("LCID"), R("SF", 1, Z), I("LCIDDR"), R("XC"), R("YC"), R("ZC"), I("CID")}}}});

@@ -167,6 +167,11 @@ struct BeamSection {
   // QR: Hughes-Liu rectangular section quadrature: 1 one point, 2 2x2 Gauss (default),
   // 3 3x3 Gauss, 4 3x3 Lobatto, 5 4x4 Gauss. Tubular sections use a 16-point ring.
   int qr = 2;
+  // QR/IRID < 0, *INTEGRATION_BEAM: the points (s, t, area); when user_normalized, s and t in
+  // units of TS / 2 and TT / 2 and the area as the fraction WF of RA TS TT.
+  std::vector<std::array<double, 3>> user_points;
+  bool user_normalized = false;
+  double user_ra = 1.0;
 };
 
 struct BeamBlock : BlockBase {

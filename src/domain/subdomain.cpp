@@ -474,6 +474,7 @@ class SubdomainBuilder {
     b.law = lawOf(model, part, false);
     b.rho0 = materials::massDensityOf(b.law, mat.rho);
     b.rigid = massOnly(model, part);
+    b.erosion = mat.erosion;  // EFFEPS alone (model/build_erosion.cpp), elements/beam.cpp
     b.section.elform = sec.elform;
     b.section.cst = sec.cst;
     b.section.ts1 = sec.ts1;
@@ -487,6 +488,12 @@ class SubdomainBuilder {
     b.section.sa = sec.sa;
     b.section.shear_factor = sec.shrf;
     b.section.qr = sec.qr;
+    if (sec.integration != model::kNone) {
+      const auto& rule = model.beam_integrations[static_cast<std::size_t>(sec.integration)];
+      b.section.user_points = rule.points;
+      b.section.user_normalized = rule.normalized;
+      b.section.user_ra = rule.ra;
+    }
     b.stiffness_damping = part.stiffness_damping;
     b.stiffness_fraction = part.stiffness_fraction;
     b.orientation.resize(b.size());

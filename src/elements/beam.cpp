@@ -168,10 +168,11 @@ Vec relativeRotation(const Frame& E, const Frame& T) {
 
 // Cross-section of a block: area, second moments, torsion constant, and for Hughes-Liu the
 // integration points (s, t) with their areas.
+constexpr std::size_t kMaxPoints = 32;
 struct Section {
   double area = 0.0, iss = 0.0, itt = 0.0, j = 0.0;
   int points = 0;
-  std::array<double, 25> s{}, t{}, w{};
+  std::array<double, kMaxPoints> s{}, t{}, w{};
 };
 
 // One-dimensional rules on [-1, 1] for QR 1..5.
@@ -200,6 +201,26 @@ Rule ruleOf(int qr) {
 constexpr int kRingPoints = 16;
 constexpr double kPi = 3.14159265358979323846;
 
+// A section of *INTEGRATION_BEAM points (QR/IRID < 0): A, ISS, ITT from the points, so that
+// the mass and the elastic stiffness are those the points integrate; J the polar moment, as
+// for the built-in rules.
+Section userSection(const domain::BeamSection& sec, double ts, double tt) {
+  Section out;
+  const double full = sec.user_ra * ts * tt;
+  out.points = static_cast<int>(std::min(sec.user_points.size(), kMaxPoints));
+  for (std::size_t k = 0; k < static_cast<std::size_t>(out.points); ++k) {
+    const auto& p = sec.user_points[k];
+    out.s[k] = sec.user_normalized ? 0.5 * ts * p[0] : p[0];
+    out.t[k] = sec.user_normalized ? 0.5 * tt * p[1] : p[1];
+    out.w[k] = sec.user_normalized ? p[2] * full : p[2];
+    out.area += out.w[k];
+    out.iss += out.w[k] * out.t[k] * out.t[k];
+    out.itt += out.w[k] * out.s[k] * out.s[k];
+  }
+  out.j = out.iss + out.itt;
+  return out;
+}
+
 Section sectionOf(const domain::BeamSection& sec) {
   Section out;
   if (sec.elform != 1 && sec.elform != 9) {
@@ -214,6 +235,7 @@ Section sectionOf(const domain::BeamSection& sec) {
   // default to TS1, TT1 (LS-DYNA *SECTION_BEAM).
   const double ts = 0.5 * (sec.ts1 + (sec.ts2 > 0.0 ? sec.ts2 : sec.ts1));
   const double tt = 0.5 * (sec.tt1 + (sec.tt2 > 0.0 ? sec.tt2 : sec.tt1));
+  if (!sec.user_points.empty()) return userSection(sec, ts, tt);
   if (sec.cst == 1) {
     // Tube, outer diameter ts, inner tt: 16 points on the ring of radius
     // sqrt((Ro^2 + Ri^2) / 2), which gives A, I and the polar moment J exactly.
@@ -355,7 +377,7 @@ bool integrateSection(domain::BeamBlock& blk, std::size_t e, const materials::Fi
   const double dgs = -0.5 * shrf * (dd[3] + dd[5]);
   const double dgt = 0.5 * shrf * (dd[2] + dd[4]);
   materials::FibrePoint* pts = &blk.point[e * npt];
-  std::array<double, 25> so{}, tso{}, tto{}, des{}, dgss{}, dgts{};
+  std::array<double, kMaxPoints> so{}, tso{}, tto{}, des{}, dgss{}, dgts{};
   bool failed = false;
   for (std::size_t i = 0; i < npt; ++i) {
     const double s = sec.s[i], t = sec.t[i];
@@ -723,7 +745,13 @@ BlockStatus computeBeamForces(domain::BeamBlock& block, const domain::NodeVector
   if (block.points != sec.points ||
       block.point.size() != block.size() * static_cast<std::size_t>(sec.points))
     throw std::logic_error("computeBeamForces: state not sized for the section (resizeBeamBlock)");
-  return beamForces(block, materials::fibreLawOf(block.law), sec, x, v, w, dt, slots, first, last);
+  materials::FibreLaw law = materials::fibreLawOf(block.law);
+  // *MAT_ADD_EROSION EFFEPS on a beam: a failure strain of the points, as the law's FAIL.
+  if (block.erosion.has(materials::Criterion::EffectiveStrain)) {
+    const double limit = block.erosion.at(materials::Criterion::EffectiveStrain);
+    law.fail = law.fail > 0.0 ? std::min(law.fail, limit) : limit;
+  }
+  return beamForces(block, law, sec, x, v, w, dt, slots, first, last);
 }
 
 void beamSectionResultants(const domain::BeamBlock& blk, std::size_t e, double out[6]) {

@@ -297,6 +297,8 @@ const std::vector<Meaning>& meanings() {
        U::Definition,
        Kind::CoordinateSystem},
       {"*NODE", 0, readNodes, {}},
+      // Before the sections that name it (QR/IRID < 0).
+      {"*INTEGRATION_BEAM", 0, readIntegrationBeam, {}},
       // After the nodes it is built from; before the parts and loads that use it.
       {"*DEFINE_COORDINATE_NODE",
        1,
@@ -404,6 +406,9 @@ const std::vector<Meaning>& meanings() {
       {"*ELEMENT_MASS", 6, readElementMass, {}, U::Reject},
       {"*LOAD_SEGMENT", 6, readLoadSegment, {}, U::Reject},
       {"*LOAD_SEGMENT_SET", 6, readLoadSegmentSet, {}, U::Reject},
+      // The charges before the segments that name them (BID).
+      {"*LOAD_BLAST_ENHANCED", 5, readLoadBlastEnhanced, {}, U::Reject},
+      {"*LOAD_BLAST_SEGMENT_SET", 6, readLoadBlastSegmentSet, {}, U::Reject},
       {"*LOAD_BODY", 6, readLoadBody, {"X", "Y", "Z"}, U::Reject},
       // "#": a number after the name (*AIRBAG_SIMPLE_PRESSURE_VOLUME_1) is the bag's id.
       {"*AIRBAG_SIMPLE_PRESSURE_VOLUME", 6, readAirbagSimplePressureVolume, {"ID", "#"}, U::Reject},

@@ -115,6 +115,17 @@ void checkPartErosion(Context& ctx, std::size_t part) {
     ok = ok || !isFullyIntegratedHex(ctx.model.solid_sections[idx].elform);
   else if (p.section_kind == SectionKind::Shell)
     ok = ctx.model.shell_sections[idx].elform != 13 && ctx.model.shell_sections[idx].elform != 15;
+  // Integrated beams (Hughes-Liu, ELFORM 1) take EFFEPS alone, on the effective plastic strain
+  // of their section points: the first point to reach it deletes the beam, as the law's FAIL.
+  else if (p.section_kind == SectionKind::Beam && ctx.model.beam_sections[idx].elform == 1 &&
+           er.active == 1U << static_cast<int>(materials::Criterion::EffectiveStrain)) {
+    ctx.ignore("*MAT_ADD_EROSION", "EFFEPS",
+               "on beams (part " + std::to_string(p.id) +
+                   ") it is checked against the effective plastic strain of the section points "
+                   "(the elastic strain, below 1 % for metals, left out); NUMFIP 1",
+               p.where);
+    return;
+  }
   if (ok) return;
   const std::string family = p.section_kind == SectionKind::Solid   ? "ELFORM 2 solids (and -1, -2)"
                              : p.section_kind == SectionKind::Shell ? "2D solids"

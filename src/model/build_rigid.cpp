@@ -704,9 +704,9 @@ void addNodalBodies(Model& m, RigidInput& in) {
     if (k > 0 && in.nodal[k - 1].body.id == nb.body.id)
       failAt(nb.context, "nodal rigid body " + std::to_string(nb.body.id) +
                              " is already defined at " + in.nodal[k - 1].body.where.str());
-    if (m.partIndex(nb.body.id) != kNone)
-      failAt(nb.context, "PID " + std::to_string(nb.body.id) +
-                             " is a *PART; a nodal rigid body needs an id of its own");
+    // A PID that is also a *PART id is allowed: pre-processors (Oasys PRIMER) number nodal
+    // rigid bodies 1, 2, ... as labels of their own beside parts of the same ids. A
+    // reference by that id finds the part when it is rigid, else the nodal body (bodyOf).
     if (nb.body.nodes.empty()) failAt(nb.context, "the nodal rigid body has no nodes");
     m.rigid.bodies.push_back(nb.body);
   }
@@ -731,13 +731,11 @@ void dropEmptyBodies(RigidDefinitions& rd, std::vector<int32_t>& part_body) {
 int32_t bodyOf(const Model& m, int64_t pid, const std::vector<int32_t>& part_body,
                const std::string& context) {
   const RigidDefinitions& rd = m.rigid;
-  if (const int32_t p = m.partIndex(pid); p != kNone) {
-    if (!isRigidPart(m, p))
-      failAt(context, "part " + std::to_string(pid) + " is not rigid (*MAT_RIGID)");
-    return part_body[std::size_t(p)];
-  }
+  const int32_t p = m.partIndex(pid);
+  if (p != kNone && isRigidPart(m, p)) return part_body[std::size_t(p)];
   for (std::size_t k = 0; k < rd.bodies.size(); ++k)
     if (rd.bodies[k].nodal && rd.bodies[k].id == pid) return int32_t(k);
+  if (p != kNone) failAt(context, "part " + std::to_string(pid) + " is not rigid (*MAT_RIGID)");
   failAt(context, "part or nodal rigid body " + std::to_string(pid) + " is not defined");
 }
 

@@ -6,6 +6,7 @@
 #include <map>
 #include <string>
 
+#include "model/beam_shapes.hpp"
 #include "model/build_context.hpp"
 #include "util/error.hpp"
 
@@ -121,9 +122,18 @@ void completeBeamSection(SectionBeam& s) {
   if (s.sa <= 0) s.sa = s.a;
 }
 
+// The *INTEGRATION_BEAM a section names (QR/IRID = -irid).
+int32_t beamIntegration(Context& ctx, const Card& c, int64_t irid) {
+  const auto& rules = ctx.model.beam_integrations;
+  for (std::size_t k = 0; k < rules.size(); ++k)
+    if (rules[k].id == irid) return static_cast<int32_t>(k);
+  c.fail("QR/IRID", "no *INTEGRATION_BEAM with IRID " + std::to_string(irid));
+}
+
 // The dimensions a beam runs with must be positive: checked per element, since a section may
-// leave them to *ELEMENT_BEAM_THICKNESS (pre-processors write them per element).
-void checkBeamSection(const Card& c, const SectionBeam& s, int64_t eid) {
+// leave them to *ELEMENT_BEAM_THICKNESS (pre-processors write them per element). A standard
+// shape of *INTEGRATION_BEAM brings its own.
+void checkBeamSection(const Model& m, const Card& c, const SectionBeam& s, int64_t eid) {
   auto need = [&](double value, const char* what) {
     if (value > 0) return;
     c.fail("EID", "beam " + std::to_string(eid) + " has no " + what + ": section " +
@@ -131,6 +141,8 @@ void checkBeamSection(const Card& c, const SectionBeam& s, int64_t eid) {
                       "(*ELEMENT_BEAM_THICKNESS)");
   };
   if (s.elform == 1 || s.elform == 9) {
+    if (s.integration != kNone && !m.beam_integrations[std::size_t(s.integration)].normalized)
+      return;
     need(s.ts1, "thickness TS1");
     if (s.cst == 0) need(s.tt1, "thickness TT1");
     return;
@@ -202,7 +214,7 @@ void readBeams(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts
     }
     if (section != kNone) {
       const auto s = static_cast<std::size_t>(e.section != kNone ? e.section : section);
-      checkBeamSection(c, ctx.model.beam_sections[s], e.id);
+      checkBeamSection(ctx.model, c, ctx.model.beam_sections[s], e.id);
     }
     ctx.beam_input.push_back(e);
     ctx.collect(cur);
@@ -330,8 +342,11 @@ void readSectionBeam(Context& ctx, const deck::Keyword& kw, const KeywordOptions
       const Card& c2 = cur.read(spec.card("integrated card"));
       if (s.cst != 0 && s.cst != 1)
         ctx.reject(c, "CST", "only rectangular (0) and tubular (1) cross-sections are supported");
-      if (s.qr < 1 || s.qr > 5)
-        ctx.reject(c, "QR/IRID", "only the built-in Gauss rules (1 to 5) are supported");
+      if (s.qr < 0) {
+        s.integration = beamIntegration(ctx, c, -s.qr);
+      } else if (s.qr < 1 || s.qr > 5) {
+        ctx.reject(c, "QR/IRID", "the built-in rules are 1 to 5 (and IRID < 0 a user rule)");
+      }
       s.ts1 = c2.real("TS1");
       s.ts2 = c2.real("TS2");
       s.tt1 = c2.real("TT1");
@@ -358,6 +373,52 @@ void readSectionBeam(Context& ctx, const deck::Keyword& kw, const KeywordOptions
     completeBeamSection(s);
     ctx.define(Kind::Section, s.id, c, "SECID");
     ctx.model.beam_sections.push_back(s);
+    ctx.collect(cur);
+  }
+}
+
+void readIntegrationBeam(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*INTEGRATION_BEAM");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec.card("card 1"));
+    BeamIntegration r;
+    r.id = positiveId(c, "IRID");
+    r.where = c.where();
+    const int64_t nip = c.integer("NIP"), icst = c.integer("ICST");
+    r.ra = c.real("RA");
+    if (icst > 0) {
+      const Card& c2 = cur.read(spec.card("card 2"));
+      if (c2.real("SREF") != 0 || c2.real("TREF") != 0)
+        ctx.reject(c2, c2.real("SREF") != 0 ? "SREF" : "TREF",
+                   "offset reference axes of a standard section are not supported");
+      if (icst != 1) {
+        ctx.reject(c, "ICST", "of the standard sections only ICST 1 (W section) is supported");
+      } else {
+        std::array<double, 6> d{};
+        for (std::size_t k = 0; k < 6; ++k) d[k] = c2.real("D" + std::to_string(k + 1));
+        std::string error;
+        r.points = wSectionPoints(d, error);
+        if (r.points.empty()) c2.fail("D1", error);
+      }
+      if (c.integer("K") != 0)
+        ctx.ignore(kw.name, "K",
+                   "a standard section is integrated with Crumple's own exact rule "
+                   "(model/beam_shapes.hpp)",
+                   c.where());
+    } else {
+      if (nip < 1 || nip > 32) c.fail("NIP", "give 1 to 32 user integration points");
+      if (!(r.ra > 0)) c.fail("RA", "the relative area of user points must be positive");
+      r.normalized = true;
+      for (int64_t k = 0; k < nip; ++k) {
+        const Card& p = cur.read(spec.card("point card"));
+        if (p.integer("PID") != 0)
+          ctx.reject(p, "PID", "a material per integration point is not supported");
+        if (!(p.real("WF") > 0)) p.fail("WF", "the weighting factor must be positive");
+        r.points.push_back({p.real("S"), p.real("T"), p.real("WF")});
+      }
+    }
+    ctx.model.beam_integrations.push_back(r);
     ctx.collect(cur);
   }
 }

@@ -150,11 +150,24 @@ struct SectionShell {
 // *SECTION_BEAM: ELFORM 1 Hughes-Liu and 9 spot weld (CST 0 rectangular, 1 tubular: TS/TT
 // thicknesses or outer/inner diameters at the two ends), 2 Belytschko-Schwer resultant and 3 truss
 // (A, ISS, ITT, J, SA).
+// *INTEGRATION_BEAM (Keyword Manual vol. I): a user cross-section of Hughes-Liu beams, its
+// points (s, t, area) in the beam's frame. A standard shape (ICST > 0) gives them in length
+// units and areas (model/beam_shapes.hpp); user points (ICST 0) are normalised:
+// s, t in [-1, 1] of TS / 2, TT / 2 and the area fraction WF of RA TS TT.
+struct BeamIntegration {
+  int64_t id = 0;  // IRID
+  bool normalized = false;
+  double ra = 1.0;
+  std::vector<std::array<double, 3>> points;
+  util::SourceLoc where;
+};
+
 struct SectionBeam {
   int64_t id = 0;
   int elform = 1;
   double shrf = 1.0;
-  int qr = 2;
+  int qr = 2;  // QR/IRID < 0: the rule Model::beam_integrations[integration]
+  int32_t integration = kNone;
   int cst = 0;
   double ts1 = 0, ts2 = 0, tt1 = 0, tt2 = 0;
   double a = 0, iss = 0, itt = 0, j = 0, sa = 0;
@@ -298,6 +311,23 @@ struct PressureLoad {
   // A segment of the control volume Model::airbags[airbag]: the pressure is the bag's (curve,
   // sf and at unused) and pushes along the outward normal of the bag (constraints/airbag.hpp).
   int32_t airbag = kNone;
+  // *LOAD_BLAST_SEGMENT_SET: the charge Model::blasts[blast] loads the segment (sf = SCALEP;
+  // curve and at unused; constraints/blast.hpp).
+  int32_t blast = kNone;
+};
+
+// *LOAD_BLAST_ENHANCED: one TNT charge in the deck's units (constraints/blast.hpp); the
+// conversion factors say how many pounds, feet, milliseconds and psi one deck unit of mass,
+// length, time and pressure is (UNIT, or CFM, CFL, CFT, CFP).
+struct BlastCharge {
+  int64_t id = 0;                  // BID
+  double mass = 0.0;               // M, TNT equivalent mass
+  std::array<double, 3> origin{};  // XBO, YBO, ZBO
+  int32_t origin_node = kNone;     // NIDBO: the charge sits at this node's initial position
+  double tbo = 0.0;                // TBO, the time of detonation
+  double death = 1e20;             // DEATH: no pressure from then on
+  double cfm = 1, cfl = 1, cft = 1, cfp = 1;
+  bool negative_phase = true;  // NEGPHS 0: the Friedlander negative phase is applied
 };
 
 // *AIRBAG_SIMPLE_PRESSURE_VOLUME (Keyword Manual, *AIRBAG): a closed surface, its segments
@@ -506,6 +536,7 @@ struct Model {
   std::vector<SectionSolid> solid_sections;
   std::vector<SectionShell> shell_sections;
   std::vector<SectionBeam> beam_sections;
+  std::vector<BeamIntegration> beam_integrations;
   std::vector<SectionDiscrete> discrete_sections;
   std::vector<SectionSph> sph_sections;
   std::vector<Material> materials;
@@ -526,6 +557,7 @@ struct Model {
   std::vector<PrescribedMotion> prescribed;
   std::vector<NodalLoad> nodal_loads;
   std::vector<PressureLoad> pressure_loads;
+  std::vector<BlastCharge> blasts;
   std::vector<Airbag> airbags;  // control volumes, in deck order
   std::vector<BodyLoad> body_loads;
   std::vector<RigidWallPlanar> rigid_walls;

@@ -95,11 +95,12 @@ void fields(A& a, M& m) {
   a.count(
       m.beam_sections.size(),
       [&](auto& s) {
-        util::fieldCount<15>(s);
+        util::fieldCount<16>(s);
         a(s.id);
         a(s.elform);
         a(s.shrf);
         a(s.qr);
+        a(s.integration);
         a(s.cst);
         a(s.ts1);
         a(s.ts2);
@@ -113,6 +114,17 @@ void fields(A& a, M& m) {
         loc(a, s.where);
       },
       m.beam_sections);
+  a.count(
+      m.beam_integrations.size(),
+      [&](auto& r) {
+        util::fieldCount<5>(r);
+        a(r.id);
+        a(r.normalized);
+        a(r.ra);
+        a(r.points);
+        loc(a, r.where);
+      },
+      m.beam_integrations);
   a.count(
       m.discrete_sections.size(),
       [&](auto& s) {
@@ -186,6 +198,7 @@ void fields(A& a, M& m) {
   a(m.prescribed);
   a(m.nodal_loads);
   a(m.pressure_loads);
+  a(m.blasts);
   a(m.airbags);
   a(m.body_loads);
   a.count(

@@ -359,9 +359,8 @@ TEST(RigidBuild, ErrorsNameTheConflict) {
       error("*PART_INERTIA\nx\n4,1,3\n0,0,0,1\n1,0,0,1,0,1\n\n"),
       "deck:60: *PART_INERTIA inertia card 3 field 4 (TM): *PART_INERTIA applies to rigid parts "
       "(*MAT_RIGID) only; part 4 is not rigid");
-  EXPECT_EQ(error("*SET_NODE_LIST\n1\n31\n*CONSTRAINED_NODAL_RIGID_BODY\n3,0,1\n"),
-            "deck:61: *CONSTRAINED_NODAL_RIGID_BODY card 1 field 1 (PID): PID 3 is a *PART; a "
-            "nodal rigid body needs an id of its own");
+  // A nodal rigid body may share its id with a part (PRIMER numbers them so): no error.
+  EXPECT_EQ(error("*SET_NODE_LIST\n1\n31\n*CONSTRAINED_NODAL_RIGID_BODY\n3,0,1\n"), "");
   EXPECT_EQ(error("*CONSTRAINED_RIGID_BODIES\n1,3\n"),
             "deck:58: *CONSTRAINED_RIGID_BODIES card 1 field 2 (PIDS): part 3 is not rigid "
             "(*MAT_RIGID)");
