@@ -81,6 +81,7 @@ class RestartEquality(RestartCase):
             (data_deck("contact_tube.k"), ["--endtime", "0.5"], 700),
             (data_deck("contact_blocks.k"), [], 150),
             (data_deck("tet_blocks.k"), [], 150),
+            (data_deck("tet13_blocks.k"), [], 150),
             (data_deck("prism_blocks.k"), [], 300),
             (data_deck("axisym_rod.k"), [], 80),
             (data_deck("erosion.k"), ["--endtime", "2.5e-5"], 40),
