@@ -21,6 +21,7 @@
                       with rigid plates, tied).
   prism_blocks.k      the tet_blocks collision meshed in prisms (two per hex cell), ELFORM 15
                       native and sorted by ESORT
+  tet13_blocks.k      the tet_blocks collision with both blocks ELFORM 13 (nodal pressure)
   tet_blocks.k        two colliding blocks meshed in tetrahedra (six per hex cell) with
                       two-surface contact on their triangular faces: block a native ELFORM 10
                       (N5-N8 blank), block b degenerate hexahedra (N4 repeated) under ELFORM 1
@@ -522,6 +523,17 @@ def tet_blocks(n1: int = 3, n2: int = 4, v: float = 10.0, end: float = 6e-5) -> 
                         10, n1, n2, v, end)
 
 
+def tet13_blocks(n1: int = 3, n2: int = 4, v: float = 10.0, end: float = 6e-5) -> str:
+    """The tet_blocks collision with both blocks nodal-pressure tetrahedra (ELFORM 13): block a
+    elastic (N5-N8 blank), block b elastic-plastic (N4 repeated)."""
+    text = solid_blocks(lambda m, p: tetrahedralize(m, parts={p}, blank=p == 1),
+                        "two tetrahedral blocks colliding (ELFORM 13, elastic and plastic)",
+                        13, n1, n2, v, end)
+    text = text.replace("block b (ELFORM 1, degenerate, sorted)", "block b (ELFORM 13)", 1)
+    return text.replace("*SECTION_SOLID\n         2         1\n",
+                        "*SECTION_SOLID\n         2        13\n", 1)
+
+
 def prism_blocks(n1: int = 3, n2: int = 4, v: float = 10.0, end: float = 6e-5) -> str:
     """Cells of two prisms: block a native ELFORM 15 (N3 = N4, N7 = N8), block b the Keyword
     Manual's pentahedron (N5 = N6, N7 = N8)."""
@@ -674,6 +686,7 @@ def main() -> None:
     (out / "contact_tied.k").write_text(contact_decks.tied_bar(end=1.0e-4))
     (out / "contact_cask.k").write_text(contact_decks.cask_drop(end=2.0e-4))
     (out / "tet_blocks.k").write_text(tet_blocks())
+    (out / "tet13_blocks.k").write_text(tet13_blocks())
     (out / "axisym_rod.k").write_text(axisym_rod())
     (out / "erosion.k").write_text(erosion())
     (out / "prism_blocks.k").write_text(prism_blocks())
@@ -681,7 +694,7 @@ def main() -> None:
     (out / "shearfix_blocks.k").write_text(shearfix_blocks())
     print("wrote tests/data/decks/mixed_conditions.k, structures.k, structures_shell16.k, "
           "rigid_welds.k, contact_blocks.k, contact_tube.k, contact_tied.k, contact_cask.k, "
-          "tet_blocks.k, axisym_rod.k, erosion.k, prism_blocks.k, joints.k and shearfix_blocks.k")
+          "tet_blocks.k, tet13_blocks.k, axisym_rod.k, erosion.k, prism_blocks.k, joints.k and shearfix_blocks.k")
 
 
 if __name__ == "__main__":

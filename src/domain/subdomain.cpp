@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <numeric>
 #include <set>
@@ -426,6 +427,7 @@ class SubdomainBuilder {
     b.resize(b.size(), plastic, kinematic, b.elform == 1 && b.hourglass.qm > 0.0,
              model::isFullyIntegratedHex(b.elform) ? 8 : (b.elform == 15 ? 2 : 0),
              materials::historyCount(b.law));
+    if (b.elform == 13) b.ev_nodal.assign(b.paddedSize(), 0.0);
     return b;
   }
 
@@ -620,16 +622,33 @@ class SubdomainBuilder {
       std::sort(rq.begin(), rq.end(),
                 [](const auto& x, const auto& y) { return x.first < y.first; });
       PeerExchange p;
+      Subdomain::SlotPeer nodal{q, {}, {}};
       p.rank = q;
-      for (const auto& [key, s_local] : sq) p.send_slots.push_back(s_local);
+      for (const auto& [key, s_local] : sq) {
+        p.send_slots.push_back(s_local);
+        if (nodalPressureSource(key.first)) nodal.send_slots.push_back(s_local);
+      }
       p.recv_first = slot;
       p.recv_count = rq.size();
       for (auto& [key, c] : rq) {
+        if (nodalPressureSource(c.source)) nodal.recv_slots.push_back(int32_t(slot));
         c.slot = int32_t(slot++);
         (c.source < num_elements ? internal : pressure).push_back(c);
       }
       sd.peers.push_back(std::move(p));
+      if (!nodal.send_slots.empty() || !nodal.recv_slots.empty())
+        sd.nodal_volume_peers.push_back(std::move(nodal));
     }
+  }
+
+  // Whether global source g is a nodal-pressure tetrahedron (ELFORM 13) that computes forces.
+  bool nodalPressureSource(int64_t g) const {
+    if (g >= num_elements) return false;
+    const auto [family, index] = model.element(std::size_t(g));
+    if (family != model::Family::Solid) return false;
+    const auto e = static_cast<std::size_t>(index);
+    return model.solidFormulation(e) == 13 &&
+           !isRigid(model, model.parts[static_cast<std::size_t>(model.solids.part[e])]);
   }
 
   // Gather plans: this fixed order of summation is what makes nodal forces independent of
@@ -640,6 +659,10 @@ class SubdomainBuilder {
                                              [](const Corner& c) { return !c.rotational; });
     moments.assign(split, internal.end());
     internal.erase(split, internal.end());
+    std::vector<Corner> nodal;
+    std::copy_if(internal.begin(), internal.end(), std::back_inserter(nodal),
+                 [&](const Corner& c) { return nodalPressureSource(c.source); });
+    sd.nodal_volume = gatherPlan(std::move(nodal), local_of, nn);
     sd.internal = gatherPlan(std::move(internal), local_of, nn);
     sd.rotational = gatherPlan(std::move(moments), local_of, nn);
     sd.pressure = gatherPlan(std::move(pressure), local_of, nn);

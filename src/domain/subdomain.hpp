@@ -97,6 +97,9 @@ struct SolidBlock : BlockBase {
   // strain gradient at the initial geometry), 24 x kSolidBatch values per batch (corner-major,
   // component-minor rows); else empty. Built from the initial coordinates (initializeSolids).
   std::vector<double> grad0;
+  // ELFORM 13 only (else empty): the element's volumetric strain, the mean of ln(V_a / V0_a)
+  // over its four nodes' volumes (elements/tet_nodal.hpp), at the last pass.
+  std::vector<double> ev_nodal;
 
   // Elements plus padding: a whole number of batches.
   std::size_t paddedSize() const {
@@ -196,6 +199,18 @@ struct Subdomain {
   GatherPlan rotational;  // element moment slots -> nodal moment (and rotational inertia)
   GatherPlan pressure;    // pressure slots -> nodal external force
   std::vector<PeerExchange> peers;
+  // The nodal-pressure tetrahedra (ELFORM 13, not rigid): the corner slots of theirs at each
+  // node, local and ghost, in the same (source, corner) order (a subset of `internal`), and
+  // what travels between neighbours for them: the local slots of such corners at nodes the
+  // peer holds and the ghost slots filled from it, both in (source, corner) order. Their
+  // kernel's first pass writes each corner's share of the initial and current volume there
+  // and the nodes sum them (elements/tet_nodal.hpp).
+  struct SlotPeer {
+    int rank = 0;
+    std::vector<int32_t> send_slots, recv_slots;
+  };
+  GatherPlan nodal_volume;
+  std::vector<SlotPeer> nodal_volume_peers;
 
   // Sizes of the whole model (this rank holds only part of it).
   int64_t global_nodes = 0;

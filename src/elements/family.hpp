@@ -25,6 +25,7 @@ struct KernelInputs {
   double dt = 0.0;
   const BulkViscosity& bv;
   double* slots = nullptr;
+  const double* nodal_ev = nullptr;  // nodal volumetric strains (ELFORM 13; tet_nodal.hpp)
 };
 
 template <class Block>
@@ -36,7 +37,8 @@ struct FamilyTraits<domain::SolidBlock> {
                             std::size_t last) {
     return model::isFullyIntegratedHex(b.elform) || b.elform == 15
                ? computeFullSolidForces(b, in.x, in.v, in.dt, in.bv, in.slots, first, last)
-               : computeSolidForces(b, in.x, in.v, in.dt, in.bv, in.slots, first, last);
+               : computeSolidForces(b, in.x, in.v, in.dt, in.bv, in.slots, first, last,
+                                    in.nodal_ev);
   }
 };
 

@@ -70,6 +70,7 @@ inline void gradientOfAll(const NodalBatch& x, NodalBatch& b, std::index_sequenc
 // tetrahedron (ELFORM 10): hex8_kernel.hpp, its minimum altitude.
 struct HexShape {
   static constexpr bool kHourglass = true;
+  static constexpr bool kNodalPressure = false;
   static void gradient(const NodalBatch& x, NodalBatch& b) {
     gradientOfAll(x, b, std::make_index_sequence<8>{});
   }
@@ -79,11 +80,33 @@ struct HexShape {
 };
 struct TetShape {
   static constexpr bool kHourglass = false;  // a linear element has no hourglass modes
+  static constexpr bool kNodalPressure = false;
   static void gradient(const NodalBatch& x, NodalBatch& b) { detail::tetVolumeGradient(x, b); }
   static void lengthArea(const NodalBatch&, const NodalBatch& b, LaneArray& area) {
     detail::tetLengthArea(b, area);
   }
 };
+
+// The nodal-pressure tetrahedron (ELFORM 13, tet_nodal.hpp): the tetrahedron's kinematics,
+// with the volumetric strain from its nodes.
+struct NodalTetShape : TetShape {
+  static constexpr bool kNodalPressure = true;
+};
+
+// ELFORM 13: the step's change of the element's nodal-mean volumetric strain (tet_nodal.hpp),
+// e_e = (e_1 + e_2 + e_3 + e_4) / 4 from the nodal strains at x(n), against the last pass's;
+// the new value is kept for a live element.
+inline void nodalVolumetricStep(domain::SolidBlock& blk, std::size_t first, int n,
+                                const double* nodal_ev, LaneArray& step) {
+  for (int l = 0; l < kBatch; ++l) {
+    const auto& conn = blk.conn[laneElement(first, n, l)];
+    const double ev =
+        0.25 * (nodal_ev[conn[0]] + nodal_ev[conn[1]] + nodal_ev[conn[2]] + nodal_ev[conn[3]]);
+    double& kept = blk.ev_nodal[first + static_cast<std::size_t>(l)];
+    step[l] = ev - kept;
+    if (blk.active[first + static_cast<std::size_t>(l)]) kept = ev;
+  }
+}
 
 // The constants of one block for one call.
 struct SolidParams {
@@ -131,10 +154,17 @@ inline void midStepGradient(const SolidParams& p, BatchScratch& w, SolidRates& r
 }
 
 // Stress: load the batch's records, the Jaumann rotation, then the material law.
+// `ev_step` (ELFORM 13, else null): the volumetric strain increment the law receives in place
+// of the element's own tr(de): de' = de + (ev_step - tr de) I / 3, the deviatoric part
+// unchanged. A rate law splits through it: its deviatoric update sees the element's deviatoric
+// strain, its pressure (elastic K tr de', or the EOS's relative volume integrated from
+// tr de') the nodes' mean volume change. The work and the erosion strain keep the element's
+// own de, the strain rate the forces sigma . B do work on (docs/theory.md).
 template <class Law>
 inline void updateStress(const Law& law, const SolidParams& p, const domain::SolidBlock& blk,
                          std::size_t first, const double* sig_batch, const double* alpha_batch,
-                         BatchScratch& w, const SolidRates& r, SolidSpin& sp) {
+                         BatchScratch& w, const SolidRates& r, SolidSpin& sp,
+                         const LaneArray* ev_step) {
   const double dt = p.dt;
   const auto& L = r.L;
   for (int k = 0; k < 6; ++k)
@@ -165,7 +195,20 @@ inline void updateStress(const Law& law, const SolidParams& p, const domain::Sol
   }
   if constexpr (materials::needsDeformationGradient<Law>())
     detail::deformationGradient(blk, first, w);
+  if (!ev_step) {
+    detail::updateMaterial(law, w, dt);
+    return;
+  }
+  double own[3][kBatch];
+  for (int k = 0; k < 3; ++k)
+    for (int l = 0; l < kBatch; ++l) own[k][l] = w.de[k][l];
+  for (int l = 0; l < kBatch; ++l) {
+    const double shift = ((*ev_step)[l] - (w.de[0][l] + w.de[1][l] + w.de[2][l])) / 3.0;
+    for (int k = 0; k < 3; ++k) w.de[k][l] += shift;
+  }
   detail::updateMaterial(law, w, dt);
+  for (int k = 0; k < 3; ++k)
+    for (int l = 0; l < kBatch; ++l) w.de[k][l] = own[k][l];
 }
 
 // The block's erosion criteria (materials/erosion.hpp) at the batch's points after the law:
@@ -388,7 +431,7 @@ template <class Law, class Shape>
 [[gnu::flatten, gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] BlockStatus
 solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVector& x,
                  const domain::NodeVector& v, double dt, const BulkViscosity& bv, double* slots,
-                 std::size_t range_first, std::size_t range_last) {
+                 std::size_t range_first, std::size_t range_last, const double* nodal_ev) {
   const std::size_t ne = range_last;
   const std::size_t batch0 = range_first / kBatch;
   const std::size_t nbatch =
@@ -416,7 +459,10 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
       SolidRates r;
       midStepGradient<Shape>(p, w, r);
       SolidSpin sp;
-      updateStress(law, p, blk, first, sig_batch, alpha_batch, w, r, sp);
+      LaneArray ev_step;
+      if constexpr (Shape::kNodalPressure) nodalVolumetricStep(blk, first, n, nodal_ev, ev_step);
+      updateStress(law, p, blk, first, sig_batch, alpha_batch, w, r, sp,
+                   Shape::kNodalPressure ? &ev_step : nullptr);
       if (blk.erosion.any()) erodeSolidPoints(blk, first, w, sp);
       SolidGeometry g;
       currentGeometry<Shape>(p, blk, first, bv, w, sp, g);
@@ -455,7 +501,7 @@ void markIsolatedElements(domain::SolidBlock& blk, const domain::GatherPlan& pla
   // never lower over 3000 random shapes at nu = 0.4999 (docs/theory.md). In a mesh the
   // shared nodes' mass lowers it to within the altitude rule (tests/unit/test_tet4.cpp).
   const double factor =
-      blk.elform == 10
+      model::isTetrahedron(blk.elform)
           ? 0.5
           : std::min(1.0, std::sqrt((mod.bulk + 4.0 / 3.0 * mod.shear) / (3.0 * mod.bulk)));
   blk.dt_scale.clear();
@@ -476,20 +522,28 @@ void markIsolatedElements(domain::SolidBlock& blk, const domain::GatherPlan& pla
 
 BlockStatus computeSolidForces(domain::SolidBlock& block, const domain::NodeVector& x,
                                const domain::NodeVector& v, double dt, const BulkViscosity& bv,
-                               double* slots, std::size_t first, std::size_t last) {
+                               double* slots, std::size_t first, std::size_t last,
+                               const double* nodal_ev) {
   // Batches never straddle the range: unconditional vector stores of state would otherwise
   // write elements outside it.
   if (first % kBatch != 0 || (last % kBatch != 0 && last != block.size()) || last > block.size())
     throw std::logic_error("computeSolidForces: range not aligned to batches");
+  if (block.elform == 13 && (!nodal_ev || block.ev_nodal.size() != block.paddedSize()))
+    throw std::logic_error("computeSolidForces: ELFORM 13 without nodal volumetric strains");
   return std::visit(
       [&](const auto& law) -> BlockStatus {
-        if constexpr (materials::SolidLaw<std::decay_t<decltype(law)>>)
-          return block.elform == 10 ? solidBlockForces<std::decay_t<decltype(law)>, TetShape>(
-                                          law, block, x, v, dt, bv, slots, first, last)
-                                    : solidBlockForces<std::decay_t<decltype(law)>, HexShape>(
-                                          law, block, x, v, dt, bv, slots, first, last);
-        else
+        using Law = std::decay_t<decltype(law)>;
+        if constexpr (!materials::SolidLaw<Law>)
           materials::noUpdateFor(materials::Family::Solid);
+        else if (block.elform == 13)
+          return solidBlockForces<Law, NodalTetShape>(law, block, x, v, dt, bv, slots, first, last,
+                                                      nodal_ev);
+        else if (block.elform == 10)
+          return solidBlockForces<Law, TetShape>(law, block, x, v, dt, bv, slots, first, last,
+                                                 nullptr);
+        else
+          return solidBlockForces<Law, HexShape>(law, block, x, v, dt, bv, slots, first, last,
+                                                 nullptr);
       },
       block.law);
 }
@@ -500,7 +554,7 @@ BlockStatus initializeSolids(domain::SolidBlock& blk, const domain::NodeVector& 
   const double c = std::sqrt((mod.bulk + 4.0 / 3.0 * mod.shear) / blk.rho0);
   BlockStatus st;
   NodalBatch xb, bb;
-  const bool tet = blk.elform == 10;
+  const bool tet = model::isTetrahedron(blk.elform);
   // The corners that carry mass: a tetrahedron's N1-N4, a pentahedron's six distinct nodes
   // (N1 N2 N3 N4 N5 N5 N6 N6: slots 5 and 7 repeat 4 and 6), a hexahedron's eight.
   const bool prism = blk.elform == 15;

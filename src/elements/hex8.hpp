@@ -51,9 +51,12 @@ struct BlockStatus {
 // divergence at x, hourglass forces, element energies and stable time step. Corner forces go to the
 // block's force slots (no scatter). `dt` is the step dt(n-1/2) that brought x and v to this cycle.
 // Elements [first, last) of the block only, both multiples of kBatch or last == size().
+// ELFORM 13 blocks (the nodal-pressure tetrahedron, tet_nodal.hpp) run the tetrahedron with the
+// volumetric strain from `nodal_ev`, the nodal strains of this pass (one per local node).
 BlockStatus computeSolidForces(domain::SolidBlock& block, const domain::NodeVector& x,
                                const domain::NodeVector& v, double dt, const BulkViscosity& bv,
-                               double* slots, std::size_t first, std::size_t last);
+                               double* slots, std::size_t first, std::size_t last,
+                               const double* nodal_ev = nullptr);
 inline BlockStatus computeSolidForces(domain::SolidBlock& block, const domain::NodeVector& x,
                                       const domain::NodeVector& v, double dt,
                                       const BulkViscosity& bv, double* slots) {

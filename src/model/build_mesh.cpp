@@ -167,12 +167,12 @@ int sectionElform(const Context& ctx, int32_t part) {
   return ctx.model.solid_sections[static_cast<std::size_t>(p.section)].elform;
 }
 
-// An element of an ELFORM 10 section: four distinct nodes, stored as N1 N2 N3 N4 N4 N4 N4 N4.
+// An element of an ELFORM 10 or 13 section: four distinct nodes, stored as N1 N2 N3 N4 N4 N4 N4 N4.
 std::array<int32_t, 8> tetrahedronNodes(const Card& c, const std::array<int32_t, 8>& n) {
   int32_t d[8];
   const int k = distinctNodes(n, d);
   if (k != 4)
-    c.fail("N1", "a tetrahedron (*SECTION_SOLID ELFORM 10) needs 4 distinct nodes, not " +
+    c.fail("N1", "a tetrahedron (*SECTION_SOLID ELFORM 10, 13) needs 4 distinct nodes, not " +
                      std::to_string(k) + " (N1 N2 N3 N4, N5 to N8 blank or N4)");
   return canonicalTet(n);
 }
@@ -223,7 +223,7 @@ void readSolids(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
       if (ids[i] == 0) nc->fail(kN[i], "node id missing");
       s.nodes[i] = ctx.node(*nc, kN[i], ids[i]);
     }
-    if (sectionElform(ctx, part) == 10) s.nodes = tetrahedronNodes(*nc, s.nodes);
+    if (isTetrahedron(sectionElform(ctx, part))) s.nodes = tetrahedronNodes(*nc, s.nodes);
     if (sectionElform(ctx, part) == 15) s.nodes = pentahedronNodes(*nc, s.nodes);
     ctx.solid_input.push_back(s);
     ctx.collect(cur);
@@ -401,6 +401,13 @@ void finishParts(Context& ctx) {
                std::to_string(m.id) + " (" + materialKeyword(m.law) + ") has no " +
                updateName(p.section_kind));
     else if (p.section_kind == SectionKind::Solid && materials::needsDeformationGradient(m.law) &&
+             ctx.model.solid_sections[static_cast<std::size_t>(p.section)].elform == 13)
+      ctx.fail(p.where.str() + ": *PART card 2 field 3 (MID): part " + std::to_string(p.id) +
+               " has material " + std::to_string(m.id) + " (" + materialKeyword(m.law) +
+               "), a hyperelastic law, on an ELFORM 13 section: the nodal-pressure tetrahedron "
+               "replaces the volumetric part of the strain increment a rate law receives, and a "
+               "law of the deformation gradient takes no increment (use ELFORM 10)");
+    else if (p.section_kind == SectionKind::Solid && materials::needsDeformationGradient(m.law) &&
              !oneSolidPoint(ctx.model, p))
       ctx.fail(
           p.where.str() + ": *PART card 2 field 3 (MID): part " + std::to_string(p.id) +
@@ -430,11 +437,11 @@ void readSectionSolid(Context& ctx, const deck::Keyword& kw, const KeywordOption
     // ELFORM (Keyword Manual, *SECTION_SOLID): 1 constant stress (default), 2 fully integrated
     // selective-reduced, -1 and -2 the same for poor aspect ratios ("accurate" and "efficient";
     // both run one formulation here, src/elements/hex8_full.cpp), 10 one-point tetrahedron,
-    // 15 two-point pentahedron; 0 is the one-point corotational form of
-    // *MAT_MODIFIED_HONEYCOMB, run here as 1 with a note. 13 (nodal-pressure tetrahedron) and
-    // the rest are refused rather than silently run as something else.
-    if (elform == 1 || isFullyIntegratedHex(static_cast<int>(elform)) || elform == 10 ||
-        elform == 15) {
+    // 13 one-point nodal-pressure tetrahedron, 15 two-point pentahedron; 0 is the one-point
+    // corotational form of *MAT_MODIFIED_HONEYCOMB, run here as 1 with a note. The rest are
+    // refused rather than silently run as something else.
+    if (elform == 1 || isFullyIntegratedHex(static_cast<int>(elform)) ||
+        isTetrahedron(static_cast<int>(elform)) || elform == 15) {
       s.elform = static_cast<int>(elform);
     } else if (elform == 0) {
       s.elform = 1;
@@ -446,7 +453,7 @@ void readSectionSolid(Context& ctx, const deck::Keyword& kw, const KeywordOption
                             c.where());
       ctx.reportUnsupported(kw,
                             "ELFORM " + std::to_string(elform) +
-                                " not supported yet (1, 2, -1, -2, 10 and 15 are; 0 runs as 1)",
+                                " not supported yet (1, 2, -1, -2, 10, 13 and 15 are; 0 runs as 1)",
                             false);
       ctx.collect(cur);
       continue;
@@ -571,7 +578,7 @@ void noteDegenerateSolids(Context& ctx) {
   for (std::size_t e = 0; e < m.solids.size(); ++e) {
     const Degenerate shape = degenerateShape(m.solids.nodes[e]);
     const int form = m.solidFormulation(e);
-    if (shape == Degenerate::None || form == 10 || form == 15) continue;
+    if (shape == Degenerate::None || isTetrahedron(form) || form == 15) continue;
     ++count[m.solids.part[e]][static_cast<std::size_t>(shape) - 1];
   }
   for (const auto& [part, n] : count) {

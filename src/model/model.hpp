@@ -135,6 +135,12 @@ inline bool isFullyIntegratedHex(int elform) {
   return elform == 2 || elform == -1 || elform == -2;
 }
 
+// The 4-node tetrahedra: ELFORM 10 (constant strain) and 13 (the same with the pressure
+// averaged over the nodes, Bonet & Burton 1998; src/elements/tet_nodal.cpp).
+inline bool isTetrahedron(int elform) {
+  return elform == 10 || elform == 13;
+}
+
 // *SECTION_SHELL: ELFORM 2 Belytschko-Tsay (default), 4 C0 triangle; NIP points through the
 // thickness, Gauss or (QR/IRID = -? / Lobatto) Lobatto; T1-T4 corner thicknesses.
 struct SectionShell {

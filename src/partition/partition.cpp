@@ -82,15 +82,15 @@ std::vector<int32_t> elementWeights(const model::Model& model, const Options& op
   for (std::size_t e = 0; e < ne; ++e) {
     const int32_t p = model.elementPart(e);
     if (p >= 0 && std::size_t(p) < part_weight.size()) w[e] = part_weight[std::size_t(p)];
-    // A tetrahedron (ELFORM 10) runs the one-point kernel without hourglass control (not
+    // A tetrahedron (ELFORM 10, 13) runs the one-point kernel without hourglass control (not
     // measured apart: it gathers the same eight corners); a pentahedron (ELFORM 15) the
     // multi-point kernel with 2 points instead of 8 (estimated, kWeightPentahedronFactor).
     const int form = p >= 0 && e < model.solids.size() ? model.solidFormulation(e) : 0;
-    if (w[e] != kWeightRigid && (form == 10 || form == 15)) {
+    if (w[e] != kWeightRigid && (model::isTetrahedron(form) || form == 15)) {
       const int32_t base = costOfPart(model.parts[std::size_t(p)]) == materials::Cost::Plastic
                                ? kWeightSolidPlastic
                                : kWeightSolidElastic;
-      w[e] = form == 10 ? base : base * kWeightPentahedronFactor / 10;
+      w[e] = model::isTetrahedron(form) ? base : base * kWeightPentahedronFactor / 10;
     }
     if (!opt.contact_elements.empty() && opt.contact_elements[e] != 0)
       w[e] = std::max<int32_t>(1, int32_t(std::lround(w[e] * opt.contact_bias)));

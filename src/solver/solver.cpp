@@ -14,6 +14,7 @@
 #include "elements/shell.hpp"
 #include "elements/solid2d.hpp"
 #include "elements/sph_family.hpp"
+#include "elements/tet_nodal.hpp"
 #include "util/error.hpp"
 #include "util/timer.hpp"
 
@@ -37,6 +38,18 @@ std::vector<comm::Exchange::Peer> sharedSlotPeers(const domain::Subdomain& sd) {
   return peers;
 }
 
+std::vector<comm::Exchange::Peer> nodalVolumePeers(const domain::Subdomain& sd) {
+  std::vector<comm::Exchange::Peer> peers;
+  for (const auto& p : sd.nodal_volume_peers) peers.push_back({p.rank, p.send_slots, p.recv_slots});
+  return peers;
+}
+
+// Whether any part runs the nodal-pressure tetrahedron: every rank takes part in its exchange.
+bool hasNodalPressureTets(const model::Model& model) {
+  return std::any_of(model.solid_sections.begin(), model.solid_sections.end(),
+                     [](const model::SectionSolid& s) { return s.elform == 13; });
+}
+
 }  // namespace
 
 Solver::Solver(const model::Model& model, domain::Subdomain& sd, comm::Communicator& comm)
@@ -44,6 +57,8 @@ Solver::Solver(const model::Model& model, domain::Subdomain& sd, comm::Communica
       sd_(sd),
       comm_(comm),
       shared_slots_(comm, sharedSlotPeers(sd), 3),
+      nodal_pressure_(hasNodalPressureTets(model)),
+      nodal_volume_slots_(comm, nodalVolumePeers(sd), 3),
       boundary_(model, sd),
       damping_(model, sd) {
   bv_.q1 = model.controls.q_quadratic;
@@ -79,6 +94,24 @@ void Solver::endSharedExchange() {
 void Solver::exchangeSharedSlots() {
   beginSharedExchange();
   endSharedExchange();
+}
+
+void Solver::computeNodalVolumetricStrain() {
+  {
+    util::ScopedTimer timer(timing_.elements);
+    for (const auto& blk : sd_.solid_blocks)
+      if (blk.elform == 13 && !blk.rigid)
+        elements::writeNodalVolumes(blk, sd_.x0, sd_.x, sd_.slots.data());
+  }
+  {
+    util::ScopedTimer timer(timing_.communication);
+    nodal_volume_slots_.begin({sd_.slots});
+    nodal_volume_slots_.end({sd_.slots});
+  }
+  util::ScopedTimer timer(timing_.elements);
+  nodal_volume_.resize(2 * sd_.numNodes());
+  gather(sd_.nodal_volume, nodal_volume_, 2);
+  elements::nodalVolumetricStrain(nodal_volume_, nodal_ev_);
 }
 
 int64_t Solver::controllingElement(int64_t local_best, bool holds_global_min) const {
@@ -417,6 +450,7 @@ Solver::ElementPass Solver::computeInternalForces() {
     util::ScopedTimer timer(timing_.communication);
     boundary_.updateAirbags(time_, sd_, comm_);  // a global sum of the bags' volumes
   }
+  if (nodal_pressure_) computeNodalVolumetricStrain();
   {
     util::ScopedTimer timer(timing_.elements);
     computeElementGroup(Group::Shared, pass);
@@ -458,7 +492,8 @@ void Solver::computeElementGroup(Group group, ElementPass& pass) {
     }
     eroded_ += st.eroded;
   };
-  const elements::KernelInputs in{sd_.x, sd_.v, sd_.w, dt_, bv_, sd_.slots.data()};
+  const elements::KernelInputs in{sd_.x,           sd_.v, sd_.w, dt_, bv_, sd_.slots.data(),
+                                  nodal_ev_.data()};
   sd_.forEachBlock([&](auto& blk) {
     using Block = std::decay_t<decltype(blk)>;
     const auto [first, last] = range(blk);

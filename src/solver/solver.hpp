@@ -183,6 +183,9 @@ class Solver {
   void beginSharedExchange();
   void endSharedExchange();
   void exchangeSharedSlots();
+  // ELFORM 13: the nodal volumetric strains of this pass (nodal_ev_) from the volumes of the
+  // nodal-pressure tetrahedra around each node, summed over ranks (elements/tet_nodal.hpp).
+  void computeNodalVolumetricStrain();
   void gather(const domain::GatherPlan& plan, std::vector<double>& out, int components) const;
 
   // The steps of initialize(). Element steps are before TSSFAC.
@@ -229,6 +232,11 @@ class Solver {
   domain::Subdomain& sd_;
   comm::Communicator& comm_;
   comm::Exchange shared_slots_;  // corner slots at shared nodes, to and from the neighbours
+  // ELFORM 13 in the model: its corner volumes at shared nodes (Subdomain::nodal_volume_peers),
+  // the nodal volumes (V0_a, V_a) and strains ln(V_a / V0_a) of each pass.
+  bool nodal_pressure_ = false;
+  comm::Exchange nodal_volume_slots_;
+  std::vector<double> nodal_volume_, nodal_ev_;
   constraints::Boundary boundary_;
   elements::BulkViscosity bv_;
   std::unique_ptr<constraints::RigidBodies> rigid_;  // built in initialize(), after the masses

@@ -48,6 +48,7 @@ void visitSolid(B& b, std::size_t e, F&& f) {
     f(b.hist_ip[q * padded + e]);
   if (!b.strain.empty())
     for (int k = 0; k < 6; ++k) f(b.strain[b.blocked(6, k, e)]);
+  if (!b.ev_nodal.empty()) f(b.ev_nodal[e]);
 }
 
 template <class B, class F>

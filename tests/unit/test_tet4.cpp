@@ -17,6 +17,7 @@
 #include "model/model.hpp"
 #include "model/solid_shape.hpp"
 #include "patch_field.hpp"
+#include "tet_brick.hpp"
 
 namespace {
 
@@ -24,28 +25,7 @@ using crumple::model::Vec3;
 
 constexpr double kE = 210.0, kNu = 0.3, kRho = 7.85e-6;
 
-// Kuhn's six tetrahedra of a hexahedron (tools/deckgen.py KUHN_TETS), 0-based corners.
-constexpr int kKuhn[6][4] = {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6},
-                             {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}};
-
-// The brick model with each hexahedron cut into six tetrahedra under ELFORM 10.
-crumple::model::Model tetBrick(int nx, int ny, int nz, crumple::testing::BrickOptions opt = {}) {
-  auto m = crumple::testing::brickModel(nx, ny, nz, opt);
-  crumple::model::Solids tets;
-  for (std::size_t e = 0; e < m.solids.size(); ++e)
-    for (const auto& t : kKuhn) {
-      tets.id.push_back(int64_t(tets.id.size()) + 1);
-      tets.part.push_back(0);
-      const auto& h = m.solids.nodes[e];
-      const int32_t d = h[std::size_t(t[3])];
-      tets.nodes.push_back(
-          {h[std::size_t(t[0])], h[std::size_t(t[1])], h[std::size_t(t[2])], d, d, d, d, d});
-    }
-  m.solids = tets;
-  m.solid_sections[0].elform = 10;
-  m.finalize();
-  return m;
-}
+using crumple::testing::tetBrick;
 
 // One tetrahedron with the given corners.
 crumple::model::Model oneTet(const std::array<Vec3, 4>& x, double nu = kNu) {

@@ -22,6 +22,17 @@ inline const std::string kEsort1 = "*CONTROL_SOLID\n         1\n";
 using BrickWriter = std::function<std::string(int nx, int ny, int nz, double lx, double ly,
                                               double lz, const std::string& extra)>;
 
+// brickDeck (8-node hexahedra) with its section's ELFORM set to `form`.
+inline BrickWriter formWriter(int form) {
+  return [form](int nx, int ny, int nz, double lx, double ly, double lz, const std::string& extra) {
+    std::string deck = brickDeck(nx, ny, nz, lx, ly, lz, extra);
+    const std::string one = "*SECTION_SOLID\n         1         1\n";
+    deck.replace(deck.find(one), one.size(),
+                 "*SECTION_SOLID\n         1" + fmt::format("{:10d}", form) + "\n");
+    return deck;
+  };
+}
+
 // A bar of nx x 2 x 2 cells held axially at x = 0, started with v_x = v0 x / L: its axial
 // modes ring.
 inline std::string vibratingBar(int nx, double v0) {

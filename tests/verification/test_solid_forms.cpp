@@ -11,18 +11,7 @@
 
 namespace {
 
-using crumple::testing::brickDeck;
-
-// brickDeck with its section's ELFORM set to `form`.
-crumple::testing::BrickWriter formWriter(int form) {
-  return [form](int nx, int ny, int nz, double lx, double ly, double lz, const std::string& extra) {
-    std::string deck = brickDeck(nx, ny, nz, lx, ly, lz, extra);
-    const std::string one = "*SECTION_SOLID\n         1         1\n";
-    deck.replace(deck.find(one), one.size(),
-                 "*SECTION_SOLID\n         1" + fmt::format("{:10d}", form) + "\n");
-    return deck;
-  };
-}
+using crumple::testing::formWriter;
 
 // The cantilever of solid_runs.hpp (100 x 10 x 10 mm, 2 x 2 cells across) with 4 cells along
 // (25 x 5 x 5 mm bricks, aspect ratio 5) and with 2 (50 x 5 x 5, aspect 10), tip load along y.

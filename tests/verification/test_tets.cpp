@@ -1,12 +1,14 @@
-// Tetrahedra (*SECTION_SOLID ELFORM 10) and *CONTROL_SOLID ESORT through whole runs: energy
-// of a free vibration, the same answer bit for bit whichever way a deck writes its
-// tetrahedra, the ESORT = 0 warning, refusals, and a cantilever against beam theory.
+// Tetrahedra (*SECTION_SOLID ELFORM 10, 13) and *CONTROL_SOLID ESORT through whole runs:
+// energy of a free vibration, the same answer bit for bit whichever way a deck writes its
+// tetrahedra, the ESORT = 0 warning, refusals, a cantilever against beam theory and the
+// hexahedra, and a nearly incompressible block (ELFORM 10 locks, 13 does not).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "harness.hpp"
 #include "solid_runs.hpp"
@@ -21,9 +23,13 @@ using crumple::testing::kEsort1;
 using crumple::testing::kSteel;
 using crumple::testing::vibratingBar;
 
+// Agreement bands of the nodal-pressure tetrahedra with the hexahedra (relative).
+constexpr double kCantileverBand = 0.03, kBlockBand = 0.10;
+
 // How a deck writes its tetrahedra.
 enum class TetInput {
   Elform10Blank,     // *SECTION_SOLID ELFORM 10, N5-N8 blank
+  Elform13Blank,     // *SECTION_SOLID ELFORM 13 (nodal pressure), N5-N8 blank
   Elform1Repeated,   // ELFORM 1, N1 N2 N3 N4 N4 N4 N4 N4 (LS-DYNA's degenerate hexahedron)
   Elform1N3EqualsN4  // ELFORM 1, N1 N2 N3 N3 N4 N4 N4 N4 (the other degenerate convention)
 };
@@ -39,7 +45,9 @@ std::string tetDeck(int nx, int ny, int nz, double lx, double ly, double lz, Tet
   std::string s = "*KEYWORD\n*TITLE\nverification tetrahedra\n" + extra;
   s +=
       fmt::format("*PART\ntets\n         1         1         1\n*SECTION_SOLID\n         1{:10d}\n",
-                  input == TetInput::Elform10Blank ? 10 : 1);
+                  input == TetInput::Elform10Blank   ? 10
+                  : input == TetInput::Elform13Blank ? 13
+                                                     : 1);
   s += "*NODE\n";
   auto id = [&](int i, int j, int k) { return 1 + i + (nx + 1) * (j + (ny + 1) * k); };
   for (int k = 0; k <= nz; ++k)
@@ -59,6 +67,7 @@ std::string tetDeck(int nx, int ny, int nz, double lx, double ly, double lz, Tet
           const int a = h[t[0]], b = h[t[1]], c = h[t[2]], d = h[t[3]];
           switch (input) {
             case TetInput::Elform10Blank:
+            case TetInput::Elform13Blank:
               s += fmt::format("{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}\n", e++, 1, a, b, c, d);
               break;
             case TetInput::Elform1Repeated:
@@ -147,6 +156,108 @@ TEST(VerificationTets, CantileverBendingAgainstBeamTheory) {
   EXPECT_GT(sorted, 0.1);
   EXPECT_LT(sorted, 0.9);
   EXPECT_GT(unsorted, sorted);
+}
+
+// ELFORM 13 (nodal pressure, src/elements/tet_nodal.cpp): its forces are the work conjugate
+// of its strain rate (Bonet & Burton's pressure is the derivative of the nodal volumetric
+// energy), so the free bar keeps its energy as ELFORM 10 does.
+TEST(VerificationTets, NodalPressureFreeVibrationConservesEnergy) {
+  const auto write = [](int nx, int ny, int nz, double lx, double ly, double lz,
+                        const std::string& extra) {
+    return tetDeck(nx, ny, nz, lx, ly, lz, TetInput::Elform13Blank, extra);
+  };
+  EXPECT_LT(crumple::testing::freeBarEnergyDrift(write, "tet13_vibration"), 3e-3);
+}
+
+// The cantilever in bending (tip load along z, 20 x 2 x 2 cells of six tetrahedra): the
+// nodal-pressure tetrahedron against the fully integrated hexahedron (ELFORM 2) of the same
+// cells, and the constant-strain tetrahedron (ELFORM 10) stiffer than both.
+TEST(VerificationTets, DISABLED_NodalPressureCantileverAgainstHexahedra) {
+  const double t13 = cantileverTipRatio(TetInput::Elform13Blank, "", "tet_cant_elform13");
+  const double t10 = cantileverTipRatio(TetInput::Elform10Blank, "", "tet_cant_elform10");
+  const double hex = crumple::testing::cantileverTipRatio(crumple::testing::formWriter(2), "", 3,
+                                                          "hex_cant_elform2");
+  std::printf(
+      "[ figure ] cantilever tip: ELFORM 13 / ELFORM 2 hexahedra = %.3f, ELFORM 10 / "
+      "ELFORM 2 = %.3f\n",
+      t13 / hex, t10 / hex);
+  EXPECT_NEAR(t13 / hex, 1.0, kCantileverBand);
+  EXPECT_LT(t10, t13);
+}
+
+// A 10 mm cube (4 x 4 x 4 cells) of *MAT_ELASTIC with PR = 0.499 (K / G = 500) compressed by
+// 1 % between bonded platens: the bottom face held, the top face moved down with x and y
+// held, the sides free. The platen velocity ramps up over T / 4, holds and ramps down by T,
+// T = 0.2 ms (about 60 shear-wave transits of the cube): the mean platen force over
+// [T, 1.5 T], the quasi-static answer.
+double bondedBlockForce(const crumple::testing::BrickWriter& write, const char* label) {
+  using crumple::testing::brickNodeSet;
+  const int n = 4;
+  const double side = 10.0, T = 0.2, v0 = 0.01 * side / (0.75 * T);
+  std::string extra =
+      "*MAT_ELASTIC\n         1   7.85e-6     210.0     0.499\n" + termination(1.5 * T);
+  extra += fmt::format(
+      "*DEFINE_CURVE\n         1\n{:20.8g}{:20.8g}\n{:20.8g}{:20.8g}\n{:20.8g}{:20.8g}\n"
+      "{:20.8g}{:20.8g}\n{:20.8g}{:20.8g}\n",
+      0.0, 0.0, 0.25 * T, v0, 0.75 * T, v0, T, 0.0, 10.0 * T, 0.0);
+  extra += brickNodeSet(1, n, n, n, [n](int, int, int k) { return k == n; });
+  extra += brickNodeSet(2, n, n, n, [](int, int, int k) { return k == 0; });
+  extra += "*BOUNDARY_PRESCRIBED_MOTION_SET\n         1         3         0         1      -1.0\n";
+  extra += "*BOUNDARY_SPC_SET\n         1         0         1         1         0\n";
+  extra += "*BOUNDARY_SPC_SET\n         2         0         1         1         1\n";
+  auto sim = Simulation::fromText(label, write(n, n, n, side, side, side, extra));
+  std::vector<std::size_t> top;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) top.push_back(sim->local(1 + i + (n + 1) * (j + (n + 1) * n)));
+  double impulse = 0.0, time = 0.0;
+  sim->run([&](const crumple::solver::Solver& s) {
+    if (s.time() <= T) return;
+    double f = 0.0;
+    for (const auto node : top) f += sim->sd.f[3 * node + 2];
+    impulse += f * s.dt();
+    time += s.dt();
+  });
+  const double force = std::abs(impulse / time);
+  std::printf("[ figure ] bonded block, PR 0.499, %s: platen force %.2f kN\n", label, force);
+  return force;
+}
+
+// Volumetric locking: the constant-strain tetrahedra of a nearly incompressible block cannot
+// deform at constant volume (a mesh of n^3 cells has about as many volume constraints, six per
+// cell, as free displacements), so ELFORM 10's platen force is several times the lock-free
+// fully integrated hexahedron's (ELFORM 2: the mean dilatation, one volume constraint per
+// cell). ELFORM 13 carries one volume constraint per node and comes close to the hexahedra.
+TEST(VerificationTets, DISABLED_NearlyIncompressibleBlockLocksOnlyUnderElform10) {
+  const auto tets = [](TetInput input) {
+    return
+        [input](int nx, int ny, int nz, double lx, double ly, double lz, const std::string& extra) {
+          return tetDeck(nx, ny, nz, lx, ly, lz, input, extra);
+        };
+  };
+  const double hex = bondedBlockForce(crumple::testing::formWriter(2), "bonded_hex_elform2");
+  const double t13 = bondedBlockForce(tets(TetInput::Elform13Blank), "bonded_tet_elform13");
+  const double t10 = bondedBlockForce(tets(TetInput::Elform10Blank), "bonded_tet_elform10");
+  // Uniaxial stress E eps A = 210 kN is the lower bound (the bonded faces add stiffness).
+  EXPECT_GT(hex, 210.0);
+  EXPECT_NEAR(t13 / hex, 1.0, kBlockBand);
+  EXPECT_GT(t10 / hex, 2.0);
+}
+
+// A law of the deformation gradient takes no strain increment to replace the volumetric part
+// of: refused on ELFORM 13 with the reason.
+TEST(VerificationTets, NodalPressureRefusesHyperelasticLaws) {
+  const std::string mooney =
+      "*MAT_MOONEY-RIVLIN_RUBBER\n         1     0.001      0.49       0.5       0.2\n"
+      "       0.0       0.0       0.0         0\n";
+  try {
+    Simulation::fromText("tet13_mooney", tetDeck(1, 1, 1, 1, 1, 1, TetInput::Elform13Blank,
+                                                 mooney + termination(0.01)));
+    ADD_FAILURE() << "a hyperelastic law ran on ELFORM 13";
+  } catch (const crumple::util::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("hyperelastic law, on an ELFORM 13 section"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
