@@ -21,6 +21,7 @@
 #include "materials/laws/spotweld.hpp"
 #include "materials/laws/springs.hpp"
 #include "materials/laws/strain_rate_plasticity.hpp"
+#include "materials/laws/viscoelastic.hpp"
 
 namespace crumple::materials {
 
@@ -32,6 +33,7 @@ struct LawList {};
 using AllLaws = LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic,
                         DamperViscous, SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam,
                         JohnsonCook, PowerLaw, StrainRatePlasticity, ModifiedPiecewiseLinear,
-                        Spotweld, ElasticPlasticHydro, MooneyRivlin, FrazerNash, Muscle>;
+                        Spotweld, ElasticPlasticHydro, MooneyRivlin, FrazerNash, Muscle,
+                        Viscoelastic>;
 
 }  // namespace crumple::materials

@@ -544,3 +544,46 @@ TEST(VerificationMaterials, StrainRatePlasticityPullAtTwoRates) {
                    fmt::format("{:.3g}", worst));
   }
 }
+
+// *MAT_VISCOELASTIC in a whole run: a unit hex in uniaxial strain (as above) squeezed at a
+// constant rate to a = 1e-3 over t1 = 0.01, then held. Theory Manual, material model 6, for a
+// strain eps(t) = ln(1 - a) growing at the rate r until t1: the pressure stays K eps, and the
+// axial less the lateral stress, twice the shear part of the hereditary integral, is
+//   2 GI eps + 2 (G0 - GI) r (1 - exp(-BETA min(t, t1))) / BETA exp(-BETA max(t - t1, 0)),
+// relaxing after the hold to 2 GI eps1. Checked through the hex's stress (rotation and the
+// relaxing stress kept in its back-stress slots) within 1% of the deviator at its peak.
+TEST(VerificationMaterials, ViscoelasticRelaxesInUniaxialStrain) {
+  const double K = 2000.0, G0 = 10.0, Gi = 2.0, beta = 10.0, t1 = 0.01, a1 = 1e-3;
+  const std::string mat = fmt::format(
+      "*MAT_VISCOELASTIC\n         1    1.0e-6{:10.4g}{:10.4g}{:10.4g}{:10.4g}\n"
+      "*DEFINE_CURVE\n         1\n                 0.0                 0.0\n"
+      "{:20.12g}{:20.12g}\n                 1.0{:20.12g}\n",
+      K, G0, Gi, beta, t1, a1, a1);
+  auto sim = Simulation::fromText(
+      "visco_relax",
+      brickDeck(1, 1, 1, 1.0, 1.0, 1.0, mat + termination(0.3) + uniaxialStrainCrush()));
+  const double eps1 = std::log(1.0 - a1), rate = eps1 / t1;
+  auto deviator = [&](double t) {
+    const double eps = t < t1 ? rate * t : eps1;
+    const double relaxing =
+        -std::expm1(-beta * std::min(t, t1)) / beta * std::exp(-beta * std::max(t - t1, 0.0));
+    return 2.0 * Gi * eps + 2.0 * (G0 - Gi) * rate * relaxing;
+  };
+  const double peak = std::abs(deviator(t1));
+  double worst = 0.0, worst_p = 0.0, t_prev = 0.0;
+  int checked = 0;
+  sim->run([&](const auto& s) {
+    // The stress of the step was computed at the positions before it (t_prev).
+    const auto& blk = sim->sd.solid_blocks.at(0);
+    const double sxx = blk.sigAt(0, 0), syy = blk.sigAt(1, 0), szz = blk.sigAt(2, 0);
+    worst = std::max(worst, std::abs(sxx - syy - deviator(t_prev)));
+    const double a = sim->x0(8, 0) - sim->x(8, 0);
+    worst_p = std::max(worst_p, std::abs((sxx + syy + szz) / 3.0 - K * std::log(1.0 - a)));
+    t_prev = s.time();
+    ++checked;
+  });
+  EXPECT_GT(checked, 1000);
+  EXPECT_LT(worst, 0.01 * peak);
+  EXPECT_LT(worst_p, 0.01 * K * std::abs(eps1));
+  RecordProperty("worst_deviator_error_over_peak", std::to_string(worst / peak));
+}
