@@ -5,6 +5,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <span>
 #include <stdexcept>
 #include <utility>
@@ -44,6 +45,50 @@ std::string fmtNumber(double v) {
   return std::string(buf, ec == std::errc() ? end : buf);
 }
 
+// Which of the characters that change how a line is read it holds: a comma (free format), a
+// tab (columns not kept) and '&' (a parameter). One pass over the line, eight bytes at a time
+// (a word holds the byte c when w ^ c has a zero byte; the test is exact for the whole word).
+struct LineMarks {
+  bool comma = false, tab = false, ampersand = false;
+};
+LineMarks lineMarks(std::string_view s) {
+  constexpr uint64_t kOnes = 0x0101010101010101ULL, kHighs = 0x8080808080808080ULL;
+  const auto has = [](uint64_t w, char c) {
+    const uint64_t x = w ^ (static_cast<uint64_t>(static_cast<unsigned char>(c)) * kOnes);
+    return (x - kOnes) & ~x & kHighs;
+  };
+  uint64_t comma = 0, tab = 0, amp = 0;
+  std::size_t i = 0;
+  for (; i + 8 <= s.size(); i += 8) {
+    uint64_t w;
+    std::memcpy(&w, s.data() + i, 8);
+    comma |= has(w, ',');
+    tab |= has(w, '\t');
+    amp |= has(w, '&');
+  }
+  LineMarks m{comma != 0, tab != 0, amp != 0};
+  for (; i < s.size(); ++i) {
+    m.comma = m.comma || s[i] == ',';
+    m.tab = m.tab || s[i] == '\t';
+    m.ampersand = m.ampersand || s[i] == '&';
+  }
+  return m;
+}
+
+// An id or flag as most decks write it: an optional '-' and at most 18 digits (no overflow).
+bool parsePlainInteger(std::string_view s, int64_t& out) {
+  const bool negative = s[0] == '-';
+  s.remove_prefix(negative ? 1 : 0);
+  if (s.empty() || s.size() > 18) return false;
+  int64_t v = 0;
+  for (const char c : s) {
+    if (c < '0' || c > '9') return false;
+    v = v * 10 + (c - '0');
+  }
+  out = negative ? -v : v;
+  return true;
+}
+
 }  // namespace
 
 ParameterLookup numericParameters(const Deck& deck) {
@@ -71,9 +116,14 @@ void Card::assign(const CardSpec& spec, const DataLine* line, const Keyword& key
   next_field_ = 0;
   spaced_ = false;
   if (!line) return;
-  references_ = line->text.find('&') != std::string_view::npos;
   const std::string_view text = line->text;
-  if (freeFormat(text)) {
+  const LineMarks marks = lineMarks(text);
+  references_ = marks.ampersand;
+  if (!marks.comma && !marks.tab && !marks.ampersand) {
+    if (readPlainFixed(text)) return;
+    values_.assign(spec.fields.size(), Value{});
+  }
+  if (marks.comma && freeFormat(text)) {
     readFree(text);
     return;
   }
@@ -89,6 +139,34 @@ void Card::assign(const CardSpec& spec, const DataLine* line, const Keyword& key
   for (auto& f : fields) f = trim(f);  // once: the checks and the parse below take them so
   if (outOfColumns(text, fields) && readSpaced(text)) return;
   for (std::size_t i = 0; i < fields.size(); ++i) parseField(i, fields[i]);
+}
+
+// Fixed columns read field by field in one pass: a blank field stays blank, a text field is
+// kept trimmed, a number must be plainly written (parsePlainInteger, parseSimpleReal). A blank
+// inside a number, another number form or a bad value leaves the card to the general reading,
+// which gives the same values, or the message, as before this path existed.
+bool Card::readPlainFixed(std::string_view text) {
+  const std::size_t n = spec_->fields.size();
+  std::size_t col = 0;
+  for (std::size_t i = 0; i < n && col < text.size(); ++i) {
+    const FieldSpec& f = spec_->fields[i];
+    const std::size_t w = takesRestOfLine(*spec_, i)
+                              ? std::string_view::npos
+                              : static_cast<std::size_t>(effectiveWidth(f, keyword_->format));
+    const std::string_view s = trim(text.substr(col, w));
+    col = w == std::string_view::npos ? text.size() : col + w;
+    if (s.empty()) continue;
+    Value& v = values_[i];
+    if (f.type == FieldType::Int) {
+      if (!parsePlainInteger(s, v.inum)) return false;
+      v.num = static_cast<double>(v.inum);
+    } else if (f.type == FieldType::Real) {
+      if (!parseSimpleReal(s, v.num)) return false;
+    }
+    v.blank = false;
+    v.text = s;
+  }
+  return true;
 }
 
 // A card of one text field (a title, a file name) is never split.

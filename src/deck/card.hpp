@@ -82,6 +82,9 @@ class Card {
   bool splittable() const;
   bool freeFormat(std::string_view text) const;
   void readFree(std::string_view text);
+  // The usual card: fixed columns, every value a plain number or text. False (the card
+  // unread) when anything needs the general reading.
+  bool readPlainFixed(std::string_view text);
   // The text of each field in the card's columns into `out` (room for every field); how many.
   std::size_t fixedFields(std::string_view text, std::span<std::string_view> out) const;
   bool outOfColumns(std::string_view text, std::span<const std::string_view> fields) const;

@@ -95,7 +95,8 @@ bool isBinary(unsigned char u) {
   return (u < 0x20 || u == 0x7f) && !allowed;
 }
 
-// Offset of the first binary byte of `text` (isBinary, "\r" not counted), or npos. Eight
+// Offset of the first binary byte of `text` (isBinary, or a "\r": the caller has removed the
+// one that ends a line), or npos. Eight
 // bytes at a time: a word none of whose bytes is below 0x20 or 0x7f needs no closer look (a
 // branch per byte was a fifth of reading a deck).
 std::size_t firstBinaryByte(std::string_view text) {
@@ -109,10 +110,10 @@ std::size_t firstBinaryByte(std::string_view text) {
     const uint64_t del = (x - kOnes) & ~x & kHighs;
     if ((below_space | del) == 0) continue;
     for (std::size_t k = i; k < i + 8; ++k)
-      if (isBinary(static_cast<unsigned char>(text[k]))) return k;
+      if (isBinary(static_cast<unsigned char>(text[k])) || text[k] == '\r') return k;
   }
   for (; i < text.size(); ++i)
-    if (isBinary(static_cast<unsigned char>(text[i]))) return i;
+    if (isBinary(static_cast<unsigned char>(text[i])) || text[i] == '\r') return i;
   return std::string_view::npos;
 }
 
@@ -144,8 +145,7 @@ class LineSplitter {
           display_, line_no_, kMaxLineLength));
     }
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    const std::size_t cr = line.find('\r');
-    const std::size_t bad = std::min(cr, firstBinaryByte(line));
+    const std::size_t bad = firstBinaryByte(line);
     if (bad != std::string_view::npos) failBinary(line[bad], bad);
     return true;
   }

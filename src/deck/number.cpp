@@ -29,6 +29,7 @@ std::optional<double> parseReal(std::string_view s) {
   // The usual number is C's: read in place. from_chars stops at a 'd' exponent or a Fortran
   // exponent without its letter ("1.5-3"), and "inf"/"nan" are not finite: those go on below.
   double fast = 0;
+  if (parseSimpleReal(s, fast)) return fast;
   const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), fast);
   if (ec == std::errc() && ptr == s.data() + s.size() && std::isfinite(fast)) return fast;
   std::string t(s);

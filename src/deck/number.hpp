@@ -33,6 +33,57 @@ inline std::string_view trim(std::string_view s) {
   return s.substr(first, last - first);
 }
 
+// The usual decimal number ("-12.5", "3", "1.e5", "2.5E-03", written by pre-processors in
+// every field) read in place, exactly: true and `out` set when `s` (trimmed, no '+') is an
+// optional '-', at most 19 digits with an optional '.', and an optional e/E exponent, and
+// the value is a significand below 2^53 times a power of ten of at most 22. Then one IEEE
+// multiplication or division of two exact doubles gives the correctly rounded value, the
+// one std::from_chars gives (Clinger, "How to read floating point numbers accurately",
+// PLDI 1990, the "fast path"). Anything else is false, and the caller reads it the long way.
+inline bool parseSimpleReal(std::string_view s, double& out) {
+  static constexpr double kPow10[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                        1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                        1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  const char* p = s.data();
+  const char* const end = p + s.size();
+  const bool negative = p != end && *p == '-';
+  p += negative ? 1 : 0;
+  uint64_t m = 0;
+  int digits = 0, exponent = 0;
+  bool point = false;
+  for (; p != end; ++p) {
+    const char c = *p;
+    if (c >= '0' && c <= '9') {
+      if (++digits > 19) return false;
+      m = m * 10 + static_cast<uint64_t>(c - '0');
+      exponent -= point ? 1 : 0;
+    } else if (c == '.' && !point) {
+      point = true;
+    } else {
+      break;
+    }
+  }
+  if (digits == 0) return false;
+  if (p != end) {
+    if (*p != 'e' && *p != 'E') return false;
+    ++p;
+    const bool minus = p != end && *p == '-';
+    p += p != end && (*p == '-' || *p == '+') ? 1 : 0;
+    if (p == end || end - p > 3) return false;
+    int e = 0;
+    for (; p != end; ++p) {
+      if (*p < '0' || *p > '9') return false;
+      e = e * 10 + (*p - '0');
+    }
+    exponent += minus ? -e : e;
+  }
+  if (m > (uint64_t{1} << 53) || exponent < -22 || exponent > 22) return false;
+  const auto x = static_cast<double>(m);
+  const double v = exponent < 0 ? x / kPow10[-exponent] : x * kPow10[exponent];
+  out = negative ? -v : v;
+  return true;
+}
+
 // A finite real in any of the forms above; nullopt if `s` (trimmed) is not one.
 std::optional<double> parseReal(std::string_view s);
 

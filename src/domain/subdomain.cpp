@@ -66,31 +66,35 @@ struct NodeRanks {
   bool shared(std::size_t node) const { return ptr[node + 1] - ptr[node] > 1; }
 };
 
+// Bucketed by node (a count per node, then each node's few ranks sorted and made distinct):
+// the same CSR a sort of (node, rank) pairs gives, without sorting 8 pairs per element.
 NodeRanks nodeRanks(const model::Model& model, const std::vector<int32_t>& elem_rank) {
   const std::size_t nn = model.nodes.size();
-  std::vector<std::pair<int32_t, int32_t>> pairs;  // (node, rank)
-  pairs.reserve(8 * model.numElements() + nn);
-  std::vector<uint8_t> touched(nn, 0);
+  std::vector<int32_t> count(nn + 1, 0);
   int32_t en[8];
   for (std::size_t g = 0; g < model.numElements(); ++g) {
     const int k = model.elementNodes(g, en);
-    for (int a = 0; a < k; ++a) {
-      pairs.emplace_back(en[a], elem_rank[g]);
-      touched[static_cast<std::size_t>(en[a])] = 1;
-    }
+    for (int a = 0; a < k; ++a) count[static_cast<std::size_t>(en[a]) + 1]++;
   }
   for (std::size_t n = 0; n < nn; ++n)
-    if (!touched[n]) pairs.emplace_back(int32_t(n), 0);  // element-less nodes live on rank 0
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    if (count[n + 1] == 0) count[n + 1] = 1;  // element-less nodes live on rank 0
+  std::partial_sum(count.begin(), count.end(), count.begin());
+  std::vector<int32_t> rank(static_cast<std::size_t>(count[nn]), 0);
+  std::vector<int32_t> fill(count.begin(), count.end() - 1);
+  for (std::size_t g = 0; g < model.numElements(); ++g) {
+    const int k = model.elementNodes(g, en);
+    for (int a = 0; a < k; ++a)
+      rank[static_cast<std::size_t>(fill[std::size_t(en[a])]++)] = elem_rank[g];
+  }
   NodeRanks nr;
   nr.ptr.assign(nn + 1, 0);
-  nr.rank.resize(pairs.size());
-  for (std::size_t i = 0; i < pairs.size(); ++i) {
-    nr.ptr[static_cast<std::size_t>(pairs[i].first) + 1]++;
-    nr.rank[i] = pairs[i].second;
+  nr.rank.reserve(rank.size());
+  for (std::size_t n = 0; n < nn; ++n) {
+    const auto first = rank.begin() + count[n], last = rank.begin() + count[n + 1];
+    std::sort(first, last);
+    nr.rank.insert(nr.rank.end(), first, std::unique(first, last));
+    nr.ptr[n + 1] = static_cast<int32_t>(nr.rank.size());
   }
-  std::partial_sum(nr.ptr.begin(), nr.ptr.end(), nr.ptr.begin());
   return nr;
 }
 
@@ -122,9 +126,30 @@ int elementCorners(const model::Model& model, std::size_t g, Corner out[8]) {
   return n;
 }
 
+// Corners ordered by (node, source, corner): bucketed by node, then each node's few corners
+// sorted (no two corners share source and corner, so the order is the one a sort of the whole
+// list gives).
+void sortCorners(std::vector<Corner>& corners) {
+  if (corners.empty()) return;
+  const auto top =
+      std::max_element(corners.begin(), corners.end(), [](const Corner& a, const Corner& b) {
+        return a.node < b.node;
+      })->node;
+  std::vector<std::size_t> start(static_cast<std::size_t>(top) + 2, 0);
+  for (const Corner& c : corners) start[static_cast<std::size_t>(c.node) + 1]++;
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<Corner> out(corners.size());
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (const Corner& c : corners) out[fill[static_cast<std::size_t>(c.node)]++] = c;
+  for (std::size_t n = 0; n + 1 < start.size(); ++n)
+    std::sort(out.begin() + static_cast<std::ptrdiff_t>(start[n]),
+              out.begin() + static_cast<std::ptrdiff_t>(start[n + 1]));
+  corners.swap(out);
+}
+
 GatherPlan gatherPlan(std::vector<Corner> corners, const std::vector<int32_t>& local_of,
                       std::size_t num_nodes) {
-  std::sort(corners.begin(), corners.end());
+  sortCorners(corners);
   GatherPlan plan;
   plan.ptr.assign(num_nodes + 1, 0);
   plan.slot.resize(corners.size());

@@ -204,7 +204,12 @@ void readSolids(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
     // Card 1 with EID and PID only: the nodes follow on a second card of ten 8-character
     // fields (Keyword Manual, *ELEMENT_SOLID, the format of 10-node tetrahedra that
     // pre-processors also use for hexahedra).
-    const bool two_cards = std::all_of(kN, kN + 8, [&](auto n) { return c.blank(n); });
+    std::array<int64_t, 8> ids{};
+    for (int i = 0; i < 8; ++i) ids[i] = c.integer(kN[i]);
+    // Blank fields read as 0: only then can the card be the two-card form (a look at each
+    // field's blankness per element was a tenth of reading the card).
+    const bool two_cards = std::all_of(ids.begin(), ids.end(), [](int64_t n) { return n == 0; }) &&
+                           std::all_of(kN, kN + 8, [&](auto n) { return c.blank(n); });
     const Card* nc = &c;
     if (two_cards) {
       if (cur.atEnd()) c.fail("N1", "the element has no nodes");
@@ -212,9 +217,8 @@ void readSolids(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
       for (auto n : {kN[8], kN[9]})
         if (nc->integer(n) != 0)
           ctx.reject(*nc, n, "10-node tetrahedra are not supported (8-node solids only)");
+      for (int i = 0; i < 8; ++i) ids[i] = nc->integer(kN[i]);
     }
-    std::array<int64_t, 8> ids{};
-    for (int i = 0; i < 8; ++i) ids[i] = nc->integer(kN[i]);
     // A tetrahedron given by N1..N4 alone: LS-DYNA's degenerate form repeats N4 (n4=...=n8).
     if (ids[3] != 0 && std::all_of(ids.begin() + 4, ids.end(), [](int64_t n) { return n == 0; }))
       std::fill(ids.begin() + 4, ids.end(), ids[3]);

@@ -24,15 +24,13 @@ double Curve::valueExtrapolated(double t) const {
 }
 
 namespace {
-int32_t find(const std::unordered_map<int64_t, int32_t>& m, int64_t id) {
-  auto it = m.find(id);
-  return it == m.end() ? kNone : it->second;
+int32_t find(const util::IdIndex& m, int64_t id) {
+  static_assert(util::IdIndex::kAbsent == kNone);
+  return m.find(id);
 }
 template <class Ids>
-void fill(std::unordered_map<int64_t, int32_t>& m, const Ids& ids) {
-  m.clear();
-  m.reserve(ids.size());
-  for (std::size_t i = 0; i < ids.size(); ++i) m.emplace(ids[i], static_cast<int32_t>(i));
+void fill(util::IdIndex& m, const Ids& ids) {
+  m.assign(ids);
 }
 }  // namespace
 
@@ -184,7 +182,7 @@ void Model::releaseMesh() {
   for (auto& sets : element_sets) sets.clear();
   std::vector<Vec3>().swap(initial_velocity);
   std::vector<Vec3>().swap(initial_angular_velocity);
-  std::unordered_map<int64_t, int32_t>().swap(node_index_);
+  node_index_.clear();
 }
 
 void Model::finalize() {

@@ -19,6 +19,7 @@
 #include "materials/materials.hpp"
 #include "model/contact.hpp"
 #include "model/rigid.hpp"
+#include "util/id_index.hpp"
 #include "util/source_loc.hpp"
 
 namespace crumple::model {
@@ -625,7 +626,7 @@ struct Model {
   void releaseMesh();
 
  private:
-  std::unordered_map<int64_t, int32_t> node_index_, part_index_, curve_index_, table_index_;
+  util::IdIndex node_index_, part_index_, curve_index_, table_index_;
 };
 
 }  // namespace crumple::model

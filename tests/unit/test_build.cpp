@@ -17,6 +17,7 @@
 #include "model/serialize.hpp"
 #include "temp_dir.hpp"
 #include "util/error.hpp"
+#include "util/id_index.hpp"
 
 namespace fs = std::filesystem;
 using crumple::model::Model;
@@ -921,4 +922,30 @@ TEST(BuildSph, PlaneStrainParticles) {
                 .find("only three-dimensional (IDIM 0 or 3) and plane-strain (IDIM 2) SPH are "
                       "supported"),
             std::string::npos);
+}
+
+// Id -> position, dense for meshers' numbering and hashed for scattered ids: the first
+// position of a repeated id, kAbsent outside, ids of any sign.
+TEST(IdIndex, DenseAndScatteredIdsGiveTheFirstPosition) {
+  using crumple::util::IdIndex;
+  IdIndex dense;
+  dense.assign(std::vector<int64_t>{5, 3, 4, 7, 3, -1});
+  EXPECT_EQ(dense.find(5), 0);
+  EXPECT_EQ(dense.find(3), 1);  // the first of the two
+  EXPECT_EQ(dense.find(7), 3);
+  EXPECT_EQ(dense.find(-1), 5);
+  for (const int64_t absent :
+       std::vector<int64_t>{0, 1, 2, 6, 8, -2, std::numeric_limits<int64_t>::min(),
+                            std::numeric_limits<int64_t>::max()})
+    EXPECT_EQ(dense.find(absent), IdIndex::kAbsent) << absent;
+  IdIndex sparse;
+  const int64_t big = std::numeric_limits<int64_t>::max();
+  sparse.assign(std::vector<int64_t>{big, 10, -big, 1000000000000, 10});
+  EXPECT_EQ(sparse.find(big), 0);
+  EXPECT_EQ(sparse.find(10), 1);
+  EXPECT_EQ(sparse.find(-big), 2);
+  EXPECT_EQ(sparse.find(1000000000000), 3);
+  EXPECT_EQ(sparse.find(11), IdIndex::kAbsent);
+  sparse.assign(std::vector<int64_t>{});
+  EXPECT_EQ(sparse.find(10), IdIndex::kAbsent);
 }

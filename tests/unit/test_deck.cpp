@@ -6,10 +6,13 @@
 #include <unistd.h>
 #include <array>
 #include <atomic>
+#include <bit>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <random>
 #include <string>
 #include <utility>
 
@@ -126,6 +129,66 @@ TEST(DeckExpression, OperatorsFunctionsAndParameters) {
   EXPECT_THROW(evaluateExpression("(1 + 2", none), ExpressionError);
   EXPECT_THROW(evaluateExpression("foo(1)", none), ExpressionError);
   EXPECT_THROW(evaluateExpression("1 2", none), ExpressionError);
+}
+
+// The in-place reading of plain decimals (parseSimpleReal, Clinger's fast path) must give the
+// bits std::from_chars gives, for the forms pre-processors write, and leave to the long way
+// what it cannot read exactly.
+TEST(DeckNumber, PlainDecimalsReadBitwiseAsFromChars) {
+  using crumple::deck::parseReal;
+  using crumple::deck::parseSimpleReal;
+  std::mt19937_64 rng(19);
+  std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
+  std::uniform_int_distribution<int> power(-30, 30);
+  int accepted = 0, total = 0;
+  const auto check = [&](const std::string& text) {
+    double want = 0;
+    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), want);
+    ASSERT_TRUE(ec == std::errc() && ptr == text.data() + text.size()) << text;
+    double fast = 0;
+    ++total;
+    if (parseSimpleReal(text, fast)) {
+      ++accepted;
+      EXPECT_EQ(std::bit_cast<uint64_t>(fast), std::bit_cast<uint64_t>(want)) << text;
+    }
+    EXPECT_EQ(std::bit_cast<uint64_t>(*parseReal(text)), std::bit_cast<uint64_t>(want)) << text;
+  };
+  for (int k = 0; k < 20000; ++k) {
+    const double x = mantissa(rng) * std::pow(10.0, power(rng));
+    for (const char* f : {"{:.9g}", "{:.6E}", "{:.15g}", "{:.17g}", "{:.3f}", "{:.0f}"})
+      check(fmt::format(fmt::runtime(f), x));
+  }
+  for (const char* t :
+       {"0", "-0", "-0.0", "1.", ".5", "1.e5", "2.5E-03", "7.85e-6", "210.0", "1e22", "1e-22",
+        "9007199254740993", "123456789012345678", "1e23", "0.1", "0.30000000000000004", "1E+2"})
+    check(t);
+  // Most of them take the fast path; 17 significant digits and large powers do not.
+  EXPECT_GT(accepted, total / 2);
+  double v = 0;
+  for (const char* other : {"+1", "1.5-3", "1d3", "1e", "1e+", ".", "-", "1e400", "1 2", "0x10"})
+    EXPECT_FALSE(parseSimpleReal(other, v)) << other;
+}
+
+// A card whose fields the fast fixed-column reading refuses (a Fortran exponent, a '+', an
+// integral real in an integer field, blanks inside a number) reads as it always did.
+TEST(DeckFormat, FixedCardsOutsideThePlainFormsReadAsBefore) {
+  TempDir t;
+  const auto p = t.write(
+      "d.k",
+      std::string(kCube) +
+          "*MAT_ELASTIC\n"
+          "         1    7.83-6    +207.0       0.3\n"
+          "*NODE\n" +
+          cols({{"+10", 8}, {"1.5D0", 16}, {"+2.0", 16}, {"-4.0E+00", 16}, {"1.0", 8}, {"0", 8}}));
+  const auto m = crumple::model::readModel(p);
+  ASSERT_EQ(m.nodes.size(), 9u);
+  EXPECT_EQ(m.nodes.id.back(), 10);
+  EXPECT_EQ(m.nodes.x.back()[0], 1.5);
+  EXPECT_EQ(m.nodes.x.back()[1], 2.0);
+  EXPECT_EQ(m.nodes.x.back()[2], -4.0);
+  EXPECT_EQ(m.materials.at(0).rho, 7.83e-6);
+  ASSERT_EQ(m.spcs.size(), 1u);  // TC 1.0 read as 1 (x)
+  EXPECT_EQ(m.spcs[0].dofs, 0b000001);
 }
 
 TEST(DeckFormat, FixedNodeWidthsRunsOfDigitsAndFortranReals) {
