@@ -30,10 +30,10 @@ struct LawList {};
 
 // The order is the index of a law in archives (restart dumps, the model sent to other ranks):
 // append new laws at the end.
-using AllLaws = LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic,
-                        DamperViscous, SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam,
-                        JohnsonCook, PowerLaw, StrainRatePlasticity, ModifiedPiecewiseLinear,
-                        Spotweld, ElasticPlasticHydro, MooneyRivlin, FrazerNash, Muscle,
-                        Viscoelastic>;
+using AllLaws =
+    LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic, DamperViscous,
+            SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam, JohnsonCook, PowerLaw,
+            StrainRatePlasticity, ModifiedPiecewiseLinear, Spotweld, ElasticPlasticHydro,
+            MooneyRivlin, FrazerNash, Muscle, Viscoelastic>;
 
 }  // namespace crumple::materials

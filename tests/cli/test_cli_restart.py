@@ -80,7 +80,7 @@ class RestartEquality(RestartCase):
             (data_deck("mixed_conditions.k"), [], 40),
             (data_deck("contact_tube.k"), ["--endtime", "0.5"], 700),
             (data_deck("contact_blocks.k"), [], 150),
-            (data_deck("contact_tied_edge.k"), [], 1500),
+            (data_deck("contact_tied_edge.k"), [], 2500),
             (data_deck("contact_tiebreak.k"), [], 1100),
             (data_deck("tet_blocks.k"), [], 150),
             (data_deck("tet13_blocks.k"), [], 150),

@@ -402,16 +402,17 @@ TEST(BuildErrors, ExactMessages) {
       err("*BOUNDARY_PRESCRIBED_MOTION_NODE\n1,1,0,3\n"),
       at(26) + "*BOUNDARY_PRESCRIBED_MOTION_NODE card 1 field 4 (LCID): curve 3 is not defined");
   // An unsupported section is an error only when an element uses it.
-  EXPECT_EQ(err("*SECTION_SOLID\n2,13\n*PART\nother\n2,2,1\n"), "");
-  EXPECT_EQ(err("*SECTION_SOLID\n2,13\n*PART\nother\n2,2,1\n*ELEMENT_SOLID\n3,2,1,2,3,4,5,6,7,8\n"),
-            at(31) +
-                "*ELEMENT_SOLID card 1 field 2 (PID): part 2 uses *SECTION_SOLID ELFORM=13 "
-                "(section 2 at " +
-                file + ":26), which is not supported yet");
+  EXPECT_EQ(err("*SECTION_SOLID\n2,115\n*PART\nother\n2,2,1\n"), "");
+  EXPECT_EQ(
+      err("*SECTION_SOLID\n2,115\n*PART\nother\n2,2,1\n*ELEMENT_SOLID\n3,2,1,2,3,4,5,6,7,8\n"),
+      at(31) +
+          "*ELEMENT_SOLID card 1 field 2 (PID): part 2 uses *SECTION_SOLID ELFORM=115 "
+          "(section 2 at " +
+          file + ":26), which is not supported yet");
   // A tetrahedron section takes elements of four distinct nodes only.
   EXPECT_EQ(err("*SECTION_SOLID\n2,10\n*PART\nother\n2,2,1\n*ELEMENT_SOLID\n3,2,1,2,3,4,5,6,7,8\n"),
             at(31) +
-                "*ELEMENT_SOLID card 1 field 3 (N1): a tetrahedron (*SECTION_SOLID ELFORM 10) "
+                "*ELEMENT_SOLID card 1 field 3 (N1): a tetrahedron (*SECTION_SOLID ELFORM 10, 13) "
                 "needs 4 distinct nodes, not 8 (N1 N2 N3 N4, N5 to N8 blank or N4)");
   const auto empty = t.write("n.k", "*KEYWORD\n*NODE\n1,0,0,0\n");
   EXPECT_EQ(errorOf([&] { readModel(empty); }),
@@ -585,9 +586,9 @@ TEST(BuildTables, Mat024LcsrAndVp) {
 TEST(BuildUnsupported, CountsFirstLocationsReasonsAndIgnoredFields) {
   TempDir t;
   const auto p = t.write("u.k", kMesh +
-                                    "*CONTACT_FORCE_TRANSDUCER_PENALTY\n1\n"
+                                    "*ELEMENT_SEATBELT_ACCELEROMETER\n1\n"
                                     "*DATABASE_BINARY_D3THDT\n0.1\n"
-                                    "*contact_force_transducer_penalty\n2\n"
+                                    "*element_seatbelt_accelerometer\n2\n"
                                     "*CONTROL_IMPLICIT_SOLVER\n1\n"
                                     "*CONTROL_MPP_IO_NODUMP\n"
                                     "*CONTROL_THERMAL_SOLVER\n1\n"
@@ -595,10 +596,10 @@ TEST(BuildUnsupported, CountsFirstLocationsReasonsAndIgnoredFields) {
                                     "*SECTION_SOLID\n3,1,1\n");
   const Model m = readModel(p);
   ASSERT_EQ(m.unsupported.size(), 5u);
-  EXPECT_EQ(m.unsupported[0].keyword, "*CONTACT_FORCE_TRANSDUCER_PENALTY");
+  EXPECT_EQ(m.unsupported[0].keyword, "*ELEMENT_SEATBELT_ACCELEROMETER");
   EXPECT_EQ(m.unsupported[0].count, 2);
   EXPECT_EQ(m.unsupported[0].first.line, 25);
-  EXPECT_EQ(m.unsupported[0].reason, "output not written yet (force transducer)");
+  EXPECT_EQ(m.unsupported[0].reason, "output not written yet (accelerometer)");
   EXPECT_EQ(m.unsupported[1].reason, "output not written yet");
   EXPECT_EQ(m.unsupported[2].reason, "implicit controls: not used by an explicit analysis");
   EXPECT_EQ(m.unsupported[3].reason, "ignored: MPP/SMP option");
@@ -616,8 +617,8 @@ TEST(BuildUnsupported, CountsFirstLocationsReasonsAndIgnoredFields) {
   const std::string table = crumple::model::formatUnsupported(m);
   const std::string loc = p.string() + ":25";
   EXPECT_EQ(table.rfind("keyword ", 0), 0u) << table;
-  EXPECT_NE(table.find("*CONTACT_FORCE_TRANSDUCER_PENALTY      2  " + loc +
-                       "  output not written yet (force transducer)\n"),
+  EXPECT_NE(table.find("*ELEMENT_SEATBELT_ACCELEROMETER      2  " + loc +
+                       "  output not written yet (accelerometer)\n"),
             std::string::npos)
       << table;
 }

@@ -288,7 +288,7 @@ TEST(ContactPenalty, TiedNodeIsPulledToItsPoint) {
   expectVec(offset.force, {0, 0, 0}, 1e-12);
 }
 
-TEST(ContactPenalty, RecordTravelsAsTwentyTwoDoublesInFieldOrder) {
+TEST(ContactPenalty, RecordTravelsAsTwentyNineDoublesInFieldOrder) {
   Record r;
   r.check = 12;
   r.segment = 5;
@@ -302,12 +302,16 @@ TEST(ContactPenalty, RecordTravelsAsTwentyTwoDoublesInFieldOrder) {
   r.entry = 0.0625;
   r.edge_s = 0.75;
   r.M = {0.7, 0.1, 0.1, 0.1};
+  r.moment = {7, 8, 9};
+  r.arm = {-7, -8, -9};
+  r.released = 1;
   std::vector<double> wire;
   contact::pack(r, wire);
   ASSERT_EQ(wire.size(), contact::kRecordDoubles);
-  EXPECT_EQ(contact::kRecordDoubles, 22u);
-  EXPECT_EQ(wire, (std::vector<double>{12,  5,    0.1,   0.2, 0.3,    0.4,  1,   2,   3,   4,  5, 6,
-                                       0.5, 0.25, 0.125, -1,  0.0625, 0.75, 0.7, 0.1, 0.1, 0.1}));
+  EXPECT_EQ(contact::kRecordDoubles, 29u);
+  EXPECT_EQ(wire, (std::vector<double>{12,  5,   0.1, 0.2,  0.3,   0.4, 1,      2,    3,   4,
+                                       5,   6,   0.5, 0.25, 0.125, -1,  0.0625, 0.75, 0.7, 0.1,
+                                       0.1, 0.1, 7,   8,    9,     -7,  -8,     -9,   1}));
   const Record back = contact::unpack(wire.data());
   EXPECT_EQ(back.check, 12);
   EXPECT_EQ(back.segment, 5);
@@ -318,6 +322,9 @@ TEST(ContactPenalty, RecordTravelsAsTwentyTwoDoublesInFieldOrder) {
   EXPECT_EQ(back.M, r.M);
   EXPECT_EQ(back.entry, 0.0625);
   EXPECT_EQ(back.edge_s, 0.75);
+  EXPECT_EQ(back.moment, r.moment);
+  EXPECT_EQ(back.arm, r.arm);
+  EXPECT_EQ(back.released, 1);
 }
 
 }  // namespace
