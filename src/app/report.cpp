@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <iterator>
 #include <map>
 #include <set>
 
@@ -77,7 +78,8 @@ std::string modelSummary(const model::Model& m, const solver::Solver& s) {
   out += fmt::format("end time: {:g}\n", m.controls.end_time);
   if (!m.contacts.empty()) {
     static constexpr const char* kKind[] = {"nodes to surface", "surface to surface",
-                                            "single surface", "tied"};
+                                            "single surface", "tied", "force transducer"};
+    static_assert(std::size(kKind) == std::size_t(model::ContactKind::Transducer) + 1);
     for (const auto& c : m.contacts)
       out += fmt::format(
           "contact {}{}: {}{}, {} nodes / {} segments against {} segments\n", c.id,
