@@ -14,17 +14,18 @@ N = 6
 R = 1.0
 
 
-def main() -> None:
-    out = sys.argv[1] if len(sys.argv) > 1 else "tests/data/decks/airbag_sphere.k"
+def sphere_mesh(n: int, radius: float):
+    """A cube of n x n quads per face projected onto a sphere: node coordinates and outward
+    quads (1-based node ids)."""
     ids: dict[tuple[int, int, int], int] = {}
     coords: list[tuple[float, float, float]] = []
 
     def node(p: tuple[int, int, int]) -> int:
         if p not in ids:
             ids[p] = len(coords) + 1
-            x, y, z = (2.0 * c / N - 1.0 for c in p)
+            x, y, z = (2.0 * c / n - 1.0 for c in p)
             r = math.sqrt(x * x + y * y + z * z)
-            coords.append((R * x / r, R * y / r, R * z / r))
+            coords.append((radius * x / r, radius * y / r, radius * z / r))
         return ids[p]
 
     shells = []
@@ -32,9 +33,9 @@ def main() -> None:
     # u x v along the outward normal.
     for axis in range(3):
         u, v = (axis + 1) % 3, (axis + 2) % 3
-        for side in (0, N):
-            for i in range(N):
-                for j in range(N):
+        for side in (0, n):
+            for i in range(n):
+                for j in range(n):
                     quad = []
                     for di, dj in ((0, 0), (1, 0), (1, 1), (0, 1)):
                         p = [0, 0, 0]
@@ -43,6 +44,12 @@ def main() -> None:
                     if side == 0:
                         quad = [quad[0], quad[3], quad[2], quad[1]]
                     shells.append(quad)
+    return coords, shells
+
+
+def main() -> None:
+    out = sys.argv[1] if len(sys.argv) > 1 else "tests/data/decks/airbag_sphere.k"
+    coords, shells = sphere_mesh(N, R)
     lines = ["*KEYWORD", "*TITLE", "airbag sphere: elastic shells inflated by a pressure-volume bag",
              "*CONTROL_TERMINATION", f"{0.1:10.4g}",
              "*PART", "sphere", f"{1:10d}{1:10d}{1:10d}",

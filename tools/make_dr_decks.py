@@ -14,6 +14,8 @@ tests/data/decks/dr_rubber_sphere.k: a sphere of radius 0.1 of *MAT_MOONEY-RIVLI
 usage: make_dr_decks.py [OUTDIR]
 """
 import math
+
+from make_airbag_sphere import sphere_mesh
 import sys
 
 
@@ -55,32 +57,7 @@ def bar(out: str) -> None:
 
 
 def sphere(out: str) -> None:
-    n, r = 6, 0.1
-    ids: dict[tuple[int, int, int], int] = {}
-    coords: list[tuple[float, float, float]] = []
-
-    def node(p: tuple[int, int, int]) -> int:
-        if p not in ids:
-            ids[p] = len(coords) + 1
-            x, y, z = (2.0 * c / n - 1.0 for c in p)
-            d = math.sqrt(x * x + y * y + z * z)
-            coords.append((r * x / d, r * y / d, r * z / d))
-        return ids[p]
-
-    shells = []
-    for axis in range(3):
-        u, v = (axis + 1) % 3, (axis + 2) % 3
-        for side in (0, n):
-            for i in range(n):
-                for j in range(n):
-                    quad = []
-                    for di, dj in ((0, 0), (1, 0), (1, 1), (0, 1)):
-                        p = [0, 0, 0]
-                        p[axis], p[u], p[v] = side, i + di, j + dj
-                        quad.append(node(tuple(p)))
-                    if side == 0:
-                        quad = [quad[0], quad[3], quad[2], quad[1]]
-                    shells.append(quad)
+    coords, shells = sphere_mesh(6, 0.1)
     lines = ["*KEYWORD", "*TITLE", "rubber sphere: inflated by dynamic relaxation, then dropped",
              "*CONTROL_TERMINATION", f"{0.02:10.4g}",
              "*CONTROL_DYNAMIC_RELAXATION",
