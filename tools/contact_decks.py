@@ -20,7 +20,7 @@ import pathlib
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from deckgen import Mesh, block, grid_solids, node_set  # noqa: E402
+from deckgen import Mesh, block, grid_solids, node_set, shell_grid  # noqa: E402
 
 
 def _velocities(ids, v) -> str:
@@ -415,14 +415,7 @@ target
 
 def _shell_plate(m: Mesh, part: int, z: float) -> dict:
     """A 30 x 30 plate of 3 x 3 shells of 10 mm at height z; its node ids keyed (i, j)."""
-    plate = {}
-    for j in range(4):
-        for i in range(4):
-            plate[i, j] = m.add_node(10.0 * i, 10.0 * j, z)
-    for j in range(3):
-        for i in range(3):
-            m.add_shell(part, [plate[i, j], plate[i + 1, j], plate[i + 1, j + 1], plate[i, j + 1]])
-    return plate
+    return shell_grid(m, part, (0.0, 0.0, z), (30.0, 30.0), (3, 3))
 
 
 def pressed_plate(load: float = 100.0, end: float = 1.33e-4) -> str:
@@ -562,6 +555,147 @@ upper plate
 *BOUNDARY_PRESCRIBED_MOTION_SET
 2,3,2,1,1.0
 """ + node_set(1, fixed) + node_set(2, list(plate.values())) + m.keyword_text() + "*END\n"
+
+
+def approaching_plates(kind: str = "AUTOMATIC_SINGLE_SURFACE", ssthk: int = 0,
+                       optt: float = 0.0, thickness: float = 6.0, gap: float = 10.0,
+                       speed: float = 1.0, end: float = 7.0) -> str:
+    """Two steel shell plates (3 x 3 shells of 10 mm, `thickness` thick) with their
+    mid-surfaces `gap` apart: the lower one held, the upper one driven down at `speed` (every
+    node prescribed), in one contact of `kind` over both (*CONTROL_CONTACT SSTHK `ssthk`;
+    `optt` > 0: *PART_CONTACT OPTT on both parts). Units mm, ms, kg, GPa. The force starts
+    when the mid-surfaces come within the contact thickness, at t = (gap - thickness) / speed,
+    so the force's onset measures the contact thickness the code takes: LS-DYNA limits a
+    shell's to 40% of its shortest edge in single surface contacts with SSTHK 0 unless OPTT
+    or SST gives one (dynasupport, "Contact thickness")."""
+    m = Mesh()
+    fixed = list(_shell_plate(m, 1, 0.0).values())
+    plate = list(_shell_plate(m, 2, gap).values())
+    single = "SINGLE_SURFACE" in kind or kind == "AUTOMATIC_GENERAL"
+    surfaces = "1,0,2" if single else "1,2,3,3"
+    part = "*PART_CONTACT" if optt > 0.0 else "*PART"
+    extra = f"\n0.0,0.0,0.0,0.0,{optt}" if optt > 0.0 else ""
+    return f"""*KEYWORD
+*TITLE
+plates approaching: the contact thickness of shells
+*CONTROL_TERMINATION
+{end}
+*CONTROL_CONTACT
+0.1
+0,0,0,0,4.0,{ssthk}
+*DATABASE_BNDOUT
+0.02
+{part}
+lower plate
+1,1,1{extra}
+{part}
+upper plate
+2,1,1{extra}
+*SECTION_SHELL
+1,2
+{thickness},{thickness},{thickness},{thickness}
+*MAT_ELASTIC
+1,7.85e-6,210.,0.3
+*SET_PART_LIST
+1
+1,2
+*CONTACT_{kind}
+{surfaces}
+0.0,0.0,0.0,0.0,0.0
+*DEFINE_CURVE
+1
+0.0,{-speed}
+1000.0,{-speed}
+*BOUNDARY_SPC_SET
+1,0,1,1,1,1,1,1
+*BOUNDARY_PRESCRIBED_MOTION_SET
+2,3,0,1,1.0
+""" + node_set(1, fixed) + node_set(2, plate) + m.keyword_text() + "*END\n"
+
+
+def edge_to_edge_plates(thickness: float = 1.0, gap: float = 5.0, speed: float = 1.0,
+                        end: float = 5.0) -> str:
+    """Two steel shell plates (3 x 3 shells of 10 mm, `thickness` thick) in one plane, free
+    edge facing free edge `gap` apart: the left one held, the right one driven towards it at
+    `speed` in their plane, one automatic single surface contact. Units mm, ms, kg, GPa. The
+    contact surface wraps round a free edge with half the thickness (LS-DYNA's automatic
+    contacts), so the edges meet when `gap` has closed to the thickness, at
+    t = (gap - thickness) / speed; by `end` the right plate's edge nodes have come within
+    0.02 mm of the left plate's edge line, into the band where their projection is clamped to
+    the edge."""
+    m = Mesh()
+    left = list(shell_grid(m, 1, (0.0, 0.0, 0.0), (30.0, 30.0), (3, 3)).values())
+    right = list(shell_grid(m, 2, (30.0 + gap, 0.0, 0.0), (30.0, 30.0), (3, 3)).values())
+    return f"""*KEYWORD
+*TITLE
+plates in one plane meeting edge to edge
+*CONTROL_TERMINATION
+{end}
+*DATABASE_BNDOUT
+0.02
+*DATABASE_GLSTAT
+0.02
+*PART
+left plate
+1,1,1
+*PART
+right plate
+2,1,1
+*SECTION_SHELL
+1,2
+{thickness},{thickness},{thickness},{thickness}
+*MAT_ELASTIC
+1,7.85e-6,210.,0.3
+*SET_PART_LIST
+1
+1,2
+*CONTACT_AUTOMATIC_SINGLE_SURFACE
+1,0,2
+0.0,0.0,0.0,0.0,0.0
+*DEFINE_CURVE
+1
+0.0,{-speed}
+1000.0,{-speed}
+*BOUNDARY_SPC_SET
+1,0,1,1,1,1,1,1
+*BOUNDARY_SPC_SET
+2,0,0,1,1,1,1,1
+*BOUNDARY_PRESCRIBED_MOTION_SET
+2,1,0,1,1.0
+""" + node_set(1, left) + node_set(2, right) + m.keyword_text() + "*END\n"
+
+
+def thick_sheet(n: int = 5, size: float = 2.0, optt: float = 6.4) -> str:
+    """One flat steel sheet of n x n shells of `size` mm with a contact thickness (OPTT) far
+    above its mesh size, alone in an automatic single surface contact, as the bolted joint's
+    bolt head (6.4 mm on 2 mm shells). A node is never in contact with its own flat sheet, so
+    there is no initial penetration; rounding its interior edges found hundreds."""
+    m = Mesh()
+    shell_grid(m, 1, (0.0, 0.0, 0.0), (n * size, n * size), (n, n))
+    return f"""*KEYWORD
+*TITLE
+a thick flat sheet on a fine mesh
+*CONTROL_TERMINATION
+0.01
+*CONTROL_CONTACT
+0.1
+$ cards 2 and 3
+0
+0.0
+2
+*PART_CONTACT
+sheet
+1,1,1
+0.0,0.0,0.0,0.0,{optt}
+*SECTION_SHELL
+1,16
+1.0,1.0,1.0,1.0
+*MAT_ELASTIC
+1,7.85e-6,210.,0.3
+*CONTACT_AUTOMATIC_SINGLE_SURFACE
+1,0,3
+0.0,0.0,0.0,0.0,0.0
+""" + m.keyword_text() + "*END\n"
 
 
 def main() -> None:

@@ -71,6 +71,20 @@ def block(mesh: Mesh, part: int, origin, size, divisions) -> dict:
     return grid
 
 
+def shell_grid(mesh: Mesh, part: int, origin, size, divisions) -> dict:
+    """A flat structured plate of nx*ny quadrilateral shells in the plane z = origin z;
+    returns the grid of node ids keyed (i, j), i along x fastest."""
+    (x0, y0, z0), (lx, ly), (nx, ny) = origin, size, divisions
+    grid = {}
+    for j in range(ny + 1):
+        for i in range(nx + 1):
+            grid[i, j] = mesh.add_node(x0 + lx * i / nx, y0 + ly * j / ny, z0)
+    for j in range(ny):
+        for i in range(nx):
+            mesh.add_shell(part, [grid[i, j], grid[i + 1, j], grid[i + 1, j + 1], grid[i, j + 1]])
+    return grid
+
+
 def grid_solids(mesh: Mesh, part: int, grid: dict, divisions) -> None:
     """The nx*ny*nz hexes of a structured grid of node ids keyed (i, j, k), k slowest."""
     nx, ny, nz = divisions

@@ -15,7 +15,7 @@ import pathlib
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from deckgen import Mesh, block  # noqa: E402
+from deckgen import Mesh, block, shell_grid  # noqa: E402
 
 
 def bench_deck(nx: int, ny: int, nz: int, cycles: int) -> str:
@@ -60,13 +60,7 @@ def shell_bench_deck(nx: int, ny: int, cycles: int) -> str:
     plasticity at every point."""
     h = 1.0
     mesh = Mesh()
-    ids = {}
-    for j in range(ny + 1):
-        for i in range(nx + 1):
-            ids[i, j] = mesh.add_node(i * h, j * h, 0.0)
-    for j in range(ny):
-        for i in range(nx):
-            mesh.add_shell(1, [ids[i, j], ids[i + 1, j], ids[i + 1, j + 1], ids[i, j + 1]])
+    ids = shell_grid(mesh, 1, (0.0, 0.0, 0.0), (nx * h, ny * h), (nx, ny))
     edge = [ids[i, j] for j in range(ny + 1) for i in range(nx + 1) if i in (0, nx) or j in (0, ny)]
     rho, E, nu = 7.85e-6, 210.0, 0.3
     c = math.sqrt(E / ((1 - nu * nu) * rho))

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numeric>
 #include <optional>
+#include <tuple>
 
 #include <omp.h>
 
@@ -113,6 +114,53 @@ int32_t Contact::contactNode(int32_t model_node) const {
                  cn_model_.begin());
 }
 
+namespace {
+
+// The segment across each edge of each segment (Pass::seg_nbr): edges sorted by their nodes,
+// an edge met exactly twice joins its two segments.
+std::vector<std::array<int32_t, 4>> edgeNeighbours(const std::vector<std::array<int32_t, 4>>& seg) {
+  struct Edge {
+    int32_t a, b, s, k;
+  };
+  std::vector<Edge> edges;
+  for (std::size_t s = 0; s < seg.size(); ++s)
+    for (int32_t k = 0; k < 4; ++k) {
+      const int32_t a = seg[s][std::size_t(k)], b = seg[s][std::size_t((k + 1) % 4)];
+      if (a != b) edges.push_back({std::min(a, b), std::max(a, b), int32_t(s), k});
+    }
+  std::sort(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) {
+    return std::tie(x.a, x.b, x.s, x.k) < std::tie(y.a, y.b, y.s, y.k);
+  });
+  std::vector<std::array<int32_t, 4>> out(seg.size(), {-1, -1, -1, -1});
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i + 1;
+    while (j < edges.size() && edges[j].a == edges[i].a && edges[j].b == edges[i].b) ++j;
+    if (j - i == 2) {
+      const Edge &e = edges[i], &f = edges[i + 1];
+      out[std::size_t(e.s)][std::size_t(e.k)] = f.s;
+      out[std::size_t(f.s)][std::size_t(f.k)] = e.s;
+    }
+    i = j;
+  }
+  return out;
+}
+
+// The part of r across the edge direction e (|e|^2 = ee): in the plane of a segment, the
+// direction away from its edge.
+Vec3 acrossEdge(const Vec3& r, const Vec3& e, double ee) {
+  return sub(r, scale(e, dot(r, e) / ee));
+}
+
+// Whether the node at x is off the segment's closest point sideways, not along the normal:
+// its projection was clamped to an edge or corner (the tolerance band).
+bool offEdge(const Vec3& x, const Projection& pr, double h) {
+  const Vec3 r = sub(x, pr.point);
+  const Vec3 sideways = sub(r, scale(pr.normal, dot(r, pr.normal)));
+  return dot(sideways, sideways) > 1e-12 * h * h;
+}
+
+}  // namespace
+
 void Contact::addPass(int32_t iface, const model::ContactSurface& nodes,
                       const model::ContactSurface& segs, double sf, bool self) {
   Pass p;
@@ -137,6 +185,7 @@ void Contact::addPass(int32_t iface, const model::ContactSurface& nodes,
   }
   p.reach_extra = max_node_half + max_seg_half + 0.5 * max_depth;
   p.max_node_half = max_node_half;
+  p.seg_nbr = edgeNeighbours(p.seg);
   if (self) {
     const std::size_t ncn = cn_model_.size();
     std::vector<std::vector<int32_t>> near(ncn);
@@ -366,7 +415,14 @@ bool Contact::tracks(const Pass& p, int32_t check, std::size_t s, const Projecti
   Candidate& cand = *out;
   cand.seg = int32_t(s);
   cand.proj = pr;
-  if (shell && !pr.inside) {
+  if (shell && !pr.inside && !pastExposedEdge(p, s, x)) return std::nullopt;
+  // Over the tolerance band past an exposed edge (the projection clamped to the edge) the node
+  // takes the rounded edge too, so that its gap is continuous where the band begins: the
+  // face's gap, measured from the plane at the clamped point, jumped from the edge's
+  // dist - h to the whole thickness for a node in the segment's plane, with k h^2 / 2 - k p^2
+  // / 2 of energy from nowhere (two plates meeting edge to edge).
+  const bool rounded = shell && (!pr.inside || (offEdge(x, pr, h) && pastExposedEdge(p, s, x)));
+  if (rounded) {
     const auto g = shellEdgeGap(x, pr, h);
     if (!g) return std::nullopt;
     cand.surface = *g;
@@ -409,6 +465,42 @@ bool Contact::tracks(const Pass& p, int32_t check, std::size_t s, const Projecti
   }
   if (!(cand.surface.gap < 0.0)) return std::nullopt;
   return out;
+}
+
+bool Contact::pastExposedEdge(const Pass& p, std::size_t s, const Vec3& x) const {
+  // LS-DYNA's automatic contacts wrap the contact surface round the exterior edges of shells
+  // (LSTC FAQ "contact.13vs26"): a node past an edge shared with a neighbour that lies towards
+  // it is the neighbour's to take, over its face or past its own edges. Rounding every edge
+  // made a shell thick against its mesh touch its own sheet in its plane (the bolted joint's
+  // 6.4 mm bolt head on 2 mm shells). The outside of a fold, where the neighbour turns away
+  // from the node, stays rounded: no face covers it.
+  const auto& sn = p.seg[s];
+  const int corners = sn[2] == sn[3] ? 3 : 4;
+  auto centroid = [&](const std::array<int32_t, 4>& n, int count) {
+    Vec3 c{};
+    for (int k = 0; k < count; ++k) c = add(c, at(x_, std::size_t(n[std::size_t(k)])));
+    return scale(c, 1.0 / count);
+  };
+  const Vec3 c = centroid(sn, corners);
+  bool past_any = false;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const auto ia = std::size_t(sn[k]), ib = std::size_t(sn[(k + 1) % 4]);
+    if (ia == ib) continue;
+    const Vec3 a = at(x_, ia), e = sub(at(x_, ib), a);
+    const double ee = dot(e, e);
+    if (!(ee > 0.0)) continue;
+    const Vec3 mid = add(a, scale(e, 0.5));
+    const Vec3 r = sub(x, a);
+    if (!(dot(r, acrossEdge(sub(mid, c), e, ee)) > 0.0)) continue;  // not past this edge
+    past_any = true;
+    const int32_t nb = p.seg_nbr[s][k];
+    if (nb < 0) return true;  // a free edge
+    const auto& nn = p.seg[std::size_t(nb)];
+    const Vec3 into = acrossEdge(sub(centroid(nn, nn[2] == nn[3] ? 3 : 4), mid), e, ee);
+    if (!(dot(r, into) > 0.0)) return true;  // the neighbour turns away: a fold's outside
+  }
+  // Past no edge by this measure (a warped segment the projection calls outside): rounded.
+  return !past_any;
 }
 
 std::optional<Contact::Candidate> Contact::chooseSegment(std::size_t pass, int32_t check,

@@ -202,6 +202,9 @@ class Contact {
   // in contact with it.
   std::optional<Candidate> rankSegment(const Pass& pass, const CheckNode& node, std::size_t seg,
                                        bool initial) const;
+  // Whether a node at x, beyond shell segment s of pass p (projected outside it), is past an
+  // edge the surface leaves exposed: a free edge, or the outside of a fold.
+  bool pastExposedEdge(const Pass& p, std::size_t s, const Vec3& x) const;
   // Whether the check's node stays with the segment it was in contact with last cycle.
   bool tracks(const Pass& pass, int32_t check, std::size_t seg, const Projection& pr) const;
   // The records of this rank's checks in contact now.

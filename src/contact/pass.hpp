@@ -29,6 +29,9 @@ struct Pass {
   std::vector<double> seg_half;             // half thickness (0: one-sided solid face)
   std::vector<double> seg_k;                // penalty stiffness with the scale factors
   std::vector<double> seg_depth;            // ContactSurface::segment_depth
+  // The segment across each edge (seg[k], seg[k + 1 mod 4]) of each segment; -1 for a free
+  // edge, an edge shared by more than two segments, and a triangle's collapsed edge.
+  std::vector<std::array<int32_t, 4>> seg_nbr;
   // Single surface: the nodes sharing a segment with each node (CSR over contact nodes).
   std::vector<int32_t> near_ptr, near_node;
   double reach_extra = 0.0;  // largest node + segment half thickness

@@ -20,6 +20,7 @@ using deck::keywordSpec;
 
 using util::cross;
 using util::dot;
+using util::norm;
 using util::sub;
 
 // Bulk modulus of the part's material (rigid parts give theirs for contact only).
@@ -78,6 +79,32 @@ double shellThickness(const Model& m, std::size_t e) {
       ++n;
     }
   return n > 0 ? sum / n : 0.0;
+}
+
+// The shortest edge of shell e in the initial geometry (a triangle's repeated corner makes no
+// edge).
+double shortestEdge(const Model& m, std::size_t e) {
+  const auto& n = m.shells.nodes[e];
+  double shortest = 0.0;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const int32_t a = n[k], b = n[(k + 1) % 4];
+    if (a == b) continue;
+    const double len = norm(sub(m.nodes.x[std::size_t(a)], m.nodes.x[std::size_t(b)]));
+    if (shortest == 0.0 || len < shortest) shortest = len;
+  }
+  return shortest;
+}
+
+// The contact thickness of shell e in a surface: shellThickness, and in single surface
+// contacts with SSTHK 0 (`limit`) at most 40% of the shell's shortest edge unless its part
+// gives OPTT. LS-DYNA does this for its single surface contacts (types 4, 13, 15, 26) so that
+// a thick shell on a fine mesh does not touch its own neighbours; a thickness given for
+// contact (OPTT, SST) is taken as it is (dynasupport, "Contact thickness"; Keyword Manual,
+// *CONTROL_CONTACT SSTHK).
+double contactThickness(const Model& m, std::size_t e, bool limit) {
+  const double t = shellThickness(m, e);
+  if (!limit || m.parts[std::size_t(m.shells.part[e])].contact_thickness > 0.0) return t;
+  return std::min(t, 0.4 * shortestEdge(m, e));
 }
 
 using FaceKey = std::array<int32_t, 4>;
@@ -289,14 +316,22 @@ void applyBox(const Context& ctx, const Card& c, std::string_view field, Side& s
                 [&](const Edge& e) { return !box.contains(centroid(m, e.nodes.data(), 2)); });
 }
 
-ContactSurface makeSurface(const Model& m, const Side& side, double thickness_override) {
+// The contact surface of a side. A thickness_override (SST, MST) replaces every shell's
+// contact thickness; else `limit_to_edges` (single surface contacts, SSTHK 0) applies
+// contactThickness's 40% rule.
+ContactSurface makeSurface(const Model& m, const Side& side, double thickness_override,
+                           bool limit_to_edges) {
   ContactSurface s;
   s.nodes = side.nodes;
+  const auto shell0 = int64_t(m.familyOffset(Family::Shell));
   for (const auto& seg : side.segments) {
     s.segments.push_back(seg.nodes);
     s.segment_element.push_back(seg.element);
-    const double t =
-        seg.thickness > 0.0 && thickness_override > 0.0 ? thickness_override : seg.thickness;
+    double t = seg.thickness;
+    if (t > 0.0 && thickness_override > 0.0)
+      t = thickness_override;
+    else if (t > 0.0 && limit_to_edges && seg.element >= shell0)
+      t = contactThickness(m, std::size_t(seg.element - shell0), true);
     s.segment_thickness.push_back(t);
     s.segment_stiffness.push_back(seg.stiffness);
     s.segment_depth.push_back(seg.depth);
@@ -305,7 +340,8 @@ ContactSurface makeSurface(const Model& m, const Side& side, double thickness_ov
   // the shell is on this side (a node set side has no segments of its own).
   std::vector<double> half(m.nodes.size(), 0.0);
   for (std::size_t e = 0; e < m.shells.size(); ++e) {
-    const double h = 0.5 * (thickness_override > 0.0 ? thickness_override : shellThickness(m, e));
+    const double h = 0.5 * (thickness_override > 0.0 ? thickness_override
+                                                     : contactThickness(m, e, limit_to_edges));
     for (int32_t n : m.shells.nodes[e]) half[std::size_t(n)] = std::max(half[std::size_t(n)], h);
   }
   // A beam node of a capsule side meets segments with the beam's radius (its spherical end).
@@ -547,8 +583,8 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
   if (ci.kind == ContactKind::Transducer) {
     // A side B of no segments (MSID 0, a node set) is fine: it is its nodes that count.
     if (a.nodes.empty()) c1.fail("SSID", "the transducer's side A has no nodes");
-    ci.a = makeSurface(ctx.model, a, 0.0);
-    ci.b = makeSurface(ctx.model, b, 0.0);
+    ci.a = makeSurface(ctx.model, a, 0.0, false);
+    ci.b = makeSurface(ctx.model, b, 0.0, false);
     ctx.model.contacts.push_back(std::move(ci));
     ctx.collect(cur);
     return;
@@ -569,8 +605,9 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
                "beam contact");
     throw SkipRecord{};
   }
-  ci.a = makeSurface(ctx.model, a, ci.sst);
-  if (ci.kind != ContactKind::SingleSurface) ci.b = makeSurface(ctx.model, b, ci.mst);
+  const bool single = ci.kind == ContactKind::SingleSurface;
+  ci.a = makeSurface(ctx.model, a, ci.sst, single && ctx.model.contact_controls.ssthk == 0);
+  if (!single) ci.b = makeSurface(ctx.model, b, ci.mst, false);
   ctx.model.contacts.push_back(std::move(ci));
   ctx.collect(cur);
 }
@@ -582,8 +619,12 @@ void readControlContact(Context& ctx, const deck::Keyword& kw, const KeywordOpti
   ContactControls& k = ctx.model.contact_controls;
   k.slsfac = c1.real("SLSFAC");
   if (k.slsfac <= 0) c1.fail("SLSFAC", "must be positive");
-  for (const char* label : {"card 2", "card 3"})
-    if (!cur.atEnd()) cur.read(spec.card(label));
+  if (!cur.atEnd()) {
+    const Card& c2 = cur.read(spec.card("card 2"));
+    k.ssthk = int(c2.integer("SSTHK"));
+    if (k.ssthk < 0 || k.ssthk > 1) c2.fail("SSTHK", "must be 0 or 1");
+  }
+  if (!cur.atEnd()) cur.read(spec.card("card 3"));
   if (!cur.atEnd()) {
     const Card& c4 = cur.read(spec.card("card 4"));
     k.ignore = int(c4.integer("IGNORE"));

@@ -106,6 +106,10 @@ struct ContactControls {
   // IGNORE (card 4): 0 moves initially penetrating nodes back to the surface (DYNA3D), 1 and
   // 2 keep the initial penetration and push back only what goes beyond it.
   int ignore = 0;
+  // SSTHK (card 2): 0 (default) limits a shell's contact thickness in single surface contacts
+  // to 40% of its shortest edge where no thickness is given for contact (OPTT, SST); 1 takes
+  // the shell's thickness as it is (docs/theory.md, "Contact thickness").
+  int ssthk = 0;
   // Re-partition the contact work when the busiest rank carries this many times the mean.
   double rebalance_threshold = 1.25;
 };

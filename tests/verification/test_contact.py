@@ -42,6 +42,19 @@ class ContactVerification(TempDirTest):
         self.assertEqual(p.returncode, 0, describe(p))
         return out
 
+    def force_onset(self, out, component):
+        # The time the force on the driven plate's nodes (bndout) starts: where the line
+        # through the second and third loaded samples meets zero (the force grows linearly
+        # with the closing distance; the first sample may be part of a step).
+        total = {}
+        for r in rows(out, "bndout.csv"):
+            total[r["time"]] = total.get(r["time"], 0.0) + r[component]
+        loaded = [(t, abs(f)) for t, f in sorted(total.items()) if abs(f) > 1e-9]
+        self.assertGreater(len(loaded), 3, total)
+        (t1, f1), (t2, f2) = loaded[1], loaded[2]
+        self.assertGreater(f2, f1, loaded[:4])
+        return t1 - f1 * (t2 - t1) / (f2 - f1)
+
     def test_colliding_blocks(self):
         for kind, n2, offset in (("NODES_TO_SURFACE", 4, 0.0), ("SURFACE_TO_SURFACE", 5, 0.001),
                                  ("AUTOMATIC_SURFACE_TO_SURFACE", 5, 0.0013),
@@ -208,6 +221,48 @@ class ContactVerification(TempDirTest):
                     self.assertAlmostEqual(f / first[0], 2.0, delta=1e-6)
                 s = read_summary(out)
                 self.assertEqual(s["contact"]["initial_penetrations"], 32)
+
+    def test_single_surface_shell_contact_thickness_is_40_percent_of_the_shortest_edge(self):
+        # LS-DYNA's single surface contacts take at most 40% of a shell's shortest edge as its
+        # contact thickness unless *CONTROL_CONTACT SSTHK = 1 or a contact thickness is given
+        # (OPTT, SST); other contacts take the shell's thickness (dynasupport, "Contact
+        # thickness"). Plates 6 mm thick on 10 mm shells, mid-surfaces 10 mm apart, closing at
+        # 1 mm/ms: the force starts at (10 - t_contact) / 1, so the onset (where the force
+        # line, linear in time, meets zero) gives t_contact: 4 mm, or 6 mm.
+        cases = (("AUTOMATIC_SINGLE_SURFACE", 0, 0.0, 4.0), ("AUTOMATIC_SINGLE_SURFACE", 1, 0.0, 6.0),
+                 ("SINGLE_SURFACE", 0, 0.0, 4.0), ("AUTOMATIC_GENERAL", 0, 0.0, 4.0),
+                 ("AUTOMATIC_SINGLE_SURFACE", 0, 6.0, 6.0),
+                 ("AUTOMATIC_SURFACE_TO_SURFACE", 0, 0.0, 6.0))
+        for kind, ssthk, optt, expected in cases:
+            with self.subTest(kind=kind, ssthk=ssthk, optt=optt):
+                out = self.run_deck(f"plates_{kind}_{ssthk}_{optt}",
+                                    decks().approaching_plates(kind, ssthk, optt))
+                onset = self.force_onset(out, "fz")
+                self.assertAlmostEqual(10.0 - onset, expected, delta=0.01)
+
+    def test_shell_contact_wraps_round_free_edges_only(self):
+        # LS-DYNA's automatic contacts wrap a shell's contact surface round its exterior edges
+        # (LSTC FAQ "contact.13vs26"), not round the edges it shares with its neighbours.
+        # Free edges: two 1 mm plates in one plane, closing edge to edge at 1 mm/ms from 5 mm,
+        # meet when the gap is the contact thickness, 1 mm (at 4 ms).
+        out = self.run_deck("edge_to_edge", decks().edge_to_edge_plates())
+        self.assertAlmostEqual(5.0 - self.force_onset(out, "fx"), 1.0, delta=0.01)
+        # Near the edge line the nodes' projections are clamped to the edge: the gap stays the
+        # rounded edge's (the face's, from the clamped point's plane, jumped to the whole
+        # thickness: energy ratio 1.24 in one cycle).
+        ratios = [r["energy_ratio"] for r in rows(out, "glstat.csv") if r["time"] > 0.0]
+        self.assertLess(max(abs(r - 1.0) for r in ratios), 0.002, max(ratios))
+        # Shared edges: a flat sheet with a contact thickness (OPTT 6.4) three times its
+        # 2 mm mesh touches nothing of itself (every edge rounded found its nodes inside
+        # segments two and three rings away, in its plane).
+        path = os.path.join(self.tmp, "thick_sheet.k")
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(decks().thick_sheet())
+        out = os.path.join(self.tmp, "thick_sheet.out")
+        p = crumple("run", path, "-o", out, "-q", cwd=self.tmp)
+        self.assertEqual(p.returncode, 0, describe(p))
+        s = read_summary(out)
+        self.assertEqual(s["contact"]["initial_penetrations"], 0)
 
     def test_soft1_stiffness_at_dtstif(self):
         # SOFT = 1 with DTSTIF (card C): the mass-based stiffness 0.5 SOFSCL m* / DTSTIF^2 is
