@@ -3,6 +3,7 @@
 // predicted velocities v(n+1/2) (DYNA3D cycle, ARCHITECTURE.md steps 3-5).
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "comm/communicator.hpp"
@@ -132,6 +133,9 @@ class Boundary {
   std::vector<std::pair<int32_t, model::DofMask>> spc_;
   std::vector<std::pair<int32_t, model::DofMask>> spc_rot_;  // rotational SPC (bits: rx, ry, rz)
   std::vector<Motion> motion_;
+  // For each spc_ entry, per translational freedom, the motion_ prescribing the same node and
+  // freedom (-1: none): while that motion is active it holds the freedom, not the SPC.
+  std::vector<std::array<int32_t, 3>> spc_motion_;
   // Reactions per constrained node; spc_at_ / motion_at_ give each constraint's entry.
   std::vector<NodeReaction> spc_reaction_, motion_reaction_;
   std::vector<std::size_t> spc_at_, spc_rot_at_, motion_at_;
