@@ -533,16 +533,19 @@ BlockStatus computeSolidForces(domain::SolidBlock& block, const domain::NodeVect
   return std::visit(
       [&](const auto& law) -> BlockStatus {
         using Law = std::decay_t<decltype(law)>;
+        // A law may switch the bulk viscosity off for its elements (*MAT_057 BVFLAG 0).
+        [[maybe_unused]] const BulkViscosity q =
+            materials::takesBulkViscosity(law) ? bv : BulkViscosity{0.0, 0.0};
         if constexpr (!materials::SolidLaw<Law>)
           materials::noUpdateFor(materials::Family::Solid);
         else if (block.elform == 13)
-          return solidBlockForces<Law, NodalTetShape>(law, block, x, v, dt, bv, slots, first, last,
+          return solidBlockForces<Law, NodalTetShape>(law, block, x, v, dt, q, slots, first, last,
                                                       nodal_ev);
         else if (block.elform == 10)
-          return solidBlockForces<Law, TetShape>(law, block, x, v, dt, bv, slots, first, last,
+          return solidBlockForces<Law, TetShape>(law, block, x, v, dt, q, slots, first, last,
                                                  nullptr);
         else
-          return solidBlockForces<Law, HexShape>(law, block, x, v, dt, bv, slots, first, last,
+          return solidBlockForces<Law, HexShape>(law, block, x, v, dt, q, slots, first, last,
                                                  nullptr);
       },
       block.law);

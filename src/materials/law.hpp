@@ -21,6 +21,8 @@
 //                              strain (xx, yy, xy in the element frame) in the 3 alpha fields
 //                              of a point (hyperelastic laws, whose shell stress is a function
 //                              of it: PlaneStressPoints::alpha)
+//   bulkViscosity() (optional) false when the law's solids take no bulk viscosity (LS-DYNA's
+//                              *MAT_LOW_DENSITY_FOAM BVFLAG 0); else *CONTROL_BULK_VISCOSITY's
 //   kBeamOnly (optional)       the one *SECTION_BEAM ELFORM its parts may use (a BeamOnly);
 //                              parts of other sections are refused (model/build_mesh.cpp)
 //   massDensity(ro) (optional) the density of its beams' nodal masses from RO (else RO)
@@ -97,6 +99,15 @@ constexpr bool keepsShellStrain() {
 template <class L>
 constexpr bool shellAlphaOf() {
   return L::kKinematic || keepsShellStrain<L>();
+}
+
+// Whether the law's solids take the bulk viscosity (its bulkViscosity(), else true).
+template <class L>
+bool takesBulkViscosity(const L& law) {
+  if constexpr (requires { law.bulkViscosity(); })
+    return law.bulkViscosity();
+  else
+    return true;
 }
 
 // A batch of n integration points; every pointer addresses n contiguous values.
