@@ -184,6 +184,24 @@ double LowDensityFoam::unloadingFactor(double w, double w_max) const {
   return 1.0 - (1.0 - hu) * (1.0 - std::pow(std::max(w, 0.0) / w_max, shape));
 }
 
+double LowDensityFoam::slopeNear(double lambda) const {
+  if (lambda >= 1.0) return young;
+  const std::size_t k = util::segmentOf(strain, 1.0 - lambda);
+  auto slope = [&](std::size_t j) {
+    return (stress[j + 1] - stress[j]) / (strain[j + 1] - strain[j]);
+  };
+  return k + 2 < strain.size() ? std::max(slope(k), slope(k + 1)) : slope(k);
+}
+
+double LowDensityFoam::waveModulus(const std::array<double, 3>& lambda) const {
+  // The spatial wave speed along n_i is lambda_i c0, c0^2 = slope / rho0 (the nominal stress of
+  // direction i depends on lambda_i alone), and rho = rho0 / J: rho c^2 = slope lambda_i^2 / J.
+  double m = 0.0;
+  for (int i = 0; i < 3; ++i)
+    m = std::max(m, slopeNear(lambda[i]) * lambda[i] / (lambda[(i + 1) % 3] * lambda[(i + 2) % 3]));
+  return m;
+}
+
 void LowDensityFoam::update(PointBatch& p) const {
   for (int l = 0; l < p.n; ++l) {
     const LeftCauchyGreen k = leftCauchyGreen(p, l);
@@ -207,6 +225,7 @@ void LowDensityFoam::update(PointBatch& p) const {
     for (int c = 0; c < 6; ++c) p.s[c][l] = s[std::size_t(c)];
     p.h[0][l] = w_max;
     p.h[1][l] = torn ? 1.0 : 0.0;
+    if (p.modulus) p.modulus[l] = waveModulus(lambda);
   }
 }
 

@@ -14,6 +14,8 @@
 // fields). At W = W_max the factor is 1: loading follows the curve, unloading and reloading
 // below W_max the scaled curve; a loop to W_max dissipates W_max (1 - HU) SHAPE / (SHAPE + 1).
 // FAIL = 1: once a tensile nominal stress reaches TC the point carries no tension any more.
+// Wave speed: at least that of E_max = max(E, the curve's largest slope) with zero Poisson's
+// ratio, and each point reports its own (kWaveModulus) for compression in several directions.
 // BVFLAG = 0 (LS-DYNA's default): no bulk viscosity on the law's elements (bulkViscosity()).
 // Refused (changes the answer, not done here): DAMP > 0 (blank is LS-DYNA's 0.05), BETA != 0
 // (creep of the unloading curve), ED != 0 (Maxwell rate effects), REF = 1. docs/theory.md,
@@ -38,6 +40,9 @@ struct LowDensityFoam {
   static constexpr bool kDensity = true;
   static constexpr bool kDeformationGradient = true;
   static constexpr int kHistory = 2;  // h[0] = W_max, h[1] = 1 once torn (FAIL = 1)
+  // The Cauchy tangent of direction i is slope_i lambda_i / (lambda_j lambda_k): under
+  // compression in several directions it outgrows any constant modulus (docs/theory.md).
+  static constexpr bool kWaveModulus = true;
 
   struct Params {
     using Law = LowDensityFoam;
@@ -70,6 +75,12 @@ struct LowDensityFoam {
   double work(double lambda, bool torn) const;
   // The hysteresis factor at W given W_max (>= W).
   double unloadingFactor(double w, double w_max) const;
+  // The stiffest slope d tau / d lambda of the loading response near lambda: E in tension, in
+  // compression the larger of the slopes of the curve's segment at 1 - lambda and of the next
+  // one (the point may enter it within the step).
+  double slopeNear(double lambda) const;
+  // rho c^2 at the principal stretches: max_i slope_i lambda_i / (lambda_j lambda_k).
+  double waveModulus(const std::array<double, 3>& lambda) const;
 };
 
 }  // namespace crumple::materials
