@@ -187,6 +187,33 @@ TEST(LowDensityFoam, RigidRotationTurnsTheStress) {
   EXPECT_NEAR(p1.w_max, p0.w_max, 1e-14);
 }
 
+// The wave modulus each point reports (kWaveModulus): rho c^2 = slope lambda_i / (lambda_j
+// lambda_k) in the stiffest direction, the slope the larger of the curve's segment and the next.
+// Uniaxial lambda = 0.5: max(10 x 0.5, E x 1 / 0.5) = 5; hydrostatic lambda = 0.25: 10 x 0.25 /
+// 0.0625 = 40; unstrained: E = 1.
+TEST(LowDensityFoam, WaveModulusFollowsTheStretches) {
+  const auto law = makeFoam();
+  EXPECT_NEAR(law.waveModulus({0.5, 1.0, 1.0}), 5.0, 1e-12);
+  EXPECT_NEAR(law.waveModulus({0.25, 0.25, 0.25}), 40.0, 1e-12);
+  EXPECT_NEAR(law.waveModulus({1.0, 1.0, 1.0}), 1.0, 1e-12);
+  // The update reports it.
+  double f[9][1] = {{0.25}, {0}, {0}, {0}, {0.25}, {0}, {0}, {0}, {0.25}};
+  double s[6][1] = {}, de[6][1] = {}, h0 = 0, h1 = 0, modulus = 0;
+  m::PointBatch pb;
+  pb.n = 1;
+  for (int k = 0; k < 6; ++k) {
+    pb.s[k] = s[k];
+    pb.de[k] = de[k];
+  }
+  for (int k = 0; k < 9; ++k) pb.F[k] = f[k];
+  pb.h[0] = &h0;
+  pb.h[1] = &h1;
+  pb.modulus = &modulus;
+  law.update(pb);
+  EXPECT_NEAR(modulus, 40.0, 1e-9);
+  EXPECT_NEAR(s[0][0], -1.0 / 0.0625, 1e-9);
+}
+
 namespace {
 
 const std::string kMesh =
