@@ -247,11 +247,13 @@ inline void dropFailedStress(BatchScratch& w, SolidGeometry& g) {
   }
 }
 
-// Geometry at x(n): volume, volume gradient, characteristic length, bulk viscosity.
+// Geometry at x(n): volume, volume gradient, characteristic length, bulk viscosity. The wave
+// speed is that of lambda + 2 mu, or of the point's wave modulus when the law reports a larger
+// one (`modulus`, null otherwise: law.hpp, kWaveModulus).
 template <class Shape>
 inline void currentGeometry(const SolidParams& p, const domain::SolidBlock& blk, std::size_t first,
                             const BulkViscosity& bv, BatchScratch& w, const SolidSpin& sp,
-                            SolidGeometry& g) {
+                            const double* modulus, SolidGeometry& g) {
   Shape::gradient(w.x, w.b);
   volumeOf(w.x, w.b, g.vol);
   Shape::lengthArea(w.x, w.b, g.area);
@@ -259,7 +261,8 @@ inline void currentGeometry(const SolidParams& p, const domain::SolidBlock& blk,
     const std::size_t e = first + static_cast<std::size_t>(l);
     const double v_safe = g.vol[l] > 0.0 ? g.vol[l] : 1.0;
     g.rho[l] = blk.rho0 * blk.vol0[e] / v_safe;
-    g.c[l] = std::sqrt(p.lam2mu / g.rho[l]);
+    const double m = modulus ? std::max(p.lam2mu, modulus[l]) : p.lam2mu;
+    g.c[l] = std::sqrt(m / g.rho[l]);
     // Mass scaling slows the element's waves: c / sqrt(scale) enters the stable step only.
     g.c_dt[l] = blk.mass_scale.empty() ? g.c[l] : g.c[l] / std::sqrt(blk.mass_scale[e]);
     g.len[l] = v_safe / g.area[l];
@@ -465,7 +468,8 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
                    Shape::kNodalPressure ? &ev_step : nullptr);
       if (blk.erosion.any()) erodeSolidPoints(blk, first, w, sp);
       SolidGeometry g;
-      currentGeometry<Shape>(p, blk, first, bv, w, sp, g);
+      currentGeometry<Shape>(p, blk, first, bv, w, sp,
+                             materials::reportsWaveModulus<Law>() ? w.modulus : nullptr, g);
       dropFailedStress(w, g);
       LaneArray de_int, de_hg;
       stressDivergence(p, blk, first, w, r, sp, g, de_int);
@@ -533,16 +537,19 @@ BlockStatus computeSolidForces(domain::SolidBlock& block, const domain::NodeVect
   return std::visit(
       [&](const auto& law) -> BlockStatus {
         using Law = std::decay_t<decltype(law)>;
+        // A law may switch the bulk viscosity off for its elements (*MAT_057 BVFLAG 0).
+        [[maybe_unused]] const BulkViscosity q =
+            materials::takesBulkViscosity(law) ? bv : BulkViscosity{0.0, 0.0};
         if constexpr (!materials::SolidLaw<Law>)
           materials::noUpdateFor(materials::Family::Solid);
         else if (block.elform == 13)
-          return solidBlockForces<Law, NodalTetShape>(law, block, x, v, dt, bv, slots, first, last,
+          return solidBlockForces<Law, NodalTetShape>(law, block, x, v, dt, q, slots, first, last,
                                                       nodal_ev);
         else if (block.elform == 10)
-          return solidBlockForces<Law, TetShape>(law, block, x, v, dt, bv, slots, first, last,
+          return solidBlockForces<Law, TetShape>(law, block, x, v, dt, q, slots, first, last,
                                                  nullptr);
         else
-          return solidBlockForces<Law, HexShape>(law, block, x, v, dt, bv, slots, first, last,
+          return solidBlockForces<Law, HexShape>(law, block, x, v, dt, q, slots, first, last,
                                                  nullptr);
       },
       block.law);

@@ -125,7 +125,8 @@ struct BatchScratch {
   double s[6][kBatch], s_old[6][kBatch], de[6][kBatch], alpha[6][kBatch];
   double eps_p[kBatch];
   double hist[materials::kMaxHistory][kBatch];
-  double F[9][kBatch];  // deformation gradient (laws that need it; deformationGradient)
+  double F[9][kBatch];     // deformation gradient (laws that need it; deformationGradient)
+  double modulus[kBatch];  // the points' wave modulus (laws that report it: kWaveModulus)
   uint8_t failed[kBatch];
 };
 
@@ -174,6 +175,7 @@ inline void updateMaterial(const Law& law, BatchScratch& w, double dt) {
   for (int k = 0; k < materials::historyOf<Law>(); ++k) pb.h[k] = w.hist[k];
   if constexpr (materials::needsDeformationGradient<Law>())
     for (int k = 0; k < 9; ++k) pb.F[k] = w.F[k];
+  if constexpr (materials::reportsWaveModulus<Law>()) pb.modulus = w.modulus;
   pb.failed = w.failed;
   law.update(pb);
 }

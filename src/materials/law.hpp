@@ -21,6 +21,13 @@
 //                              strain (xx, yy, xy in the element frame) in the 3 alpha fields
 //                              of a point (hyperelastic laws, whose shell stress is a function
 //                              of it: PlaneStressPoints::alpha)
+//   kWaveModulus (optional)    its update reports each point's wave modulus rho c^2 at the new
+//                              state in PointBatch::modulus (laws whose tangent grows with the
+//                              deformation beyond what constant moduli can bound: *MAT_057); the
+//                              one-point solids take the larger of it and lambda + 2 mu for the
+//                              point's wave speed (stable step, bulk viscosity, hourglass)
+//   bulkViscosity() (optional) false when the law's solids take no bulk viscosity (LS-DYNA's
+//                              *MAT_LOW_DENSITY_FOAM BVFLAG 0); else *CONTROL_BULK_VISCOSITY's
 //   kBeamOnly (optional)       the one *SECTION_BEAM ELFORM its parts may use (a BeamOnly);
 //                              parts of other sections are refused (model/build_mesh.cpp)
 //   massDensity(ro) (optional) the density of its beams' nodal masses from RO (else RO)
@@ -99,6 +106,24 @@ constexpr bool shellAlphaOf() {
   return L::kKinematic || keepsShellStrain<L>();
 }
 
+// Whether the law reports its points' wave modulus (its kWaveModulus, else false).
+template <class L>
+constexpr bool reportsWaveModulus() {
+  if constexpr (requires { L::kWaveModulus; })
+    return L::kWaveModulus;
+  else
+    return false;
+}
+
+// Whether the law's solids take the bulk viscosity (its bulkViscosity(), else true).
+template <class L>
+bool takesBulkViscosity(const L& law) {
+  if constexpr (requires { law.bulkViscosity(); })
+    return law.bulkViscosity();
+  else
+    return true;
+}
+
 // A batch of n integration points; every pointer addresses n contiguous values.
 struct PointBatch {
   int n = 0;
@@ -112,6 +137,9 @@ struct PointBatch {
   // The deformation gradient F_ij = dx_i/dX_j at x(n) from the initial geometry, row-major
   // (F[3 i + j]), in; given only to laws that declare kDeformationGradient, else null.
   const double* F[9] = {};
+  // Out, for laws that declare kWaveModulus (else null): each point's wave modulus rho c^2 at
+  // the new state, c the fastest wave speed in the current configuration.
+  double* modulus = nullptr;
 };
 
 // A law that runs on one beam formulation only: its ELFORM and what to call those beams in

@@ -9,6 +9,7 @@
 #include "materials/laws/elastic_plastic_hydro.hpp"
 #include "materials/laws/frazer_nash.hpp"
 #include "materials/laws/johnson_cook.hpp"
+#include "materials/laws/low_density_foam.hpp"
 #include "materials/laws/modified_piecewise_linear.hpp"
 #include "materials/laws/mooney_rivlin.hpp"
 #include "materials/laws/muscle.hpp"
@@ -34,6 +35,6 @@ using AllLaws =
     LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic, DamperViscous,
             SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam, JohnsonCook, PowerLaw,
             StrainRatePlasticity, ModifiedPiecewiseLinear, Spotweld, ElasticPlasticHydro,
-            MooneyRivlin, FrazerNash, Muscle, Viscoelastic>;
+            MooneyRivlin, FrazerNash, Muscle, Viscoelastic, LowDensityFoam>;
 
 }  // namespace crumple::materials
