@@ -4,6 +4,7 @@
 // src/materials/laws/ (law.hpp says what a unit declares) plus its line here.
 #pragma once
 
+#include "materials/laws/blatz_ko.hpp"
 #include "materials/laws/crushable_foam.hpp"
 #include "materials/laws/elastic.hpp"
 #include "materials/laws/elastic_plastic_hydro.hpp"
@@ -34,6 +35,6 @@ using AllLaws =
     LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic, DamperViscous,
             SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam, JohnsonCook, PowerLaw,
             StrainRatePlasticity, ModifiedPiecewiseLinear, Spotweld, ElasticPlasticHydro,
-            MooneyRivlin, FrazerNash, Muscle, Viscoelastic>;
+            MooneyRivlin, FrazerNash, Muscle, Viscoelastic, BlatzKo>;
 
 }  // namespace crumple::materials

@@ -1,9 +1,10 @@
-// Hyperelastic rubbers in whole runs (*MAT_027 Mooney-Rivlin, *MAT_031 Frazer-Nash on one-point
-// hexahedra): one hex in uniaxial stretch, simple shear and equibiaxial stretch, its Cauchy
-// stress against the law's closed form at the deformation the nodes show; a stretched block
-// turned rigidly keeps its principal stresses and its energy (objectivity); the internal energy
-// after a slow stretch is W V0, the work of the boundary forces; and the LSTC Frazer-Nash test
-// deck (../shared/decks/dynakw_fn_rubber, the corpus) runs to its end and gives its energy back.
+// Hyperelastic rubbers in whole runs (*MAT_027 Mooney-Rivlin, *MAT_031 Frazer-Nash, *MAT_007
+// Blatz-Ko on one-point hexahedra): one hex in uniaxial stretch, simple shear and
+// equibiaxial stretch, its Cauchy stress against the law's closed form at the deformation the nodes
+// show; a stretched block turned rigidly keeps its principal stresses and its energy (objectivity);
+// the internal energy after a slow stretch is W V0, the work of the boundary forces; and the LSTC
+// Frazer-Nash test deck (../shared/decks/dynakw_fn_rubber, the corpus) runs to its end and gives
+// its energy back.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -16,6 +17,7 @@
 
 #include "harness.hpp"
 #include "materials/hyperelastic.hpp"
+#include "materials/laws/blatz_ko.hpp"
 #include "materials/laws/frazer_nash.hpp"
 #include "materials/laws/mooney_rivlin.hpp"
 
@@ -69,11 +71,14 @@ std::array<double, 3> stretchesOf(const Simulation& sim) {
 }
 
 // A unit cube whose faces x = 1 (and y = 1 when `biaxial`) move out by `stretch` - 1 over time
-// 1 (displacement ramp), on rollers on x = 0, y = 0, z = 0, the other faces free.
-std::string stretchDeck(const std::string& material, double stretch, bool biaxial) {
-  std::string s = material + termination(1.0);
+// 1 (displacement ramp), then held for `hold`, on rollers on x = 0, y = 0, z = 0, the other faces
+// free.
+std::string stretchDeck(const std::string& material, double stretch, bool biaxial,
+                        double hold = 0.0) {
+  std::string s = material + termination(1.0 + hold);
   s += fmt::format("*DEFINE_CURVE\n{:10d}\n{:20.12g}{:20.12g}\n{:20.12g}{:20.12g}\n", 90, 0.0, 0.0,
                    1.0, stretch - 1.0);
+  if (hold > 0.0) s += fmt::format("{:20.12g}{:20.12g}\n", 1.0 + hold, stretch - 1.0);
   for (int d = 0; d < (biaxial ? 2 : 1); ++d) {
     s += brickNodeSet(1 + d, 1, 1, 1, [d](int i, int j, int) { return (d == 0 ? i : j) == 1; });
     s += fmt::format("*BOUNDARY_PRESCRIBED_MOTION_SET\n{:10d}{:10d}{:10d}{:10d}{:10.1f}\n", 1 + d,
@@ -306,4 +311,44 @@ TEST(VerificationRubber, FrazerNashLstcDeckRunsAndGivesItsEnergyBack) {
   EXPECT_NEAR(peak_szz, want[2], 0.01 * std::abs(want[2]));
   EXPECT_LT(std::abs(want[0]), 0.05 * std::abs(want[2]));
   EXPECT_NEAR(peak_energy, law.energy(kin) * 7.5 * 7.5 * 10.0, 0.01 * peak_energy);
+}
+
+namespace {
+
+// The x force on the pulled face x = 1 of the unit cube: the corners 1, 2, 5, 6 of its hex
+// (nodes 2, 4, 6, 8) carry it.
+double pulledFaceForce(const Simulation& sim) {
+  const auto& b = sim.sd.solid_blocks.at(0);
+  double f = 0.0;
+  for (std::size_t corner : {1, 2, 5, 6}) f += sim.sd.slots[3 * (b.slot_offset + corner)];
+  return std::abs(f);
+}
+
+// G = 1, RO = 1e-3 (Poisson's ratio 0.463 fixed: K = 13.2): waves cross the unit cube in 0.01.
+const std::string kBlatzKo =
+    "*MAT_BLATZ-KO_RUBBER\n"
+    "         1     0.001       1.0\n";
+
+}  // namespace
+
+// Blatz-Ko stretched to 1.5 over [0, 1] and held to 1.2, its lateral faces free: the closed form of
+// uniaxial stress (blatz_ko.hpp) has lateral stretches l^-nu, the force on the face G (l - l^(-1-2
+// nu)) (nominal stress times the initial area 1) and the stored energy G/2 (l^2 - 1 + (l^-2nu - 1)
+// / nu); the work of the pulling face equals it.
+TEST(VerificationRubber, BlatzKoUniaxialForceAndEnergy) {
+  auto sim = Simulation::fromText("bk_uniaxial", stretchDeck(kBlatzKo, 1.5, false, 0.2));
+  sim->run();
+  const auto l = stretchesOf(*sim);
+  const double nu = crumple::materials::BlatzKo::kNu, L = 1.5;
+  EXPECT_NEAR(l[0], L, 1e-9);
+  EXPECT_NEAR(l[1], std::pow(L, -nu), 1e-3);
+  EXPECT_NEAR(l[2], std::pow(L, -nu), 1e-3);
+  const double force = L - std::pow(L, -1 - 2 * nu);
+  EXPECT_NEAR(pulledFaceForce(*sim), force, 0.005 * force);
+  EXPECT_NEAR(stressOf(*sim, 0) * l[1] * l[2], pulledFaceForce(*sim), 2e-3 * force);
+  EXPECT_LT(std::abs(stressOf(*sim, 1)), 5e-3 * force);
+  const double stored = 0.5 * (L * L - 1 + (std::pow(L, -2 * nu) - 1) / nu);
+  const auto e = sim->solver->energies();
+  EXPECT_NEAR(e.internal, stored, 0.01 * stored);
+  EXPECT_NEAR(e.external_work, e.internal + e.kinetic + e.hourglass, 0.01 * stored);
 }
