@@ -14,6 +14,7 @@
 #include "materials/laws/mooney_rivlin.hpp"
 #include "materials/laws/muscle.hpp"
 #include "materials/laws/null.hpp"
+#include "materials/laws/ogden.hpp"
 #include "materials/laws/piecewise_linear.hpp"
 #include "materials/laws/plastic_kinematic.hpp"
 #include "materials/laws/power_law.hpp"
@@ -35,6 +36,6 @@ using AllLaws =
     LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic, DamperViscous,
             SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam, JohnsonCook, PowerLaw,
             StrainRatePlasticity, ModifiedPiecewiseLinear, Spotweld, ElasticPlasticHydro,
-            MooneyRivlin, FrazerNash, Muscle, Viscoelastic, BlatzKo>;
+            MooneyRivlin, FrazerNash, Muscle, Viscoelastic, BlatzKo, Ogden>;
 
 }  // namespace crumple::materials

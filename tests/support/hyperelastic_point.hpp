@@ -101,6 +101,15 @@ inline const Mat3 kEquibiaxial{1.2, 0, 0, 0, 1.2, 0, 0, 0, 0.72};
 inline const Mat3 kShear{1, 0.4, 0, 0, 1, 0, 0, 0, 1};
 inline const Mat3 kGeneral{1.1, 0.2, -0.05, 0.1, 0.95, 0.15, -0.08, 0.05, 1.05};
 
+// At those deformations the law's stress is the derivative of W (1e-7), and its own energy()
+// (used by the whole-run energy checks) is W.
+template <class Law>
+void expectStressOfEnergy(const Law& law, const std::function<double(const Mat3&)>& W) {
+  for (const Mat3& F : {kUniaxial, kEquibiaxial, kShear, kGeneral})
+    expectStress(stressAt(law, F), stressOfEnergy(W, F), 1e-7);
+  EXPECT_NEAR(law.energy(kinematicsOf(kGeneral)), W(kGeneral), 1e-14);
+}
+
 // A rotation about an oblique axis (Rz(0.7) Rx(-0.4)).
 inline Mat3 obliqueRotation() {
   const double a = 0.7, b = -0.4;

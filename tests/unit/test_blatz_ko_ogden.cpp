@@ -1,7 +1,8 @@
-// The Blatz-Ko rubber (*MAT_007) at a material point: the Cauchy stress against closed forms in
-// uniaxial stress, equibiaxial stress and simple shear; against the derivative of the strain
-// energy, sigma = (1/J) dW/dF F^T, with W written here from the formulation (central
-// differences); frame indifference; the deck reader and its refusals.
+// The Blatz-Ko (*MAT_007) and Ogden (*MAT_077_O) rubbers at a material point: the Cauchy
+// stress against closed forms in uniaxial stress, equibiaxial stress and simple shear; against
+// the derivative of the strain energy, sigma = (1/J) dW/dF F^T, with W written here from the
+// formulation (central differences); frame indifference; Ogden with alpha = 2 (and -2) against
+// the Mooney-Rivlin law of this code; the deck readers and their refusals.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -11,6 +12,7 @@
 
 #include "hyperelastic_point.hpp"
 #include "materials/materials.hpp"
+#include "materials/principal.hpp"
 #include "model/build.hpp"
 #include "temp_dir.hpp"
 
@@ -76,15 +78,165 @@ TEST(BlatzKo, SmallStrainModuli) {
 
 // The stress is the derivative of W; the law's own energy is the same W.
 TEST(BlatzKo, StressIsTheDerivativeOfTheEnergy) {
-  const auto law = blatzKo();
-  for (const Mat3& F : {kUniaxial, kEquibiaxial, kShear, kGeneral})
-    expectStress(stressAt(law, F), stressOfEnergy(blatzKoEnergy, F), 1e-7);
-  EXPECT_NEAR(law.energy(kinematicsOf(kGeneral)), blatzKoEnergy(kGeneral), 1e-14);
+  expectStressOfEnergy(blatzKo(), blatzKoEnergy);
 }
 
 TEST(BlatzKo, RotationTurnsTheStress) {
   expectObjective(blatzKo(), kGeneral, 1e-12);
   expectObjective(blatzKo(), kEquibiaxial, 1e-12);
+}
+
+namespace {
+
+// Two terms with exponents of both signs: G = (1.2 * 2.5 + 0.1 * 2) / 2 = 1.6.
+constexpr std::array<double, 2> kMu{1.2, -0.1}, kAlpha{2.5, -2.0};
+constexpr double kOgdenNu = 0.45;
+
+m::Ogden ogden(const std::array<double, 2>& mu = kMu, const std::array<double, 2>& alpha = kAlpha,
+               double nu = kOgdenNu) {
+  m::Ogden::Params p;
+  p.nu = nu;
+  for (std::size_t t = 0; t < 2; ++t) {
+    p.mu[t] = mu[t];
+    p.alpha[t] = alpha[t];
+  }
+  return m::Ogden::make(p, {}, "");
+}
+
+// sum_j mu_j (l^alpha_j - l^-alpha_j) along the stretch pair (l, 1/l) of a J = 1 deformation:
+// the principal stress difference of the pair.
+double pairDifference(double l) {
+  double d = 0.0;
+  for (std::size_t t = 0; t < 2; ++t)
+    d += kMu[t] * (std::pow(l, kAlpha[t]) - std::pow(l, -kAlpha[t]));
+  return d;
+}
+
+// W of Ogden from F (ogden.hpp): the principal values of C = F^T F (equal to those of B).
+double ogdenEnergy(const Mat3& F) {
+  const Mat3 c = mul(transpose(F), F);
+  const auto pr = m::principalOf({c[0], c[4], c[8], c[1], c[5], c[2]}).value;
+  const double J = det(F), K = 2 * 1.6 * (1 + kOgdenNu) / (3 * (1 - 2 * kOgdenNu));
+  double w = K * (J - 1 - std::log(J));
+  for (std::size_t t = 0; t < 2; ++t)
+    for (double ci : pr)
+      w += kMu[t] / kAlpha[t] * (std::pow(ci / std::cbrt(J * J), kAlpha[t] / 2) - 1);
+  return w;
+}
+
+Stress deviator(Stress s) {
+  const double mean = (s[0] + s[1] + s[2]) / 3;
+  for (std::size_t k = 0; k < 3; ++k) s[k] -= mean;
+  return s;
+}
+
+// F scaled to J = 1.
+Mat3 isochoric(Mat3 F) {
+  const double s = 1 / std::cbrt(det(F));
+  for (double& v : F) v *= s;
+  return F;
+}
+
+}  // namespace
+
+// Isochoric uniaxial stretch F = diag(l, l^-1/2, l^-1/2): no pressure (J = 1), sigma_xx -
+// sigma_yy = sum mu_j (l^alpha_j - l^(-alpha_j/2)) (Ogden 1972), sigma_yy = sigma_zz, trace 0.
+TEST(Ogden, IsochoricUniaxialClosedForm) {
+  const auto law = ogden();
+  for (double l : {0.6, 1.5, 3.0}) {
+    double d = 0.0;
+    for (std::size_t t = 0; t < 2; ++t)
+      d += kMu[t] * (std::pow(l, kAlpha[t]) - std::pow(l, -kAlpha[t] / 2));
+    const double lat = 1 / std::sqrt(l);
+    const Stress s = stressAt(law, {l, 0, 0, 0, lat, 0, 0, 0, lat});
+    expectStress(s, {2 * d / 3, -d / 3, -d / 3, 0, 0, 0}, 1e-10);
+  }
+}
+
+// Isochoric equibiaxial stretch F = diag(l, l, l^-2): sigma_xx - sigma_zz = sum mu_j (l^alpha_j -
+// l^(-2 alpha_j)).
+TEST(Ogden, IsochoricEquibiaxialClosedForm) {
+  const auto law = ogden();
+  for (double l : {0.8, 1.3, 2.0}) {
+    double d = 0.0;
+    for (std::size_t t = 0; t < 2; ++t)
+      d += kMu[t] * (std::pow(l, kAlpha[t]) - std::pow(l, -2 * kAlpha[t]));
+    const Stress s = stressAt(law, {l, 0, 0, 0, l, 0, 0, 0, 1 / (l * l)});
+    expectStress(s, {d / 3, d / 3, -2 * d / 3, 0, 0, 0}, 1e-10);
+  }
+}
+
+// Simple shear x += gamma y: principal stretches l1 = gamma/2 + sqrt(1 + gamma^2/4), 1/l1, 1;
+// the major axis at theta, tan 2 theta = 2 / gamma, so sigma_xy = D / (l1 + 1/l1) with D the
+// pair difference, sigma_xx - sigma_yy = gamma sigma_xy (Rivlin's universal relation) and
+// sigma_zz = sum mu_j (1 - (l1^alpha_j + l1^-alpha_j + 1) / 3).
+TEST(Ogden, SimpleShearClosedForm) {
+  const auto law = ogden();
+  for (double gamma : {0.1, 0.4, 1.5}) {
+    const double l1 = gamma / 2 + std::sqrt(1 + gamma * gamma / 4);
+    const double sxy = pairDifference(l1) / (l1 + 1 / l1);
+    double szz = 0.0;
+    for (std::size_t t = 0; t < 2; ++t)
+      szz += kMu[t] * (1 - (std::pow(l1, kAlpha[t]) + std::pow(l1, -kAlpha[t]) + 1) / 3);
+    const Stress s = stressAt(law, {1, gamma, 0, 0, 1, 0, 0, 0, 1});
+    EXPECT_NEAR(s[3], sxy, 1e-10) << "gamma " << gamma;
+    EXPECT_NEAR(s[0] - s[1], gamma * sxy, 1e-10);
+    EXPECT_NEAR(s[2], szz, 1e-10);
+    EXPECT_NEAR(s[0] + s[1] + s[2], 0.0, 1e-10);
+    EXPECT_NEAR(s[4], 0.0, 1e-12);
+    EXPECT_NEAR(s[5], 0.0, 1e-12);
+  }
+}
+
+// With volume change, on the axes: sigma_i = [sum mu_j (lbar_i^alpha_j - mean_j) + K (J - 1)] / J.
+TEST(Ogden, CompressibleStretchClosedForm) {
+  const auto law = ogden();
+  const double l[3] = {1.2, 0.95, 0.9}, J = l[0] * l[1] * l[2];
+  Stress want{};
+  for (std::size_t t = 0; t < 2; ++t) {
+    double pw[3], mean = 0;
+    for (int i = 0; i < 3; ++i) mean += (pw[i] = std::pow(l[i] / std::cbrt(J), kAlpha[t])) / 3;
+    for (std::size_t i = 0; i < 3; ++i) want[i] += kMu[t] * (pw[i] - mean) / J;
+  }
+  for (std::size_t i = 0; i < 3; ++i) want[i] += law.moduli.bulk * (J - 1) / J;
+  expectStress(stressAt(law, {l[0], 0, 0, 0, l[1], 0, 0, 0, l[2]}), want, 1e-10);
+}
+
+// G = sum mu_j alpha_j / 2 = 1.6, K from PR; a small stretch gives K + 4G/3 and K - 2G/3.
+TEST(Ogden, SmallStrainModuli) {
+  expectSmallStrainModuli(ogden(), 1.6, 2 * 1.6 * (1 + kOgdenNu) / (3 * (1 - 2 * kOgdenNu)));
+}
+
+TEST(Ogden, StressIsTheDerivativeOfTheEnergy) {
+  expectStressOfEnergy(ogden(), ogdenEnergy);
+}
+
+TEST(Ogden, RotationTurnsTheStress) {
+  expectObjective(ogden(), kGeneral, 1e-12);
+  expectObjective(ogden(), kUniaxial, 1e-12);  // a repeated principal stretch
+}
+
+// LS-DYNA's coefficient is mu_j / alpha_j: one term alpha = 2 is the neo-Hookean solid with
+// G = mu, and the terms {mu = 2A, alpha = 2; mu = -2B, alpha = -2} are Mooney-Rivlin A, B. At
+// J = 1 their deviatoric stresses equal those of this code's *MAT_027 law (whose pressure term
+// differs, so the pressures are not compared).
+TEST(Ogden, AlphaTwoIsMooneyRivlin) {
+  const double A = 0.5, B = 0.2;
+  m::MooneyRivlin::Params mr;
+  mr.a = A;
+  mr.nu = 0.45;
+  const auto neo = m::MooneyRivlin::make(mr, {}, "");
+  mr.b = B;
+  const auto mooney = m::MooneyRivlin::make(mr, {}, "");
+  const auto one = ogden({2 * A, 0}, {2, 0});
+  const auto two = ogden({2 * A, -2 * B}, {2, -2});
+  EXPECT_NEAR(one.moduli.shear, neo.moduli.shear, 1e-15);
+  EXPECT_NEAR(two.moduli.shear, mooney.moduli.shear, 1e-15);
+  for (const Mat3& F :
+       {kShear, isochoric(kUniaxial), isochoric(kEquibiaxial), isochoric(kGeneral)}) {
+    expectStress(deviator(stressAt(one, F)), deviator(stressAt(neo, F)), 1e-12);
+    expectStress(deviator(stressAt(two, F)), deviator(stressAt(mooney, F)), 1e-12);
+  }
 }
 
 namespace {
@@ -121,4 +273,41 @@ TEST(BlatzKo, ReadAndRefused) {
                    "is not supported"));
   EXPECT_TRUE(says(errorWith("*MAT_BLATZ-KO_RUBBER\n5,1.0e-6,2.5\n", kShell),
                    "part 1 has a *SECTION_SHELL section but material 5 (*MAT_BLATZ-KO_RUBBER)"));
+}
+
+TEST(Ogden, ReadTermsAndDefaults) {
+  crumple::testing::TempDir t("crumple_test_ogden");
+  const auto model = crumple::model::readModel(
+      t.write("r.k", kNodes + "*MAT_OGDEN_RUBBER\n5,1.0e-6,0.49\n1.2,-0.1\n2.5,-2.0\n" + kHex));
+  const auto& p = std::get<m::Ogden::Params>(model.materials.at(0).law);
+  EXPECT_EQ(p.nu, 0.49);
+  EXPECT_EQ(p.mu[0], 1.2);
+  EXPECT_EQ(p.mu[1], -0.1);
+  EXPECT_EQ(p.alpha[0], 2.5);
+  EXPECT_EQ(p.alpha[1], -2.0);
+  EXPECT_EQ(p.mu[2], 0.0);
+  // Viscoelastic cards with GI = 0 change nothing.
+  EXPECT_EQ(errorWith("*MAT_077_O\n5,1.0e-6,0.49\n1.2\n2.5\n0.0,10.0\n"), "");
+}
+
+TEST(Ogden, BadOrUnsupportedFieldsAreErrors) {
+  const std::string head = "*MAT_OGDEN_RUBBER\n";
+  EXPECT_TRUE(says(errorWith(head + "5,1.0e-6,0.5\n1.2\n2.5\n"),
+                   "card 1 field 3 (PR): Poisson's ratio must lie in [0, 0.5)"));
+  EXPECT_TRUE(says(errorWith(head + "5,1.0e-6,0.49,2\n10.,1.,1.,7\n"),
+                   "card 1 field 4 (N): N > 0 (the nonlinear least-squares fit"));
+  EXPECT_TRUE(says(errorWith(head + "5,1.0e-6,0.49,0,0,0.1,0.01\n1.2\n2.5\n"),
+                   "card 1 field 6 (G): frequency-independent (frictional) damping"));
+  EXPECT_TRUE(says(errorWith(head + "5,1.0e-6,0.49,0,0,0,0,1\n1.2\n2.5\n"),
+                   "card 1 field 8 (REF): REF = 1"));
+  EXPECT_TRUE(says(errorWith(head + "5,1.0e-6,0.49\n1.2,0.3\n2.5\n"),
+                   "card 3 field 2 (ALPHA2): a term with MU != 0 needs a non-zero exponent ALPHA"));
+  EXPECT_TRUE(
+      says(errorWith(head + "5,1.0e-6,0.49\n-1.2\n2.5\n"),
+           "card 2 field 1 (MU1): the shear modulus sum(MU_i ALPHA_i) / 2 must be positive"));
+  EXPECT_TRUE(says(errorWith(head + "5,1.0e-6,0.49\n1.2\n2.5\n0.0,1.0\n0.3,10.0\n"),
+                   "viscoelastic card 2 field 1 (GI): viscoelasticity (Prony terms GI, BETAI) is "
+                   "not supported"));
+  EXPECT_TRUE(says(errorWith(head + "5,1.0e-6,0.49\n1.2\n2.5\n", kShell),
+                   "part 1 has a *SECTION_SHELL section but material 5 (*MAT_OGDEN_RUBBER)"));
 }
