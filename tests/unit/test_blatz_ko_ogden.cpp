@@ -286,6 +286,10 @@ TEST(Ogden, ReadTermsAndDefaults) {
   EXPECT_EQ(p.alpha[0], 2.5);
   EXPECT_EQ(p.alpha[1], -2.0);
   EXPECT_EQ(p.mu[2], 0.0);
+  // PR < 0: Poisson's ratio |PR| and card 2 (here without hysteresis or compliances).
+  const auto negative = crumple::model::readModel(
+      t.write("n.k", kNodes + "*MAT_OGDEN_RUBBER\n5,1.0e-6,-0.495\n0\n1.2\n2.5\n" + kHex));
+  EXPECT_EQ(std::get<m::Ogden::Params>(negative.materials.at(0).law).nu, 0.495);
   // Viscoelastic cards with GI = 0 change nothing.
   EXPECT_EQ(errorWith("*MAT_077_O\n5,1.0e-6,0.49\n1.2\n2.5\n0.0,10.0\n"), "");
 }
@@ -293,18 +297,23 @@ TEST(Ogden, ReadTermsAndDefaults) {
 TEST(Ogden, BadOrUnsupportedFieldsAreErrors) {
   const std::string head = "*MAT_OGDEN_RUBBER\n";
   EXPECT_TRUE(says(errorWith(head + "5,1.0e-6,0.5\n1.2\n2.5\n"),
-                   "card 1 field 3 (PR): Poisson's ratio must lie in [0, 0.5)"));
+                   "card 1 field 3 (PR): Poisson's ratio |PR| must be below 0.5"));
   EXPECT_TRUE(says(errorWith(head + "5,1.0e-6,0.49,2\n10.,1.,1.,7\n"),
                    "card 1 field 4 (N): N > 0 (the nonlinear least-squares fit"));
+  EXPECT_TRUE(says(errorWith(head + "5,1.0e-6,0.49,-1\n1\n2\n"),
+                   "card 1 field 4 (N): N = -1 (MU_i and ALPHA_i as curves of temperature)"));
+  EXPECT_TRUE(says(errorWith(head + "5,1.0e-6,-0.49\n0,0,0,0,0,0.001\n1.2\n2.5\n"),
+                   "card 2 field 6 (D1): the compression compliances D1-D3 are not supported"));
   EXPECT_TRUE(says(errorWith(head + "5,1.0e-6,0.49,0,0,0.1,0.01\n1.2\n2.5\n"),
                    "card 1 field 6 (G): frequency-independent (frictional) damping"));
   EXPECT_TRUE(says(errorWith(head + "5,1.0e-6,0.49,0,0,0,0,1\n1.2\n2.5\n"),
                    "card 1 field 8 (REF): REF = 1"));
-  EXPECT_TRUE(says(errorWith(head + "5,1.0e-6,0.49\n1.2,0.3\n2.5\n"),
-                   "card 3 field 2 (ALPHA2): a term with MU != 0 needs a non-zero exponent ALPHA"));
+  EXPECT_TRUE(
+      says(errorWith(head + "5,1.0e-6,0.49\n1.2,0.3\n2.5\n"),
+           "card 3b.2 field 2 (ALPHA2): a term with MU != 0 needs a non-zero exponent ALPHA"));
   EXPECT_TRUE(
       says(errorWith(head + "5,1.0e-6,0.49\n-1.2\n2.5\n"),
-           "card 2 field 1 (MU1): the shear modulus sum(MU_i ALPHA_i) / 2 must be positive"));
+           "card 3b.1 field 1 (MU1): the shear modulus sum(MU_i ALPHA_i) / 2 must be positive"));
   EXPECT_TRUE(says(errorWith(head + "5,1.0e-6,0.49\n1.2\n2.5\n0.0,1.0\n0.3,10.0\n"),
                    "viscoelastic card 2 field 1 (GI): viscoelasticity (Prony terms GI, BETAI) is "
                    "not supported"));

@@ -17,7 +17,7 @@ constexpr std::array<std::string_view, Ogden::kTerms> kMu{"MU1", "MU2", "MU3", "
                                                           "MU5", "MU6", "MU7", "MU8"};
 constexpr std::array<std::string_view, Ogden::kTerms> kAlpha{
     "ALPHA1", "ALPHA2", "ALPHA3", "ALPHA4", "ALPHA5", "ALPHA6", "ALPHA7", "ALPHA8"};
-// The optional viscoelastic cards (GI BETAI GJ SIGFJ), up to 12, ended by the next keyword.
+// The optional viscoelastic cards (GI BETAI VFLAG), up to 12, ended by the next keyword.
 constexpr int kViscoCards = 12;
 constexpr std::array<std::string_view, kViscoCards> kVisco{
     "viscoelastic card 1", "viscoelastic card 2",  "viscoelastic card 3",  "viscoelastic card 4",
@@ -30,6 +30,8 @@ std::vector<deck::FieldSpec> realFields(const std::array<std::string_view, Ogden
   return fields;
 }
 
+// The cards as the Keyword Manual numbers them: card 2 only when PR < 0, card 3a when N > 0,
+// cards 3b.1 and 3b.2 when N <= 0.
 deck::KeywordSpec makeSpec() {
   using deck::I;
   using deck::R;
@@ -39,21 +41,23 @@ deck::KeywordSpec makeSpec() {
        {"card 1",
         {I("MID"), R("RO"), R("PR"), I("N"), I("NV", 6, deck::kZeroIsDefault), R("G"), R("SIGF"),
          R("REF")}},
-       // N > 0: the test data of the fit (refused, read so that the cards after it line up).
-       {"card 2 (N > 0)",
-        {R("SGL"), R("SW"), R("ST"), I("LCID1"), R("DATA"), I("LCID2"), R("BSTART"), R("TRAMP")}},
-       {"card 2", realFields(kMu)},
-       {"card 3", realFields(kAlpha)}}};
+       {"card 2",
+        {R("TBHYS"), R("LCBI"), R("LCPL"), R("WBI"), R("WPL"), R("D1"), R("D2"), R("D3")}},
+       {"card 3a",
+        {R("SGL"), R("SW"), R("ST"), I("LCID1"), R("DATA", 1.0), I("LCID2"), R("BSTART"),
+         R("TRAMP")}},
+       {"card 3b.1", realFields(kMu)},
+       {"card 3b.2", realFields(kAlpha)}}};
   for (std::string_view label : kVisco)
-    spec.cards.push_back({label, {R("GI"), R("BETAI"), R("GJ"), R("SIGFJ")}});
+    spec.cards.push_back({label, {R("GI"), R("BETAI"), I("VFLAG")}});
   return spec;
 }
 
-// MU_j and ALPHA_j (cards 2 and 3, N = 0); a term needs a non-zero exponent, and the terms a
-// positive shear modulus.
+// MU_j and ALPHA_j (cards 3b.1 and 3b.2, N = 0); a term needs a non-zero exponent, and the terms
+// a positive shear modulus.
 void readTerms(LawInput& in, Ogden::Params& p) {
-  const deck::Card& c2 = in.card("card 2");
-  const deck::Card& c3 = in.card("card 3");
+  const deck::Card& c2 = in.card("card 3b.1");
+  const deck::Card& c3 = in.card("card 3b.2");
   double twice_g = 0.0;
   for (int t = 0; t < Ogden::kTerms; ++t) {
     p.mu[t] = c2.real(kMu[t]);
@@ -63,6 +67,35 @@ void readTerms(LawInput& in, Ogden::Params& p) {
     twice_g += p.mu[t] * p.alpha[t];
   }
   if (!(twice_g > 0.0)) c2.fail(kMu[0], "the shear modulus sum(MU_i ALPHA_i) / 2 must be positive");
+}
+
+// PR < 0: Poisson's ratio is |PR| and card 2 follows. Its hysteresis table and compression
+// compliances change the answer (D1 > 0 replaces PR); LCBI, LCPL, WBI, WPL feed only the fit.
+void readExtraCard(LawInput& in) {
+  const deck::Card& c = in.card("card 2");
+  if (c.real("TBHYS") != 0.0) in.reject(c, "TBHYS", "the hysteresis table TBHYS is not supported");
+  for (std::string_view d : {"D1", "D2", "D3"})
+    if (c.real(d) != 0.0)
+      in.reject(c, d, "the compression compliances D1-D3 are not supported: K is taken from PR");
+}
+
+// The order N of the fit: N > 0 fits MU_j, ALPHA_j to test curves, N = -1 reads them as curves
+// of temperature; only N = 0 (the constants given) is honoured.
+void readOrder(LawInput& in, const deck::Card& c, Ogden::Params& p) {
+  const int64_t n = c.integer("N");
+  if (n < -1 || n > Ogden::kTerms) c.fail("N", "the order of the fit must lie in [-1, 8]");
+  if (n > 0) {
+    in.reject(c, "N",
+              "N > 0 (the nonlinear least-squares fit of MU_i, ALPHA_i to the test curve LCID1) "
+              "is not supported: give MU1-MU8 and ALPHA1-ALPHA8 with N = 0");
+    in.card("card 3a");
+  } else if (n == -1) {
+    in.reject(c, "N", "N = -1 (MU_i and ALPHA_i as curves of temperature) is not supported");
+    in.card("card 3b.1");
+    in.card("card 3b.2");
+  } else {
+    readTerms(in, p);
+  }
 }
 
 // The frictional damping of card 1 and the viscoelastic cards change the answer: refused.
@@ -79,8 +112,6 @@ void readDamping(LawInput& in, const deck::Card& c1) {
       in.reject(v, "GI",
                 "viscoelasticity (Prony terms GI, BETAI) is not supported: give GI = 0 to run "
                 "without it");
-    if (v.real("GJ") != 0.0)
-      in.reject(v, "GJ", "frequency-independent damping (GJ, SIGFJ) is not supported");
   }
 }
 
@@ -94,20 +125,13 @@ const deck::KeywordSpec& Ogden::cards() {
 Ogden::Params Ogden::read(LawInput& in) {
   const deck::Card& c = in.card("card 1");
   Params p;
-  p.nu = c.real("PR");
-  if (!(p.nu >= 0.0 && p.nu < 0.5)) c.fail("PR", "Poisson's ratio must lie in [0, 0.5)");
+  const double pr = c.real("PR");
+  p.nu = std::abs(pr);
+  if (!(p.nu < 0.5)) c.fail("PR", "Poisson's ratio |PR| must be below 0.5");
   if (c.real("REF") != 0.0)
     in.reject(c, "REF", "REF = 1 (stress from *INITIAL_FOAM_REFERENCE_GEOMETRY) is not supported");
-  const int64_t n = c.integer("N");
-  if (n < 0 || n > kTerms) c.fail("N", "the order of the fit must lie in [0, 8]");
-  if (n > 0) {
-    in.reject(c, "N",
-              "N > 0 (the nonlinear least-squares fit of MU_i, ALPHA_i to the test curve LCID1) "
-              "is not supported: give MU1-MU8 and ALPHA1-ALPHA8 with N = 0");
-    in.card("card 2 (N > 0)");
-  } else {
-    readTerms(in, p);
-  }
+  if (pr < 0.0) readExtraCard(in);
+  readOrder(in, c, p);
   readDamping(in, c);
   return p;
 }

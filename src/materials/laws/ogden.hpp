@@ -11,9 +11,11 @@
 // with G = mu. K = 2 G (1 + nu) / (3 (1 - 2 nu)) from PR. The principal Kirchhoff stresses
 //   tau_i = sum_j mu_j (lbar_i^alpha_j - (1/3) sum_k lbar_k^alpha_j) + K (J - 1)
 // (Theory Manual; Holzapfel, "Nonlinear Solid Mechanics", 2000, sec. 6.4, 6.5) on the principal
-// axes of B give the Cauchy stress sigma = tau / J: a function of F alone, no history. Refused: N >
-// 0 (the nonlinear fit of MU_j, ALPHA_j to the test curve), G != 0 (frequency- independent
-// frictional damping with SIGF), viscoelastic cards with GI or GJ non-zero, REF = 1.
+// axes of B give the Cauchy stress sigma = tau / J: a function of F alone, no history.
+// PR < 0 means Poisson's ratio |PR| and an extra card 2, whose hysteresis table TBHYS and
+// compression compliances D1-D3 are refused. Also refused: N > 0 (the nonlinear fit of MU_j,
+// ALPHA_j to test curves), N = -1 (MU_j, ALPHA_j as curves of temperature), G != 0 (the
+// frequency-independent frictional damping with SIGF), viscoelastic cards with GI != 0, REF = 1.
 #pragma once
 
 #include <array>
