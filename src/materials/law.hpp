@@ -157,6 +157,9 @@ struct Moduli {
 
 // Bulk and shear modulus from E and nu.
 Moduli moduliFromYoung(double E, double nu);
+// Bulk and shear modulus from G and nu: K = 2 G (1 + nu) / (3 (1 - 2 nu)) (the small-strain
+// moduli of the rubbers, whose decks give a shear modulus and Poisson's ratio).
+Moduli moduliFromShear(double G, double nu);
 
 // Young's modulus from the bulk and shear moduli the laws store.
 inline double youngOf(const Moduli& m) {

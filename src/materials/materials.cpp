@@ -14,6 +14,10 @@ Moduli moduliFromYoung(double E, double nu) {
   return Moduli{E / (3.0 * (1.0 - 2.0 * nu)), E / (2.0 * (1.0 + nu))};
 }
 
+Moduli moduliFromShear(double G, double nu) {
+  return Moduli{2.0 * G * (1.0 + nu) / (3.0 * (1.0 - 2.0 * nu)), G};
+}
+
 void readElastic(const deck::Card& c, double& E, double& nu) {
   E = c.real("E");
   nu = c.real("PR");

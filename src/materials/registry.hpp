@@ -4,6 +4,7 @@
 // src/materials/laws/ (law.hpp says what a unit declares) plus its line here.
 #pragma once
 
+#include "materials/laws/blatz_ko.hpp"
 #include "materials/laws/crushable_foam.hpp"
 #include "materials/laws/elastic.hpp"
 #include "materials/laws/elastic_plastic_hydro.hpp"
@@ -14,6 +15,7 @@
 #include "materials/laws/mooney_rivlin.hpp"
 #include "materials/laws/muscle.hpp"
 #include "materials/laws/null.hpp"
+#include "materials/laws/ogden.hpp"
 #include "materials/laws/piecewise_linear.hpp"
 #include "materials/laws/plastic_kinematic.hpp"
 #include "materials/laws/power_law.hpp"
@@ -35,6 +37,6 @@ using AllLaws =
     LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic, DamperViscous,
             SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam, JohnsonCook, PowerLaw,
             StrainRatePlasticity, ModifiedPiecewiseLinear, Spotweld, ElasticPlasticHydro,
-            MooneyRivlin, FrazerNash, Muscle, Viscoelastic, LowDensityFoam>;
+            MooneyRivlin, FrazerNash, Muscle, Viscoelastic, LowDensityFoam, BlatzKo, Ogden>;
 
 }  // namespace crumple::materials

@@ -1,6 +1,7 @@
-// Hyperelastic rubbers in whole runs (*MAT_027 Mooney-Rivlin, *MAT_031 Frazer-Nash on one-point
-// hexahedra): one hex in uniaxial stretch, simple shear and equibiaxial stretch, its Cauchy
-// stress against the law's closed form at the deformation the nodes show; a stretched block
+// Hyperelastic rubbers in whole runs (*MAT_027 Mooney-Rivlin, *MAT_031 Frazer-Nash, *MAT_007
+// Blatz-Ko, *MAT_077_O Ogden on one-point hexahedra): one hex in uniaxial stretch, simple shear
+// and equibiaxial stretch, its Cauchy stress (and for Blatz-Ko and Ogden the force on the pulled
+// face) against the law's closed form at the deformation the nodes show; a stretched block
 // turned rigidly keeps its principal stresses and its energy (objectivity); the internal energy
 // after a slow stretch is W V0, the work of the boundary forces; and the LSTC Frazer-Nash test
 // deck (../shared/decks/dynakw_fn_rubber, the corpus) runs to its end and gives its energy back.
@@ -10,14 +11,17 @@
 
 #include <array>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "harness.hpp"
 #include "materials/hyperelastic.hpp"
+#include "materials/laws/blatz_ko.hpp"
 #include "materials/laws/frazer_nash.hpp"
 #include "materials/laws/mooney_rivlin.hpp"
+#include "materials/laws/ogden.hpp"
 
 using crumple::testing::brickDeck;
 using crumple::testing::brickNodeSet;
@@ -69,11 +73,14 @@ std::array<double, 3> stretchesOf(const Simulation& sim) {
 }
 
 // A unit cube whose faces x = 1 (and y = 1 when `biaxial`) move out by `stretch` - 1 over time
-// 1 (displacement ramp), on rollers on x = 0, y = 0, z = 0, the other faces free.
-std::string stretchDeck(const std::string& material, double stretch, bool biaxial) {
-  std::string s = material + termination(1.0);
+// 1 (displacement ramp), then held for `hold`, on rollers on x = 0, y = 0, z = 0, the other faces
+// free.
+std::string stretchDeck(const std::string& material, double stretch, bool biaxial,
+                        double hold = 0.0) {
+  std::string s = material + termination(1.0 + hold);
   s += fmt::format("*DEFINE_CURVE\n{:10d}\n{:20.12g}{:20.12g}\n{:20.12g}{:20.12g}\n", 90, 0.0, 0.0,
                    1.0, stretch - 1.0);
+  if (hold > 0.0) s += fmt::format("{:20.12g}{:20.12g}\n", 1.0 + hold, stretch - 1.0);
   for (int d = 0; d < (biaxial ? 2 : 1); ++d) {
     s += brickNodeSet(1 + d, 1, 1, 1, [d](int i, int j, int) { return (d == 0 ? i : j) == 1; });
     s += fmt::format("*BOUNDARY_PRESCRIBED_MOTION_SET\n{:10d}{:10d}{:10d}{:10d}{:10.1f}\n", 1 + d,
@@ -150,6 +157,20 @@ std::string drivenCube(const std::string& material, const std::vector<double>& t
   return brickDeck(1, 1, 1, 1.0, 1.0, 1.0, s + motion);
 }
 
+// The cube of `material` in simple shear x += gamma z, gamma 0.04 t over [0, 1] to 0.4, held to
+// 1.2 (every node driven), run to its end.
+std::unique_ptr<Simulation> simpleShear(const std::string& name, const std::string& material) {
+  std::vector<double> times;
+  std::vector<std::array<double, 9>> M;
+  for (int t = 0; t <= 12; ++t) {
+    times.push_back(0.1 * t);
+    M.push_back({1, 0, 0.04 * std::min(t, 10), 0, 1, 0, 0, 0, 1});
+  }
+  auto sim = Simulation::fromText(name, drivenCube(material, times, M));
+  sim->run();
+  return sim;
+}
+
 }  // namespace
 
 // Simple shear x += gamma z to gamma = 0.4 over [0, 1], held to 1.2 (every node driven):
@@ -157,14 +178,7 @@ std::string drivenCube(const std::string& material, const std::vector<double>& t
 // 2 (A + B) gamma^2 = 0.224, sigma_yy - sigma_zz = 2 B gamma^2 = 0.064, at the gamma the nodes
 // show.
 TEST(VerificationRubber, MooneyRivlinSimpleShear) {
-  std::vector<double> times;
-  std::vector<std::array<double, 9>> M;
-  for (int t = 0; t <= 12; ++t) {
-    times.push_back(0.1 * t);
-    M.push_back({1, 0, 0.04 * std::min(t, 10), 0, 1, 0, 0, 0, 1});
-  }
-  auto sim = Simulation::fromText("mr_shear", drivenCube(kMooney, times, M));
-  sim->run();
+  auto sim = simpleShear("mr_shear", kMooney);
   const double gamma = sim->x(5, 0);  // node 5 starts at (0, 0, 1)
   EXPECT_NEAR(gamma, 0.4, 1e-9);
   EXPECT_NEAR(stressOf(*sim, 5), 2 * (kA + kB) * gamma, 1e-9);
@@ -306,4 +320,122 @@ TEST(VerificationRubber, FrazerNashLstcDeckRunsAndGivesItsEnergyBack) {
   EXPECT_NEAR(peak_szz, want[2], 0.01 * std::abs(want[2]));
   EXPECT_LT(std::abs(want[0]), 0.05 * std::abs(want[2]));
   EXPECT_NEAR(peak_energy, law.energy(kin) * 7.5 * 7.5 * 10.0, 0.01 * peak_energy);
+}
+
+namespace {
+
+// The x force on the pulled face x = 1 of the unit cube: the corners 1, 2, 5, 6 of its hex
+// (nodes 2, 4, 6, 8) carry it.
+double pulledFaceForce(const Simulation& sim) {
+  const auto& b = sim.sd.solid_blocks.at(0);
+  double f = 0.0;
+  for (std::size_t corner : {1, 2, 5, 6}) f += sim.sd.slots[3 * (b.slot_offset + corner)];
+  return std::abs(f);
+}
+
+// G = 1, RO = 1e-3 (Poisson's ratio 0.463 fixed: K = 13.2): waves cross the unit cube in 0.01.
+const std::string kBlatzKo =
+    "*MAT_BLATZ-KO_RUBBER\n"
+    "         1     0.001       1.0\n";
+
+}  // namespace
+
+// Blatz-Ko stretched to 1.5 over [0, 1] and held to 1.2, its lateral faces free: the closed form of
+// uniaxial stress (blatz_ko.hpp) has lateral stretches l^-nu, the force on the face G (l - l^(-1-2
+// nu)) (nominal stress times the initial area 1) and the stored energy G/2 (l^2 - 1 + (l^-2nu - 1)
+// / nu); the work of the pulling face equals it.
+TEST(VerificationRubber, BlatzKoUniaxialForceAndEnergy) {
+  auto sim = Simulation::fromText("bk_uniaxial", stretchDeck(kBlatzKo, 1.5, false, 0.2));
+  sim->run();
+  const auto l = stretchesOf(*sim);
+  const double nu = crumple::materials::BlatzKo::kNu, L = 1.5;
+  EXPECT_NEAR(l[0], L, 1e-9);
+  EXPECT_NEAR(l[1], std::pow(L, -nu), 1e-3);
+  EXPECT_NEAR(l[2], std::pow(L, -nu), 1e-3);
+  const double force = L - std::pow(L, -1 - 2 * nu);
+  EXPECT_NEAR(pulledFaceForce(*sim), force, 0.005 * force);
+  EXPECT_NEAR(stressOf(*sim, 0) * l[1] * l[2], pulledFaceForce(*sim), 2e-3 * force);
+  EXPECT_LT(std::abs(stressOf(*sim, 1)), 5e-3 * force);
+  const double stored = 0.5 * (L * L - 1 + (std::pow(L, -2 * nu) - 1) / nu);
+  const auto e = sim->solver->energies();
+  EXPECT_NEAR(e.internal, stored, 0.01 * stored);
+  EXPECT_NEAR(e.external_work, e.internal + e.kinetic + e.hourglass, 0.01 * stored);
+}
+
+namespace {
+
+// MU 1.2, -0.1 and ALPHA 2.5, -2 (G = 1.6), PR = 0.49 (K = 79.5), RO = 1e-3.
+const std::string kOgden =
+    "*MAT_OGDEN_RUBBER\n"
+    "         1     0.001      0.49\n"
+    "       1.2      -0.1\n"
+    "       2.5      -2.0\n";
+constexpr std::array<double, 2> kOgdenMu{1.2, -0.1}, kOgdenAlpha{2.5, -2.0};
+
+crumple::materials::Ogden ogdenLaw() {
+  crumple::materials::Ogden::Params p;
+  p.nu = 0.49;
+  for (std::size_t t = 0; t < 2; ++t) p.mu[t] = kOgdenMu[t], p.alpha[t] = kOgdenAlpha[t];
+  return crumple::materials::Ogden::make(p, {}, "");
+}
+
+}  // namespace
+
+// Ogden stretched to 1.5 over [0, 1] and held to 1.2, its lateral faces free: sigma_xx is the
+// closed form on the axes, [sum mu_j (lbar_1^alpha_j - mean_j) + K (J - 1)] / J, at the stretches
+// the nodes show, the lateral stress vanishes, the face force is sigma_xx times the current area,
+// within 1.5 % of the incompressible sum mu_j (l^(alpha_j - 1) - l^(-alpha_j/2 - 1)) (PR = 0.49),
+// and the internal energy is W V0, the work of the pulling face.
+TEST(VerificationRubber, OgdenUniaxialForceAndEnergy) {
+  auto sim = Simulation::fromText("ogden_uniaxial", stretchDeck(kOgden, 1.5, false, 0.2));
+  sim->run();
+  const auto l = stretchesOf(*sim);
+  EXPECT_NEAR(l[0], 1.5, 1e-9);
+  const auto law = ogdenLaw();
+  const double J = l[0] * l[1] * l[2];
+  double sxx = law.moduli.bulk * (J - 1);
+  for (std::size_t t = 0; t < 2; ++t) {
+    double pw[3], mean = 0;
+    for (std::size_t i = 0; i < 3; ++i)
+      mean += (pw[i] = std::pow(l[i] / std::cbrt(J), kOgdenAlpha[t])) / 3;
+    sxx += kOgdenMu[t] * (pw[0] - mean);
+  }
+  sxx /= J;
+  EXPECT_NEAR(stressOf(*sim, 0), sxx, 2e-3 * sxx);
+  EXPECT_LT(std::abs(stressOf(*sim, 1)), 5e-3 * sxx);
+  EXPECT_LT(std::abs(stressOf(*sim, 2)), 5e-3 * sxx);
+  EXPECT_NEAR(pulledFaceForce(*sim), sxx * l[1] * l[2], 2e-3 * sxx);
+  double incompressible = 0.0;
+  for (std::size_t t = 0; t < 2; ++t)
+    incompressible +=
+        kOgdenMu[t] * (std::pow(1.5, kOgdenAlpha[t] - 1) - std::pow(1.5, -kOgdenAlpha[t] / 2 - 1));
+  EXPECT_NEAR(pulledFaceForce(*sim), incompressible, 0.015 * incompressible);
+  const auto [want, kin] = lawAt(law, l);
+  EXPECT_NEAR(want[0], sxx, 1e-12 * sxx);
+  const double stored = law.energy(kin);  // V0 = 1
+  const auto e = sim->solver->energies();
+  EXPECT_NEAR(e.internal, stored, 0.01 * stored);
+  EXPECT_NEAR(e.external_work, e.internal + e.kinetic + e.hourglass, 0.01 * stored);
+}
+
+// Simple shear x += gamma z to gamma = 0.4 (every node driven, J = 1): sigma_xz = D / (l1 + 1/l1),
+// D = sum mu_j (l1^alpha_j - l1^-alpha_j), l1 = gamma/2 + sqrt(1 + gamma^2/4); sigma_xx -
+// sigma_zz = gamma sigma_xz; sigma_yy = sum mu_j (1 - (l1^alpha_j + l1^-alpha_j + 1) / 3).
+TEST(VerificationRubber, OgdenSimpleShear) {
+  auto sim = simpleShear("ogden_shear", kOgden);
+  const double gamma = sim->x(5, 0);
+  EXPECT_NEAR(gamma, 0.4, 1e-9);
+  const double l1 = gamma / 2 + std::sqrt(1 + gamma * gamma / 4);
+  double d = 0.0, syy = 0.0;
+  for (std::size_t t = 0; t < 2; ++t) {
+    const double a = kOgdenAlpha[t], up = std::pow(l1, a), down = std::pow(l1, -a);
+    d += kOgdenMu[t] * (up - down);
+    syy += kOgdenMu[t] * (1 - (up + down + 1) / 3);
+  }
+  const double sxz = d / (l1 + 1 / l1);
+  EXPECT_NEAR(stressOf(*sim, 5), sxz, 1e-9);
+  EXPECT_NEAR(stressOf(*sim, 0) - stressOf(*sim, 2), gamma * sxz, 1e-9);
+  EXPECT_NEAR(stressOf(*sim, 1), syy, 1e-9);
+  EXPECT_NEAR(stressOf(*sim, 3), 0.0, 1e-12);
+  EXPECT_NEAR(stressOf(*sim, 4), 0.0, 1e-12);
 }

@@ -123,8 +123,7 @@ FrazerNash FrazerNash::make(const Params& p, const CurveAt& curves, const std::s
                            " is not positive" + (p.curve >= 0 ? " (from the LCID fit)" : ""));
   if (!(p.nu > -1.0 && p.nu < 0.5))
     throw util::InputError(at + "Poisson's ratio must lie in (-1, 0.5)");
-  m.moduli.shear = G;
-  m.moduli.bulk = 2.0 * G * (1.0 + p.nu) / (3.0 * (1.0 - 2.0 * p.nu));
+  m.moduli = moduliFromShear(G, p.nu);
   return m;
 }
 

@@ -68,8 +68,7 @@ MooneyRivlin MooneyRivlin::make(const Params& p, const CurveAt& curves, const st
     throw util::InputError(at + "Poisson's ratio must lie in (-1, 0.5)");
   m.c = 0.5 * m.a + m.b;
   m.d = (m.a * (5.0 * p.nu - 2.0) + m.b * (11.0 * p.nu - 5.0)) / (2.0 * (1.0 - 2.0 * p.nu));
-  m.moduli.shear = G;
-  m.moduli.bulk = 2.0 * G * (1.0 + p.nu) / (3.0 * (1.0 - 2.0 * p.nu));
+  m.moduli = moduliFromShear(G, p.nu);
   return m;
 }
 
