@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <unordered_map>
 
 #include "constraints/blast.hpp"
 
@@ -85,11 +86,20 @@ Boundary::Boundary(const model::Model& m, const domain::Subdomain& sd) {
     list.push_back({n, {}, {}, 0.0});
     return list.size() - 1;
   };
+  // The first motion of each prescribed (node, freedom), looked up by node: one pass over the
+  // motions and one over the SPCs.
+  std::unordered_map<int32_t, std::array<int32_t, 3>> first_motion;
+  for (std::size_t k = motion_.size(); k-- > 0;) {
+    auto [it, added] =
+        first_motion.try_emplace(motion_[k].node, std::array<int32_t, 3>{-1, -1, -1});
+    it->second[std::size_t(motion_[k].dof)] = int32_t(k);
+  }
   for (const auto& [n, mask] : spc_) {
     spc_at_.push_back(entry(spc_reaction_, n));
     std::array<int32_t, 3> on{-1, -1, -1};
-    for (std::size_t k = motion_.size(); k-- > 0;)
-      if (motion_[k].node == n && (mask & (1u << motion_[k].dof))) on[motion_[k].dof] = int32_t(k);
+    if (const auto it = first_motion.find(n); it != first_motion.end())
+      for (std::size_t c = 0; c < 3; ++c)
+        if (mask & (1u << c)) on[c] = it->second[c];
     spc_motion_.push_back(on);
   }
   for (const auto& [n, mask] : spc_rot_) spc_rot_at_.push_back(entry(spc_reaction_, n));

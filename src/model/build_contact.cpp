@@ -95,15 +95,13 @@ double shortestEdge(const Model& m, std::size_t e) {
   return shortest;
 }
 
-// The contact thickness of shell e in a surface: shellThickness, and in single surface
-// contacts with SSTHK 0 (`limit`) at most 40% of the shell's shortest edge unless its part
-// gives OPTT. LS-DYNA does this for its single surface contacts (types 4, 13, 15, 26) so that
-// a thick shell on a fine mesh does not touch its own neighbours; a thickness given for
-// contact (OPTT, SST) is taken as it is (dynasupport, "Contact thickness"; Keyword Manual,
-// *CONTROL_CONTACT SSTHK).
-double contactThickness(const Model& m, std::size_t e, bool limit) {
-  const double t = shellThickness(m, e);
-  if (!limit || m.parts[std::size_t(m.shells.part[e])].contact_thickness > 0.0) return t;
+// Shell e's contact thickness t (shellThickness) as single surface contacts with SSTHK 0 take
+// it: at most 40% of the shell's shortest edge unless its part gives OPTT. LS-DYNA does this
+// for its single surface contacts (types 4, 13, 15, 26) so that a thick shell on a fine mesh
+// does not touch its own neighbours; a thickness given for contact (OPTT, SST) is taken as it
+// is (dynasupport, "Contact thickness"; Keyword Manual, *CONTROL_CONTACT SSTHK).
+double edgeLimited(const Model& m, std::size_t e, double t) {
+  if (m.parts[std::size_t(m.shells.part[e])].contact_thickness > 0.0) return t;
   return std::min(t, 0.4 * shortestEdge(m, e));
 }
 
@@ -318,7 +316,7 @@ void applyBox(const Context& ctx, const Card& c, std::string_view field, Side& s
 
 // The contact surface of a side. A thickness_override (SST, MST) replaces every shell's
 // contact thickness; else `limit_to_edges` (single surface contacts, SSTHK 0) applies
-// contactThickness's 40% rule.
+// edgeLimited's 40% rule.
 ContactSurface makeSurface(const Model& m, const Side& side, double thickness_override,
                            bool limit_to_edges) {
   ContactSurface s;
@@ -331,7 +329,7 @@ ContactSurface makeSurface(const Model& m, const Side& side, double thickness_ov
     if (t > 0.0 && thickness_override > 0.0)
       t = thickness_override;
     else if (t > 0.0 && limit_to_edges && seg.element >= shell0)
-      t = contactThickness(m, std::size_t(seg.element - shell0), true);
+      t = edgeLimited(m, std::size_t(seg.element - shell0), t);
     s.segment_thickness.push_back(t);
     s.segment_stiffness.push_back(seg.stiffness);
     s.segment_depth.push_back(seg.depth);
@@ -340,8 +338,10 @@ ContactSurface makeSurface(const Model& m, const Side& side, double thickness_ov
   // the shell is on this side (a node set side has no segments of its own).
   std::vector<double> half(m.nodes.size(), 0.0);
   for (std::size_t e = 0; e < m.shells.size(); ++e) {
-    const double h = 0.5 * (thickness_override > 0.0 ? thickness_override
-                                                     : contactThickness(m, e, limit_to_edges));
+    double t = thickness_override;
+    if (!(t > 0.0))
+      t = limit_to_edges ? edgeLimited(m, e, shellThickness(m, e)) : shellThickness(m, e);
+    const double h = 0.5 * t;
     for (int32_t n : m.shells.nodes[e]) half[std::size_t(n)] = std::max(half[std::size_t(n)], h);
   }
   // A beam node of a capsule side meets segments with the beam's radius (its spherical end).

@@ -18,9 +18,12 @@ namespace crumple::testing::hyper {
 using Mat3 = std::array<double, 9>;  // row-major
 using Stress = std::array<double, 6>;
 
-// The law's stress at F (a batch of one point).
+// The law's stress at F (a batch of one point); `history` the law's history variables of the
+// point (in/out), `modulus`, when given, receives the wave modulus a law reports.
 template <class Law>
-Stress stressAt(const Law& law, const Mat3& F) {
+Stress stressAt(const Law& law, const Mat3& F,
+                std::array<double*, materials::kMaxHistory> history = {},
+                double* modulus = nullptr) {
   double f[9][1], s[6][1] = {}, de[6][1] = {};
   for (int k = 0; k < 9; ++k) f[k][0] = F[std::size_t(k)];
   materials::PointBatch pb;
@@ -30,6 +33,8 @@ Stress stressAt(const Law& law, const Mat3& F) {
     pb.de[k] = de[k];
   }
   for (int k = 0; k < 9; ++k) pb.F[k] = f[k];
+  for (int k = 0; k < materials::kMaxHistory; ++k) pb.h[k] = history[std::size_t(k)];
+  pb.modulus = modulus;
   law.update(pb);
   Stress out;
   for (int k = 0; k < 6; ++k) out[std::size_t(k)] = s[k][0];

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "hyperelastic_point.hpp"
 #include "materials/materials.hpp"
 #include "model/build.hpp"
 #include "temp_dir.hpp"
@@ -50,22 +51,7 @@ struct Point {
 
   // The stress at F; `modulus`, when given, receives the wave modulus the update reports.
   Stress at(const m::LowDensityFoam& law, const Mat3& F, double* modulus = nullptr) {
-    double f[9][1], s[6][1] = {}, de[6][1] = {};
-    for (int k = 0; k < 9; ++k) f[k][0] = F[std::size_t(k)];
-    m::PointBatch pb;
-    pb.n = 1;
-    for (int k = 0; k < 6; ++k) {
-      pb.s[k] = s[k];
-      pb.de[k] = de[k];
-    }
-    for (int k = 0; k < 9; ++k) pb.F[k] = f[k];
-    pb.h[0] = &w_max;
-    pb.h[1] = &torn;
-    pb.modulus = modulus;
-    law.update(pb);
-    Stress out;
-    for (int k = 0; k < 6; ++k) out[std::size_t(k)] = s[k][0];
-    return out;
+    return crumple::testing::hyper::stressAt(law, F, {&w_max, &torn}, modulus);
   }
   Stress diagonal(const m::LowDensityFoam& law, double l1, double l2 = 1.0, double l3 = 1.0) {
     return at(law, {l1, 0, 0, 0, l2, 0, 0, 0, l3});
