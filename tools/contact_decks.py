@@ -8,6 +8,10 @@ contact benchmark. Each function returns deck text; `main` writes one to a file:
   python3 tools/contact_decks.py tube OUT.k [--size 2.5] [--length 120]
   python3 tools/contact_decks.py tied OUT.k
   python3 tools/contact_decks.py cask OUT.k
+  python3 tools/contact_decks.py eroding tests/data/decks/contact_eroding.k
+
+(`eroding`: the rank determinism and restart case of eroding contact, eroding_layers with a
+finer target whose lower layer erodes under the block, element by element.)
 
 Units: SI (m, kg, s, Pa) for blocks, sliding and hertz; mm, ms, kg, GPa for the tube.
 """
@@ -698,10 +702,89 @@ sheet
 """ + m.keyword_text() + "*END\n"
 
 
+def eroding_layers(kind: str = "ERODING_SURFACE_TO_SURFACE", erosop: int = 1, iadj: int = 0,
+                   failtm: float = 1.0, gap: float = 3.0, speed: float = 1.0, end: float = 9.0,
+                   n: int = 3, nz: int = 1, target: str = "1,2", lower_mneps: float = 0.0) -> str:
+    """A target of two 5 mm layers of steel hexes (30 x 30 mm, n x n x nz elements each,
+    sharing the nodes between them; the upper layer, part 1, eroded at `failtm` by
+    *MAT_ADD_EROSION FAILTM; the lower, part 2, held at its base, eroded where its minimum
+    principal strain falls below `lower_mneps` if not 0) and a 10 x 10 x 5 mm block (part 3)
+    `gap` above it, driven down at `speed` (every node prescribed), in contact with the
+    target's parts `target` (a part set) through *CONTACT_`kind` (ERODING types: EROSOP
+    `erosop`, IADJ `iadj`). Units mm, ms, kg, GPa. The upper layer is gone before the block
+    reaches it; the block meets the lower layer's top, interior to the target until then, at
+    t = (gap + 5) / speed when the surface follows the erosion (EROSOP 1), and never
+    otherwise."""
+    m = Mesh()
+    grid = {}
+    for k in range(2 * nz + 1):
+        for j in range(n + 1):
+            for i in range(n + 1):
+                grid[i, j, k] = m.add_node(30.0 * i / n, 30.0 * j / n, 5.0 * k / nz)
+    for part, k0 in ((2, 0), (1, nz)):
+        layer = {(i, j, k): grid[i, j, k0 + k]
+                 for i in range(n + 1) for j in range(n + 1) for k in range(nz + 1)}
+        grid_solids(m, part, layer, (n, n, nz))
+    block_nodes = sorted(block(m, 3, (10.0, 10.0, 10.0 + gap), (10.0, 10.0, 5.0),
+                               (2, 2, 1)).values())
+    base = [grid[i, j, 0] for j in range(n + 1) for i in range(n + 1)]
+    # A single surface takes the block and the target as one part set.
+    single = "SINGLE_SURFACE" in kind
+    surfaces = "1,0,2" if single else "3,1,3,2"
+    parts = target + ",3" if single else target
+    lower = "1,7.85e-6,210.,0.3"
+    if lower_mneps != 0.0:
+        lower += f"\n*MAT_ADD_EROSION\n1,0,0,{lower_mneps},0,0,1,1\n0,0,0,0,0,0,0,0"
+    eroding = f"\n0,{erosop},{iadj}" if kind.startswith("ERODING") else ""
+    return f"""*KEYWORD
+*TITLE
+a block through an eroded layer onto the one below ({kind})
+*CONTROL_TERMINATION
+{end}
+*DATABASE_BNDOUT
+0.02
+*DATABASE_GLSTAT
+0.02
+*PART
+upper layer (eroded at FAILTM)
+1,1,2
+*PART
+lower layer
+2,1,1
+*PART
+block
+3,1,1
+*SECTION_SOLID
+1,1
+*MAT_ELASTIC
+{lower}
+*MAT_ELASTIC
+2,7.85e-6,210.,0.3
+*MAT_ADD_EROSION
+2,0,0,0,0,0,1,1
+0,0,0,0,0,0,0,{failtm}
+*SET_PART_LIST
+1
+{parts}
+*CONTACT_{kind}
+{surfaces}
+0.0,0.0,0.0,0.0,0.0
+1.0,1.0{eroding}
+*DEFINE_CURVE
+1
+0.0,{-speed}
+1000.0,{-speed}
+*BOUNDARY_SPC_SET
+1,0,1,1,1,1,1,1
+*BOUNDARY_PRESCRIBED_MOTION_SET
+2,3,0,1,1.0
+""" + node_set(1, base) + node_set(2, block_nodes) + m.keyword_text() + "*END\n"
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("problem", choices=["blocks", "sliding", "hertz", "tube", "tied", "cask", "pressed",
-                             "overlap"])
+                             "overlap", "eroding"])
     ap.add_argument("out", type=pathlib.Path)
     ap.add_argument("--kind", default="SURFACE_TO_SURFACE")
     ap.add_argument("--mu", type=float, default=0.3)
@@ -725,6 +808,9 @@ def main() -> None:
         text = pressed_plate(**extra)
     elif a.problem == "overlap":
         text = overlapping_stack()
+    elif a.problem == "eroding":
+        text = eroding_layers(n=5, speed=5.0, gap=0.3, failtm=0.05, lower_mneps=-0.02,
+                              **(extra or {"end": 1.5}))
     else:
         text = tube_crush(size=a.size, length=a.length, **extra)
     a.out.write_text(text)

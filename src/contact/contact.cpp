@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <optional>
 #include <tuple>
@@ -105,6 +106,7 @@ Contact::Contact(const model::Model& model, domain::Subdomain& sd, comm::Communi
   }
   stored_.assign(model.contacts.size(), 0.0);
   dissipated_.assign(model.contacts.size(), 0.0);
+  erosion_.build(model, passes_, cn_model_, sd);
 }
 
 Contact::~Contact() = default;
@@ -159,6 +161,21 @@ bool offEdge(const Vec3& x, const Projection& pr, double h) {
   return dot(sideways, sideways) > 1e-12 * h * h;
 }
 
+// The segments of a side with their corners as indices into its nodes (-1: a corner not
+// among them): Pass::own_faces.
+std::vector<std::array<int32_t, 4>> ownFaces(const model::ContactSurface& side) {
+  std::vector<std::array<int32_t, 4>> out;
+  for (const auto& s : side.segments) {
+    std::array<int32_t, 4> f{};
+    for (std::size_t a = 0; a < 4; ++a) {
+      const auto it = std::lower_bound(side.nodes.begin(), side.nodes.end(), s[a]);
+      f[a] = it != side.nodes.end() && *it == s[a] ? int32_t(it - side.nodes.begin()) : -1;
+    }
+    out.push_back(f);
+  }
+  return out;
+}
+
 }  // namespace
 
 void Contact::addPass(int32_t iface, const model::ContactSurface& nodes,
@@ -186,6 +203,15 @@ void Contact::addPass(int32_t iface, const model::ContactSurface& nodes,
   p.reach_extra = max_node_half + max_seg_half + 0.5 * max_depth;
   p.max_node_half = max_node_half;
   p.seg_nbr = edgeNeighbours(p.seg);
+  p.seg_elem = segs.segment_element;
+  p.seg_across = segs.segment_neighbour;
+  if (model_.contacts[std::size_t(iface)].eroding && !nodes.segments.empty()) {
+    // The nodes of an eroding surface are checked while they are on its faces in contact.
+    p.exposure = true;
+    p.own_faces = ownFaces(nodes);
+    p.own_elem = nodes.segment_element;
+    p.own_across = nodes.segment_neighbour;
+  }
   if (self) {
     const std::size_t ncn = cn_model_.size();
     std::vector<std::vector<int32_t>> near(ncn);
@@ -207,14 +233,7 @@ void Contact::addPass(int32_t iface, const model::ContactSurface& nodes,
 void Contact::makeTiebreak(Pass& p, const model::ContactSurface& nodes) {
   p.tied = true;
   p.tiebreak = true;
-  for (const auto& s : nodes.segments) {
-    std::array<int32_t, 4> f{};
-    for (std::size_t a = 0; a < 4; ++a) {
-      const auto it = std::lower_bound(nodes.nodes.begin(), nodes.nodes.end(), s[a]);
-      f[a] = it != nodes.nodes.end() && *it == s[a] ? int32_t(it - nodes.nodes.begin()) : -1;
-    }
-    p.own_faces.push_back(f);
-  }
+  p.own_faces = ownFaces(nodes);
 }
 
 void Contact::bondAreas(Pass& p) {
@@ -494,7 +513,7 @@ bool Contact::pastExposedEdge(const Pass& p, std::size_t s, const Vec3& x) const
     if (!(dot(r, acrossEdge(sub(mid, c), e, ee)) > 0.0)) continue;  // not past this edge
     past_any = true;
     const int32_t nb = p.seg_nbr[s][k];
-    if (nb < 0) return true;  // a free edge
+    if (nb < 0 || !live(p, std::size_t(nb))) return true;  // a free edge (or freed by erosion)
     const auto& nn = p.seg[std::size_t(nb)];
     const Vec3 into = acrossEdge(sub(centroid(nn, nn[2] == nn[3] ? 3 : 4), mid), e, ee);
     if (!(dot(r, into) > 0.0)) return true;  // the neighbour turns away: a fold's outside
@@ -512,6 +531,7 @@ std::optional<Contact::Candidate> Contact::chooseSegment(std::size_t pass, int32
   // segment.
   const Pass& p = passes_[pass];
   std::optional<Candidate> best;
+  if (!erosion_.checkLive(std::size_t(check))) return best;
   const auto local = std::size_t(check - p.first_check);
   const CheckNode c{check, std::size_t(p.node[local]), at(x_, std::size_t(p.node[local])),
                     p.node_half[local]};
@@ -522,6 +542,7 @@ std::optional<Contact::Candidate> Contact::chooseSegment(std::size_t pass, int32
     if (x[0] < box[0] || x[0] > box[3] || x[1] < box[1] || x[1] > box[4] || x[2] < box[2] ||
         x[2] > box[5])
       continue;
+    if (!erosion_.segmentLive(pass, s)) continue;
     ++tests;
     const auto cand = rankSegment(p, c, s, initial);
     if (!cand) continue;
@@ -724,8 +745,9 @@ std::optional<Record> Contact::checkOne(std::size_t i, double time, double dt_pr
   if (time < ci.birth || time > ci.death) return std::nullopt;
   const auto node = std::size_t(check_node_[c]);
   if (p.tied && (!p.tiebreak || tie_seg_[c] >= 0)) {
+    // A tie ends with its node's elements or its segment's element (erosion.hpp).
     const int32_t s = tie_seg_[c];
-    if (s < 0) return std::nullopt;
+    if (s < 0 || !erosion_.checkLive(c) || !live(p, std::size_t(s))) return std::nullopt;
     // A tie is as stiff as the elements it joins: the penalty without SLSFAC.
     const NodeAndSegment m = nodeAndSegment(node, p.seg[std::size_t(s)]);
     Record r =
@@ -817,6 +839,8 @@ bool Contact::sortIfDue() {
     }
     travel = std::max(travel, d2);
   }
+  // Erosion here changes the surfaces: every rank sorts and hears of it (syncErosion).
+  if (!eroded_here_.empty()) travel = std::numeric_limits<double>::infinity();
   if (comm_.distributed()) travel = -comm_.minAll(-travel);
   ++cycles_since_sort_;
   if (!(2.0 * std::sqrt(travel) > search_.margin() || need_sort_ ||
@@ -824,6 +848,7 @@ bool Contact::sortIfDue() {
     return false;
   cycles_since_sort_ = 0;
   need_sort_ = false;
+  syncErosion();
   // Every node, from its owner (with its position of the last pass, for the crossing rule);
   // serially too: serial is one rank.
   gatherNodes();
@@ -868,6 +893,14 @@ void Contact::computeForces(double time, double dt_prev) {
   stats_.replicated_s += sec(t1, t2) + sec(t4, t5);
   stats_.records += int64_t(records_.size());
   ++stats_.cycles;
+}
+
+void Contact::syncErosion() {
+  std::vector<int64_t> all = comm_.distributed() ? comm_.allGather(eroded_here_) : eroded_here_;
+  eroded_here_.clear();
+  if (all.empty()) return;
+  std::sort(all.begin(), all.end());
+  erosion_.markEroded(all, passes_);
 }
 
 void Contact::gatherRecords(std::vector<Record> mine) {
@@ -1110,6 +1143,10 @@ void Contact::loadState(const std::vector<char>& bytes) {
   history([&](auto& v) { r.get(v); });
   if (!r.atEnd() || x.size() != x_.size() || x_sorted_.size() != x_.size())
     throw util::InputError("restart dump: the contact section is inconsistent");
+  // The elements eroded before the dump, from the element states restored before this section
+  // (each rank its own): the surfaces as they were.
+  eroded_here_ = erosion_.erodedHere(sd_);
+  syncErosion();
   in_contact_.clear();
   for (int32_t c = 0; c < num_checks_; ++c)
     if (last_seg_[std::size_t(c)] >= 0) in_contact_.push_back(c);

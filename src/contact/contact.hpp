@@ -25,6 +25,7 @@
 #include "comm/communicator.hpp"
 #include "comm/exchange.hpp"
 #include "contact/balance.hpp"
+#include "contact/erosion.hpp"
 #include "contact/pass.hpp"
 #include "contact/penalty.hpp"
 #include "contact/search.hpp"
@@ -75,6 +76,9 @@ class Contact {
   void initialize(double dt0);
   // Contact forces at t(n) from x(n) and v(n-1/2), added to Subdomain::f (collective).
   void computeForces(double time, double dt_prev);
+  // Elements of this rank eroded in this cycle's element pass (before computeForces): those
+  // the contact surfaces hold leave them at once, every rank told at a bucket sort.
+  void noteErosion() { eroded_here_ = erosion_.erodedHere(sd_); }
   // Contact energy: the energy of the penalty springs now plus what friction and damping
   // have dissipated. Every rank holds every record, so these are the same on every rank.
   double energy() const;
@@ -175,6 +179,12 @@ class Contact {
   // Re-sorts the buckets when some node may have travelled half the margin since the last
   // sort, or after BSORT cycles (collective); true if it did.
   bool sortIfDue();
+  // Every rank's newly eroded elements (noteErosion) marked on every rank (collective).
+  void syncErosion();
+  // Whether segment s of pass p is in contact now (not eroded; erosion.hpp).
+  bool live(const Pass& p, std::size_t s) const {
+    return erosion_.segmentLive(std::size_t(&p - passes_.data()), s);
+  }
   void sortAll();  // the buckets of every pass, and x_sorted_
   void buildCandidateLists();
   // The check partition's first cut, weighed by each check's candidates (collective).
@@ -288,6 +298,9 @@ class Contact {
   // A pair of pass p in contact last cycle whose edges are edges a and b of the pass or their
   // neighbours (sharing a node), the first in pair order; none if none.
   const EdgePair* continuedEdgePair(const Pass& p, std::size_t a, std::size_t b) const;
+
+  SurfaceErosion erosion_;
+  std::vector<int64_t> eroded_here_;  // noteErosion's elements, until the next sort
 
   std::vector<Record> records_;     // of the last cycle, in check order
   std::vector<double> stored_;      // per interface: sum of k pen^2 / 2 of the last cycle

@@ -20,6 +20,8 @@ struct Pass {
   // of each check's node on the bond, a quarter of each quadrilateral (a third of each
   // triangle) whose corners are all tied, for failure stresses.
   bool tiebreak = false;
+  // (Also the faces of an eroding pass's own surface: its checks are the nodes on the faces in
+  // contact; `exposure` below.)
   std::vector<std::array<int32_t, 4>> own_faces;
   std::vector<double> node_area;
   int32_t first_check = 0;                  // global index of the first check
@@ -29,6 +31,13 @@ struct Pass {
   std::vector<double> seg_half;             // half thickness (0: one-sided solid face)
   std::vector<double> seg_k;                // penalty stiffness with the scale factors
   std::vector<double> seg_depth;            // ContactSurface::segment_depth
+  // The element each segment bounds and the solid across it (-1 none; ContactSurface::
+  // segment_element, segment_neighbour), for the surfaces that follow erosion (erosion.hpp).
+  std::vector<int64_t> seg_elem, seg_across;
+  // *CONTACT_ERODING_ node passes: a check is in contact while its node is on a face of its own
+  // surface (own_faces) that is in contact (own_elem, own_across as seg_elem, seg_across).
+  bool exposure = false;
+  std::vector<int64_t> own_elem, own_across;
   // The segment across each edge (seg[k], seg[k + 1 mod 4]) of each segment; -1 for a free
   // edge, an edge shared by more than two segments, and a triangle's collapsed edge.
   std::vector<std::array<int32_t, 4>> seg_nbr;
@@ -52,6 +61,7 @@ struct Pass {
   bool segpairs = false;
   std::vector<std::array<int32_t, 4>> check_seg;
   std::vector<double> check_depth, check_k;
+  std::vector<int64_t> check_elem, check_across;  // as seg_elem, seg_across
 };
 
 }  // namespace crumple::contact

@@ -50,6 +50,10 @@ void Contact::addSegmentPass(int32_t iface, const model::ContactSurface& a,
     p.seg_k.push_back(slsfac * (self ? ci.sfs : ci.sfm));
     p.seg_depth.push_back(b.segment_depth[k]);
   }
+  p.check_elem = a.segment_element;
+  p.check_across = a.segment_neighbour;
+  p.seg_elem = b.segment_element;
+  p.seg_across = b.segment_neighbour;
   registerPass(std::move(p));
 }
 

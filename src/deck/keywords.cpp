@@ -287,6 +287,9 @@ std::vector<KeywordSpec> makeTables() {
          {I("OPTION", 1, Z), R("NFLS"), R("SFLS"), R("PARAM"), R("ERATEN"), R("ERATES"), R("CT2CN"),
           R("CN")}},
         {"tiebreak force card", {R("NFLF"), R("SFLF"), R("NEN", 2, Z), R("MES", 2, Z)}},
+        // _ERODING_: the card after card 3 (Keyword Manual, *CONTACT, "additional card for the
+        // ERODING option").
+        {"eroding card", {I("ISYM"), I("EROSOP"), I("IADJ")}},
         {"card A",
          {I("SOFT"), R("SOFSCL", 0.1, Z), I("LCIDAB"), R("MAXPAR", 1.025, Z), R("SBOPT"),
           I("DEPTH"), I("BSORT"), I("FRCFRQ", 1, Z)}},

@@ -118,52 +118,95 @@ struct Segment {
   std::array<int32_t, 4> nodes;
   int64_t element;
   double thickness, stiffness, depth;
+  int64_t neighbour;  // the solid across the face (eroding surfaces), else -1
 };
 
-// The exterior faces of the solids and the shells of the given parts (flags per part index),
-// in global element order. A solid face shared by two solids of the parts is interior.
-std::vector<Segment> partSegments(const Model& m, const std::vector<uint8_t>& in_part) {
-  std::map<FaceKey, int> count;
+// Which solid faces a side takes (Keyword Manual, *CONTACT, the ERODING option's card).
+struct FaceRule {
+  bool interior = false;    // EROSOP 1: faces with a solid across them too, for erosion to expose
+  bool across_all = false;  // IADJ 0: a solid of any part across a face makes it interior
+};
+
+// The solids on each face (FaceKey): how many, and the first two.
+struct FaceUse {
+  int count = 0;
+  std::array<int64_t, 2> solid{-1, -1};
+};
+
+// Solid e's faces as segments, turned outwards (by the geometry, so that a mirrored element
+// still faces out), each a quadrilateral or a triangle with n3 == n4 as shells write it.
+std::vector<std::array<int32_t, 4>> outwardFaces(const Model& m, std::size_t e) {
+  const auto& n = m.solids.nodes[e];
+  const Vec3 ce = centroid(m, n.data(), 8);
+  int32_t sf[6][4];
+  int sizes[6];
+  const int nf = solidFaces(n, sf, sizes);
+  std::vector<std::array<int32_t, 4>> out;
+  for (int k = 0; k < nf; ++k) {
+    std::array<int32_t, 4> f{sf[k][0], sf[k][1], sf[k][2], sf[k][sizes[k] == 4 ? 3 : 2]};
+    const Vec3 cf = centroid(m, f.data(), f[2] == f[3] ? 3 : 4);
+    if (dot(areaVector(m, f), sub(cf, ce)) < 0.0)
+      f = f[2] == f[3] ? std::array<int32_t, 4>{f[0], f[2], f[1], f[1]}
+                       : std::array<int32_t, 4>{f[0], f[3], f[2], f[1]};
+    out.push_back(f);
+  }
+  return out;
+}
+
+// Segment f of solid e: its stiffness K A^2 / V and its depth V / A, V from the divergence
+// theorem over the element's faces (exact for planar faces).
+Segment solidSegment(const Model& m, const std::array<int32_t, 4>& f, int64_t e,
+                     int64_t neighbour) {
+  int32_t sf[6][4];
+  int sizes[6];
+  const int nf = solidFaces(m.solids.nodes[std::size_t(e)], sf, sizes);
+  double vol = 0.0;
+  for (int k = 0; k < nf; ++k) {
+    std::array<int32_t, 4> g{sf[k][0], sf[k][1], sf[k][2], sf[k][sizes[k] == 4 ? 3 : 2]};
+    vol += dot(centroid(m, g.data(), 4), areaVector(m, g)) / 3.0;
+  }
+  const Vec3 av = areaVector(m, f);
+  const double area2 = dot(av, av);
+  const int32_t part = m.solids.part[std::size_t(e)];
+  const double k =
+      vol > 0.0 ? m.parts[std::size_t(part)].contact_ssf * bulkModulus(m, part) * area2 / vol : 0.0;
+  return {f, e, 0.0, k, area2 > 0.0 ? vol / std::sqrt(area2) : 0.0, neighbour};
+}
+
+// The faces of the solids of the given parts (flags per part index) that `rule` takes: those
+// with no solid across them (counting the solids of the parts, or of every part with
+// rule.across_all), and with rule.interior those with one solid across, in element order.
+std::vector<Segment> solidSegments(const Model& m, const std::vector<uint8_t>& in_part,
+                                   FaceRule rule) {
+  std::map<FaceKey, FaceUse> use;
   std::vector<std::pair<std::array<int32_t, 4>, int64_t>> faces;
   for (std::size_t e = 0; e < m.solids.size(); ++e) {
-    if (!in_part[std::size_t(m.solids.part[e])]) continue;
-    const auto& n = m.solids.nodes[e];
-    const Vec3 ce = centroid(m, n.data(), 8);
-    int32_t sf[6][4];
-    int sizes[6];
-    const int nf = solidFaces(n, sf, sizes);
-    for (int k = 0; k < nf; ++k) {
-      // A triangle as a quadrilateral with n3 == n4, as shells write it.
-      std::array<int32_t, 4> f{sf[k][0], sf[k][1], sf[k][2], sf[k][sizes[k] == 4 ? 3 : 2]};
-      // Orientation from the geometry, so that a mirrored element still faces outwards.
-      const Vec3 cf = centroid(m, f.data(), f[2] == f[3] ? 3 : 4);
-      if (dot(areaVector(m, f), sub(cf, ce)) < 0.0)
-        f = f[2] == f[3] ? std::array<int32_t, 4>{f[0], f[2], f[1], f[1]}
-                         : std::array<int32_t, 4>{f[0], f[3], f[2], f[1]};
-      ++count[keyOf(f)];
-      faces.push_back({f, int64_t(e)});
+    const bool mine = in_part[std::size_t(m.solids.part[e])] != 0;
+    if (!mine && !rule.across_all) continue;
+    for (const auto& f : outwardFaces(m, e)) {
+      FaceUse& u = use[keyOf(f)];
+      if (u.count < 2) u.solid[std::size_t(u.count)] = int64_t(e);
+      ++u.count;
+      if (mine) faces.push_back({f, int64_t(e)});
     }
   }
   std::vector<Segment> out;
   for (const auto& [f, e] : faces) {
-    if (count[keyOf(f)] != 1) continue;
-    // V from the divergence theorem over the faces (exact for planar faces).
-    int32_t sf[6][4];
-    int sizes[6];
-    const int nf = solidFaces(m.solids.nodes[std::size_t(e)], sf, sizes);
-    double vol = 0.0;
-    for (int k = 0; k < nf; ++k) {
-      std::array<int32_t, 4> g{sf[k][0], sf[k][1], sf[k][2], sf[k][sizes[k] == 4 ? 3 : 2]};
-      vol += dot(centroid(m, g.data(), 4), areaVector(m, g)) / 3.0;
-    }
-    const Vec3 av = areaVector(m, f);
-    const double area2 = dot(av, av);
-    const int32_t part = m.solids.part[std::size_t(e)];
-    const double k =
-        vol > 0.0 ? m.parts[std::size_t(part)].contact_ssf * bulkModulus(m, part) * area2 / vol
-                  : 0.0;
-    out.push_back({f, e, 0.0, k, area2 > 0.0 ? vol / std::sqrt(area2) : 0.0});
+    const FaceUse& u = use[keyOf(f)];
+    if (u.count == 1)
+      out.push_back(solidSegment(m, f, e, -1));
+    else if (u.count == 2 && rule.interior)
+      out.push_back(solidSegment(m, f, e, u.solid[0] == e ? u.solid[1] : u.solid[0]));
   }
+  return out;
+}
+
+// The exterior faces of the solids and the shells of the given parts (flags per part index),
+// in global element order. A solid face shared by two solids of the parts is interior (unless
+// `rule` says otherwise: eroding surfaces).
+std::vector<Segment> partSegments(const Model& m, const std::vector<uint8_t>& in_part,
+                                  FaceRule rule = {}) {
+  std::vector<Segment> out = solidSegments(m, in_part, rule);
   const auto shell0 = int64_t(m.familyOffset(Family::Shell));
   for (std::size_t e = 0; e < m.shells.size(); ++e) {
     const int32_t p = m.shells.part[e];
@@ -178,7 +221,7 @@ std::vector<Segment> partSegments(const Model& m, const std::vector<uint8_t>& in
     const double area = std::sqrt(dot(av, av));
     const double k =
         diag > 0.0 ? m.parts[std::size_t(p)].contact_ssf * bulkModulus(m, p) * area / diag : 0.0;
-    out.push_back({f, shell0 + int64_t(e), thick, k, thick});
+    out.push_back({f, shell0 + int64_t(e), thick, k, thick, -1});
   }
   return out;
 }
@@ -235,7 +278,7 @@ struct Side {
 };
 
 Side readSide(Context& ctx, const Card& c, std::string_view id_field, std::string_view type_field,
-              bool beam_edges) {
+              bool beam_edges, FaceRule rule = {}) {
   const Model& m = ctx.model;
   const int64_t id = c.integer(id_field);
   const int64_t type = c.integer(type_field);
@@ -255,7 +298,7 @@ Side readSide(Context& ctx, const Card& c, std::string_view id_field, std::strin
           c.fail(id_field, "segment set " + std::to_string(id) +
                                " has a segment that is not a free face of a solid or a shell");
         const Segment& base = all[it->second.second];
-        side.segments.push_back({s, base.element, base.thickness, base.stiffness, base.depth});
+        side.segments.push_back({s, base.element, base.thickness, base.stiffness, base.depth, -1});
       }
       break;
     }
@@ -282,7 +325,7 @@ Side readSide(Context& ctx, const Card& c, std::string_view id_field, std::strin
                              " is not supported (0 segment set, 2 part set, 3 part, 4 node set, "
                              "5 all parts, 6 all but a part set)");
   }
-  if (type != 0 && type != 4) side.segments = partSegments(m, in_part);
+  if (type != 0 && type != 4) side.segments = partSegments(m, in_part, rule);
   if (beam_edges && type != 0 && type != 4) side.edges = partEdges(m, in_part, c, id_field);
   if (!side.nodes_only) {
     for (const auto& s : side.segments)
@@ -333,6 +376,7 @@ ContactSurface makeSurface(const Model& m, const Side& side, double thickness_ov
     s.segment_thickness.push_back(t);
     s.segment_stiffness.push_back(seg.stiffness);
     s.segment_depth.push_back(seg.depth);
+    s.segment_neighbour.push_back(seg.neighbour);
   }
   // Half the thickest shell at each node: every shell at a node offsets it, whether or not
   // the shell is on this side (a node set side has no segments of its own).
@@ -427,18 +471,24 @@ void readTiebreak(Context& ctx, CardCursor& cur, ContactInterface& ci) {
 
 }  // namespace
 
-void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
-  // The words between *CONTACT_ and _ID/_TITLE name the algorithm.
-  std::string name = kw.name;
-  for (bool cut = true; cut;) {  // in any order: _MPP_ID, _ID_MPP, ...
-    cut = false;
-    for (std::string_view tail : {"_TITLE", "_ID", "_MPP"})
-      if (name.size() > tail.size() && name.substr(name.size() - tail.size()) == tail) {
-        name.resize(name.size() - tail.size());
-        cut = true;
-      }
-  }
-  ContactInterface ci;
+// The ERODING option's card (Keyword Manual, *CONTACT, after card 3): EROSOP 1 keeps the
+// interior faces of the solids so that erosion can expose them (0: the surface is the
+// exterior, which loses the faces of eroded elements); IADJ 1 takes faces on the boundary of
+// the contact's parts (a solid of another part across counts as nothing), 0 only faces with no
+// solid of any part across; ISYM 1 (faces on symmetry planes left out) is not supported.
+FaceRule readErodingCard(Context& ctx, CardCursor& cur) {
+  const Card& c = cur.read(keywordSpec("*CONTACT").card("eroding card"));
+  const int64_t isym = c.integer("ISYM"), erosop = c.integer("EROSOP"), iadj = c.integer("IADJ");
+  if (isym != 0)
+    ctx.reject(c, "ISYM", "only ISYM 0 is supported (faces on symmetry planes stay in contact)");
+  if (erosop != 0 && erosop != 1) c.fail("EROSOP", "must be 0 or 1");
+  if (iadj != 0 && iadj != 1) c.fail("IADJ", "must be 0 or 1");
+  return {erosop == 1, iadj == 0};
+}
+
+// The algorithm of *CONTACT_<name> (the words before _ID/_TITLE/_MPP): the kind and options
+// of `ci`; false for a type Crumple does not have.
+bool readContactType(const std::string& name, ContactInterface& ci) {
   if (name == "*CONTACT_NODES_TO_SURFACE") {
     ci.kind = ContactKind::NodesToSurface;
   } else if (name == "*CONTACT_AUTOMATIC_NODES_TO_SURFACE" ||
@@ -482,6 +532,16 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
     // its surfaces that the other interfaces find; it adds none (docs/theory.md, "Force
     // transducers"). Friction, scale factors and optional cards do nothing here.
     ci.kind = ContactKind::Transducer;
+  } else if (name == "*CONTACT_ERODING_NODES_TO_SURFACE" ||
+             name == "*CONTACT_ERODING_SURFACE_TO_SURFACE" ||
+             name == "*CONTACT_ERODING_SINGLE_SURFACE") {
+    // Keyword Manual, *CONTACT_ERODING_...: the automatic contacts whose surfaces follow the
+    // erosion of solids, taking the faces it exposes (docs/theory.md, "Eroding contact").
+    ci.kind = name == "*CONTACT_ERODING_NODES_TO_SURFACE" ? ContactKind::NodesToSurface
+              : name == "*CONTACT_ERODING_SINGLE_SURFACE" ? ContactKind::SingleSurface
+                                                          : ContactKind::SurfaceToSurface;
+    ci.automatic = true;
+    ci.eroding = true;
   } else if (name == "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK" ||
              name == "*CONTACT_TIEBREAK_NODES_TO_SURFACE") {
     // The SURFA nodes that touch SURFB are tied (where they are) until the bond fails, then
@@ -492,6 +552,24 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
     ci.tiebreak.on = true;
     ci.tiebreak.stress = ci.kind == ContactKind::SurfaceToSurface;
   } else {
+    return false;
+  }
+  return true;
+}
+
+void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  // The words between *CONTACT_ and _ID/_TITLE name the algorithm.
+  std::string name = kw.name;
+  for (bool cut = true; cut;) {  // in any order: _MPP_ID, _ID_MPP, ...
+    cut = false;
+    for (std::string_view tail : {"_TITLE", "_ID", "_MPP"})
+      if (name.size() > tail.size() && name.substr(name.size() - tail.size()) == tail) {
+        name.resize(name.size() - tail.size());
+        cut = true;
+      }
+  }
+  ContactInterface ci;
+  if (!readContactType(name, ci)) {
     ctx.reportUnsupported(kw, "contact type not supported");
     return;
   }
@@ -527,6 +605,7 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
   const Card& c2 = cur.readOptional(spec.card("card 2"));
   const Card& c3 = cur.readOptional(spec.card("card 3"));
   if (ci.tiebreak.on) readTiebreak(ctx, cur, ci);
+  const FaceRule faces = ci.eroding ? readErodingCard(ctx, cur) : FaceRule{};
   const Card& ca = cur.readOptional(spec.card("card A"));
   if (!cur.atEnd()) cur.read(spec.card("card B"));
   if (!cur.atEnd()) readCardC(cur.read(spec.card("card C")), ca, ci);
@@ -568,7 +647,7 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
   // AUTOMATIC_GENERAL takes beams as capsules, edge against edge (LS-DYNA Keyword Manual,
   // *CONTACT_AUTOMATIC_GENERAL); the other types take beam nodes as nodes.
   const bool general = name == "*CONTACT_AUTOMATIC_GENERAL";
-  Side a = readSide(ctx, c1, "SSID", "SSTYP", general);
+  Side a = readSide(ctx, c1, "SSID", "SSTYP", general, faces);
   applyBox(ctx, c1, "SBOXID", a);
   Side b;
   if (ci.kind == ContactKind::SingleSurface) {
@@ -577,7 +656,7 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
       ctx.ignore(kw.name, "MSID", "a single surface has one side", c1.where());
   } else if (ci.kind != ContactKind::Transducer || c1.integer("MSID") != 0 ||
              c1.integer("MSTYP") != 0) {
-    b = readSide(ctx, c1, "MSID", "MSTYP", false);
+    b = readSide(ctx, c1, "MSID", "MSTYP", false, faces);
     applyBox(ctx, c1, "MBOXID", b);
   }
   if (ci.kind == ContactKind::Transducer) {

@@ -30,6 +30,11 @@ struct ContactSurface {
   // shell). A node deeper than half of it inside a solid is on the far side of the element,
   // not in contact with this face.
   std::vector<double> segment_depth;
+  // Per segment: the solid across the face (global element index), or -1. Only the surfaces of
+  // *CONTACT_ERODING_ interfaces with EROSOP 1 hold faces with a solid across them: such a
+  // face is in contact once that solid has eroded and its own element lives (the surface
+  // follows the erosion; src/contact/erosion.hpp).
+  std::vector<int64_t> segment_neighbour;
   // Per node: half the largest shell thickness at it (0 where only solids meet it), the
   // offset of a node of this side from the mid-surface of the other.
   std::vector<double> node_half_thickness;
@@ -97,6 +102,10 @@ struct ContactInterface {
   double dtstif = 0.0;
   // MPP card 1 CPARM8 of AUTOMATIC_GENERAL: 1 and 2 leave out beam pairs of one part.
   bool skip_same_part_edges = false;
+  // *CONTACT_ERODING_...: the surfaces take the faces that erosion exposes (EROSOP 1; the
+  // surfaces then hold interior faces, ContactSurface::segment_neighbour). Every interface
+  // drops the segments and nodes of eroded elements.
+  bool eroding = false;
   util::SourceLoc where;
 };
 

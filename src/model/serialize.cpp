@@ -356,13 +356,14 @@ void fields(A& a, M& m) {
       },
       m.rigid.loads);
   auto surface = [&](auto& sf) {
-    util::fieldCount<11>(sf);
+    util::fieldCount<12>(sf);
     a(sf.nodes);
     a(sf.segments);
     a(sf.segment_element);
     a(sf.segment_thickness);
     a(sf.segment_stiffness);
     a(sf.segment_depth);
+    a(sf.segment_neighbour);
     a(sf.node_half_thickness);
     a(sf.edges);
     a(sf.edge_radius);
@@ -372,7 +373,7 @@ void fields(A& a, M& m) {
   a.count(
       m.contacts.size(),
       [&](auto& c) {
-        util::fieldCount<29>(c);
+        util::fieldCount<30>(c);
         a(c.id);
         a(c.title);
         a(c.keyword);
@@ -401,6 +402,7 @@ void fields(A& a, M& m) {
         a(c.ignore);
         a(c.dtstif);
         a(c.skip_same_part_edges);
+        a(c.eroding);
         loc(a, c.where);
       },
       m.contacts);

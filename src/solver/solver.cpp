@@ -416,6 +416,7 @@ bool Solver::finished() const {
 }
 
 void Solver::step() {
+  const int64_t eroded_before = eroded_;
   const ElementPass pass = computeInternalForces();
   StableStep next;
   {
@@ -427,6 +428,8 @@ void Solver::step() {
   dt_next_ = next.dt;
   dt_elem_ = next.element;
   computeExternalForces();
+  // Elements eroded in this pass leave the contact surfaces before contact is computed.
+  if (contact_ && eroded_ != eroded_before) contact_->noteErosion();
   computeContactForces();
   // Land exactly on the end time rather than overshoot it.
   double dt_half = dt_next_;

@@ -82,6 +82,7 @@ class RestartEquality(RestartCase):
             (data_deck("contact_blocks.k"), [], 150),
             (data_deck("contact_tied_edge.k"), [], 2500),
             (data_deck("contact_tiebreak.k"), [], 1100),
+            (data_deck("contact_eroding.k"), [], 1200),
             (data_deck("tet_blocks.k"), [], 150),
             (data_deck("tet13_blocks.k"), [], 150),
             (data_deck("prism_blocks.k"), [], 300),

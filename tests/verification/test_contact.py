@@ -264,6 +264,60 @@ class ContactVerification(TempDirTest):
         s = read_summary(out)
         self.assertEqual(s["contact"]["initial_penetrations"], 0)
 
+    def loaded_forces(self, out):
+        # The total force on the driven block's nodes (bndout) at each output with any.
+        total = {}
+        for r in rows(out, "bndout.csv"):
+            total[r["time"]] = total.get(r["time"], 0.0) + r["fz"]
+        return [(t, f) for t, f in sorted(total.items()) if abs(f) > 1e-9]
+
+    def test_eroding_contact_takes_the_faces_erosion_exposes(self):
+        # A block driven down at 1 mm/ms from 3 mm above a target of two 5 mm layers of
+        # hexes; the upper layer erodes at 1 ms (FAILTM), before the block reaches it. Eroded
+        # elements leave every interface (before, the block kicked the eroded layer's free
+        # nodes at 3 ms: energy ratio 1.0007); *CONTACT_ERODING_ with EROSOP 1 takes the lower
+        # layer's top, interior until the erosion, as surface: the block meets it at
+        # t = (3 + 5) / 1 = 8 ms.
+        d = decks()
+        for kind in ("ERODING_SURFACE_TO_SURFACE", "ERODING_SINGLE_SURFACE",
+                     "ERODING_NODES_TO_SURFACE"):
+            with self.subTest(kind=kind):
+                out = self.run_deck(f"layers_{kind}", d.eroding_layers(kind))
+                self.assertAlmostEqual(self.force_onset(out, "fz"), 8.0, delta=0.01)
+                self.assertGreater(self.loaded_forces(out)[0][0], 7.99)
+                ratios = [r["energy_ratio"] for r in rows(out, "glstat.csv")]
+                self.assertLess(max(abs(r - 1.0) for r in ratios), 1e-3, max(ratios))
+                self.assertEqual(read_summary(out)["eroded_elements"], 9)
+        # EROSOP 0 keeps only the exterior, and a non-eroding interface the same: the block
+        # goes through both layers' places touching nothing (the free nodes left by the
+        # erosion included).
+        for kind, erosop in (("ERODING_SURFACE_TO_SURFACE", 0), ("AUTOMATIC_SURFACE_TO_SURFACE", 0)):
+            with self.subTest(kind=kind, erosop=erosop):
+                out = self.run_deck(f"layers_{kind}_{erosop}", d.eroding_layers(kind, erosop))
+                self.assertEqual(self.loaded_forces(out), [])
+                ratios = [r["energy_ratio"] for r in rows(out, "glstat.csv")]
+                self.assertLess(max(abs(r - 1.0) for r in ratios), 1e-9, max(ratios))
+        # IADJ, with the lower layer alone in contact and nothing eroded: 1 takes its top (on
+        # the boundary of the contact's parts), 0 only faces with no solid across (none there).
+        for iadj, meets in ((1, True), (0, False)):
+            with self.subTest(iadj=iadj):
+                out = self.run_deck(f"layers_iadj{iadj}",
+                                    d.eroding_layers(iadj=iadj, target="2", failtm=100.0))
+                if meets:
+                    self.assertAlmostEqual(self.force_onset(out, "fz"), 8.0, delta=0.01)
+                else:
+                    self.assertEqual(self.loaded_forces(out), [])
+
+    def test_eroding_card_values_outside_the_manual_are_refused(self):
+        d = decks()
+        for card, field in (("1,1,0", "ISYM"), ("0,2,0", "EROSOP"), ("0,1,3", "IADJ")):
+            with self.subTest(card=card):
+                text = d.eroding_layers().replace("\n0,1,0\n", f"\n{card}\n")
+                path = self.write(f"bad_{field}.k", text)
+                p = crumple("run", path, "-o", os.path.join(self.tmp, field), "-q", cwd=self.tmp)
+                self.assertNotEqual(p.returncode, 0, describe(p))
+                self.assertIn(field, p.stdout + p.stderr)
+
     def test_soft1_stiffness_at_dtstif(self):
         # SOFT = 1 with DTSTIF (card C): the mass-based stiffness 0.5 SOFSCL m* / DTSTIF^2 is
         # taken at DTSTIF, not at the run's step; with the element-based one scaled far below
