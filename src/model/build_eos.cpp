@@ -35,15 +35,9 @@ void readEos(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts,
   ctx.collect(cur);
 }
 
-// The table of *EOS_TABULATED_COMPACTION (`compaction`: with the K column) and *EOS_TABULATED:
-// GAMA and E0 of card 1, the curve ids of newer manuals refused when set, and the points
-// EV/C/T(/K) of the cards after it (five to a card). The table holds the rows up to the last
-// with a non-zero value (unused rows are blank or zero); EV must decrease strictly, as the
-// Keyword Manual asks, and K be positive. Stored in ascending ln V (materials::EosTable).
-const Card& readTable(Context& ctx, const Card& c1, CardCursor& cur, const deck::KeywordSpec& spec,
-                      materials::Eos& eos, bool compaction) {
-  eos.e0 = c1.real("E0");
-  eos.table.gamma = c1.real("GAMA");
+// The curve ids of card 1 that newer manuals allow (LCC, LCT; EOS 8 also LCK, LCID), refused
+// when set: Crumple reads the table's cards only.
+void rejectCurves(Context& ctx, const Card& c1, bool compaction) {
   static constexpr std::string_view kCurves[4] = {"LCC", "LCT", "LCK", "LCID"};
   for (int i = 0; i < (compaction ? 4 : 2); ++i)
     if (c1.integer(kCurves[i]) != 0)
@@ -51,6 +45,18 @@ const Card& readTable(Context& ctx, const Card& c1, CardCursor& cur, const deck:
                  i < 3 ? "a curve in place of the EV/C/T/K table is not supported: give the "
                          "table's cards (up to 10 points)"
                        : "energy deposition by a curve is not supported");
+}
+
+// The table of *EOS_TABULATED_COMPACTION (`compaction`: with the K column) and *EOS_TABULATED:
+// GAMA and E0 of card 1 (its curve ids refused when set: rejectCurves), and the points
+// EV/C/T(/K) of the cards after it (five to a card). The table holds the rows up to the last
+// with a non-zero value (unused rows are blank or zero); EV must decrease strictly, as the
+// Keyword Manual asks, and K be positive. Stored in ascending ln V (materials::EosTable).
+const Card& readTable(Context& ctx, const Card& c1, CardCursor& cur, const deck::KeywordSpec& spec,
+                      materials::Eos& eos, bool compaction) {
+  eos.e0 = c1.real("E0");
+  eos.table.gamma = c1.real("GAMA");
+  rejectCurves(ctx, c1, compaction);
   static constexpr std::string_view kColumns[4] = {"EV", "C", "T", "K"};
   static constexpr std::string_view kLabels[8] = {"card 2", "card 3", "card 4", "card 5",
                                                   "card 6", "card 7", "card 8", "card 9"};
