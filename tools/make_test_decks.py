@@ -40,6 +40,11 @@
   axisym_rod.k        an axisymmetric (*SECTION_SHELL ELFORM 15) elastic-plastic rod with a
                       conical tip stopped on its SPC'd end face, with a radial velocity
                       component, the axis held in x: 2D solids across ranks.
+  eos_tabulated.k     the tabulated equations of state across ranks and restarts: a bar of a
+                      crushable soil (*MAT_ELASTIC_PLASTIC_HYDRO with *EOS_TABULATED_COMPACTION)
+                      backed by copper (*MAT_JOHNSON_COOK with *EOS_TABULATED and its energy
+                      term) onto a stonewall: the soil compacts, unloads and reloads as the
+                      waves run through it.
 """
 
 from __future__ import annotations
@@ -671,6 +676,65 @@ rod
 """
 
 
+def eos_tabulated(nx: int = 12, n: int = 3, v: float = 20.0, end: float = 0.6) -> str:
+    """Units mm, ms, kg, GPa. A 40 x 10 x 10 mm bar along x of nx x n x n hexes, its half at
+    x < 20 mm soil (part 1), the rest copper (part 2), at v m/s onto a stonewall at x = 0. By
+    0.4 ms the soil has taken most of the kinetic energy; by 0.6 ms it has given part back,
+    unloading along its K."""
+    m = Mesh()
+    block(m, 1, (0.0, 0.0, 0.0), (40.0, 10.0, 10.0), (nx, n, n))
+    m.solids = [(1 if sum(m.nodes[i - 1][0] for i in ns) / 8 < 20.0 else 2, ns)
+                for _, ns in m.solids]
+    return f"""*KEYWORD
+*TITLE
+soil backed by copper onto a stonewall (*EOS_TABULATED_COMPACTION, *EOS_TABULATED)
+*CONTROL_TERMINATION
+{end:10.4g}
+*DATABASE_GLSTAT
+     0.005
+*PART
+soil
+         1         1         1         1
+copper
+         2         1         2         2
+*SECTION_SOLID
+         1         1
+*MAT_ELASTIC_PLASTIC_HYDRO
+         1    2.0e-6      0.05      0.01       0.0    -0.001
+*EOS_TABULATED_COMPACTION
+         1       0.0       0.0       1.0
+$ EV1-EV10 (ln V), C1-C10 (GPa), T1-T10, K1-K10 (GPa)
+             0.0           -0.05            -0.1            -0.2            -0.4
+             0.0             0.0             0.0             0.0             0.0
+             0.0            0.02            0.03            0.12             0.8
+             0.0             0.0             0.0             0.0             0.0
+             0.0             0.0             0.0             0.0             0.0
+             0.0             0.0             0.0             0.0             0.0
+             0.5             0.6             0.8             1.5             3.0
+             0.0             0.0             0.0             0.0             0.0
+*MAT_JOHNSON_COOK
+         2   8.96e-6      46.0
+      0.09     0.292      0.31     0.025      1.09    1356.0     293.0     0.001
+     383.0      -1.0       1.0         0       0.0       0.0       0.0       0.0
+       0.0
+*EOS_TABULATED
+         2       1.0       0.0       1.0
+            0.05             0.0           -0.05            -0.1            -0.2
+             0.0             0.0             0.0             0.0             0.0
+            -7.0             0.0             7.4            15.5            35.0
+             0.0             0.0             0.0             0.0             0.0
+             2.0             2.0             2.0             2.0             2.0
+             0.0             0.0             0.0             0.0             0.0
+*INITIAL_VELOCITY
+         0
+{-v:10.4g}       0.0       0.0
+*RIGIDWALL_PLANAR
+         0
+       0.0       0.0       0.0       1.0       0.0       0.0       0.0
+{m.keyword_text()}*END
+"""
+
+
 def main() -> None:
     out = ROOT / "tests" / "data" / "decks"
     out.mkdir(parents=True, exist_ok=True)
@@ -692,9 +756,11 @@ def main() -> None:
     (out / "prism_blocks.k").write_text(prism_blocks())
     (out / "joints.k").write_text(joints())
     (out / "shearfix_blocks.k").write_text(shearfix_blocks())
+    (out / "eos_tabulated.k").write_text(eos_tabulated())
     print("wrote tests/data/decks/mixed_conditions.k, structures.k, structures_shell16.k, "
           "rigid_welds.k, contact_blocks.k, contact_tube.k, contact_tied.k, contact_cask.k, "
-          "tet_blocks.k, tet13_blocks.k, axisym_rod.k, erosion.k, prism_blocks.k, joints.k and shearfix_blocks.k")
+          "tet_blocks.k, tet13_blocks.k, axisym_rod.k, erosion.k, prism_blocks.k, joints.k, "
+          "shearfix_blocks.k and eos_tabulated.k")
 
 
 if __name__ == "__main__":

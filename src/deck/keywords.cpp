@@ -172,6 +172,35 @@ std::vector<KeywordSpec> makeTables() {
        {titleCard(),
         {"card 1", {I("EOSID"), R("C"), R("S1"), R("S2"), R("S3"), R("GAMAO"), R("A"), R("E0")}},
         {"card 2", {R("V0", 1, Z)}}}});
+  // *EOS_TABULATED_COMPACTION (*EOS_008) and *EOS_TABULATED (*EOS_009): Keyword Manual vol.
+  // II, "*EOS". Card 1 (width 10) then the table, five fields of width 16 a card: EV1-10
+  // (ln V), C1-10, T1-10 and, for compaction, K1-10. LCC, LCT, LCK (curves in place of the
+  // table) and LCID (energy deposition) of newer manuals are read to be refused when set.
+  {
+    static constexpr std::string_view kTable[4][10] = {
+        {"EV1", "EV2", "EV3", "EV4", "EV5", "EV6", "EV7", "EV8", "EV9", "EV10"},
+        {"C1", "C2", "C3", "C4", "C5", "C6", "C7", "C8", "C9", "C10"},
+        {"T1", "T2", "T3", "T4", "T5", "T6", "T7", "T8", "T9", "T10"},
+        {"K1", "K2", "K3", "K4", "K5", "K6", "K7", "K8", "K9", "K10"}};
+    const auto row = [](int column, int half) {
+      std::vector<FieldSpec> f;
+      for (int i = 0; i < 5; ++i) f.push_back(R(kTable[column][5 * half + i], 0, 0, 16));
+      return f;
+    };
+    const auto table = [&](std::string_view name, std::vector<FieldSpec> card1, int columns) {
+      KeywordSpec k{name, {titleCard(), {"card 1", std::move(card1)}}};
+      static constexpr std::string_view kLabels[8] = {"card 2", "card 3", "card 4", "card 5",
+                                                      "card 6", "card 7", "card 8", "card 9"};
+      for (int c = 0; c < 2 * columns; ++c) k.cards.push_back({kLabels[c], row(c / 2, c % 2)});
+      return k;
+    };
+    t.push_back(table(
+        "*EOS_TABULATED_COMPACTION",
+        {I("EOSID"), R("GAMA"), R("E0"), R("V0", 1, Z), I("LCC"), I("LCT"), I("LCK"), I("LCID")},
+        4));
+    t.push_back(table("*EOS_TABULATED",
+                      {I("EOSID"), R("GAMA"), R("E0"), R("V0", 1, Z), I("LCC"), I("LCT")}, 3));
+  }
   // *MAT_ADD_EROSION: Keyword Manual vol. II. Cards 3-5 (damage, forming limit, nonlocal and
   // temperature criteria) are read only to refuse what they set (model/build_erosion.cpp).
   t.push_back({"*MAT_ADD_EROSION",

@@ -13,8 +13,9 @@ namespace crumple::materials {
 // *MAT_015): the elastic predictor of the deviator (shear modulus G), the radial return by
 // the effective plastic strain increment x = increment(q, de) of the trial von Mises stress q
 // (0 inside the surface), the pressure and energy of the EOS (eosPointStep, with the
-// deviatoric work (s'_old + s'_new) / 2 : de as *MAT_NULL; history h[0] = ln(V / V0),
-// h[1] = E - E0) held at pc, and the new stress. eps_p is left to the caller. Returns x and p.
+// deviatoric work (s'_old + s'_new) / 2 : de as *MAT_NULL; history h[0..2] the EOS's state,
+// eos.hpp, kEosHistory) held at pc, and the new stress. eps_p is left to the caller. Returns x and
+// p.
 struct EosReturn {
   double x = 0.0, p = 0.0;
 };
@@ -38,7 +39,7 @@ EosReturn eosRadialReturn(PointBatch& b, int i, double G, const Eos& eos, double
     dev[k] -= shrink * dev[k];
     w_dev += (k < 3 ? 0.5 : 1.0) * (dev_old[k] + dev[k]) * d[k];
   }
-  r.p = eosPointStep(eos, rho0, pc, b.h[0][i], b.h[1][i], w_dev, p_old, tr);
+  r.p = eosPointStep(eos, rho0, pc, b.h[0][i], b.h[1][i], b.h[2][i], w_dev, p_old, tr);
   for (int k = 0; k < 6; ++k) b.s[k][i] = k < 3 ? dev[k] - r.p : dev[k];
   return r;
 }

@@ -67,7 +67,7 @@ struct KeywordSpec;
 namespace crumple::materials {
 
 // History variables a law may keep per point besides eps_p and alpha.
-inline constexpr int kMaxHistory = 4;
+inline constexpr int kMaxHistory = 5;
 
 // The number of history variables of a law (its kHistory, else 0).
 template <class L>

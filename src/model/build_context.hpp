@@ -282,9 +282,12 @@ struct LawReader {
 };
 const std::vector<LawReader>& lawReaders();
 
-// build_eos.cpp: *EOS_LINEAR_POLYNOMIAL and *EOS_GRUNEISEN
+// build_eos.cpp: *EOS_LINEAR_POLYNOMIAL, *EOS_GRUNEISEN, *EOS_TABULATED_COMPACTION and
+// *EOS_TABULATED
 void readEosLinearPolynomial(Context&, const deck::Keyword&, const KeywordOptions&);
 void readEosGruneisen(Context&, const deck::Keyword&, const KeywordOptions&);
+void readEosTabulatedCompaction(Context&, const deck::Keyword&, const KeywordOptions&);
+void readEosTabulated(Context&, const deck::Keyword&, const KeywordOptions&);
 // The equation of state a part names and its law (solids only): the law must take one exactly
 // when its unit declares kEos (InputError naming the part's EOSID or MID field otherwise).
 void checkPartEos(Context& ctx, const Part& p);

@@ -89,8 +89,9 @@ struct Material {
   materials::Erosion erosion;
 };
 
-// *EOS_LINEAR_POLYNOMIAL, *EOS_GRUNEISEN: the pressure of the solids of the parts that name it
-// (*PART EOSID) and whose law takes one (materials/eos.hpp).
+// *EOS_LINEAR_POLYNOMIAL, *EOS_GRUNEISEN, *EOS_TABULATED_COMPACTION, *EOS_TABULATED: the
+// pressure of the solids of the parts that name it (*PART EOSID) and whose law takes one
+// (materials/eos.hpp).
 struct EquationOfState {
   int64_t id = 0;
   std::string title;

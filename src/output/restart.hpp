@@ -25,7 +25,10 @@
 namespace crumple::output {
 
 // 3: solids keep the last pass's bulk viscosity and (viscous forms too) hourglass forces.
-inline constexpr uint32_t kDumpVersion = 3;
+// 4: the laws with an equation of state keep the least ln(V / V0) as their third history
+// variable (*MAT_JOHNSON_COOK's damage and temperature move to the fourth and fifth), and the
+// model's equations of state carry the tabulated forms' points.
+inline constexpr uint32_t kDumpVersion = 4;
 
 // One part of the state. `save` is collective (every rank calls every section's save, in
 // registration order) and returns the section's bytes on rank 0 (what other ranks return is

@@ -52,8 +52,10 @@ m::JohnsonCook makeJc(const m::JohnsonCook::Params& p) {
 
 using Strain = std::array<double, 6>;
 
-// One point with its history (ln V, E - E0, D, T - TR).
+// One point with its history (ln V, E - E0, least ln V, D, T - TR).
 using Point = crumple::testing::mp::SolidPoint;
+// The history slots after the EOS's state.
+constexpr std::size_t kDamage = m::JohnsonCook::kDamage, kHeat = m::JohnsonCook::kHeat;
 
 }  // namespace
 
@@ -73,7 +75,7 @@ TEST(JohnsonCook, QuasiStaticUniaxialStressFollowsHardening) {
   // the EOS is p = K (1/V - 1), not K ln V: 1e-3 of the plastic strain.
   const double E = 9.0 * kK * kG / (3.0 * kK + kG);
   EXPECT_NEAR(pt.eps_p, 0.12 - pt.s[0] / E, 1e-3 * pt.eps_p);
-  EXPECT_LT(pt.h[3], 1e-15);  // no heating
+  EXPECT_LT(pt.h[kHeat], 1e-15);  // no heating
 }
 
 // The Newton return lands on the surface to round-off for concave (N < 1), linear and convex
@@ -119,15 +121,15 @@ TEST(JohnsonCook, AdiabaticTemperatureRiseSoftens) {
   const double dxy = 2e-3, dt = 1.0;  // quasi-static
   double heat = 0.0, t_start = 0.0;
   for (int i = 0; i < 300; ++i) {
-    t_start = pt.h[3];
+    t_start = pt.h[kHeat];
     const double e0 = pt.eps_p;
     pt.step(law, {0, 0, 0, dxy, 0, 0}, dt);
     ref.step(cold, {0, 0, 0, dxy, 0, 0}, dt);
     heat += pt.mises() * (pt.eps_p - e0) / (kRho * kCp);
   }
   // Plastic work ~ 1100 MPa x 0.68 over RO CP = 3.735 MPa / K: about 200 K.
-  EXPECT_GT(pt.h[3], 190.0);
-  EXPECT_NEAR(pt.h[3], heat, 1e-9 * heat);
+  EXPECT_GT(pt.h[kHeat], 190.0);
+  EXPECT_NEAR(pt.h[kHeat], heat, 1e-9 * heat);
   const double tstar = t_start / (kTm - kTr);
   EXPECT_NEAR(pt.mises(), law.hardening(pt.eps_p) * (1.0 - std::pow(tstar, kM)),
               1e-13 * pt.mises());
@@ -142,7 +144,7 @@ TEST(JohnsonCook, AdiabaticTemperatureRiseSoftens) {
   const auto athermal = makeJc(p);
   Point a;
   for (int i = 0; i < 50; ++i) a.step(athermal, {0, 0, 0, dxy, 0, 0}, dt);
-  EXPECT_EQ(a.h[3], 0.0);
+  EXPECT_EQ(a.h[kHeat], 0.0);
   EXPECT_NEAR(a.mises(), athermal.hardening(a.eps_p), 1e-13 * a.mises());
 }
 
@@ -161,14 +163,14 @@ TEST(JohnsonCook, DamageReachesOneAtTheFractureStrainInTension) {
     const double before = pt.eps_p;
     pt.uniaxialStep(law, dx, 1.0);
     ++steps;
-    EXPECT_NEAR(pt.h[2], pt.eps_p / ef, 1e-8) << steps;
+    EXPECT_NEAR(pt.h[kDamage], pt.eps_p / ef, 1e-8) << steps;
     if (pt.failed) {
       EXPECT_LT(before, ef);
       EXPECT_GE(pt.eps_p, ef * (1.0 - 1e-8));
     }
   }
   EXPECT_EQ(pt.failed, 1);
-  EXPECT_GE(pt.h[2], 1.0);
+  EXPECT_GE(pt.h[kDamage], 1.0);
 }
 
 // The fracture strain's rate and temperature terms and the EFMIN floor (Johnson & Cook 1985,
@@ -190,9 +192,9 @@ TEST(JohnsonCook, ResultsIndependentOfPositionInBatch) {
   const auto law = makeJc(params(kCp, {0.05, 0.2, -2.12, 0.002, 0.61}));
   for (int pos : {0, 5, 12}) {
     SCOPED_TRACE(pos);
-    const int N = 13;
+    const int N = 13, H = m::JohnsonCook::kHistory;
     std::mt19937_64 rng(99);
-    std::vector<double> s(6 * N), de(6 * N), ep(N, 0.0), h(4 * N, 0.0);
+    std::vector<double> s(6 * N), de(6 * N), ep(N, 0.0), h(H * N, 0.0);
     std::vector<uint8_t> failed(N, 0);
     for (double& v : s) v = std::uniform_real_distribution<double>(-300.0, 300.0)(rng);
     Point lone;
@@ -203,7 +205,7 @@ TEST(JohnsonCook, ResultsIndependentOfPositionInBatch) {
       big.s[k] = &s[k * N];
       big.de[k] = &de[k * N];
     }
-    for (int k = 0; k < 4; ++k) big.h[k] = &h[k * N];
+    for (int k = 0; k < H; ++k) big.h[k] = &h[k * N];
     big.eps_p = ep.data();
     big.failed = failed.data();
     for (int st = 0; st < 60; ++st) {
@@ -216,13 +218,13 @@ TEST(JohnsonCook, ResultsIndependentOfPositionInBatch) {
     }
     for (int k = 0; k < 6; ++k)
       EXPECT_EQ(std::memcmp(&s[k * N + pos], &lone.s[static_cast<std::size_t>(k)], 8), 0) << k;
-    for (int k = 0; k < 4; ++k)
+    for (int k = 0; k < H; ++k)
       EXPECT_EQ(std::memcmp(&h[k * N + pos], &lone.h[static_cast<std::size_t>(k)], 8), 0) << k;
     EXPECT_EQ(std::memcmp(&ep[pos], &lone.eps_p, 8), 0);
     EXPECT_EQ(failed[pos], lone.failed);
     EXPECT_GT(lone.eps_p, 0.0);
-    EXPECT_GT(lone.h[2], 0.0);
-    EXPECT_GT(lone.h[3], 0.0);
+    EXPECT_GT(lone.h[kDamage], 0.0);
+    EXPECT_GT(lone.h[kHeat], 0.0);
   }
 }
 

@@ -36,10 +36,10 @@ m::MatNull makeNull(const m::Eos& eos, double pc = -1e30, double mu = 0.0, doubl
   return std::get<m::MatNull>(m::makeLaw(p, {}, "", &eos));
 }
 
-// One point with its history (ln V, E - E0).
+// One point with its history (ln V, E - E0, least ln V).
 struct Point {
   std::array<double, 6> s{};
-  double x = 0.0, de = 0.0;
+  double x = 0.0, de = 0.0, x_min = 0.0;
   uint8_t failed = 0;
 
   void step(const m::MatNull& law, const std::array<double, 6>& d, double dt = 1e-3) {
@@ -52,6 +52,7 @@ struct Point {
     }
     b.h[0] = &x;
     b.h[1] = &de;
+    b.h[2] = &x_min;
     b.failed = &failed;
     law.update(b);
   }
@@ -254,7 +255,7 @@ TEST(MatNull, ModelReadsEquationsOfStateAndPartEosid) {
             no_eos.string() +
                 ":19: *PART card 2 field 4 (EOSID): part 1 has solid elements and material 1 "
                 "(*MAT_NULL), which needs an equation of state (*EOS_LINEAR_POLYNOMIAL, "
-                "*EOS_GRUNEISEN)");
+                "*EOS_GRUNEISEN, *EOS_TABULATED_COMPACTION, *EOS_TABULATED)");
   const auto elastic =
       t.write("e.k", kHex +
                          "*MAT_ELASTIC\n1,7.8e-6,210.0,0.3\n*EOS_LINEAR_POLYNOMIAL\n7,0,2.2\n"

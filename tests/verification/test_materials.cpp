@@ -418,7 +418,8 @@ TEST(VerificationMaterials, JohnsonCookPullToFailure) {
       return;
     }
     const double eps_p = blk.eps_p.at(0);
-    const double dT = blk.hist.at(Block::blocked(blk.history, 3, 0));
+    const double dT =
+        blk.hist.at(Block::blocked(blk.history, crumple::materials::JohnsonCook::kHeat, 0));
     double sig[6];
     for (int k = 0; k < 6; ++k) sig[k] = blk.sigAt(k, 0);
     const double m = (sig[0] + sig[1] + sig[2]) / 3.0;
@@ -431,7 +432,9 @@ TEST(VerificationMaterials, JohnsonCookPullToFailure) {
       const double expected = jcFlow(eps_p, r, dT_prev);
       if (eps_p > 0.005) worst = std::max(worst, std::abs(q - expected) / expected);
       damage += (eps_p - eps_prev) / jcFracture(m / q, r, dT_prev);
-      EXPECT_NEAR(blk.hist.at(Block::blocked(blk.history, 2, 0)), damage, 1e-5);
+      EXPECT_NEAR(
+          blk.hist.at(Block::blocked(blk.history, crumple::materials::JohnsonCook::kDamage, 0)),
+          damage, 1e-5);
       ++plastic;
     }
     eps_prev = eps_p;

@@ -12,7 +12,8 @@
 // of *MAT_NULL (eos.hpp, eosEnergyStep) and is held at PC where it would fall below it
 // (PC <= 0; PC = 0 means no cutoff, -infinity, as the manual says). FS > 0: the point fails
 // (the element erodes) when the effective plastic strain reaches FS.
-// History (kHistory = 2): h[0] = ln(V / V0), h[1] = E - E0 (the EOS's state, as *MAT_NULL).
+// History (kHistory = kEosHistory): h[0..2] = ln(V / V0), E - E0 and the least ln(V / V0) (the
+// EOS's state, eos.hpp, as *MAT_NULL).
 #pragma once
 
 #include <array>
@@ -32,8 +33,8 @@ struct ElasticPlasticHydro {
   static constexpr bool kPlastic = true;
   static constexpr bool kKinematic = false;
   static constexpr bool kDensity = true;
-  static constexpr int kHistory = 2;  // ln(V / V0), E - E0
-  static constexpr bool kEos = true;  // its solids take the part's equation of state
+  static constexpr int kHistory = kEosHistory;  // ln(V / V0), E - E0, least ln(V / V0)
+  static constexpr bool kEos = true;            // its solids take the part's equation of state
 
   struct Params {
     using Law = ElasticPlasticHydro;

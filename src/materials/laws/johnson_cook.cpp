@@ -155,7 +155,7 @@ double JohnsonCook::fractureStrain(double triax, double rate, double dT) const {
 
 void JohnsonCook::update(PointBatch& b) const {
   for (int i = 0; i < b.n; ++i) {
-    const double dT = b.h[3][i], e = b.eps_p[i];
+    const double dT = b.h[kHeat][i], e = b.eps_p[i];
     double rate = 0.0, scale = 1.0;
     // The radial return to the Johnson-Cook surface at the step's rate and starting
     // temperature; the pressure cut off at PC (SPALL = 1).
@@ -173,12 +173,12 @@ void JohnsonCook::update(PointBatch& b) const {
 void JohnsonCook::heatAndDamage(PointBatch& b, int i, const Increment& in) const {
   // Adiabatic heating by the plastic work of the step at the new flow stress (CP = 0: none).
   const double sigma_y = in.scale * hardening(in.eps_p + in.x);
-  if (par.cp > 0.0) b.h[3][i] = in.dT + sigma_y * in.x / (par.rho * par.cp);
+  if (par.cp > 0.0) b.h[kHeat][i] = in.dT + sigma_y * in.x / (par.rho * par.cp);
   // Damage at the new state's triaxiality sigma_m / sigma_eff = -p / sigma_y.
   if (!hasDamage()) return;
   const double ef = fractureStrain(sigma_y > 0.0 ? -in.p / sigma_y : 0.0, in.rate, in.dT);
-  b.h[2][i] += ef > 0.0 ? in.x / ef : std::numeric_limits<double>::infinity();
-  if (b.failed && b.h[2][i] >= 1.0) b.failed[i] = 1;
+  b.h[kDamage][i] += ef > 0.0 ? in.x / ef : std::numeric_limits<double>::infinity();
+  if (b.failed && b.h[kDamage][i] >= 1.0) b.failed[i] = 1;
 }
 
 }  // namespace crumple::materials

@@ -26,8 +26,8 @@
 //   sigma* = sigma_m / sigma_eff   (mean stress over von Mises stress, positive in tension:
 //                                   the convention of the published, negative, D3 values);
 // the point fails (the element erodes) when D >= 1. D1 = D2 = 0 and EFMIN = 0: no damage.
-// History (kHistory = 4): h[0] = ln(V / V0), h[1] = E - E0 (the EOS's state, as *MAT_NULL),
-// h[2] = D, h[3] = T - TR; all start at zero.
+// History (kHistory = 5): h[0..2] the EOS's state (ln(V / V0), E - E0, the least ln(V / V0);
+// eos.hpp, kEosHistory, as *MAT_NULL), h[3] = D, h[4] = T - TR; all start at zero.
 #pragma once
 
 #include <array>
@@ -45,7 +45,9 @@ struct JohnsonCook {
   static constexpr bool kPlastic = true;
   static constexpr bool kKinematic = false;
   static constexpr bool kDensity = true;
-  static constexpr int kHistory = 4;  // ln(V / V0), E - E0, D, T - TR
+  // The history after the EOS's state (kEosHistory): damage D and temperature rise T - TR.
+  static constexpr int kDamage = kEosHistory, kHeat = kEosHistory + 1;
+  static constexpr int kHistory = kEosHistory + 2;
   // Its solids take the part's equation of state (required); law.hpp.
   static constexpr bool kEos = true;
 

@@ -62,11 +62,6 @@ MatNull MatNull::make(const Params& p, const CurveAt&, const std::string& at, co
   return law;
 }
 
-MatNull::State MatNull::pressureAndEnergy(double e_old, double v_mid, double v_new, double w_dev,
-                                          double p_old, double tr) const {
-  return eosEnergyStep(eos, rho0, pc, e_old, v_mid, v_new, w_dev, p_old, tr);
-}
-
 void MatNull::update(PointBatch& b) const {
   // s' = 2 MU e_dot' = (2 MU / dt) de' (no viscous stress before the first step has a dt).
   const double visc = b.dt > 0.0 ? 2.0 * mu / b.dt : 0.0;
@@ -85,13 +80,9 @@ void MatNull::update(PointBatch& b) const {
       const double dev_old = k < 3 ? s_old[k] + p_old : s_old[k];
       w_dev += (k < 3 ? 0.5 : 1.0) * (dev_old + dev[k]) * d[k];
     }
-    const double x_old = b.h[0][i], x_new = x_old + tr;
-    const double v_new = eos.v0 * std::exp(x_new);
-    const State st = pressureAndEnergy(eos.e0 + b.h[1][i], eos.v0 * std::exp(x_old + 0.5 * tr),
-                                       v_new, w_dev, p_old, tr);
-    for (int k = 0; k < 6; ++k) b.s[k][i] = k < 3 ? dev[k] - st.p : dev[k];
-    b.h[0][i] = x_new;
-    b.h[1][i] = st.e - eos.e0;
+    const double p = eosPointStep(eos, rho0, pc, b.h[0][i], b.h[1][i], b.h[2][i], w_dev, p_old, tr);
+    for (int k = 0; k < 6; ++k) b.s[k][i] = k < 3 ? dev[k] - p : dev[k];
+    const double v_new = eos.v0 * std::exp(b.h[0][i]);
     b.failed[i] =
         static_cast<uint8_t>((terod > 0.0 && v_new > terod) || (cerod > 0.0 && v_new < cerod));
   }

@@ -15,8 +15,9 @@
 // (the time-centred energy update, implicit in p, of LS-DYNA's Theory Manual, "Equation of
 // State Models", and of DYNA3D: Whirley & Engelmann, UCRL-MA-107254, 1993; after Wilkins,
 // "Calculation of elastic-plastic flow", Methods in Computational Physics 3, 1964).
-// History (kHistory = 2): h[0] = ln(V / V0) integrated from the volumetric strain increments
-// (d ln V = tr D dt), h[1] = E - E0; both start at zero.
+// History (kHistory = kEosHistory, eos.hpp): h[0] = ln(V / V0) integrated from the volumetric
+// strain increments (d ln V = tr D dt), h[1] = E - E0, h[2] = the least ln(V / V0) reached
+// (EOS 8's unloading); all start at zero.
 //
 // Shells and beams: bypassed in the element processing, as in LS-DYNA ("null shells" and
 // "null beams" carry contact only): their elements give mass and inertia to their nodes and
@@ -38,7 +39,7 @@ struct MatNull {
   static constexpr bool kPlastic = false;
   static constexpr bool kKinematic = false;
   static constexpr bool kDensity = true;
-  static constexpr int kHistory = 2;  // h[0] = ln(V / V0), h[1] = E - E0
+  static constexpr int kHistory = kEosHistory;  // ln(V / V0), E - E0, least ln(V / V0)
   // Its solids take the part's equation of state (required); law.hpp.
   static constexpr bool kEos = true;
   // Its shells and beams are bypassed: mass only (law.hpp).
@@ -61,13 +62,6 @@ struct MatNull {
   void update(PointBatch& b) const;
   double failureStrain() const { return 0.0; }
   double deletionStep() const { return 0.0; }
-
-  // The new pressure and energy per unit reference volume of one point over a step: E_old at
-  // the start, relative volumes V_mid (mid-step) and V_new, deviatoric work w_dev and the
-  // pressure p_old of the start, volumetric strain increment tr(de).
-  using State = EosStep;
-  State pressureAndEnergy(double e_old, double v_mid, double v_new, double w_dev, double p_old,
-                          double tr) const;
 };
 
 }  // namespace crumple::materials
