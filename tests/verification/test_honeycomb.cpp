@@ -374,8 +374,7 @@ namespace {
 // 0.045, 0.063), so the mass stops in the rising part, near e = 0.665. MU 0.05 (blank), no bulk
 // viscosity (BULK 0).
 std::string fallingMass(double end_time) {
-  std::string s = "*KEYWORD\n*TITLE\nhoneycomb struck by a falling mass\n";
-  s += termination(end_time);
+  std::string s = termination(end_time);
   s += "*MAT_HONEYCOMB\n";
   // MID RO E PR SIGY VF MU (blank: 0.05) BULK; LCA 11; the uncompacted moduli, AOPT 2; A = e_z,
   // D = e_x.
@@ -391,38 +390,21 @@ std::string fallingMass(double end_time) {
   s += curveCard(12, {0.0, 0.7, 0.8}, {5.0, 10.0, 500.0});  // the lateral directions
   s += curveCard(13, {0.0, 0.8}, {8.0, 30.0});              // the shears
   const int nx = 2, ny = 2, nz = 3;
-  const double lx = 0.1, ly = 0.1, lz = 0.15;
-  s += "*PART\nhoneycomb\n         1         1         1\n*SECTION_SOLID\n         1         1\n";
-  s += "*NODE\n";
   auto id = [&](int i, int j, int k) { return 1 + i + (nx + 1) * (j + (ny + 1) * k); };
-  for (int k = 0; k <= nz; ++k)
-    for (int j = 0; j <= ny; ++j)
-      for (int i = 0; i <= nx; ++i)
-        s += fmt::format("{:8d}{:16.9g}{:16.9g}{:16.9g}\n", id(i, j, k), lx * i / nx, ly * j / ny,
-                         lz * k / nz);
-  s += "*ELEMENT_SOLID\n";
-  int e = 1;
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i)
-        s +=
-            fmt::format("{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}{:8d}\n", e++, 1, id(i, j, k),
-                        id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k), id(i, j, k + 1),
-                        id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1));
-  std::string mass = "*ELEMENT_MASS\n", vel = "*INITIAL_VELOCITY_NODE\n",
-              spc = "*BOUNDARY_SPC_NODE\n";
-  std::string top = "*SET_NODE_LIST\n        12\n";
+  std::string mass = "*ELEMENT_MASS\n", vel = "*INITIAL_VELOCITY_NODE\n";
   int m = 1;
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i <= nx; ++i) {
       mass += fmt::format("{:8d}{:8d}{:16.9g}\n", m++, id(i, j, nz), 0.02 / 9.0);
       vel += fmt::format("{:8d}{:10.4g}{:10.4g}{:10.4g}\n", id(i, j, nz), 0.0, 0.0, -2.345);
-      spc += fmt::format("{:10d}{:10d}{:10d}{:10d}{:10d}\n", id(i, j, 0), 0, 1, 1, 1);
-      top += fmt::format("{:10d}\n", id(i, j, nz));
     }
-  // The mass is a rigid plate: the top nodes form one nodal rigid body.
-  spc += top + "*CONSTRAINED_NODAL_RIGID_BODY\n        70         0        12\n";
-  return s + mass + vel + spc + "*END\n";
+  s += mass + vel;
+  // The base held; the mass is a rigid plate: the top nodes form one nodal rigid body.
+  s += crumple::testing::brickNodeSet(11, nx, ny, nz, [](int, int, int k) { return k == 0; });
+  s += "*BOUNDARY_SPC_SET\n        11         0         1         1         1\n";
+  s += crumple::testing::brickNodeSet(12, nx, ny, nz, [](int, int, int k) { return k == nz; });
+  s += "*CONSTRAINED_NODAL_RIGID_BODY\n        70         0        12\n";
+  return crumple::testing::brickDeck(nx, ny, nz, 0.1, 0.1, 0.15, s);
 }
 
 }  // namespace

@@ -323,6 +323,86 @@ void Honeycomb::advance(Point& pt, const std::array<double, 6>& de, double dt, d
   }
 }
 
+namespace {
+
+using Vec3 = std::array<double, 3>;
+using Mat3 = std::array<double, 9>;  // row-major
+
+Vec3 times(const Mat3& f, const Vec3& v) {
+  Vec3 out;
+  for (int i = 0; i < 3; ++i)
+    out[std::size_t(i)] = f[std::size_t(3 * i)] * v[0] + f[std::size_t(3 * i + 1)] * v[1] +
+                          f[std::size_t(3 * i + 2)] * v[2];
+  return out;
+}
+
+double det3(const Mat3& f) {
+  return f[0] * (f[4] * f[8] - f[5] * f[7]) - f[1] * (f[3] * f[8] - f[5] * f[6]) +
+         f[2] * (f[3] * f[7] - f[4] * f[6]);
+}
+
+Mat3 inverse(const Mat3& f, double det) {
+  const double inv = 1.0 / det;
+  return {(f[4] * f[8] - f[5] * f[7]) * inv, (f[2] * f[7] - f[1] * f[8]) * inv,
+          (f[1] * f[5] - f[2] * f[4]) * inv, (f[5] * f[6] - f[3] * f[8]) * inv,
+          (f[0] * f[8] - f[2] * f[6]) * inv, (f[2] * f[3] - f[0] * f[5]) * inv,
+          (f[3] * f[7] - f[4] * f[6]) * inv, (f[1] * f[6] - f[0] * f[7]) * inv,
+          (f[0] * f[4] - f[1] * f[3]) * inv};
+}
+
+}  // namespace
+
+void Honeycomb::axesNow(const double (&f)[9], const double* const (&edge)[6], int l,
+                        double (&q)[9]) const {
+  double va[3], vd[3];
+  if (aopt == 2) {
+    // A and D carried by F.
+    const Mat3 fm = std::to_array(f);
+    const Vec3 a = times(fm, a0), d = times(fm, d0);
+    for (int i = 0; i < 3; ++i) va[i] = a[std::size_t(i)], vd[i] = d[std::size_t(i)];
+  } else {
+    // The element's current edges 1-2 and 1-4.
+    for (int i = 0; i < 3; ++i) va[i] = edge[i][l], vd[i] = edge[3 + i][l];
+  }
+  axes(va, vd, q);
+}
+
+bool Honeycomb::strainFails(const double (&f)[9], const double (&q)[9], double det) const {
+  const Mat3 fm = std::to_array(f);
+  // The vectors that gave the axes at the start: A and D, or F^-1 of the current edges (the
+  // current a and the a-d plane's normal c suffice: they span the same plane as the edges).
+  double va[3], vd[3];
+  if (aopt == 2) {
+    for (int i = 0; i < 3; ++i) va[i] = a0[std::size_t(i)], vd[i] = d0[std::size_t(i)];
+  } else {
+    const Mat3 g = inverse(fm, det);
+    // Undo MACF to find a and b as the axes were built, then carry them back.
+    Vec3 axis[3];
+    for (int k = 0; k < 3; ++k) axis[k] = {q[k], q[3 + k], q[6 + k]};
+    if (macf == 2) std::swap(axis[0], axis[1]);
+    if (macf == 3) std::swap(axis[0], axis[2]);
+    if (macf == 4) std::swap(axis[1], axis[2]);
+    const Vec3 ra = times(g, axis[0]), rb = times(g, axis[1]);
+    for (int i = 0; i < 3; ++i) va[i] = ra[std::size_t(i)], vd[i] = rb[std::size_t(i)];
+  }
+  double q0[9];
+  axes(va, vd, q0);
+  // Each starting axis carried by F: its stretch, and the cosine of the angle between two.
+  Vec3 fa[3];
+  double len[3];
+  for (int k = 0; k < 3; ++k) {
+    fa[k] = times(fm, {q0[k], q0[3 + k], q0[6 + k]});
+    len[k] = std::sqrt(fa[k][0] * fa[k][0] + fa[k][1] * fa[k][1] + fa[k][2] * fa[k][2]);
+    if (tsef > 0.0 && len[k] - 1.0 >= tsef) return true;
+  }
+  for (int k = 0; k < 3 && ssef > 0.0; ++k) {
+    const int j = (k + 1) % 3;
+    const double dot = fa[k][0] * fa[j][0] + fa[k][1] * fa[j][1] + fa[k][2] * fa[j][2];
+    if (std::abs(dot) >= ssef * len[k] * len[j]) return true;
+  }
+  return false;
+}
+
 void Honeycomb::update(PointBatch& p) const {
   const double m_compacted = bulk_modulus + 4.0 / 3.0 * shear;
   const double m_wave = std::max(moduli.bulk + 4.0 / 3.0 * moduli.shear, m_compacted);
@@ -332,37 +412,21 @@ void Honeycomb::update(PointBatch& p) const {
   for (int l = 0; l < p.n; ++l) {
     double f[9];
     for (int k = 0; k < 9; ++k) f[k] = p.F[k][l];
-    const double det = f[0] * (f[4] * f[8] - f[5] * f[7]) - f[1] * (f[3] * f[8] - f[5] * f[6]) +
-                       f[2] * (f[3] * f[7] - f[4] * f[6]);
-    // The axes as given at the start (reference vectors) and carried by F.
-    double ra[3], rd[3], ca[3], cd[3];
-    auto times = [&](const double* v, double* out) {
-      for (int i = 0; i < 3; ++i)
-        out[i] = f[3 * i] * v[0] + f[3 * i + 1] * v[1] + f[3 * i + 2] * v[2];
-    };
-    if (aopt == 2) {
-      for (int i = 0; i < 3; ++i) ra[i] = a0[std::size_t(i)], rd[i] = d0[std::size_t(i)];
-      times(ra, ca);
-      times(rd, cd);
-    } else {
-      for (int i = 0; i < 3; ++i) ca[i] = p.edge[i][l], cd[i] = p.edge[3 + i][l];
-    }
+    const double det = det3(std::to_array(f));
     double q[9];
-    axes(ca, cd, q);
+    axesNow(f, p.edge, l, q);
     // The point's state on the axes.
     Point pt;
     for (std::size_t k = 0; k < 6; ++k) pt.s[k] = p.h[k][l];
     pt.compacted = p.h[6][l] != 0.0;
     pt.eps_p = p.eps_p[l];
-    std::array<double, 6> de_g{};
-    for (std::size_t k = 0; k < 6; ++k) de_g[k] = p.de[k][l];
-    const std::array<double, 6> de = rotate(q, de_g, true);
+    std::array<double, 6> de_global{};
+    for (std::size_t k = 0; k < 6; ++k) de_global[k] = p.de[k][l];
     // rho c L with rho = rho0 / V and rho c^2 the compacted wave modulus.
     const double rho = det > 0.0 ? rho0 / det : rho0;
     const double rho_c_l = std::sqrt(rho * m_compacted) * p.length[l];
-    std::array<double, 6> visc{};
-    advance(pt, de, p.dt, det, rho_c_l, visc);
-    std::array<double, 6> total{};
+    std::array<double, 6> visc{}, total{};
+    advance(pt, rotate(q, de_global, true), p.dt, det, rho_c_l, visc);
     for (std::size_t k = 0; k < 6; ++k) {
       p.h[k][l] = pt.s[k];
       total[k] = pt.s[k] + visc[k];
@@ -372,41 +436,7 @@ void Honeycomb::update(PointBatch& p) const {
     const std::array<double, 6> s = rotate(q, total, false);
     for (std::size_t k = 0; k < 6; ++k) p.s[k][l] = s[k];
     if (p.modulus) p.modulus[l] = mu > 0.0 ? m_wave * amp * amp : m_wave;
-    // Erosion: the stretch of each starting axis and the cosine of the angle between two.
-    if (tsef > 0.0 || ssef > 0.0) {
-      if (aopt == 0) {
-        // The starting edges: F^-1 of the current ones.
-        const double inv = 1.0 / det;
-        const double g[9] = {(f[4] * f[8] - f[5] * f[7]) * inv, (f[2] * f[7] - f[1] * f[8]) * inv,
-                             (f[1] * f[5] - f[2] * f[4]) * inv, (f[5] * f[6] - f[3] * f[8]) * inv,
-                             (f[0] * f[8] - f[2] * f[6]) * inv, (f[2] * f[3] - f[0] * f[5]) * inv,
-                             (f[3] * f[7] - f[4] * f[6]) * inv, (f[1] * f[6] - f[0] * f[7]) * inv,
-                             (f[0] * f[4] - f[1] * f[3]) * inv};
-        for (int i = 0; i < 3; ++i) {
-          ra[i] = g[3 * i] * ca[0] + g[3 * i + 1] * ca[1] + g[3 * i + 2] * ca[2];
-          rd[i] = g[3 * i] * cd[0] + g[3 * i + 1] * cd[1] + g[3 * i + 2] * cd[2];
-        }
-      }
-      double q0[9];
-      axes(ra, rd, q0);
-      double fa[3][3];  // F times each starting axis
-      for (int k = 0; k < 3; ++k) {
-        const double axis[3] = {q0[k], q0[3 + k], q0[6 + k]};
-        times(axis, fa[k]);
-      }
-      bool fails = false;
-      double len[3];
-      for (int k = 0; k < 3; ++k) {
-        len[k] = std::sqrt(fa[k][0] * fa[k][0] + fa[k][1] * fa[k][1] + fa[k][2] * fa[k][2]);
-        if (tsef > 0.0 && len[k] - 1.0 >= tsef) fails = true;
-      }
-      for (int k = 0; k < 3 && ssef > 0.0; ++k) {
-        const int j = (k + 1) % 3;
-        const double dot = fa[k][0] * fa[j][0] + fa[k][1] * fa[j][1] + fa[k][2] * fa[j][2];
-        if (std::abs(dot) >= ssef * len[k] * len[j]) fails = true;
-      }
-      if (fails) p.failed[l] = 1;
-    }
+    if ((tsef > 0.0 || ssef > 0.0) && det > 0.0 && strainFails(f, q, det)) p.failed[l] = 1;
   }
 }
 

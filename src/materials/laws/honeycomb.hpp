@@ -105,6 +105,11 @@ struct Honeycomb {
   // The material axes (columns of q, q[3 i + k] = component i of axis k) from the vectors that
   // define a and the a-d plane, MACF applied.
   void axes(const double (&va)[3], const double (&vd)[3], double (&q)[9]) const;
+  // The axes now of point l: AOPT 2 from F A and F D, AOPT 0 from the element's edges.
+  void axesNow(const double (&f)[9], const double* const (&edge)[6], int l, double (&q)[9]) const;
+  // TSEF, SSEF: whether an axis as given at the start is stretched by TSEF, or two of them
+  // sheared by SSEF, at F (q: the axes now; det = det F > 0).
+  bool strainFails(const double (&f)[9], const double (&q)[9], double det) const;
 };
 
 }  // namespace crumple::materials
