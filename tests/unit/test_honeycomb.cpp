@@ -243,3 +243,32 @@ TEST(Honeycomb, BadOrRefusedFieldsAreErrors) {
   EXPECT_TRUE(has(error(kCard1, "7", "0,40,30,10,8,6,2"), "(EAAU)"));
   EXPECT_TRUE(has(error(kCard1, "7", kCard3, "0,0,0,1,0,0", "0,1,0,-0.1"), "(TSEF)"));
 }
+
+// SSEF: in the simple shear F = I + g e_x e_z the starting axes a = e_x and c = e_z make an angle
+// whose cosine is g / sqrt(1 + g^2); SSEF 0.2 fails from g = 0.2041 on. With AOPT 0 the
+// starting axes come back from the current ones through F^-1: the same verdict.
+TEST(Honeycomb, ShearStrainFailsAtSsef) {
+  auto law = makeHoneycomb();
+  law.ssef = 0.2;
+  for (int aopt : {2, 0}) {
+    law.aopt = aopt;
+    for (const double g : {0.2, 0.21}) {
+      const double f[9] = {1, 0, g, 0, 1, 0, 0, 0, 1};
+      // The current axes: F e_x = e_x and F e_y = e_y span the a-d plane.
+      const double a[3] = {1, 0, 0}, d[3] = {0, 1, 0};
+      double q[9];
+      law.axes(a, d, q);
+      EXPECT_EQ(law.strainFails(f, q, 1.0), g > 0.2041) << "AOPT " << aopt << " g " << g;
+    }
+  }
+  // TSEF alone: a stretch of 1.05 along b passes TSEF 0.04.
+  law.ssef = 0.0;
+  law.tsef = 0.04;
+  const double f[9] = {1, 0, 0, 0, 1.05, 0, 0, 0, 1};
+  double q[9];
+  const double a[3] = {1, 0, 0}, d[3] = {0, 1, 0};
+  law.axes(a, d, q);
+  EXPECT_TRUE(law.strainFails(f, q, 1.05));
+  law.tsef = 0.06;
+  EXPECT_FALSE(law.strainFails(f, q, 1.05));
+}
