@@ -153,6 +153,16 @@ inline void midStepGradient(const SolidParams& p, BatchScratch& w, SolidRates& r
       }
 }
 
+// For laws that declare kElementGeometry: the edges from node 1 at x(n) and the characteristic
+// length V / A at the mid-step geometry (w.b holds the gradient at x(n-1/2) here).
+template <class Shape>
+inline void elementGeometry(BatchScratch& w, const SolidRates& r) {
+  detail::nodeEdges(w);
+  LaneArray area;
+  Shape::lengthArea(w.xm, w.b, area);
+  for (int l = 0; l < kBatch; ++l) w.length[l] = r.vol_mid[l] / area[l];
+}
+
 // Stress: load the batch's records, the Jaumann rotation, then the material law.
 // `ev_step` (ELFORM 13, else null): the volumetric strain increment the law receives in place
 // of the element's own tr(de): de' = de + (ev_step - tr de) I / 3, the deviatoric part
@@ -461,6 +471,7 @@ solidBlockForces(const Law& law, domain::SolidBlock& blk, const domain::NodeVect
       double* alpha_batch = Law::kKinematic ? blk.alpha.data() + first * 6 : nullptr;
       SolidRates r;
       midStepGradient<Shape>(p, w, r);
+      if constexpr (materials::needsElementGeometry<Law>()) elementGeometry<Shape>(w, r);
       SolidSpin sp;
       LaneArray ev_step;
       if constexpr (Shape::kNodalPressure) nodalVolumetricStep(blk, first, n, nodal_ev, ev_step);

@@ -127,6 +127,8 @@ struct BatchScratch {
   double hist[materials::kMaxHistory][kBatch];
   double F[9][kBatch];     // deformation gradient (laws that need it; deformationGradient)
   double modulus[kBatch];  // the points' wave modulus (laws that report it: kWaveModulus)
+  double edge[6][kBatch];  // x2 - x1, x4 - x1 at x(n) (laws that need them: kElementGeometry)
+  double length[kBatch];   // characteristic length at x(n-1/2) (the same laws)
   uint8_t failed[kBatch];
 };
 
@@ -143,6 +145,16 @@ inline void deformationGradient(const domain::SolidBlock& blk, std::size_t first
         for (int a = 0; a < 8; ++a) s += w.x[i][a][l] * g[(3 * a + j) * kBatch + l];
         w.F[3 * i + j][l] = s;
       }
+}
+
+// The element's edges x2 - x1 and x4 - x1 at x(n) (corners 0, 1, 3: the hexahedron's nodes 1,
+// 2, 4 and the tetrahedron's N1, N2, N4), for laws that declare kElementGeometry.
+inline void nodeEdges(BatchScratch& w) {
+  for (int c = 0; c < 3; ++c)
+    for (int l = 0; l < kBatch; ++l) {
+      w.edge[c][l] = w.x[c][1][l] - w.x[c][0][l];
+      w.edge[3 + c][l] = w.x[c][3][l] - w.x[c][0][l];
+    }
 }
 
 // Stores the initial gradients dN_a/dX = B(X) / V0 of one batch (every lane, the padding
@@ -176,6 +188,10 @@ inline void updateMaterial(const Law& law, BatchScratch& w, double dt) {
   if constexpr (materials::needsDeformationGradient<Law>())
     for (int k = 0; k < 9; ++k) pb.F[k] = w.F[k];
   if constexpr (materials::reportsWaveModulus<Law>()) pb.modulus = w.modulus;
+  if constexpr (materials::needsElementGeometry<Law>()) {
+    for (int k = 0; k < 6; ++k) pb.edge[k] = w.edge[k];
+    pb.length = w.length;
+  }
   pb.failed = w.failed;
   law.update(pb);
 }

@@ -26,6 +26,12 @@
 //                              deformation beyond what constant moduli can bound: *MAT_057); the
 //                              one-point solids take the larger of it and lambda + 2 mu for the
 //                              point's wave speed (stable step, bulk viscosity, hourglass)
+//   kElementGeometry (opt.)    its one-point solids give the law each element's edges x2 - x1
+//                              and x4 - x1 at x(n) (PointBatch::edge: material axes from the
+//                              element's nodes, LS-DYNA's AOPT 0) and its characteristic length
+//                              at the mid-step geometry (PointBatch::length: viscous stresses
+//                              of the form rho c L D); with kDeformationGradient only (the
+//                              one-point solids are the only ones that give them)
 //   bulkViscosity() (optional) false when the law's solids take no bulk viscosity (LS-DYNA's
 //                              *MAT_LOW_DENSITY_FOAM BVFLAG 0); else *CONTROL_BULK_VISCOSITY's
 //   kBeamOnly (optional)       the one *SECTION_BEAM ELFORM its parts may use (a BeamOnly);
@@ -67,7 +73,7 @@ struct KeywordSpec;
 namespace crumple::materials {
 
 // History variables a law may keep per point besides eps_p and alpha.
-inline constexpr int kMaxHistory = 5;
+inline constexpr int kMaxHistory = 8;
 
 // The number of history variables of a law (its kHistory, else 0).
 template <class L>
@@ -88,6 +94,19 @@ constexpr bool needsDeformationGradient() {
     return L::kDeformationGradient;
   else
     return false;
+}
+
+// Whether the law's one-point solids give it the element's edges and length (its
+// kElementGeometry, else false).
+template <class L>
+constexpr bool needsElementGeometry() {
+  if constexpr (requires { L::kElementGeometry; }) {
+    static_assert(!L::kElementGeometry || needsDeformationGradient<L>(),
+                  "kElementGeometry needs kDeformationGradient (one-point solids only)");
+    return L::kElementGeometry;
+  } else {
+    return false;
+  }
 }
 
 // Whether the law's shell points keep their in-plane strain (its kShellStrain, else false).
@@ -140,6 +159,12 @@ struct PointBatch {
   // Out, for laws that declare kWaveModulus (else null): each point's wave modulus rho c^2 at
   // the new state, c the fastest wave speed in the current configuration.
   double* modulus = nullptr;
+  // In, for laws that declare kElementGeometry (else null): the element's edge vectors from its
+  // node 1 to its nodes 2 and 4 at x(n) (edge[0..2] = x2 - x1, edge[3..5] = x4 - x1), and its
+  // characteristic length (volume over largest face area; the tetrahedron's least altitude) at
+  // the mid-step geometry x(n-1/2).
+  const double* edge[6] = {};
+  const double* length = nullptr;
 };
 
 // A law that runs on one beam formulation only: its ELFORM and what to call those beams in

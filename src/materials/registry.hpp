@@ -9,6 +9,7 @@
 #include "materials/laws/elastic.hpp"
 #include "materials/laws/elastic_plastic_hydro.hpp"
 #include "materials/laws/frazer_nash.hpp"
+#include "materials/laws/honeycomb.hpp"
 #include "materials/laws/johnson_cook.hpp"
 #include "materials/laws/low_density_foam.hpp"
 #include "materials/laws/modified_piecewise_linear.hpp"
@@ -33,10 +34,10 @@ struct LawList {};
 
 // The order is the index of a law in archives (restart dumps, the model sent to other ranks):
 // append new laws at the end.
-using AllLaws =
-    LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic, DamperViscous,
-            SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam, JohnsonCook, PowerLaw,
-            StrainRatePlasticity, ModifiedPiecewiseLinear, Spotweld, ElasticPlasticHydro,
-            MooneyRivlin, FrazerNash, Muscle, Viscoelastic, LowDensityFoam, BlatzKo, Ogden>;
+using AllLaws = LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, SpringElastic,
+                        DamperViscous, SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam,
+                        JohnsonCook, PowerLaw, StrainRatePlasticity, ModifiedPiecewiseLinear,
+                        Spotweld, ElasticPlasticHydro, MooneyRivlin, FrazerNash, Muscle,
+                        Viscoelastic, LowDensityFoam, BlatzKo, Ogden, Honeycomb>;
 
 }  // namespace crumple::materials

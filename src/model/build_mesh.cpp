@@ -408,16 +408,16 @@ void finishParts(Context& ctx) {
              ctx.model.solid_sections[static_cast<std::size_t>(p.section)].elform == 13)
       ctx.fail(p.where.str() + ": *PART card 2 field 3 (MID): part " + std::to_string(p.id) +
                " has material " + std::to_string(m.id) + " (" + materialKeyword(m.law) +
-               "), a hyperelastic law, on an ELFORM 13 section: the nodal-pressure tetrahedron "
-               "replaces the volumetric part of the strain increment a rate law receives, and a "
-               "law of the deformation gradient takes no increment (use ELFORM 10)");
+               "), a law of the deformation gradient, on an ELFORM 13 section: the "
+               "nodal-pressure tetrahedron replaces the volumetric part of the strain increment "
+               "a rate law receives, which F would contradict (use ELFORM 10)");
     else if (p.section_kind == SectionKind::Solid && materials::needsDeformationGradient(m.law) &&
              !oneSolidPoint(ctx.model, p))
       ctx.fail(
           p.where.str() + ": *PART card 2 field 3 (MID): part " + std::to_string(p.id) +
           " has material " + std::to_string(m.id) + " (" + materialKeyword(m.law) +
-          "), a hyperelastic law (a function of the deformation gradient), which only the "
-          "one-point solids (*SECTION_SOLID ELFORM 1, 10; not with *CONTROL_SOLID "
+          "), a law of the deformation gradient (hyperelastic, foam or honeycomb), which only "
+          "the one-point solids (*SECTION_SOLID ELFORM 1, 10; not with *CONTROL_SOLID "
           "ESORT = 1) support yet; its section has ELFORM " +
           std::to_string(ctx.model.solid_sections[static_cast<std::size_t>(p.section)].elform));
     else if (!onItsBeams(ctx, p, m))

@@ -89,6 +89,7 @@ class RestartEquality(RestartCase):
             (data_deck("axisym_rod.k"), [], 80),
             (data_deck("erosion.k"), ["--endtime", "2.5e-5"], 40),
             (data_deck("eos_tabulated.k"), [], 700),
+            (data_deck("honeycomb_barrier.k"), [], 5000),
         ]
 
     def test_restart_from_mid_run_dump_is_bitwise(self):

@@ -201,8 +201,8 @@ TEST(Hyperelastic, ReadOnShellsAndRefusedOnElform2) {
                                        "*SECTION_SOLID\n1,2\n*PART\nrubber\n1,1,5\n"
                                        "*ELEMENT_SOLID\n1,1,1,2,3,4,5,6,7,8\n");
   EXPECT_NE(crumple::testing::errorOf([&] { crumple::model::readModel(full); })
-                .find("(*MAT_MOONEY-RIVLIN_RUBBER), a hyperelastic law (a function of the "
-                      "deformation gradient), which only the one-point solids"),
+                .find("(*MAT_MOONEY-RIVLIN_RUBBER), a law of the deformation gradient "
+                      "(hyperelastic, foam or honeycomb), which only the one-point solids"),
             std::string::npos);
 }
 
