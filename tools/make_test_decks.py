@@ -22,6 +22,9 @@
   prism_blocks.k      the tet_blocks collision meshed in prisms (two per hex cell), ELFORM 15
                       native and sorted by ESORT
   tet13_blocks.k      the tet_blocks collision with both blocks ELFORM 13 (nodal pressure)
+  tet10_bar.k         a clamped elastic-plastic bar of 10-node tetrahedra (ELFORM 16, six per
+                      hex cell, two-card *ELEMENT_SOLID) whipped by a transverse initial
+                      velocity: the four-point state of the quadratic tetrahedra across ranks.
   tet_blocks.k        two colliding blocks meshed in tetrahedra (six per hex cell) with
                       two-surface contact on their triangular faces: block a native ELFORM 10
                       (N5-N8 blank), block b degenerate hexahedra (N4 repeated) under ELFORM 1
@@ -539,6 +542,69 @@ def tet13_blocks(n1: int = 3, n2: int = 4, v: float = 10.0, end: float = 6e-5) -
                         "*SECTION_SOLID\n         2        13\n", 1)
 
 
+def tet10_bar(nx: int = 8, n: int = 2, v: float = 20.0, end: float = 0.04) -> str:
+    """mm, ms, kg, GPa. A 40 x 10 x 10 mm steel bar, cells of six Kuhn tetrahedra with a
+    mid-side node on every edge (ELFORM 16), clamped at x = 0 (corner and mid-side nodes),
+    started with v_z = v x / 40 and v_y = v x / 80."""
+    from deckgen import KUHN_TETS
+
+    lx, h = 40.0, 10.0
+    nodes: list[tuple[float, float, float]] = []
+    grid = {}
+    for k in range(n + 1):
+        for j in range(n + 1):
+            for i in range(nx + 1):
+                nodes.append((lx * i / nx, h * j / n, h * k / n))
+                grid[i, j, k] = len(nodes)
+    edges = ((0, 1), (1, 2), (2, 0), (0, 3), (1, 3), (2, 3))
+    mid: dict[tuple[int, int], int] = {}
+    elements = []
+    for k in range(n):
+        for j in range(n):
+            for i in range(nx):
+                c = [grid[i, j, k], grid[i + 1, j, k], grid[i + 1, j + 1, k], grid[i, j + 1, k],
+                     grid[i, j, k + 1], grid[i + 1, j, k + 1], grid[i + 1, j + 1, k + 1],
+                     grid[i, j + 1, k + 1]]
+                for t in KUHN_TETS:
+                    corners = [c[a] for a in t]
+                    mids = []
+                    for a, b in edges:
+                        key = (min(corners[a], corners[b]), max(corners[a], corners[b]))
+                        if key not in mid:
+                            pa, pb = nodes[key[0] - 1], nodes[key[1] - 1]
+                            nodes.append(tuple((pa[d] + pb[d]) / 2 for d in range(3)))
+                            mid[key] = len(nodes)
+                        mids.append(mid[key])
+                    elements.append(corners + mids)
+    held = [i + 1 for i, p in enumerate(nodes) if p[0] <= 1e-9]
+    lines = ["*NODE"] + [f"{i:8d}{x:16.9g}{y:16.9g}{z:16.9g}" for i, (x, y, z)
+                         in enumerate(nodes, start=1)]
+    lines.append("*ELEMENT_SOLID")
+    for e, ns in enumerate(elements, start=1):
+        lines.append(f"{e:8d}{1:8d}")
+        lines.append("".join(f"{m:8d}" for m in ns))
+    lines.append("*INITIAL_VELOCITY_NODE")
+    for i, (x, _, _) in enumerate(nodes, start=1):
+        lines.append(f"{i:10d}{0.0:10.4g}{0.5 * v * x / lx:10.4g}{v * x / lx:10.4g}")
+    return f"""*KEYWORD
+*TITLE
+a clamped bar of 10-node tetrahedra (ELFORM 16), elastic-plastic, whipped
+*CONTROL_TERMINATION
+{end:10.4g}
+*DATABASE_GLSTAT
+    0.0005
+*PART
+bar (ELFORM 16)
+         1         1         1
+*SECTION_SOLID
+         1        16
+*MAT_PLASTIC_KINEMATIC
+         1   7.85e-6     210.0       0.3      0.25       1.0       0.5
+{node_set(1, held)}*BOUNDARY_SPC_SET
+         1         0         1         1         1
+""" + "\n".join(lines) + "\n*END\n"
+
+
 def prism_blocks(n1: int = 3, n2: int = 4, v: float = 10.0, end: float = 6e-5) -> str:
     """Cells of two prisms: block a native ELFORM 15 (N3 = N4, N7 = N8), block b the Keyword
     Manual's pentahedron (N5 = N6, N7 = N8)."""
@@ -751,6 +817,7 @@ def main() -> None:
     (out / "contact_cask.k").write_text(contact_decks.cask_drop(end=2.0e-4))
     (out / "tet_blocks.k").write_text(tet_blocks())
     (out / "tet13_blocks.k").write_text(tet13_blocks())
+    (out / "tet10_bar.k").write_text(tet10_bar())
     (out / "axisym_rod.k").write_text(axisym_rod())
     (out / "erosion.k").write_text(erosion())
     (out / "prism_blocks.k").write_text(prism_blocks())
@@ -759,8 +826,8 @@ def main() -> None:
     (out / "eos_tabulated.k").write_text(eos_tabulated())
     print("wrote tests/data/decks/mixed_conditions.k, structures.k, structures_shell16.k, "
           "rigid_welds.k, contact_blocks.k, contact_tube.k, contact_tied.k, contact_cask.k, "
-          "tet_blocks.k, tet13_blocks.k, axisym_rod.k, erosion.k, prism_blocks.k, joints.k, "
-          "shearfix_blocks.k and eos_tabulated.k")
+          "tet_blocks.k, tet13_blocks.k, tet10_bar.k, axisym_rod.k, erosion.k, prism_blocks.k, "
+          "joints.k, shearfix_blocks.k and eos_tabulated.k")
 
 
 if __name__ == "__main__":

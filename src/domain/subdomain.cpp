@@ -8,6 +8,7 @@
 #include <set>
 #include <stdexcept>
 #include <tuple>
+#include <type_traits>
 
 #include "util/error.hpp"
 
@@ -71,7 +72,7 @@ struct NodeRanks {
 NodeRanks nodeRanks(const model::Model& model, const std::vector<int32_t>& elem_rank) {
   const std::size_t nn = model.nodes.size();
   std::vector<int32_t> count(nn + 1, 0);
-  int32_t en[8];
+  int32_t en[model::kMaxElementNodes];
   for (std::size_t g = 0; g < model.numElements(); ++g) {
     const int k = model.elementNodes(g, en);
     for (int a = 0; a < k; ++a) count[static_cast<std::size_t>(en[a]) + 1]++;
@@ -114,8 +115,9 @@ struct Corner {
 
 // The corners of global element g: shells and beams have a force corner and a moment corner
 // at each node (blocks.hpp, "Slot layout").
-int elementCorners(const model::Model& model, std::size_t g, Corner out[8]) {
-  int32_t en[8];
+constexpr int kMaxCorners = std::max(8, model::kMaxElementNodes);
+int elementCorners(const model::Model& model, std::size_t g, Corner out[kMaxCorners]) {
+  int32_t en[model::kMaxElementNodes];
   const int k = model.elementNodes(g, en);
   const auto family = model.element(g).first;
   const bool rot = family == model::Family::Shell || family == model::Family::Beam;
@@ -252,11 +254,16 @@ class SubdomainBuilder {
     counts();
     nodes();
     // A part's solids split by formulation (*CONTROL_SOLID ESORT sorts its tetrahedra out).
+    // The 10-node tetrahedra (ELFORM 16) make blocks of their own type (Tet10Block).
     for (auto& [key, elems, shared] :
          groupByPart(model::Family::Solid, model.solids,
-                     [&](std::size_t e) { return model.solidFormulation(e); }))
-      addBlock(solidBlock(key.first, key.second, elems, shared), model::Family::Solid,
-               sd.solid_blocks);
+                     [&](std::size_t e) { return model.solidFormulation(e); })) {
+      if (model::isQuadraticTetrahedron(key.second))
+        addBlock(tet10Block(key.first, elems, shared), model::Family::Solid, sd.tet10_blocks);
+      else
+        addBlock(solidBlock(key.first, key.second, elems, shared), model::Family::Solid,
+                 sd.solid_blocks);
+    }
     for (auto& [key, elems, shared] : groupByPart(model::Family::Shell, model.shells))
       for (auto& [triangles, sub, sub_shared] : sortTriangles(key.first, elems, shared))
         addBlock(shellBlock(key.first, sub, sub_shared, triangles), model::Family::Shell,
@@ -377,6 +384,9 @@ class SubdomainBuilder {
       if (elem_rank[offset + e] != rank) continue;
       bool shared = false;
       for (int32_t n : list.nodes[e]) shared = shared || nr.shared(static_cast<std::size_t>(n));
+      if constexpr (std::is_same_v<List, model::Solids>)
+        if (list.quadratic(e))
+          for (int32_t n : list.mid[e]) shared = shared || nr.shared(static_cast<std::size_t>(n));
       (shared ? first : rest)[Key{list.part[e], form(e)}].push_back(int32_t(e));
     }
     std::vector<Group> out;
@@ -421,7 +431,7 @@ class SubdomainBuilder {
     const std::size_t offset = model.familyOffset(family);
     const int per = Block::kSlotsPerElement;
     b.slot_offset = slot;
-    Corner cs[8];
+    Corner cs[kMaxCorners];
     for (std::size_t k = 0; k < b.size(); ++k) {
       const int n = elementCorners(model, offset + std::size_t(b.elem[k]), cs);
       for (int i = 0; i < n; ++i) {
@@ -453,6 +463,38 @@ class SubdomainBuilder {
              model::isFullyIntegratedHex(b.elform) ? 8 : (b.elform == 15 ? 2 : 0),
              materials::historyCount(b.law));
     if (b.elform == 13) b.ev_nodal.assign(b.paddedSize(), 0.0);
+    return b;
+  }
+
+  Tet10Block tet10Block(int32_t part_index, const std::vector<int32_t>& elems,
+                        std::size_t shared_count) const {
+    const auto& part = model.parts[static_cast<std::size_t>(part_index)];
+    const auto& mat = model.materials[static_cast<std::size_t>(part.material)];
+    Tet10Block b;
+    b.part = part_index;
+    b.part_id = part.id;
+    b.elem = elems;
+    b.shared_count = shared_count;
+    b.shared_end =
+        std::min(elems.size(), (shared_count + kSolidBatch - 1) / kSolidBatch * kSolidBatch);
+    b.elem_id.resize(elems.size());
+    b.conn.resize(elems.size());
+    for (std::size_t k = 0; k < elems.size(); ++k) {
+      const auto e = static_cast<std::size_t>(elems[k]);
+      b.elem_id[k] = model.solids.id[e];
+      for (std::size_t a = 0; a < 4; ++a)
+        b.conn[k][a] = local_of[static_cast<std::size_t>(model.solids.nodes[e][a])];
+      for (std::size_t a = 0; a < 6; ++a)
+        b.conn[k][4 + a] = local_of[static_cast<std::size_t>(model.solids.mid[e][a])];
+    }
+    b.law = lawOf(model, part, true);
+    b.rho0 = mat.rho;
+    b.rigid = isRigid(model, part);
+    b.erosion = mat.erosion.forSolids();
+    if (b.erosion.needsStrain())
+      throw util::InputError(part.where.str() + ": part " + std::to_string(part.id) +
+                             ": strain erosion criteria (*MAT_ADD_EROSION) are not supported "
+                             "on 10-node tetrahedra (*SECTION_SOLID ELFORM 16)");
     return b;
   }
 
@@ -620,7 +662,7 @@ class SubdomainBuilder {
     };
     for (const auto& c : internal) addSend(c);
     for (const auto& c : pressure) addSend(c);
-    Corner cs[8];
+    Corner cs[kMaxCorners];
     for (std::size_t g = 0; g < model.numElements(); ++g) {
       const int q = elem_rank[g];
       if (q == rank) continue;
@@ -741,7 +783,8 @@ int64_t findElement(const Subdomain& sd, int64_t global_index, F&& value) {
     case model::Family::Discrete:
       return findIn(sd.discrete_blocks, index, value);
     default:
-      return findIn(sd.solid_blocks, index, value);
+      if (const int64_t found = findIn(sd.solid_blocks, index, value); found != 0) return found;
+      return findIn(sd.tet10_blocks, index, value);
   }
 }
 }  // namespace

@@ -111,6 +111,39 @@ struct SolidBlock : BlockBase {
               int gauss_points = 0, int history_count = 0);
 };
 
+// 10-node tetrahedra (*SECTION_SOLID ELFORM 16; src/elements/tet10.hpp): a block type of its
+// own in the solid family. Its elements have ten force-carrying nodes, so ten slots each (the
+// corners N1..N4, then the mid-side nodes N5..N10), and four integration points with their own
+// stress and history; SolidBlock's eight-slot layout and its hourglass, nodal-pressure and
+// deformation-gradient state have nothing to do here.
+struct Tet10Block : BlockBase {
+  static constexpr model::Family kFamily = model::Family::Solid;
+  static constexpr int kSlotsPerElement = 10;  // force slot per node
+  static constexpr int kPoints = 4;            // integration points
+  materials::Law law;
+  double rho0 = 0.0;
+  std::vector<std::array<int32_t, 10>> conn;  // local node indices, N1..N10
+  // Element-level view for output and sums: the mean over the points of the stress (Voigt,
+  // tensor shear, blocked like SolidBlock::sig) and of the effective plastic strain.
+  std::vector<double> sig, eps_p;
+  // Point state, point-major: point q of element e at q * paddedSize() + e (history variable k
+  // at (q history + k) paddedSize() + e).
+  std::array<std::vector<double>, 6> sig_ip, alpha_ip;
+  std::vector<double> eps_p_ip, hist_ip;
+  int history = 0;
+  std::vector<double> q_bulk;      // bulk viscosity q of the last pass (trapezoidal work)
+  std::vector<double> vol0, vol;   // initial and current volume
+  std::vector<double> e_int;       // internal energy
+  std::vector<uint8_t> active;     // 0 once eroded
+  std::vector<uint8_t> failed;     // eroded because a point failed
+  std::vector<double> mass_scale;  // mass scaling factor (>= 1), padded; empty if none
+  double& sigAt(int k, std::size_t e) { return sig[SolidBlock::blocked(6, k, e)]; }
+  double sigAt(int k, std::size_t e) const { return sig[SolidBlock::blocked(6, k, e)]; }
+  std::size_t paddedSize() const {
+    return (elem.size() + kSolidBatch - 1) / kSolidBatch * kSolidBatch;
+  }
+};
+
 // Corner slots this rank sends to, and receives from, one neighbour each cycle (the solver's
 // comm::Exchange carries them). Both sides list the slots in ascending (global source, corner)
 // order, so the message needs no ids.
@@ -148,6 +181,7 @@ struct Subdomain {
   std::vector<double> inertia;
 
   std::vector<SolidBlock> solid_blocks;
+  std::vector<Tet10Block> tet10_blocks;  // the 10-node tetrahedra of the solid family
   std::vector<ShellBlock> shell_blocks;
   std::vector<BeamBlock> beam_blocks;
   std::vector<DiscreteBlock> discrete_blocks;
@@ -158,6 +192,7 @@ struct Subdomain {
   template <class F>
   void forEachBlockList(F&& visit) {
     visit(solid_blocks, model::Family::Solid);
+    visit(tet10_blocks, model::Family::Solid);
     visit(shell_blocks, model::Family::Shell);
     visit(beam_blocks, model::Family::Beam);
     visit(discrete_blocks, model::Family::Discrete);
@@ -165,11 +200,13 @@ struct Subdomain {
   template <class F>
   void forEachBlockList(F&& visit) const {
     visit(solid_blocks, model::Family::Solid);
+    visit(tet10_blocks, model::Family::Solid);
     visit(shell_blocks, model::Family::Shell);
     visit(beam_blocks, model::Family::Beam);
     visit(discrete_blocks, model::Family::Discrete);
   }
-  // Every block of every family, in family order (solids, shells, beams, discretes).
+  // Every block of every family, in family order (solids and 10-node tetrahedra, shells,
+  // beams, discretes).
   template <class F>
   void forEachBlock(F&& visit) {
     forEachBlockList([&](auto& blocks, model::Family) {

@@ -13,6 +13,7 @@
 #include "elements/hex8.hpp"
 #include "elements/shell.hpp"
 #include "elements/solid2d.hpp"
+#include "elements/tet10.hpp"
 #include "model/model.hpp"
 
 namespace crumple::elements {
@@ -39,6 +40,14 @@ struct FamilyTraits<domain::SolidBlock> {
                ? computeFullSolidForces(b, in.x, in.v, in.dt, in.bv, in.slots, first, last)
                : computeSolidForces(b, in.x, in.v, in.dt, in.bv, in.slots, first, last,
                                     in.nodal_ev);
+  }
+};
+
+template <>
+struct FamilyTraits<domain::Tet10Block> {
+  static BlockStatus forces(domain::Tet10Block& b, const KernelInputs& in, std::size_t first,
+                            std::size_t last) {
+    return computeTet10Forces(b, in.x, in.v, in.dt, in.bv, in.slots, first, last);
   }
 };
 

@@ -91,33 +91,7 @@ struct PrismRule {
 // point's volume weight det(J) times the rule's weight.
 template <class Rule>
 void gradientsAt(int q, const NodalBatch& x, NodalBatch& grad, LaneArray& det) {
-  constexpr const auto& kShape = Rule::kShape;
-  for (int l = 0; l < kBatch; ++l) {
-    double J[3][3];  // J[i][j] = d x_j / d xi_i
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        double s = 0.0;
-        for (int a = 0; a < 8; ++a) s += kShape.d[q][a][i] * x[j][a][l];
-        J[i][j] = s;
-      }
-    const double c00 = J[1][1] * J[2][2] - J[1][2] * J[2][1];
-    const double c01 = J[1][2] * J[2][0] - J[1][0] * J[2][2];
-    const double c02 = J[1][0] * J[2][1] - J[1][1] * J[2][0];
-    const double d = J[0][0] * c00 + J[0][1] * c01 + J[0][2] * c02;
-    det[l] = Rule::kWeight * d;
-    const double r = d != 0.0 ? 1.0 / d : 0.0;
-    // inverse: inv[j][i] with dN/dx_j = sum_i inv[j][i] dN/dxi_i
-    const double inv[3][3] = {{c00 * r, (J[0][2] * J[2][1] - J[0][1] * J[2][2]) * r,
-                               (J[0][1] * J[1][2] - J[0][2] * J[1][1]) * r},
-                              {c01 * r, (J[0][0] * J[2][2] - J[0][2] * J[2][0]) * r,
-                               (J[0][2] * J[1][0] - J[0][0] * J[1][2]) * r},
-                              {c02 * r, (J[0][1] * J[2][0] - J[0][0] * J[2][1]) * r,
-                               (J[0][0] * J[1][1] - J[0][1] * J[1][0]) * r}};
-    for (int a = 0; a < 8; ++a)
-      for (int j = 0; j < 3; ++j)
-        grad[j][a][l] = inv[j][0] * kShape.d[q][a][0] + inv[j][1] * kShape.d[q][a][1] +
-                        inv[j][2] * kShape.d[q][a][2];
-  }
+  detail::isoparametricGradients<8>(Rule::kShape.d[q], Rule::kWeight, x, grad, det);
 }
 
 // ---- ELFORM -1, -2: the transverse shear correction ------------------------------------------

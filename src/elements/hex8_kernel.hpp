@@ -88,6 +88,42 @@ inline void tetLengthArea(const NodalBatch& b, LaneArray& area) {
   }
 }
 
+// The isoparametric gradients of one integration point of the multi-point solids (hex8_full.cpp,
+// tet10.cpp): from the natural derivatives d[a][i] = dN_a / dxi_i of the N shape functions at
+// the point and the nodal coordinates x[c][a][lane], the Jacobian J_ij = d x_j / d xi_i, its
+// determinant times the rule's `weight` (the point's volume weight, det) and grad[j][a] =
+// dN_a / dx_j = sum_i (J^-1)_ji dN_a / dxi_i.
+template <int N>
+inline void isoparametricGradients(const double (&d)[N][3], double weight,
+                                   const double (&x)[3][N][kBatch], double (&grad)[3][N][kBatch],
+                                   LaneArray& det) {
+  for (int l = 0; l < kBatch; ++l) {
+    double J[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        double s = 0.0;
+        for (int a = 0; a < N; ++a) s += d[a][i] * x[j][a][l];
+        J[i][j] = s;
+      }
+    const double c00 = J[1][1] * J[2][2] - J[1][2] * J[2][1];
+    const double c01 = J[1][2] * J[2][0] - J[1][0] * J[2][2];
+    const double c02 = J[1][0] * J[2][1] - J[1][1] * J[2][0];
+    const double dj = J[0][0] * c00 + J[0][1] * c01 + J[0][2] * c02;
+    det[l] = weight * dj;
+    const double r = dj != 0.0 ? 1.0 / dj : 0.0;
+    // inverse: inv[j][i] with dN/dx_j = sum_i inv[j][i] dN/dxi_i
+    const double inv[3][3] = {{c00 * r, (J[0][2] * J[2][1] - J[0][1] * J[2][2]) * r,
+                               (J[0][1] * J[1][2] - J[0][2] * J[1][1]) * r},
+                              {c01 * r, (J[0][0] * J[2][2] - J[0][2] * J[2][0]) * r,
+                               (J[0][2] * J[1][0] - J[0][0] * J[1][2]) * r},
+                              {c02 * r, (J[0][1] * J[2][0] - J[0][0] * J[2][1]) * r,
+                               (J[0][0] * J[1][1] - J[0][1] * J[1][0]) * r}};
+    for (int a = 0; a < N; ++a)
+      for (int j = 0; j < 3; ++j)
+        grad[j][a][l] = inv[j][0] * d[a][0] + inv[j][1] * d[a][1] + inv[j][2] * d[a][2];
+  }
+}
+
 // Lane l of a batch starting at `first` with `n` live elements reads element first+min(l,n-1).
 inline std::size_t laneElement(std::size_t first, int n, int l) {
   return first + static_cast<std::size_t>(std::min(l, n - 1));

@@ -247,7 +247,7 @@ const std::vector<int32_t>& Context::partNodes(int32_t part) {
   auto it = part_nodes_.find(part);
   if (it != part_nodes_.end()) return it->second;
   std::vector<int32_t> nodes;
-  int32_t n[8];
+  int32_t n[kMaxElementNodes];
   for (std::size_t g = 0; g < model.numElements(); ++g)
     if (model.elementPart(g) == part) nodes.insert(nodes.end(), n, n + model.elementNodes(g, n));
   std::sort(nodes.begin(), nodes.end());
@@ -764,6 +764,7 @@ Model buildModel(const deck::Deck& deck, const std::filesystem::path& path,
   ctx.attempt([&] { finishPlaneSph(ctx); });
   inferUnits(ctx.model);
   ctx.attempt([&] { noteDegenerateSolids(ctx); });
+  ctx.attempt([&] { refuseQuadraticTetFeatures(ctx); });
   if (model.nodes.size() == 0)
     ctx.fail(path.string() + ": the deck defines no nodes (*NODE)");
   else if (model.numElements() == 0 && model.sph.size() == 0 && !options.allow_unsupported)

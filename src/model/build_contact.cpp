@@ -333,7 +333,7 @@ Side readSide(Context& ctx, const Card& c, std::string_view id_field, std::strin
     // Beam and spring nodes of the parts take part as nodes (they carry no segment).
     for (std::size_t g = m.familyOffset(Family::Beam); g < m.numElements(); ++g)
       if (in_part[std::size_t(m.elementPart(g))] && type != 0) {
-        int32_t n[8];
+        int32_t n[kMaxElementNodes];
         side.nodes.insert(side.nodes.end(), n, n + m.elementNodes(g, n));
       }
   }

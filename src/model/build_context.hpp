@@ -202,6 +202,9 @@ class Context {
     std::array<double, 4> real{};
     int32_t aux = kNone;
     int32_t section = kNone;  // *ELEMENT_BEAM_THICKNESS: the element's own beam section
+    // *ELEMENT_SOLID of an ELFORM 16 section: the mid-side nodes N5..N10 (Solids::mid); else
+    // mid[0] == kNone.
+    std::array<int32_t, 6> mid{kNone, kNone, kNone, kNone, kNone, kNone};
   };
   std::vector<ElementInput<8>> solid_input;
   std::vector<ElementInput<4>> shell_input;
@@ -270,6 +273,10 @@ void finishPlaneSph(Context&);
 void readControlSolid(Context&, const deck::Keyword&, const KeywordOptions&);
 // After every keyword: the degenerate solids that run as hexahedra, noted per part.
 void noteDegenerateSolids(Context&);
+// Refuses what needs the faces or the element records of 10-node tetrahedra (ELFORM 16) and
+// Crumple does not give them yet: contact surfaces, the d3plot database, cross sections and
+// element histories (build_mesh.cpp).
+void refuseQuadraticTetFeatures(Context&);
 // After every keyword (build_planar.cpp): the checks of 2D solids (*SECTION_SHELL ELFORM 13,
 // 15): their laws and hourglass types, a model of 2D solids only, radii x >= 0; their nodes'
 // z and rotational freedoms are held by SPCs.

@@ -131,7 +131,7 @@ void finishDamping(Context& ctx) {
   if (m.mass_damping.empty()) return;
   std::vector<int32_t> count(m.nodes.size(), 0);
   const std::size_t ne = m.numElements();
-  int32_t nodes[8];
+  int32_t nodes[kMaxElementNodes];
   for (std::size_t g = 0; g < ne; ++g) {
     const int k = m.elementNodes(g, nodes);
     for (int a = 0; a < k; ++a) ++count[static_cast<std::size_t>(nodes[a])];

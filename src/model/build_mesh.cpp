@@ -211,24 +211,60 @@ void readSolids(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
     const bool two_cards = std::all_of(ids.begin(), ids.end(), [](int64_t n) { return n == 0; }) &&
                            std::all_of(kN, kN + 8, [&](auto n) { return c.blank(n); });
     const Card* nc = &c;
+    const int elform = sectionElform(ctx, part);
+    std::array<int64_t, 2> n9_n10{};
     if (two_cards) {
       if (cur.atEnd()) c.fail("N1", "the element has no nodes");
       nc = &cur.read(spec.card("card 2"));
-      for (auto n : {kN[8], kN[9]})
-        if (nc->integer(n) != 0)
-          ctx.reject(*nc, n, "10-node tetrahedra are not supported (8-node solids only)");
+      for (int i = 0; i < 2; ++i) n9_n10[std::size_t(i)] = nc->integer(kN[8 + i]);
+      if (!isQuadraticTetrahedron(elform) && (n9_n10[0] != 0 || n9_n10[1] != 0))
+        ctx.reject(*nc, n9_n10[0] != 0 ? kN[8] : kN[9],
+                   "a 10-node tetrahedron needs a *SECTION_SOLID with ELFORM 16 (its part's "
+                   "section has ELFORM " +
+                       std::to_string(elform) + ")");
       for (int i = 0; i < 8; ++i) ids[i] = nc->integer(kN[i]);
+    }
+    Context::ElementInput<8> s{eid, part, {}, c.fileIndex(), c.lineNumber()};
+    if (isQuadraticTetrahedron(elform)) {
+      // 10 nodes on the two-card form: corners N1..N4, mid-side nodes N5..N10.
+      if (!two_cards)
+        c.fail("N1",
+               "a 10-node tetrahedron (*SECTION_SOLID ELFORM 16) is written on two cards: EID "
+               "PID on the first, N1..N10 on the second");
+      for (int i = 0; i < 10; ++i) {
+        const int64_t id = i < 8 ? ids[std::size_t(i)] : n9_n10[std::size_t(i - 8)];
+        if (id == 0)
+          nc->fail(kN[i],
+                   "node id missing: a 10-node tetrahedron (*SECTION_SOLID ELFORM 16) needs "
+                   "N1..N10");
+        const int32_t n = ctx.node(*nc, kN[i], id);
+        if (i < 4)
+          s.nodes[std::size_t(i)] = n;
+        else
+          s.mid[std::size_t(i - 4)] = n;
+      }
+      for (int i = 4; i < 8; ++i) s.nodes[std::size_t(i)] = s.nodes[3];
+      int32_t all[10];
+      for (int i = 0; i < 4; ++i) all[i] = s.nodes[std::size_t(i)];
+      for (int i = 0; i < 6; ++i) all[4 + i] = s.mid[std::size_t(i)];
+      for (int i = 0; i < 10; ++i)
+        for (int j = 0; j < i; ++j)
+          if (all[i] == all[j])
+            nc->fail(kN[i], "a 10-node tetrahedron needs 10 distinct nodes (" + std::string(kN[i]) +
+                                " repeats " + std::string(kN[j]) + ")");
+      ctx.solid_input.push_back(s);
+      ctx.collect(cur);
+      continue;
     }
     // A tetrahedron given by N1..N4 alone: LS-DYNA's degenerate form repeats N4 (n4=...=n8).
     if (ids[3] != 0 && std::all_of(ids.begin() + 4, ids.end(), [](int64_t n) { return n == 0; }))
       std::fill(ids.begin() + 4, ids.end(), ids[3]);
-    Context::ElementInput<8> s{eid, part, {}, c.fileIndex(), c.lineNumber()};
     for (int i = 0; i < 8; ++i) {
       if (ids[i] == 0) nc->fail(kN[i], "node id missing");
       s.nodes[i] = ctx.node(*nc, kN[i], ids[i]);
     }
-    if (isTetrahedron(sectionElform(ctx, part))) s.nodes = tetrahedronNodes(*nc, s.nodes);
-    if (sectionElform(ctx, part) == 15) s.nodes = pentahedronNodes(*nc, s.nodes);
+    if (isTetrahedron(elform)) s.nodes = tetrahedronNodes(*nc, s.nodes);
+    if (elform == 15) s.nodes = pentahedronNodes(*nc, s.nodes);
     ctx.solid_input.push_back(s);
     ctx.collect(cur);
   }
@@ -266,8 +302,12 @@ void finishFamily(Context& ctx, std::vector<Context::ElementInput<N>>& in, List&
 }  // namespace
 
 void finishSolids(Context& ctx) {
-  auto none = [](auto&, const auto&) {};
-  finishFamily(ctx, ctx.solid_input, ctx.model.solids, "*ELEMENT_SOLID", none);
+  const bool quadratic = std::any_of(ctx.solid_input.begin(), ctx.solid_input.end(),
+                                     [](const auto& e) { return e.mid[0] != kNone; });
+  finishFamily(ctx, ctx.solid_input, ctx.model.solids, "*ELEMENT_SOLID",
+               [quadratic](Solids& s, const Context::ElementInput<8>& e) {
+                 if (quadratic) s.mid.push_back(e.mid);
+               });
   finishFamily(ctx, ctx.shell_input, ctx.model.shells, "*ELEMENT_SHELL",
                [](Shells& s, const Context::ElementInput<4>& e) { s.thickness.push_back(e.real); });
   finishFamily(ctx, ctx.beam_input, ctx.model.beams, "*ELEMENT_BEAM",
@@ -442,10 +482,13 @@ void readSectionSolid(Context& ctx, const deck::Keyword& kw, const KeywordOption
     // selective-reduced, -1 and -2 the same for poor aspect ratios ("accurate" and "efficient";
     // both run one formulation here, src/elements/hex8_full.cpp), 10 one-point tetrahedron,
     // 13 one-point nodal-pressure tetrahedron, 15 two-point pentahedron; 0 is the one-point
-    // corotational form of *MAT_MODIFIED_HONEYCOMB, run here as 1 with a note. The rest are
-    // refused rather than silently run as something else.
+    // corotational form of *MAT_MODIFIED_HONEYCOMB, run here as 1 with a note; 16 the 10-node
+    // tetrahedron (src/elements/tet10.cpp). 17, the 10-node composite tetrahedron, is not 16
+    // with another rule (its strain field is assembled from 12 linear sub-tetrahedra) and is
+    // refused with the rest rather than silently run as something else.
     if (elform == 1 || isFullyIntegratedHex(static_cast<int>(elform)) ||
-        isTetrahedron(static_cast<int>(elform)) || elform == 15) {
+        isTetrahedron(static_cast<int>(elform)) || elform == 15 ||
+        isQuadraticTetrahedron(static_cast<int>(elform))) {
       s.elform = static_cast<int>(elform);
     } else if (elform == 0) {
       s.elform = 1;
@@ -453,12 +496,21 @@ void readSectionSolid(Context& ctx, const deck::Keyword& kw, const KeywordOption
     } else {
       // A definition Crumple cannot run: an error only when an element uses it.
       ctx.define(Kind::Section, s.id, c, "SECID");
-      ctx.defineUnsupported(Kind::Section, s.id, kw.name + " ELFORM=" + std::to_string(elform),
+      ctx.defineUnsupported(Kind::Section, s.id,
+                            kw.name + " ELFORM=" + std::to_string(elform) +
+                                (elform == 17 ? " (the 10-node composite tetrahedron, whose strain "
+                                                "field is not ELFORM 16's)"
+                                              : ""),
                             c.where());
-      ctx.reportUnsupported(kw,
-                            "ELFORM " + std::to_string(elform) +
-                                " not supported yet (1, 2, -1, -2, 10, 13 and 15 are; 0 runs as 1)",
-                            false);
+      ctx.reportUnsupported(
+          kw,
+          "ELFORM " + std::to_string(elform) +
+              (elform == 17 ? " (the 10-node composite tetrahedron) not supported: its "
+                              "strain field is not ELFORM 16's, so it does not run as "
+                              "16 (1, 2, -1, -2, 10, 13, 15 and 16 are; 0 runs as 1)"
+                            : " not supported yet (1, 2, -1, -2, 10, 13, 15 and 16 "
+                              "are; 0 runs as 1)"),
+          false);
       ctx.collect(cur);
       continue;
     }
@@ -582,7 +634,9 @@ void noteDegenerateSolids(Context& ctx) {
   for (std::size_t e = 0; e < m.solids.size(); ++e) {
     const Degenerate shape = degenerateShape(m.solids.nodes[e]);
     const int form = m.solidFormulation(e);
-    if (shape == Degenerate::None || isTetrahedron(form) || form == 15) continue;
+    if (shape == Degenerate::None || isTetrahedron(form) || form == 15 ||
+        isQuadraticTetrahedron(form))
+      continue;
     ++count[m.solids.part[e]][static_cast<std::size_t>(shape) - 1];
   }
   for (const auto& [part, n] : count) {
@@ -600,6 +654,60 @@ void noteDegenerateSolids(Context& ctx) {
                         : ""),
         p.where);
   }
+}
+
+void refuseQuadraticTetFeatures(Context& ctx) {
+  const Model& m = ctx.model;
+  if (m.solids.mid.empty()) return;
+  std::size_t first = m.solids.size();  // the first 10-node tetrahedron
+  std::vector<char> on_tet10(m.nodes.size(), 0);
+  for (std::size_t e = 0; e < m.solids.size(); ++e) {
+    if (!m.solids.quadratic(e)) continue;
+    first = std::min(first, e);
+    for (int a = 0; a < 4; ++a) on_tet10[std::size_t(m.solids.nodes[e][std::size_t(a)])] = 1;
+    for (int32_t n : m.solids.mid[e]) on_tet10[std::size_t(n)] = 1;
+  }
+  if (first == m.solids.size()) return;
+  const std::string element = "solid element " + std::to_string(m.solids.id[first]) +
+                              " is a 10-node tetrahedron (*SECTION_SOLID ELFORM 16)";
+  for (const auto& c : m.contacts)
+    for (const ContactSurface* side : {&c.a, &c.b}) {
+      bool touches = std::any_of(side->nodes.begin(), side->nodes.end(),
+                                 [&](int32_t n) { return on_tet10[std::size_t(n)] != 0; });
+      for (const auto& s : side->segments)
+        for (int32_t n : s) touches = touches || on_tet10[std::size_t(n)] != 0;
+      if (touches) {
+        ctx.fail(c.where.str() + ": " + c.keyword + " " + std::to_string(c.id) +
+                 ": a contact surface on 10-node tetrahedra is not supported (" + element +
+                 "; its faces are quadratic and contact reads flat 3- and 4-node segments)");
+        return;
+      }
+    }
+  // Pressure, airbag and blast segments: a 3- or 4-node segment on a quadratic face would load
+  // the corners only (the consistent load of a 6-node face puts it on the mid-side nodes).
+  for (const auto& p : m.pressure_loads)
+    if (std::any_of(p.nodes.begin(), p.nodes.end(),
+                    [&](int32_t n) { return on_tet10[std::size_t(n)] != 0; })) {
+      ctx.fail(m.deck_path + ": " +
+               (p.airbag != kNone  ? "*AIRBAG"
+                : p.blast != kNone ? "*LOAD_BLAST_SEGMENT_SET"
+                                   : "*LOAD_SEGMENT") +
+               ": a segment on 10-node tetrahedra is not supported (" + element + ")");
+      break;
+    }
+  if (m.controls.d3plot)
+    ctx.fail(m.deck_path + ": *DATABASE_BINARY_D3PLOT: the d3plot database of 10-node " +
+             "tetrahedra is not written yet (" + element + "); the VTU results are");
+  if (!m.cross_sections.empty())
+    ctx.fail(m.deck_path + ": *DATABASE_CROSS_SECTION: section forces through 10-node " +
+             "tetrahedra are not supported (" + element + ")");
+  for (int32_t e : m.history_elements[std::size_t(Family::Solid)])
+    if (m.solids.quadratic(std::size_t(e))) {
+      ctx.fail(m.deck_path + ": *DATABASE_HISTORY_SOLID: element histories of 10-node " +
+               "tetrahedra are not written yet (solid element " +
+               std::to_string(m.solids.id[std::size_t(e)]) + ")");
+      break;
+    }
 }
 
 }  // namespace crumple::model::build

@@ -160,7 +160,7 @@ void finishSph(Context& ctx) {
                              ", which SPH particles do not support (rigid and hyperelastic laws)");
   }
   std::vector<char> on_element(ctx.model.nodes.size(), 0);
-  int32_t en[8];
+  int32_t en[kMaxElementNodes];
   for (std::size_t g = 0; g < ctx.model.numElements(); ++g) {
     const int k = ctx.model.elementNodes(g, en);
     for (int a = 0; a < k; ++a) on_element[std::size_t(en[a])] = 1;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <iterator>
 #include <string>
+#include <type_traits>
 
 namespace crumple::model {
 
@@ -120,8 +121,16 @@ std::pair<Family, int32_t> Model::element(std::size_t g) const {
 
 namespace {
 template <class List>
-int copyNodes(const List& list, int32_t i, int32_t out[8]) {
+int copyNodes(const List& list, int32_t i, int32_t out[kMaxElementNodes]) {
   const auto& n = list.nodes[static_cast<std::size_t>(i)];
+  if constexpr (std::is_same_v<List, Solids>)
+    if (list.quadratic(static_cast<std::size_t>(i))) {
+      // The 10-node tetrahedron: its corners, then its mid-side nodes.
+      for (int a = 0; a < 4; ++a) out[a] = n[static_cast<std::size_t>(a)];
+      for (int a = 0; a < 6; ++a)
+        out[4 + a] = list.mid[static_cast<std::size_t>(i)][std::size_t(a)];
+      return 10;
+    }
   for (int a = 0; a < List::kNodes; ++a) out[a] = n[static_cast<std::size_t>(a)];
   return List::kNodes;
 }
@@ -141,7 +150,7 @@ auto onFamily(const Model& m, std::size_t g, F&& f) {
 }
 }  // namespace
 
-int Model::elementNodes(std::size_t g, int32_t out[8]) const {
+int Model::elementNodes(std::size_t g, int32_t out[kMaxElementNodes]) const {
   return onFamily(*this, g, [&](const auto& list, int32_t i) { return copyNodes(list, i, out); });
 }
 

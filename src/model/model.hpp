@@ -143,6 +143,11 @@ inline bool isTetrahedron(int elform) {
   return elform == 10 || elform == 13;
 }
 
+// The 10-node tetrahedron: ELFORM 16 (src/elements/tet10.cpp).
+inline bool isQuadraticTetrahedron(int elform) {
+  return elform == 16;
+}
+
 // *SECTION_SHELL: ELFORM 2 Belytschko-Tsay (default), 4 C0 triangle; NIP points through the
 // thickness, Gauss or (QR/IRID = -? / Lobatto) Lobatto; T1-T4 corner thicknesses.
 struct SectionShell {
@@ -235,7 +240,18 @@ struct ElementList {
 
 // 8-node hexahedra; wedges and tetrahedra as degenerate hexes (repeated node indices),
 // the LS-DYNA convention (tet: n4=n5=n6=n7=n8; wedge: n5=n6, n7=n8).
-struct Solids : ElementList<8> {};
+// 10-node tetrahedra (*SECTION_SOLID ELFORM 16) keep their corners in `nodes` as the
+// 4-node tetrahedron N1 N2 N3 N4 N4 N4 N4 N4 (so that faces, shapes and the dual graph see the
+// corner tetrahedron) and their mid-side nodes N5..N10 in `mid` (N5 on edge 1-2, N6 2-3, N7 3-1,
+// N8 1-4, N9 2-4, N10 3-4; Keyword Manual, *ELEMENT_SOLID). `mid` is empty when the model has
+// no 10-node solid, else one entry per solid (kNone for the others).
+struct Solids : ElementList<8> {
+  std::vector<std::array<int32_t, 6>> mid;
+  bool quadratic(std::size_t e) const { return !mid.empty() && mid[e][0] != kNone; }
+};
+
+// The most nodes that carry forces of one element (the 10-node tetrahedron's).
+inline constexpr int kMaxElementNodes = 10;
 
 // 4-node shells; n3 == n4 is a triangle (LS-DYNA convention).
 struct Shells : ElementList<4> {
@@ -596,9 +612,9 @@ struct Model {
   std::size_t numElements() const;
   // Family and index within it of global element g.
   std::pair<Family, int32_t> element(std::size_t g) const;
-  // The nodes that carry forces of global element g (solid 8, shell 4, beam and discrete 2),
-  // written to out; returns the count.
-  int elementNodes(std::size_t g, int32_t out[8]) const;
+  // The nodes that carry forces of global element g (solid 8, 10-node tetrahedron 10, shell 4,
+  // beam and discrete 2), written to out; returns the count.
+  int elementNodes(std::size_t g, int32_t out[kMaxElementNodes]) const;
   int32_t elementPart(std::size_t g) const;
   int64_t elementId(std::size_t g) const;
   // The formulation solid e runs: its section's ELFORM (1, 2, 10 or 15), or 10 for a

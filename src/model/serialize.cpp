@@ -28,12 +28,14 @@ void fields(A& a, M& m) {
   a(m.units.name);
   a(m.units.source);
   util::fieldCount<2>(m.nodes);
-  util::fieldCount<3>(m.solids);  // shells, beams and discretes add to this base (no check)
+  // The element lists' base (solids, shells, beams and discretes add to it: no check there).
+  util::fieldCount<3>(static_cast<const model::ElementList<8>&>(m.solids));
   a(m.nodes.id);
   a(m.nodes.x);
   a(m.solids.id);
   a(m.solids.part);
   a(m.solids.nodes);
+  a(m.solids.mid);
   a(m.shells.id);
   a(m.shells.part);
   a(m.shells.nodes);

@@ -540,6 +540,7 @@ void ResultsWriter::writePlotState(const solver::Solver& s) {
     model::Family family;
     const domain::BlockBase* blk;
     std::size_t k;
+    bool tet10 = false;  // a domain::Tet10Block's (else the family's block type)
   };
   std::vector<Cell> cells;
   sd.forEachBlockList([&](const auto& blocks, model::Family family) {
@@ -548,7 +549,8 @@ void ResultsWriter::writePlotState(const solver::Solver& s) {
         // Eroded elements are not drawn (discrete elements do not erode).
         if constexpr (requires { blk.active; })
           if (!blk.active[k]) continue;
-        cells.push_back({sd.globalElement(family, blk.elem[k]), family, &blk, k});
+        cells.push_back({sd.globalElement(family, blk.elem[k]), family, &blk, k,
+                         std::is_same_v<std::decay_t<decltype(blk)>, domain::Tet10Block>});
       }
   });
   std::sort(cells.begin(), cells.end(),
@@ -569,6 +571,18 @@ void ResultsWriter::writePlotState(const solver::Solver& s) {
     double eps_layers[3] = {};
     switch (c.family) {
       case model::Family::Solid: {
+        if (c.tet10) {
+          // Drawn as its corner tetrahedron (N1 N2 N3 N4 N4 N4 N4 N4) with the points' mean
+          // stress.
+          const auto& t = static_cast<const domain::Tet10Block&>(*c.blk);
+          sizes[i] = 8;
+          for (int a = 0; a < 8; ++a) conn[8 * i + a] = t.conn[c.k][std::size_t(std::min(a, 3))];
+          for (int l = 0; l < 3; ++l) {
+            for (int k = 0; k < 6; ++k) layers[l][k] = t.sigAt(k, c.k);
+            eps_layers[l] = t.eps_p.empty() ? 0.0 : t.eps_p[c.k];
+          }
+          break;
+        }
         const auto& b = static_cast<const domain::SolidBlock&>(*c.blk);
         sizes[i] = 8;
         for (int a = 0; a < 8; ++a) conn[8 * i + a] = b.conn[c.k][a];

@@ -21,7 +21,7 @@ Incidence nodeElements(const model::Model& model) {
   const std::size_t nn = model.nodes.size();
   Incidence inc;
   inc.ptr.assign(nn + 1, 0);
-  int32_t d[8];
+  int32_t d[model::kMaxElementNodes];
   for (std::size_t e = 0; e < ne; ++e) {
     const int k = elementDistinctNodes(model, e, d);
     for (int i = 0; i < k; ++i) {
@@ -54,7 +54,7 @@ int anyElementFaces(const model::Model& model, std::size_t g, int32_t faces[6][4
   const auto [family, i] = model.element(g);
   if (family == model::Family::Solid)
     return model::solidFaces(model.solids.nodes[std::size_t(i)], faces, sizes);
-  int32_t d[8];
+  int32_t d[model::kMaxElementNodes];
   const int k = detail::elementDistinctNodes(model, g, d);
   if (family == model::Family::Shell) {
     if (k < 3) return 0;
@@ -105,7 +105,7 @@ DualGraph buildDualGraph(const model::Model& model) {
       for (int64_t j = inc.ptr[std::size_t(best)]; j < inc.ptr[std::size_t(best) + 1]; ++j) {
         const int32_t c = inc.elem[std::size_t(j)];
         if (std::size_t(c) == e) continue;
-        int32_t cn[8];
+        int32_t cn[model::kMaxElementNodes];
         const int cc = model.elementNodes(std::size_t(c), cn);
         if (!containsAll(cn, cc, faces[f], sizes[f])) continue;
         pairs.emplace_back(int32_t(e), c);

@@ -11,8 +11,9 @@
 namespace crumple::partition::detail {
 
 // Distinct force-carrying nodes of global element g (any family), in order of appearance.
-inline int elementDistinctNodes(const model::Model& model, std::size_t g, int32_t out[8]) {
-  int32_t n[8];
+inline int elementDistinctNodes(const model::Model& model, std::size_t g,
+                                int32_t out[model::kMaxElementNodes]) {
+  int32_t n[model::kMaxElementNodes];
   const int count = model.elementNodes(g, n);
   int k = 0;
   for (int a = 0; a < count; ++a) {

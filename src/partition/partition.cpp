@@ -84,13 +84,18 @@ std::vector<int32_t> elementWeights(const model::Model& model, const Options& op
     if (p >= 0 && std::size_t(p) < part_weight.size()) w[e] = part_weight[std::size_t(p)];
     // A tetrahedron (ELFORM 10, 13) runs the one-point kernel without hourglass control (not
     // measured apart: it gathers the same eight corners); a pentahedron (ELFORM 15) the
-    // multi-point kernel with 2 points instead of 8 (estimated, kWeightPentahedronFactor).
+    // multi-point kernel with 2 points instead of 8 (estimated, kWeightPentahedronFactor); a
+    // 10-node tetrahedron (ELFORM 16) 4 points on 10 nodes, half the 8-point hexahedron's
+    // (estimated, not measured).
     const int form = p >= 0 && e < model.solids.size() ? model.solidFormulation(e) : 0;
-    if (w[e] != kWeightRigid && (model::isTetrahedron(form) || form == 15)) {
+    if (w[e] != kWeightRigid &&
+        (model::isTetrahedron(form) || form == 15 || model::isQuadraticTetrahedron(form))) {
       const int32_t base = costOfPart(model.parts[std::size_t(p)]) == materials::Cost::Plastic
                                ? kWeightSolidPlastic
                                : kWeightSolidElastic;
-      w[e] = model::isTetrahedron(form) ? base : base * kWeightPentahedronFactor / 10;
+      w[e] = model::isTetrahedron(form) ? base
+             : form == 15               ? base * kWeightPentahedronFactor / 10
+                                        : base * kWeightFullyIntegratedFactor / 20;
     }
     if (!opt.contact_elements.empty() && opt.contact_elements[e] != 0)
       w[e] = std::max<int32_t>(1, int32_t(std::lround(w[e] * opt.contact_bias)));
@@ -252,7 +257,7 @@ std::vector<int32_t> rcbPartition(const model::Model& model, const std::vector<i
                                   int parts) {
   const std::size_t ne = model.numElements();
   std::vector<model::Vec3> centroid(ne);
-  int32_t d[8];
+  int32_t d[model::kMaxElementNodes];
   for (std::size_t e = 0; e < ne; ++e) {
     const int k = detail::elementDistinctNodes(model, e, d);
     model::Vec3 c{0, 0, 0};

@@ -73,7 +73,7 @@ Stats computeStats(const model::Model& model, const std::vector<int32_t>& elem_r
     held.clear();
     for (int64_t j = inc.ptr[n]; j < inc.ptr[n + 1]; ++j) {
       const auto e = std::size_t(inc.elem[std::size_t(j)]);
-      int32_t en[8];
+      int32_t en[model::kMaxElementNodes];
       const int count = model.elementNodes(e, en);
       const auto corners = int64_t(std::count(en, en + count, int32_t(n)));
       const int32_t r = elem_rank[e];
@@ -175,7 +175,12 @@ void writePartitionVtu(const std::filesystem::path& path, const model::Model& mo
   std::vector<uint8_t> sizes(ne);
   std::vector<int64_t> rank(ne), eid(ne), pid(ne);
   for (std::size_t e = 0; e < ne; ++e) {
-    sizes[e] = uint8_t(model.elementNodes(e, &cells[8 * e]));
+    // A 10-node tetrahedron is drawn as its corner tetrahedron, N1 N2 N3 N4 N4 N4 N4 N4.
+    int32_t en[model::kMaxElementNodes];
+    const int count = model.elementNodes(e, en);
+    if (count > 8) std::fill(en + 4, en + 8, en[3]);
+    sizes[e] = uint8_t(std::min(count, 8));
+    std::copy(en, en + sizes[e], &cells[8 * e]);
     rank[e] = elem_rank[e];
     eid[e] = model.elementId(e);
     const int32_t p = model.elementPart(e);

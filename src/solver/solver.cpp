@@ -231,6 +231,24 @@ Solver::InitialSteps Solver::initializeElements() {
     }
     keepMin(st.dt_min, st.dt_elem, steps.dt_min, steps.dt_elem);
   }
+  steps.tet10.resize(sd_.tet10_blocks.size());
+  for (std::size_t ib = 0; ib < sd_.tet10_blocks.size(); ++ib) {
+    auto& blk = sd_.tet10_blocks[ib];
+    elements::resizeTet10Block(blk);
+    const auto st = elements::initializeTet10(blk, sd_.x0, sd_.slots.data(), steps.tet10[ib], bv_);
+    noteBad(model::Family::Solid, st.bad_elem);
+    if (blk.rigid) {
+      if (st.dt_elem >= 0 && st.dt_min < steps.rigid) {
+        steps.rigid = st.dt_min;
+        steps.rigid_elem = sd_.globalElement(model::Family::Solid, st.dt_elem);
+      }
+      std::fill(steps.tet10[ib].begin(), steps.tet10[ib].end(), 0.0);
+      continue;
+    }
+    if (st.dt_elem >= 0)
+      keepMin(st.dt_min, sd_.globalElement(model::Family::Solid, st.dt_elem), steps.dt_min,
+              steps.dt_elem);
+  }
   for (std::size_t ib = 0; ib < sd_.shell_blocks.size(); ++ib) {
     auto& blk = sd_.shell_blocks[ib];
     elements::resizeShellBlock(blk, blk.size());
@@ -322,11 +340,12 @@ void Solver::scaleMasses(InitialSteps& steps) {
   for (const auto& blk : sd_.beam_blocks) zeroSlots(blk, sd_.slots);
   for (const auto& blk : sd_.discrete_blocks) zeroSlots(blk, sd_.slots);
   auto scaleBlocks = [&](auto& blocks, const std::vector<std::vector<double>>& dt) {
+    constexpr int per = std::decay_t<decltype(blocks)>::value_type::kSlotsPerElement;
     for (std::size_t ib = 0; ib < blocks.size(); ++ib) {
       auto& blk = blocks[ib];
       blk.mass_scale.assign(blk.paddedSize(), 1.0);
       for (std::size_t e = 0; e < blk.size(); ++e) {
-        double* slot = sd_.slots.data() + 3 * (blk.slot_offset + 8 * e);
+        double* slot = sd_.slots.data() + 3 * (blk.slot_offset + per * e);
         const double step = ctl.tssfac * dt[ib][e];
         double factor = 0.0;
         if (step > 0.0 && step < target) {
@@ -334,11 +353,12 @@ void Solver::scaleMasses(InitialSteps& steps) {
           factor = blk.mass_scale[e] - 1.0;
           any = true;
         }
-        for (int a = 0; a < 8; ++a) slot[3 * a] *= factor;
+        for (int a = 0; a < per; ++a) slot[3 * a] *= factor;
       }
     }
   };
   scaleBlocks(sd_.solid_blocks, steps.solid);
+  scaleBlocks(sd_.tet10_blocks, steps.tet10);
   scaleBlocks(sd_.shell_blocks, steps.shell);
   if (!comm_.anyAll(any)) return;
   exchangeSharedSlots();
@@ -362,6 +382,7 @@ void Solver::scaleMasses(InitialSteps& steps) {
     }
   };
   scaledSteps(sd_.solid_blocks, steps.solid, model::Family::Solid);
+  scaledSteps(sd_.tet10_blocks, steps.tet10, model::Family::Solid);
   scaledSteps(sd_.shell_blocks, steps.shell, model::Family::Shell);
 }
 
@@ -406,6 +427,7 @@ void Solver::setErosionFloors() {
     return blk.rigid ? 0.0 : std::max(floor, materials::deletionStepOf(blk.law) / ctl.tssfac);
   };
   for (auto& blk : sd_.solid_blocks) blk.erode_dt = erodeFloor(blk);
+  for (auto& blk : sd_.tet10_blocks) blk.erode_dt = erodeFloor(blk);
   for (auto& blk : sd_.shell_blocks) blk.erode_dt = erodeFloor(blk);
 }
 
@@ -736,6 +758,8 @@ ErodedSums Solver::eroded() const {
   };
   for (const auto& blk : sd_.solid_blocks)
     add(blk, [&](std::size_t e) { return blk.rho0 * blk.vol0[e]; });
+  for (const auto& blk : sd_.tet10_blocks)
+    add(blk, [&](std::size_t e) { return blk.rho0 * blk.vol0[e]; });
   for (std::size_t ib = 0; ib < sd_.shell_blocks.size(); ++ib)
     add(sd_.shell_blocks[ib], [&](std::size_t e) { return shell_mass_[ib][e]; });
   for (std::size_t ib = 0; ib < sd_.beam_blocks.size(); ++ib)
@@ -828,6 +852,22 @@ std::vector<PartSums> Solver::partSums() const {
         const double* v = &sd_.v[3 * static_cast<std::size_t>(blk.conn[k][a])];
         p[1] += 0.5 * corner_mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
         for (int c = 0; c < 3; ++c) p[4 + c] += corner_mass * v[c];
+      }
+    }
+  }
+  // 10-node tetrahedra: each node carries its lumped share of rho0 V0 (elements/tet10.hpp).
+  for (const auto& blk : sd_.tet10_blocks) {
+    double* p = &local[kFields * static_cast<std::size_t>(blk.part)];
+    p[0] += double(blk.size());
+    for (std::size_t k = 0; k < blk.size(); ++k) {
+      p[2] += blk.e_int[k];
+      const double m = blk.rho0 * blk.vol0[k];
+      p[7] += m;
+      for (int a = 0; a < 10; ++a) {
+        const double node_mass = m * elements::tet10MassShare(a);
+        const double* v = &sd_.v[3 * static_cast<std::size_t>(blk.conn[k][std::size_t(a)])];
+        p[1] += 0.5 * node_mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        for (int c = 0; c < 3; ++c) p[4 + c] += node_mass * v[c];
       }
     }
   }

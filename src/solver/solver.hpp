@@ -190,8 +190,9 @@ class Solver {
 
   // The steps of initialize(). Element steps are before TSSFAC.
   struct InitialSteps {
-    std::vector<std::vector<double>> solid, shell;  // per block and element; 0 when rigid
-    double dt_min = 1e300;                          // solids and shells (mass scaling)
+    // Per block and element (solids, 10-node tetrahedra, shells); 0 when rigid.
+    std::vector<std::vector<double>> solid, tet10, shell;
+    double dt_min = 1e300;  // solids and shells (mass scaling)
     int64_t dt_elem = -1;
     double other = 1e300;  // beams and springs: never mass-scaled
     int64_t other_elem = -1;

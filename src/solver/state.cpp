@@ -52,6 +52,28 @@ void visitSolid(B& b, std::size_t e, F&& f) {
 }
 
 template <class B, class F>
+void visitTet10(B& b, std::size_t e, F&& f) {
+  for (int k = 0; k < 6; ++k) f(b.sig[domain::SolidBlock::blocked(6, k, e)]);
+  if (!b.eps_p.empty()) f(b.eps_p[e]);
+  f(b.q_bulk[e]);
+  f(b.vol[e]);
+  f(b.e_int[e]);
+  f(b.active[e]);
+  f(b.failed[e]);
+  const std::size_t padded = b.paddedSize();
+  constexpr auto kPoints = std::size_t(domain::Tet10Block::kPoints);
+  auto points = [&](auto& v) {
+    if (!v.empty())
+      for (std::size_t q = 0; q < kPoints; ++q) f(v[q * padded + e]);
+  };
+  for (auto& s : b.sig_ip) points(s);
+  for (auto& s : b.alpha_ip) points(s);
+  points(b.eps_p_ip);
+  for (std::size_t q = 0; q < kPoints * std::size_t(b.history) && !b.hist_ip.empty(); ++q)
+    f(b.hist_ip[q * padded + e]);
+}
+
+template <class B, class F>
 void visitShell(B& b, std::size_t e, F&& f) {
   f(b.thick[e]);
   f(b.e_int[e]);
@@ -109,6 +131,9 @@ void forEachElement(SD& sd, F&& f) {
   for (auto& b : sd.solid_blocks)
     for (std::size_t e = 0; e < b.size(); ++e)
       f(sd.globalElement(model::Family::Solid, b.elem[e]), [&](auto&& g) { visitSolid(b, e, g); });
+  for (auto& b : sd.tet10_blocks)
+    for (std::size_t e = 0; e < b.size(); ++e)
+      f(sd.globalElement(model::Family::Solid, b.elem[e]), [&](auto&& g) { visitTet10(b, e, g); });
   for (auto& b : sd.shell_blocks)
     for (std::size_t e = 0; e < b.size(); ++e)
       f(sd.globalElement(model::Family::Shell, b.elem[e]), [&](auto&& g) { visitShell(b, e, g); });

@@ -85,6 +85,7 @@ class RestartEquality(RestartCase):
             (data_deck("contact_eroding.k"), [], 1200),
             (data_deck("tet_blocks.k"), [], 150),
             (data_deck("tet13_blocks.k"), [], 150),
+            (data_deck("tet10_bar.k"), [], 200),
             (data_deck("prism_blocks.k"), [], 300),
             (data_deck("axisym_rod.k"), [], 80),
             (data_deck("erosion.k"), ["--endtime", "2.5e-5"], 40),
