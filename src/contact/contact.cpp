@@ -1145,7 +1145,7 @@ void Contact::loadState(const std::vector<char>& bytes) {
     throw util::InputError("restart dump: the contact section is inconsistent");
   // The elements eroded before the dump, from the element states restored before this section
   // (each rank its own): the surfaces as they were.
-  eroded_here_ = erosion_.erodedHere(sd_);
+  eroded_here_ = erosion_.erodedHere();
   syncErosion();
   in_contact_.clear();
   for (int32_t c = 0; c < num_checks_; ++c)

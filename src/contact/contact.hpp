@@ -78,7 +78,7 @@ class Contact {
   void computeForces(double time, double dt_prev);
   // Elements of this rank eroded in this cycle's element pass (before computeForces): those
   // the contact surfaces hold leave them at once, every rank told at a bucket sort.
-  void noteErosion() { eroded_here_ = erosion_.erodedHere(sd_); }
+  void noteErosion() { eroded_here_ = erosion_.erodedHere(); }
   // Contact energy: the energy of the penalty springs now plus what friction and damping
   // have dissipated. Every rank holds every record, so these are the same on every rank.
   double energy() const;

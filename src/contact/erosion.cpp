@@ -56,7 +56,7 @@ void SurfaceErosion::trackNodeElements(const model::Model& m,
   for (std::size_t i = 0; i < cn_model.size(); ++i) cn_of[std::size_t(cn_model[i])] = int32_t(i);
   std::vector<std::pair<int32_t, int64_t>> at;
   for (std::size_t g = 0; g < m.numElements(); ++g) {
-    int32_t n[8];
+    int32_t n[model::kMaxElementNodes];
     const int count = m.elementNodes(g, n);
     for (int k = 0; k < count; ++k) {
       const int32_t cn = cn_of[std::size_t(n[k])];
@@ -86,7 +86,7 @@ void SurfaceErosion::locate(const domain::Subdomain& sd) {
       for (std::size_t b = 0; b < blocks.size(); ++b)
         for (std::size_t e = 0; e < blocks[b].elem.size(); ++e) {
           const int32_t s = slotOf(sd.globalElement(family, blocks[b].elem[e]));
-          if (s >= 0) local_.push_back({family, int32_t(b), int32_t(e), s});
+          if (s >= 0) local_.push_back({&blocks[b].active, int32_t(e), s});
         }
     }
   });
@@ -94,24 +94,11 @@ void SurfaceErosion::locate(const domain::Subdomain& sd) {
             [](const Local& a, const Local& b) { return a.slot < b.slot; });
 }
 
-std::vector<int64_t> SurfaceErosion::erodedHere(const domain::Subdomain& sd) const {
-  auto active = [&](const Local& l) {
-    const auto b = std::size_t(l.block), e = std::size_t(l.index);
-    switch (l.family) {
-      case model::Family::Solid:
-        return sd.solid_blocks[b].active[e] != 0;
-      case model::Family::Shell:
-        return sd.shell_blocks[b].active[e] != 0;
-      case model::Family::Beam:
-        return sd.beam_blocks[b].active[e] != 0;
-      case model::Family::Discrete:
-        return true;
-    }
-    return true;
-  };
+std::vector<int64_t> SurfaceErosion::erodedHere() const {
   std::vector<int64_t> out;
   for (const Local& l : local_)
-    if (alive_[std::size_t(l.slot)] && !active(l)) out.push_back(tracked_[std::size_t(l.slot)]);
+    if (alive_[std::size_t(l.slot)] && !(*l.active)[std::size_t(l.index)])
+      out.push_back(tracked_[std::size_t(l.slot)]);
   return out;
 }
 

@@ -35,7 +35,7 @@ class SurfaceErosion {
   bool checkLive(std::size_t check) const { return check_live_[check] != 0; }
   // The tracked elements of this rank's blocks that have eroded and are not yet marked, as
   // global element indices, ascending.
-  std::vector<int64_t> erodedHere(const domain::Subdomain& sd) const;
+  std::vector<int64_t> erodedHere() const;
   // Marks these elements eroded (the same list on every rank) and updates the flags; false if
   // none of them was tracked (nothing changed).
   bool markEroded(std::span<const int64_t> elements, const std::vector<Pass>& passes);
@@ -64,10 +64,11 @@ class SurfaceErosion {
     std::vector<int32_t> own_owner, own_across;
   };
   std::vector<PassSlots> slots_;
-  // This rank's tracked elements: where their `active` flag is.
+  // This rank's tracked elements: their block's `active` flags (blocks are not resized once
+  // the subdomain is built) and their index there.
   struct Local {
-    model::Family family = model::Family::Solid;
-    int32_t block = 0, index = 0, slot = 0;
+    const std::vector<uint8_t>* active = nullptr;
+    int32_t index = 0, slot = 0;
   };
   std::vector<Local> local_;
   std::vector<std::vector<uint8_t>> seg_live_;
