@@ -52,16 +52,16 @@ class Contact(TempDirTest):
         """A contact left out changes the answer: check and run refuse the deck and name it;
         --ignore-unsupported runs without it and says so in run.log and summary.json."""
         text = decks().colliding_blocks().replace("*CONTACT_SURFACE_TO_SURFACE_ID",
-                                                  "*CONTACT_ERODING_SURFACE_TO_SURFACE_ID")
-        deck = self.write("eroding.k", text)
+                                                  "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_MORTAR_ID")
+        deck = self.write("mortar.k", text)
         p = crumple("check", deck, cwd=self.tmp)
         self.assertEqual(p.returncode, 1, describe(p))
         self.assertIn("leaving it out would change the answer", p.stdout, describe(p))
-        self.assertIn("*CONTACT_ERODING_SURFACE_TO_SURFACE_ID", p.stdout, describe(p))
+        self.assertIn("*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_MORTAR_ID", p.stdout, describe(p))
         out = os.path.join(self.tmp, "o")
         p = crumple("run", deck, "-o", out, "-q", cwd=self.tmp)
         self.assertEqual(p.returncode, 1, describe(p))
-        self.assertIn("*CONTACT_ERODING_SURFACE_TO_SURFACE_ID", p.stderr, describe(p))
+        self.assertIn("*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_MORTAR_ID", p.stderr, describe(p))
         self.assertIn("--ignore-unsupported", p.stderr, describe(p))
         self.assertFalse(os.path.exists(out), "a refused deck writes nothing")
         p = crumple("run", deck, "--ignore-unsupported", "-o", out, "-q", "--cycles", "5",
@@ -69,7 +69,7 @@ class Contact(TempDirTest):
         self.assertEqual(p.returncode, 0, describe(p))
         s = read_summary(out)
         self.assertEqual(s["cycles"], 5)
-        self.assertEqual(s["ignored_unsupported"], ["*CONTACT_ERODING_SURFACE_TO_SURFACE_ID"])
+        self.assertEqual(s["ignored_unsupported"], ["*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_MORTAR_ID"])
         with open(os.path.join(out, "run.log"), encoding="utf-8") as f:
             self.assertIn("--ignore-unsupported: this run leaves out", f.read())
 
