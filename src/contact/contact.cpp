@@ -536,13 +536,14 @@ std::optional<Contact::Candidate> Contact::chooseSegment(std::size_t pass, int32
   const CheckNode c{check, std::size_t(p.node[local]), at(x_, std::size_t(p.node[local])),
                     p.node_half[local]};
   const Vec3& x = c.x;
+  const uint8_t* live = erosion_.segmentFlags(pass);
   for (const int32_t candidate : candidates) {
     const auto s = std::size_t(candidate);
     const double* box = search_.box(pass, s);
     if (x[0] < box[0] || x[0] > box[3] || x[1] < box[1] || x[1] > box[4] || x[2] < box[2] ||
         x[2] > box[5])
       continue;
-    if (!erosion_.segmentLive(pass, s)) continue;
+    if (!live[s]) continue;
     ++tests;
     const auto cand = rankSegment(p, c, s, initial);
     if (!cand) continue;

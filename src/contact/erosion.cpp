@@ -4,18 +4,14 @@
 
 namespace crumple::contact {
 
-namespace {
+namespace {}  // namespace
 
-// The element slots of a list of global element indices (-1 stays -1).
-template <class SlotOf>
-std::vector<int32_t> slotsOf(const std::vector<int64_t>& elements, SlotOf&& slot_of) {
+std::vector<int32_t> SurfaceErosion::slotsOf(const std::vector<int64_t>& elements) const {
   std::vector<int32_t> out(elements.size(), -1);
   for (std::size_t k = 0; k < elements.size(); ++k)
-    if (elements[k] >= 0) out[k] = slot_of(elements[k]);
+    if (elements[k] >= 0) out[k] = slotOf(elements[k]);
   return out;
 }
-
-}  // namespace
 
 int32_t SurfaceErosion::slotOf(int64_t element) const {
   const auto it = std::lower_bound(tracked_.begin(), tracked_.end(), element);
@@ -31,18 +27,16 @@ void SurfaceErosion::build(const model::Model& m, const std::vector<Pass>& passe
         if (g >= 0) tracked_.push_back(g);
   trackNodeElements(m, cn_model);
   alive_.assign(tracked_.size(), 1);
-  auto slot = [&](int64_t g) { return slotOf(g); };
   slots_.resize(passes.size());
   for (std::size_t k = 0; k < passes.size(); ++k) {
     const Pass& p = passes[k];
     PassSlots& s = slots_[k];
-    s.seg_owner = slotsOf(p.seg_elem, slot);
-    s.seg_across = slotsOf(p.seg_across, slot);
-    s.check_owner = slotsOf(p.check_elem, slot);
-    s.check_across = slotsOf(p.check_across, slot);
-    s.exposure = p.exposure;
-    s.own_owner = slotsOf(p.own_elem, slot);
-    s.own_across = slotsOf(p.own_across, slot);
+    s.seg_owner = slotsOf(p.seg_elem);
+    s.seg_across = slotsOf(p.seg_across);
+    s.check_owner = slotsOf(p.check_elem);
+    s.check_across = slotsOf(p.check_across);
+    s.own_owner = slotsOf(p.own_elem);
+    s.own_across = slotsOf(p.own_across);
   }
   locate(sd);
   refresh(passes);
@@ -50,8 +44,8 @@ void SurfaceErosion::build(const model::Model& m, const std::vector<Pass>& passe
 
 void SurfaceErosion::trackNodeElements(const model::Model& m,
                                        const std::vector<int32_t>& cn_model) {
-  // Every element at a contact node, as (node, element) pairs; node_elem_ holds positions in
-  // tracked_ until build() turns them into slots (tracked_ is sorted after this).
+  // Every element at a contact node, as (node, element) pairs, joins tracked_ (sorted here
+  // with the segments' elements build() put there); node_elem_ holds their slots.
   std::vector<int32_t> cn_of(m.nodes.size(), -1);
   for (std::size_t i = 0; i < cn_model.size(); ++i) cn_of[std::size_t(cn_model[i])] = int32_t(i);
   std::vector<std::pair<int32_t, int64_t>> at;
@@ -66,18 +60,15 @@ void SurfaceErosion::trackNodeElements(const model::Model& m,
   std::sort(at.begin(), at.end());
   at.erase(std::unique(at.begin(), at.end()), at.end());
   node_ptr_.assign(cn_model.size() + 1, 0);
-  const std::size_t first = tracked_.size();
   for (const auto& [cn, g] : at) {
     ++node_ptr_[std::size_t(cn) + 1];
-    node_elem_.push_back(int32_t(tracked_.size()));
     tracked_.push_back(g);
   }
   for (std::size_t i = 0; i < cn_model.size(); ++i) node_ptr_[i + 1] += node_ptr_[i];
-  // node_elem_ refers to the unsorted positions from `first`: keep the element ids there.
-  std::vector<int64_t> ids(tracked_.begin() + std::ptrdiff_t(first), tracked_.end());
   std::sort(tracked_.begin(), tracked_.end());
   tracked_.erase(std::unique(tracked_.begin(), tracked_.end()), tracked_.end());
-  for (int32_t& e : node_elem_) e = slotOf(ids[std::size_t(e) - first]);
+  node_elem_.reserve(at.size());
+  for (const auto& [cn, g] : at) node_elem_.push_back(slotOf(g));
 }
 
 void SurfaceErosion::locate(const domain::Subdomain& sd) {
@@ -152,7 +143,7 @@ void SurfaceErosion::refreshChecks(const std::vector<Pass>& passes) {
         live[j] = s.check_owner[j] < 0 || faceLive(s.check_owner[j], s.check_across[j]);
       continue;
     }
-    if (!s.exposure) {
+    if (!p.exposure) {
       for (std::size_t j = 0; j < p.node.size(); ++j) live[j] = node_live_[std::size_t(p.node[j])];
       continue;
     }

@@ -32,6 +32,8 @@ class SurfaceErosion {
   void build(const model::Model& m, const std::vector<Pass>& passes,
              const std::vector<int32_t>& cn_model, const domain::Subdomain& sd);
   bool segmentLive(std::size_t pass, std::size_t seg) const { return seg_live_[pass][seg] != 0; }
+  // Pass `pass`'s flags, one per segment (for loops over its candidates).
+  const uint8_t* segmentFlags(std::size_t pass) const { return seg_live_[pass].data(); }
   bool checkLive(std::size_t check) const { return check_live_[check] != 0; }
   // The tracked elements of this rank's blocks that have eroded and are not yet marked, as
   // global element indices, ascending.
@@ -42,6 +44,7 @@ class SurfaceErosion {
 
  private:
   int32_t slotOf(int64_t element) const;  // index into tracked_, or -1
+  std::vector<int32_t> slotsOf(const std::vector<int64_t>& elements) const;  // -1 stays -1
   // A face with `owner` (slot) and the solid `across` (slot, -1 none) is in contact.
   bool faceLive(int32_t owner, int32_t across) const {
     return alive_[std::size_t(owner)] != 0 && (across < 0 || alive_[std::size_t(across)] == 0);
@@ -60,8 +63,7 @@ class SurfaceErosion {
   struct PassSlots {
     std::vector<int32_t> seg_owner, seg_across;
     std::vector<int32_t> check_owner, check_across;  // segment pairs: the checks' segments
-    bool exposure = false;
-    std::vector<int32_t> own_owner, own_across;
+    std::vector<int32_t> own_owner, own_across;      // Pass::exposure passes
   };
   std::vector<PassSlots> slots_;
   // This rank's tracked elements: their block's `active` flags (blocks are not resized once
