@@ -704,7 +704,8 @@ sheet
 
 def eroding_layers(kind: str = "ERODING_SURFACE_TO_SURFACE", erosop: int = 1, iadj: int = 0,
                    failtm: float = 1.0, gap: float = 3.0, speed: float = 1.0, end: float = 9.0,
-                   n: int = 3, nz: int = 1, target: str = "1,2", lower_mneps: float = 0.0) -> str:
+                   n: int = 3, nz: int = 1, target: str = "1,2", lower_mneps: float = 0.0,
+                   enmass: int | None = None) -> str:
     """A target of two 5 mm layers of steel hexes (30 x 30 mm, n x n x nz elements each,
     sharing the nodes between them; the upper layer, part 1, eroded at `failtm` by
     *MAT_ADD_EROSION FAILTM; the lower, part 2, held at its base, eroded where its minimum
@@ -714,7 +715,8 @@ def eroding_layers(kind: str = "ERODING_SURFACE_TO_SURFACE", erosop: int = 1, ia
     `erosop`, IADJ `iadj`). Units mm, ms, kg, GPa. The upper layer is gone before the block
     reaches it; the block meets the lower layer's top, interior to the target until then, at
     t = (gap + 5) / speed when the surface follows the erosion (EROSOP 1), and never
-    otherwise."""
+    otherwise. `enmass`: *CONTROL_CONTACT's ENMASS, if given (the free nodes of the eroded
+    layer then stay in contact)."""
     m = Mesh()
     grid = {}
     for k in range(2 * nz + 1):
@@ -736,12 +738,13 @@ def eroding_layers(kind: str = "ERODING_SURFACE_TO_SURFACE", erosop: int = 1, ia
     if lower_mneps != 0.0:
         lower += f"\n*MAT_ADD_EROSION\n1,0,0,{lower_mneps},0,0,1,1\n0,0,0,0,0,0,0,0"
     eroding = f"\n0,{erosop},{iadj}" if kind.startswith("ERODING") else ""
+    control = "" if enmass is None else f"*CONTROL_CONTACT\n0.1,0,0,0,0,0,0,{enmass}\n"
     return f"""*KEYWORD
 *TITLE
 a block through an eroded layer onto the one below ({kind})
 *CONTROL_TERMINATION
 {end}
-*DATABASE_BNDOUT
+{control}*DATABASE_BNDOUT
 0.02
 *DATABASE_GLSTAT
 0.02

@@ -110,6 +110,7 @@ class Contact {
     f(last_seg_);
     f(last_side_);
     f(entry_);
+    f(held_);
     f(stored_);
     f(dissipated_);
     f(cycles_since_sort_);
@@ -256,6 +257,10 @@ class Contact {
   std::vector<int32_t> in_contact_;  // checks with a record last cycle (their history is set)
   std::vector<int8_t> last_side_;    // per check: the side of that (shell) segment, or 0
   std::vector<double> entry_;        // per check: penetration at the start of the contact
+  // Per check: k p^2 / 2 of its record last cycle (0: none), negative if less than the cycle
+  // before (the spring unloading).
+  std::vector<double> held_;
+  void holdEnergy(std::size_t check, double energy);
   // Tied checks: the segment, its four weights and the normal offset of the tied point.
   std::vector<int32_t> tie_seg_;
   std::vector<std::array<double, 4>> tie_weight_;
@@ -294,6 +299,9 @@ class Contact {
   // The energy of the segment pairs of last cycle that are no longer in contact, booked as
   // contact energy that stays (see applyRecords).
   void bookEndedSegmentPairs();
+  // The same for the node checks of last cycle with no record now (held_).
+  void bookEndedNodeChecks();
+  std::vector<int32_t> last_in_contact_;  // applyRecords' scratch: in_contact_ of the cycle before
   const EdgePair* findEdgePair(int32_t check, int32_t segment) const;
   // A pair of pass p in contact last cycle whose edges are edges a and b of the pass or their
   // neighbours (sharing a node), the first in pair order; none if none.

@@ -49,14 +49,22 @@ void SurfaceErosion::trackNodeElements(const model::Model& m,
   std::vector<int32_t> cn_of(m.nodes.size(), -1);
   for (std::size_t i = 0; i < cn_model.size(); ++i) cn_of[std::size_t(cn_model[i])] = int32_t(i);
   std::vector<std::pair<int32_t, int64_t>> at;
+  std::vector<uint8_t> solid(cn_model.size(), 0), shell(cn_model.size(), 0);
   for (std::size_t g = 0; g < m.numElements(); ++g) {
     int32_t n[model::kMaxElementNodes];
     const int count = m.elementNodes(g, n);
+    const model::Family family = m.element(g).first;
     for (int k = 0; k < count; ++k) {
       const int32_t cn = cn_of[std::size_t(n[k])];
-      if (cn >= 0) at.push_back({cn, int64_t(g)});
+      if (cn < 0) continue;
+      at.push_back({cn, int64_t(g)});
+      solid[std::size_t(cn)] |= family == model::Family::Solid;
+      shell[std::size_t(cn)] |= family == model::Family::Shell;
     }
   }
+  keep_free_.assign(cn_model.size(), 0);
+  for (std::size_t i = 0; i < cn_model.size(); ++i)
+    keep_free_[i] = keepsFreeNode(m.contact_controls.enmass, solid[i] != 0, shell[i] != 0);
   std::sort(at.begin(), at.end());
   at.erase(std::unique(at.begin(), at.end()), at.end());
   node_ptr_.assign(cn_model.size() + 1, 0);
@@ -116,15 +124,15 @@ void SurfaceErosion::refresh(const std::vector<Pass>& passes) {
       live[j] = s.seg_owner[j] < 0 || faceLive(s.seg_owner[j], s.seg_across[j]);
   }
   // A node with elements is in contact while one of them lives (a node of no element, such
-  // as a lumped mass, always is).
-  node_live_.assign(node_ptr_.empty() ? 0 : node_ptr_.size() - 1, 1);
+  // as a lumped mass, always is), and after if ENMASS keeps it.
+  node_live_.assign(node_ptr_.empty() ? 0 : node_ptr_.size() - 1, kLive);
   for (std::size_t n = 0; n < node_live_.size(); ++n) {
     const auto first = std::size_t(node_ptr_[n]), last = std::size_t(node_ptr_[n + 1]);
     if (first == last) continue;
     bool any = false;
     for (std::size_t k = first; k < last && !any; ++k)
       any = alive_[std::size_t(node_elem_[k])] != 0;
-    node_live_[n] = any;
+    node_live_[n] = any ? kLive : keep_free_[n] ? kFree : kDead;
   }
   refreshChecks(passes);
 }
@@ -144,11 +152,14 @@ void SurfaceErosion::refreshChecks(const std::vector<Pass>& passes) {
       continue;
     }
     if (!p.exposure) {
-      for (std::size_t j = 0; j < p.node.size(); ++j) live[j] = node_live_[std::size_t(p.node[j])];
+      for (std::size_t j = 0; j < p.node.size(); ++j)
+        live[j] = node_live_[std::size_t(p.node[j])] != kDead;
       continue;
     }
-    // The nodes on the faces of the own surface that are in contact.
-    std::fill(live, live + p.node.size(), 0);
+    // The nodes on the faces of the own surface that are in contact, and the free nodes
+    // ENMASS keeps.
+    for (std::size_t j = 0; j < p.node.size(); ++j)
+      live[j] = node_live_[std::size_t(p.node[j])] == kFree;
     for (std::size_t f = 0; f < p.own_faces.size(); ++f) {
       if (!faceLive(s.own_owner[f], s.own_across[f])) continue;
       for (int32_t c : p.own_faces[f])

@@ -1,8 +1,11 @@
 // Contact surfaces that follow element erosion (docs/theory.md, "Eroding contact").
 //
 // An eroded element leaves every interface: its segments no longer push, and a node whose
-// elements have all eroded is no longer checked (LS-DYNA's *CONTROL_CONTACT ENMASS 0: the
-// free nodes of eroded elements leave contact). *CONTACT_ERODING_ interfaces with EROSOP 1
+// elements have all eroded (a free node) is no longer checked, as LS-DYNA's *CONTROL_CONTACT
+// ENMASS 0 (Keyword Manual: "eroding nodes are removed from the calculation"). With ENMASS 1
+// the free nodes of solids stay in every interface they were in, with their mass (the
+// debris of a perforated target still strikes); with 2 those of shells too.
+// *CONTACT_ERODING_ interfaces with EROSOP 1
 // go further (Keyword Manual, *CONTACT_ERODING_...): their surfaces hold every face of their
 // solids, and a face with a solid across it (ContactSurface::segment_neighbour) is in contact
 // once that solid has eroded and its own element lives; their checks are the nodes on faces
@@ -50,6 +53,11 @@ class SurfaceErosion {
     return alive_[std::size_t(owner)] != 0 && (across < 0 || alive_[std::size_t(across)] == 0);
   }
   void trackNodeElements(const model::Model& m, const std::vector<int32_t>& cn_model);
+  // Whether a free node stays in contact under ENMASS `enmass`, given whether it had a solid
+  // and a shell among its elements.
+  static bool keepsFreeNode(int enmass, bool solid, bool shell) {
+    return (enmass >= 1 && solid) || (enmass == 2 && shell);
+  }
   void locate(const domain::Subdomain& sd);
   void refresh(const std::vector<Pass>& passes);
   void refreshChecks(const std::vector<Pass>& passes);
@@ -74,7 +82,11 @@ class SurfaceErosion {
   };
   std::vector<Local> local_;
   std::vector<std::vector<uint8_t>> seg_live_;
+  // Per contact node: kDead, kLive (one of its elements lives, or it has none) or kFree (its
+  // elements have all eroded and ENMASS keeps it).
+  enum NodeState : uint8_t { kDead = 0, kLive = 1, kFree = 2 };
   std::vector<uint8_t> node_live_, check_live_;
+  std::vector<uint8_t> keep_free_;  // per contact node: kept in contact once free (ENMASS)
 };
 
 }  // namespace crumple::contact

@@ -119,6 +119,9 @@ struct ContactControls {
   // to 40% of its shortest edge where no thickness is given for contact (OPTT, SST); 1 takes
   // the shell's thickness as it is (docs/theory.md, "Contact thickness").
   int ssthk = 0;
+  // ENMASS (card 1): the nodes whose elements have all eroded leave contact (0), or stay in
+  // it with their mass when one of their elements was a solid (1) or a solid or a shell (2).
+  int enmass = 0;
   // Re-partition the contact work when the busiest rank carries this many times the mean.
   double rebalance_threshold = 1.25;
 };

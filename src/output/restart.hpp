@@ -28,7 +28,9 @@ namespace crumple::output {
 // 4: the laws with an equation of state keep the least ln(V / V0) as their third history
 // variable (*MAT_JOHNSON_COOK's damage and temperature move to the fourth and fifth), and the
 // model's equations of state carry the tabulated forms' points.
-inline constexpr uint32_t kDumpVersion = 4;
+// 5: contact keeps the penalty energy each node check held last cycle (booked as contact
+// energy when the check ends while penetrated).
+inline constexpr uint32_t kDumpVersion = 5;
 
 // One part of the state. `save` is collective (every rank calls every section's save, in
 // registration order) and returns the section's bytes on rank 0 (what other ranks return is
