@@ -588,7 +588,8 @@ std::vector<KeywordSpec> makeTables() {
   t.push_back({"*CONSTRAINED_EXTRA_NODES_SET", {{"card 1", {I("PID"), I("NSID"), I("IFLAG")}}}});
   t.push_back(
       {"*CONSTRAINED_NODAL_RIGID_BODY",
-       {{"card 1",
+       {titleCard(),
+        {"card 1",
          {I("PID"), I("CID"), I("NSID"), I("PNODE"), I("IPRT", 0, Q), I("DRFLAG"), I("RRFLAG")}},
         {"spc card", {R("CMO"), R("CON1"), R("CON2")}}}});
   t.push_back({"*CONSTRAINED_SPOTWELD",

@@ -120,12 +120,22 @@ void Context::define(Kind kind, int64_t id, const deck::Card& card, std::string_
   auto [it, inserted] = defined_.emplace(std::make_pair(kind, id), card.where());
   if (!inserted)
     card.fail(field, std::string(kindName(kind)) + " " + std::to_string(id) +
-                         " is already defined at " + it->second.str());
+                         " is already defined at " + it->second.str() +
+                         (collected_.count({kind, id}) != 0
+                              ? " (sets of one id are merged only if each has _COLLECT)"
+                              : ""));
   auto u = unsupported_.find({kind, id});
   if (u != unsupported_.end())
     card.fail(field, std::string(kindName(kind)) + " " + std::to_string(id) +
                          " is already defined by " + u->second.first + " at " +
                          u->second.second.str());
+}
+
+void Context::defineCollected(Kind kind, int64_t id, const deck::Card& card,
+                              std::string_view field) {
+  if (collected_.count({kind, id}) != 0) return;
+  define(kind, id, card, field);
+  collected_.insert({kind, id});
 }
 
 void Context::defineUnsupported(Kind kind, int64_t id, std::string what, util::SourceLoc where) {
@@ -359,38 +369,38 @@ const std::vector<Meaning>& meanings() {
       {"*SET_NODE",
        4,
        readNodeSetList,
-       {"LIST", "TITLE", "GENERATE"},
+       {"LIST", "TITLE", "GENERATE", "COLLECT"},
        U::Definition,
        Kind::NodeSet},
       {"*SET_PART",
        4,
        readPartSetList,
-       {"LIST", "TITLE", "GENERATE"},
+       {"LIST", "TITLE", "GENERATE", "COLLECT"},
        U::Definition,
        Kind::PartSet},
       {"*SET_SEGMENT", 4, readSegmentSet, {"TITLE"}, U::Definition, Kind::SegmentSet},
       {"*SET_SOLID",
        4,
        readElementSetList,
-       {"LIST", "TITLE", "GENERATE"},
+       {"LIST", "TITLE", "GENERATE", "COLLECT"},
        U::Definition,
        Kind::SolidSet},
       {"*SET_SHELL",
        4,
        readElementSetList,
-       {"LIST", "TITLE", "GENERATE"},
+       {"LIST", "TITLE", "GENERATE", "COLLECT"},
        U::Definition,
        Kind::ShellSet},
       {"*SET_BEAM",
        4,
        readElementSetList,
-       {"LIST", "TITLE", "GENERATE"},
+       {"LIST", "TITLE", "GENERATE", "COLLECT"},
        U::Definition,
        Kind::BeamSet},
       {"*SET_DISCRETE",
        4,
        readElementSetList,
-       {"LIST", "TITLE", "GENERATE"},
+       {"LIST", "TITLE", "GENERATE", "COLLECT"},
        U::Definition,
        Kind::DiscreteSet},
       // After the lists they add up (phase 4); an _ADD of an _ADD set follows it in the deck.
@@ -430,7 +440,7 @@ const std::vector<Meaning>& meanings() {
       {"*BOUNDARY_PRESCRIBED_MOTION_RIGID", 6, readPrescribedMotionRigid, {"ID"}, U::Reject},
       {"*CONSTRAINED_RIGID_BODIES", 6, readRigidBodies, {}, U::Reject},
       {"*CONSTRAINED_EXTRA_NODES", 6, readExtraNodes, {"NODE", "SET"}, U::Reject},
-      {"*CONSTRAINED_NODAL_RIGID_BODY", 6, readNodalRigidBody, {"SPC"}, U::Reject},
+      {"*CONSTRAINED_NODAL_RIGID_BODY", 6, readNodalRigidBody, {"SPC", "TITLE"}, U::Reject},
       {"*CONSTRAINED_SPOTWELD", 6, readSpotweld, {"ID"}, U::Reject},
       {"*CONSTRAINED_GENERALIZED_WELD", 6, readGeneralizedWeld, {"SPOT", "ID"}, U::Reject},
       {"*CONSTRAINED_NODE_SET", 6, readConstrainedNodeSet, {"ID"}, U::Reject},

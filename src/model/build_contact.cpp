@@ -557,17 +557,29 @@ bool readContactType(const std::string& name, ContactInterface& ci) {
   return true;
 }
 
-void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
-  // The words between *CONTACT_ and _ID/_TITLE name the algorithm.
-  std::string name = kw.name;
-  for (bool cut = true; cut;) {  // in any order: _MPP_ID, _ID_MPP, ...
-    cut = false;
-    for (std::string_view tail : {"_TITLE", "_ID", "_MPP"})
-      if (name.size() > tail.size() && name.substr(name.size() - tail.size()) == tail) {
-        name.resize(name.size() - tail.size());
-        cut = true;
-      }
+namespace {
+
+std::string algorithmName(std::string_view keyword) {
+  std::string name;
+  for (std::size_t start = 0; start <= keyword.size();) {
+    std::size_t end = keyword.find('_', start);
+    if (end == std::string_view::npos) end = keyword.size();
+    const std::string_view word = keyword.substr(start, end - start);
+    if (start == 0 || (word != "ID" && word != "TITLE" && word != "MPP")) {
+      if (start != 0) name += '_';
+      name += word;
+    }
+    start = end + 1;
   }
+  return name;
+}
+
+}  // namespace
+
+void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  // The words of the name other than ID, TITLE and MPP name the algorithm. Those three may
+  // stand anywhere after it: _MPP_ID, _ID_MPP, and _ID_BEAM_OFFSET_MPP as abq2dyn writes it.
+  const std::string name = algorithmName(kw.name);
   ContactInterface ci;
   if (!readContactType(name, ci)) {
     ctx.reportUnsupported(kw, "contact type not supported");
@@ -698,6 +710,8 @@ void readControlContact(Context& ctx, const deck::Keyword& kw, const KeywordOpti
   ContactControls& k = ctx.model.contact_controls;
   k.slsfac = c1.real("SLSFAC");
   if (k.slsfac <= 0) c1.fail("SLSFAC", "must be positive");
+  k.enmass = int(c1.integer("ENMASS"));
+  if (k.enmass < 0 || k.enmass > 2) c1.fail("ENMASS", "must be 0, 1 or 2");
   if (!cur.atEnd()) {
     const Card& c2 = cur.read(spec.card("card 2"));
     k.ssthk = int(c2.integer("SSTHK"));

@@ -126,6 +126,9 @@ class Context {
   // Records that `id` of `kind` is defined by the card's field; a second definition is an
   // InputError naming the first.
   void define(Kind kind, int64_t id, const deck::Card& card, std::string_view field);
+  // The same for a set keyword with _COLLECT (Keyword Manual, *SET: "multiple sets with the
+  // same ID are merged"): a repeat is allowed when every definition of the id has _COLLECT.
+  void defineCollected(Kind kind, int64_t id, const deck::Card& card, std::string_view field);
   // Records that `id` of `kind` is defined by a keyword Crumple does not support, so that a
   // reference to it can say so.
   void defineUnsupported(Kind kind, int64_t id, std::string what, util::SourceLoc where);
@@ -223,6 +226,7 @@ class Context {
 
  private:
   std::map<std::pair<Kind, int64_t>, util::SourceLoc> defined_;
+  std::set<std::pair<Kind, int64_t>> collected_;  // defined by _COLLECT keywords only
   std::map<std::pair<Kind, int64_t>, std::pair<std::string, util::SourceLoc>> unsupported_;
   std::map<std::pair<std::string, std::string>, std::size_t> unsupported_row_;
   std::map<std::pair<Kind, int64_t>, std::string> broken_;

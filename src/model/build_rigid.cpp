@@ -219,7 +219,9 @@ void readExtraNodes(Context& ctx, const deck::Keyword& kw, const KeywordOptions&
 void readNodalRigidBody(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const auto& spec = keywordSpec("*CONSTRAINED_NODAL_RIGID_BODY");
   CardCursor cur(kw, ctx.deck);
-  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+  // _TITLE: a heading card (the body's name) precedes every record.
+  while (nextRecord(cur, opts.has("TITLE"))) {
+    readTitleCard(cur, spec, opts);
     const Card& c = cur.read(spec.card("card 1"));
     RigidInput::Nodal nb;
     RigidBodyDef& b = nb.body;

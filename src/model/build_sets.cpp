@@ -37,7 +37,10 @@ int64_t readSetId(Context& ctx, CardCursor& cur, const deck::KeywordSpec& spec,
   const Card& c = cur.read(spec.card("card 1"));
   const int64_t sid = c.integer("SID");
   if (sid <= 0) c.fail("SID", "the set id must be a positive integer");
-  ctx.define(kind, sid, c, "SID");
+  if (opts.has("COLLECT"))
+    ctx.defineCollected(kind, sid, c, "SID");
+  else
+    ctx.define(kind, sid, c, "SID");
   return sid;
 }
 
@@ -60,6 +63,7 @@ void generate(const Card& c, const Ids& ids, Add add) {
 class Members {
  public:
   Members(Context& ctx, Kind kind, int64_t sid) : ctx_(ctx), kind_(kind), sid_(sid) {}
+  Kind kind() const { return kind_; }
   // Index of node or part `id`, or kNone after recording the problem.
   int32_t resolve(const Card& c, std::string_view field, int64_t id, bool part) {
     const int32_t i = part ? ctx_.model.partIndex(id) : ctx_.model.nodeIndex(id);
@@ -95,6 +99,21 @@ class Members {
   int64_t sid_;
   std::string problem_;
 };
+
+// Stores set `sid`'s members, merged with those of the keywords before it with the same id
+// (_COLLECT; otherwise there are none), ascending and unique. A member that does not exist
+// makes the set unusable, every collected piece of it included.
+template <class Sets, class Member>
+void storeSet(Context& ctx, Members& members, const deck::Keyword& kw, Sets& sets, int64_t sid,
+              std::vector<Member> list) {
+  if (!members.finish(kw) || !ctx.brokenMessage(members.kind(), sid).empty()) {
+    sets.erase(sid);
+    return;
+  }
+  auto& set = sets[sid];
+  set.insert(set.end(), list.begin(), list.end());
+  sortUnique(set);
+}
 
 }  // namespace
 
@@ -339,9 +358,7 @@ void readNodeSetList(Context& ctx, const deck::Keyword& kw, const KeywordOptions
     }
     ctx.collect(cur);
   }
-  if (!members.finish(kw)) return;
-  sortUnique(nodes);
-  ctx.model.node_sets[sid] = std::move(nodes);
+  storeSet(ctx, members, kw, ctx.model.node_sets, sid, std::move(nodes));
 }
 
 void readPartSetList(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
@@ -365,9 +382,7 @@ void readPartSetList(Context& ctx, const deck::Keyword& kw, const KeywordOptions
     }
     ctx.collect(cur);
   }
-  if (!members.finish(kw)) return;
-  sortUnique(parts);
-  ctx.model.part_sets[sid] = std::move(parts);
+  storeSet(ctx, members, kw, ctx.model.part_sets, sid, std::move(parts));
 }
 
 void readSegmentSet(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
@@ -483,9 +498,8 @@ void readElementSet(Context& ctx, const deck::Keyword& kw, const KeywordOptions&
     member(cur, members, elements);
     ctx.collect(cur);
   }
-  if (!members.finish(kw)) return;
-  sortUnique(elements);
-  ctx.model.element_sets[static_cast<std::size_t>(f)][sid] = std::move(elements);
+  storeSet(ctx, members, kw, ctx.model.element_sets[static_cast<std::size_t>(f)], sid,
+           std::move(elements));
 }
 }  // namespace
 

@@ -177,6 +177,31 @@ TEST(BuildModel, SetsListsGenerateGeneralAndSegments) {
   EXPECT_EQ(seg[1], (std::array<int32_t, 4>{n(5), n(6), n(7), n(7)}));
 }
 
+// _COLLECT (Keyword Manual, *SET): the sets of one id are merged, as preprocessors write a
+// set in pieces; a repeat without _COLLECT stays an error, and a bad member in any piece
+// makes the merged set unusable.
+TEST(BuildModel, CollectedSetsOfOneIdAreMerged) {
+  TempDir t;
+  const Model m = build(t,
+                        "*SET_NODE_LIST_COLLECT\n1\n30,1\n*SET_NODE_LIST_COLLECT_TITLE\nmore\n"
+                        "1\n2,1\n*SET_PART_LIST_COLLECT_TITLE\nBASE\n5\n1\n"
+                        "*SET_PART_LIST_COLLECT\n5\n1\n*SET_SOLID_COLLECT\n3\n20\n"
+                        "*SET_SOLID_LIST_COLLECT\n3\n10\n*SET_NODE_LIST_COLLECT\n4\n1\n"
+                        "*SET_NODE_LIST_COLLECT\n4\n99\n");
+  const auto n = [&](int64_t id) { return m.nodeIndex(id); };
+  EXPECT_EQ(m.node_sets.at(1), (std::vector<int32_t>{n(1), n(2), n(30)}));
+  EXPECT_EQ(m.part_sets.at(5), std::vector<int32_t>{0});
+  EXPECT_EQ(m.element_sets[0].at(3), (std::vector<int32_t>{0, 1}));
+  EXPECT_EQ(m.node_sets.count(4), 0u);  // node 99 does not exist: unusable as a whole
+  for (const char* repeat : {"*SET_NODE_LIST\n1\n1\n*SET_NODE_LIST_COLLECT\n1\n2\n",
+                             "*SET_NODE_LIST_COLLECT\n1\n1\n*SET_NODE_LIST\n1\n2\n"}) {
+    const auto d = t.write("dup.k", kMesh + repeat);
+    EXPECT_NE(errorOf([&] { readModel(d); }).find("node set 1 is already defined at"),
+              std::string::npos)
+        << repeat;
+  }
+}
+
 // *SET_SOLID (_LIST, _GENERATE, _TITLE, _ADD): members as indices within the family, ascending;
 // each family has its own ids; an element that does not exist makes the set unusable.
 TEST(BuildModel, ElementSetsListGenerateAddAndMissingMembers) {
@@ -665,6 +690,16 @@ TEST(BuildContact, MppCardsAreReadInTheirPlace) {
   EXPECT_TRUE(reported("BCKT"));
   EXPECT_TRUE(reported("CPARM8"));
   EXPECT_TRUE(reported("CHKSEGS"));
+  // _ID (and _MPP) before the algorithm's last words, as abq2dyn writes them.
+  const Model tied = build(t,
+                           "*CONTACT_TIED_SHELL_EDGE_TO_SURFACE_ID_BEAM_OFFSET_MPP\n8,tie\n"
+                           "0,100\n1,1,3,3\n0.2\n",
+                           "tied.k");
+  ASSERT_EQ(tied.contacts.size(), 1u);
+  EXPECT_EQ(tied.contacts[0].id, 8);
+  EXPECT_EQ(tied.contacts[0].kind, crumple::model::ContactKind::Tied);
+  EXPECT_TRUE(tied.contacts[0].offset);
+  EXPECT_TRUE(tied.contacts[0].tie_rotations);
 }
 
 // *CONTACT_AUTOMATIC_GENERAL takes the beams of its parts as capsules: radius OPTT / 2 of

@@ -155,6 +155,21 @@ TEST(RigidBuild, NodalRigidBodyWithSpcOption) {
   EXPECT_TRUE(r.bodies[3].parts.empty());
 }
 
+TEST(RigidBuild, NodalRigidBodyTitleCardPrecedesEachRecord) {
+  // _TITLE (as preprocessors write it, a name with ';' and '-' before every record).
+  TempDir t;
+  const Model m = build(t,
+                        "*SET_NODE_LIST\n7\n21,22,23\n*SET_NODE_LIST\n6\n24,25\n"
+                        "*CONSTRAINED_NODAL_RIGID_BODY_TITLE\nS7;RB_ELSET_7 - ref node 21\n"
+                        "7\n$\nS70;RB_ELSET_70\n70,0,6\n");
+  const auto& r = m.rigid;
+  ASSERT_EQ(r.bodies.size(), 4u);
+  EXPECT_EQ(r.bodies[2].id, 7);
+  EXPECT_EQ(r.bodies[2].nodes, indices(m, {21, 22, 23}));
+  EXPECT_EQ(r.bodies[3].id, 70);
+  EXPECT_EQ(r.bodies[3].nodes, indices(m, {24, 25}));
+}
+
 TEST(RigidBuild, PrescribedRigidMotion) {
   TempDir t;
   const Model m = build(t,
