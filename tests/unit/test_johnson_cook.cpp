@@ -188,45 +188,61 @@ TEST(JohnsonCook, FractureStrainTerms) {
 }
 
 // A point's result does not depend on its position in the batch (as for the other laws,
-// test_materials.cpp MaterialsBatch.ResultsIndependentOfPositionInBatch), history included.
+// test_materials.cpp MaterialsBatch.ResultsIndependentOfPositionInBatch), history included:
+// VP = 0 with SPALL = 1, VP = 1 with SPALL = 2 and SPALL = 3 (the batch's points flow, then
+// spall at different steps: 12 or 13 of the 13 by the end).
 TEST(JohnsonCook, ResultsIndependentOfPositionInBatch) {
-  const auto law = makeJc(params(kCp, {0.05, 0.2, -2.12, 0.002, 0.61}));
-  for (int pos : {0, 5, 12}) {
-    SCOPED_TRACE(pos);
-    const int N = 13, H = m::JohnsonCook::kHistory;
-    std::mt19937_64 rng(99);
-    std::vector<double> s(6 * N), de(6 * N), ep(N, 0.0), h(H * N, 0.0);
-    std::vector<uint8_t> failed(N, 0);
-    for (double& v : s) v = std::uniform_real_distribution<double>(-300.0, 300.0)(rng);
-    Point lone;
-    for (int k = 0; k < 6; ++k) lone.s[static_cast<std::size_t>(k)] = s[k * N + pos];
-    m::PointBatch big;
-    big.n = N;
-    for (int k = 0; k < 6; ++k) {
-      big.s[k] = &s[k * N];
-      big.de[k] = &de[k * N];
+  const auto base = params(kCp, {0.05, 0.2, -2.12, 0.002, 0.61});
+  auto vp2 = base, spall3 = base;
+  vp2.viscoplastic = true;
+  vp2.spall = m::JohnsonCook::Spall::MaxPrincipalStress;
+  vp2.pc = -400.0;
+  spall3.spall = m::JohnsonCook::Spall::HydrostaticTension;
+  spall3.pc = -150.0;
+  for (const auto& [config, law] :
+       {std::pair{0, makeJc(base)}, std::pair{1, makeJc(vp2)}, std::pair{2, makeJc(spall3)}})
+    for (int pos : {0, 5, 12}) {
+      SCOPED_TRACE(config * 100 + pos);
+      const int N = 13, H = m::JohnsonCook::kHistory;
+      std::mt19937_64 rng(99);
+      std::vector<double> s(6 * N), de(6 * N), ep(N, 0.0), h(H * N, 0.0);
+      std::vector<uint8_t> failed(N, 0);
+      for (double& v : s) v = std::uniform_real_distribution<double>(-300.0, 300.0)(rng);
+      Point lone;
+      for (int k = 0; k < 6; ++k) lone.s[static_cast<std::size_t>(k)] = s[k * N + pos];
+      m::PointBatch big;
+      big.n = N;
+      for (int k = 0; k < 6; ++k) {
+        big.s[k] = &s[k * N];
+        big.de[k] = &de[k * N];
+      }
+      for (int k = 0; k < H; ++k) big.h[k] = &h[k * N];
+      big.eps_p = ep.data();
+      big.failed = failed.data();
+      for (int st = 0; st < 60; ++st) {
+        big.dt = 1e-6 * (1 + st % 3);
+        for (double& v : de) v = std::uniform_real_distribution<double>(-4e-3, 4e-3)(rng);
+        Strain d;
+        for (int k = 0; k < 6; ++k) d[static_cast<std::size_t>(k)] = de[k * N + pos];
+        law.update(big);
+        lone.step(law, d, big.dt);
+      }
+      for (int k = 0; k < 6; ++k)
+        EXPECT_EQ(std::memcmp(&s[k * N + pos], &lone.s[static_cast<std::size_t>(k)], 8), 0) << k;
+      for (int k = 0; k < H; ++k)
+        EXPECT_EQ(std::memcmp(&h[k * N + pos], &lone.h[static_cast<std::size_t>(k)], 8), 0) << k;
+      EXPECT_EQ(std::memcmp(&ep[pos], &lone.eps_p, 8), 0);
+      EXPECT_EQ(failed[pos], lone.failed);
+      if (config > 0) {
+        int spalled = 0;
+        for (int j = 0; j < N; ++j) spalled += h[kSpall * N + std::size_t(j)] != 0.0;
+        EXPECT_GT(spalled, 0);
+        continue;
+      }
+      EXPECT_GT(lone.eps_p, 0.0);
+      EXPECT_GT(lone.h[kDamage], 0.0);
+      EXPECT_GT(lone.h[kHeat], 0.0);
     }
-    for (int k = 0; k < H; ++k) big.h[k] = &h[k * N];
-    big.eps_p = ep.data();
-    big.failed = failed.data();
-    for (int st = 0; st < 60; ++st) {
-      big.dt = 1e-6 * (1 + st % 3);
-      for (double& v : de) v = std::uniform_real_distribution<double>(-4e-3, 4e-3)(rng);
-      Strain d;
-      for (int k = 0; k < 6; ++k) d[static_cast<std::size_t>(k)] = de[k * N + pos];
-      law.update(big);
-      lone.step(law, d, big.dt);
-    }
-    for (int k = 0; k < 6; ++k)
-      EXPECT_EQ(std::memcmp(&s[k * N + pos], &lone.s[static_cast<std::size_t>(k)], 8), 0) << k;
-    for (int k = 0; k < H; ++k)
-      EXPECT_EQ(std::memcmp(&h[k * N + pos], &lone.h[static_cast<std::size_t>(k)], 8), 0) << k;
-    EXPECT_EQ(std::memcmp(&ep[pos], &lone.eps_p, 8), 0);
-    EXPECT_EQ(failed[pos], lone.failed);
-    EXPECT_GT(lone.eps_p, 0.0);
-    EXPECT_GT(lone.h[kDamage], 0.0);
-    EXPECT_GT(lone.h[kHeat], 0.0);
-  }
 }
 
 // VP = 1 in uniaxial stress at a constant axial rate of 1e4 /s (no heating): in every plastic
