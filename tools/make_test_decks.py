@@ -48,6 +48,10 @@
                       backed by copper (*MAT_JOHNSON_COOK with *EOS_TABULATED and its energy
                       term) onto a stonewall: the soil compacts, unloads and reloads as the
                       waves run through it.
+  jc_spall_bar.k      *MAT_JOHNSON_COOK spall across ranks and restarts: a free steel bar
+                      stretched from its middle by its initial velocity; the middle yields and
+                      spalls (part 1 SPALL 2 with VP 1, part 2 SPALL 3) and carries no
+                      tension after, while the ends ring.
 """
 
 from __future__ import annotations
@@ -801,6 +805,49 @@ $ EV1-EV10 (ln V), C1-C10 (GPa), T1-T10, K1-K10 (GPa)
 """
 
 
+def jc_spall_bar(nx: int = 12, n: int = 2, rate: float = 5000.0, end: float = 2.0e-5) -> str:
+    """Units mm, s, tonne, MPa. A free 24 x 4 x 4 mm bar of 4340 steel (Johnson & Cook 1983)
+    along x of nx x n x n hexes, stretched from its middle at `rate` /s by the initial
+    velocity rate (x - 12 mm) (60 m/s at the ends): part 1 at x < 12 mm SPALL 2 with VP 1 and
+    PC -1000 MPa, part 2 the rest SPALL 3 with PC -300 MPa. The middle yields, then spalls;
+    the ends, unloaded by the waves from the free faces, ring."""
+    m = Mesh()
+    block(m, 1, (0.0, 0.0, 0.0), (24.0, 4.0, 4.0), (nx, n, n))
+    m.solids = [(1 if sum(m.nodes[i - 1][0] for i in ns) / 8 < 12.0 else 2, ns)
+                for _, ns in m.solids]
+    velocities = "\n".join(f"{i:10d}{rate * (x - 12.0):10.1f}{0.0:10.1f}{0.0:10.1f}"
+                           for i, (x, _, _) in enumerate(m.nodes, start=1))
+    jc = """     792.0     510.0      0.26     0.014      1.03    1793.0     294.0       1.0"""
+    return f"""*KEYWORD
+*TITLE
+steel bar stretched from its middle (*MAT_JOHNSON_COOK SPALL 2 with VP 1, SPALL 3)
+*CONTROL_TERMINATION
+{end:10.4g}
+*DATABASE_GLSTAT
+{end / 20:10.4g}
+*PART
+spall2_vp1
+         1         1         1         1
+spall3
+         2         1         2         1
+*SECTION_SOLID
+         1         1
+*MAT_JOHNSON_COOK
+         1   7.83e-9   80000.0       0.0       0.0       0.0       1.0       0.0
+{jc}
+    4.77e8   -1000.0       2.0
+*MAT_JOHNSON_COOK
+         2   7.83e-9   80000.0       0.0       0.0       0.0       0.0       0.0
+{jc}
+    4.77e8    -300.0       3.0
+*EOS_LINEAR_POLYNOMIAL
+         1       0.0  160000.0
+*INITIAL_VELOCITY_NODE
+{velocities}
+{m.keyword_text()}*END
+"""
+
+
 def main() -> None:
     out = ROOT / "tests" / "data" / "decks"
     out.mkdir(parents=True, exist_ok=True)
@@ -824,10 +871,11 @@ def main() -> None:
     (out / "joints.k").write_text(joints())
     (out / "shearfix_blocks.k").write_text(shearfix_blocks())
     (out / "eos_tabulated.k").write_text(eos_tabulated())
+    (out / "jc_spall_bar.k").write_text(jc_spall_bar())
     print("wrote tests/data/decks/mixed_conditions.k, structures.k, structures_shell16.k, "
           "rigid_welds.k, contact_blocks.k, contact_tube.k, contact_tied.k, contact_cask.k, "
           "tet_blocks.k, tet13_blocks.k, tet10_bar.k, axisym_rod.k, erosion.k, prism_blocks.k, "
-          "joints.k, shearfix_blocks.k and eos_tabulated.k")
+          "joints.k, shearfix_blocks.k, eos_tabulated.k and jc_spall_bar.k")
 
 
 if __name__ == "__main__":

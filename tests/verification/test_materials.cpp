@@ -459,6 +459,50 @@ TEST(VerificationMaterials, JohnsonCookPullToFailure) {
   RecordProperty("worst_flow_stress_error", fmt::format("{:.3g}", worst));
 }
 
+// SPALL = 2 in a whole run: the hex of uniaxialPull (4340 steel as above, no damage, PC = -500
+// MPa) stretched at 100 /s. Elastic in uniaxial stress, its axial stress is E eps (E = 9 K G
+// / (3 K + G) = 205714 MPa), the largest principal stress; it spalls in the cycle in which that
+// stress first exceeds -PC = 500 MPa, at eps = 500 / E = 2.43e-3 (before yield at 792 MPa), and
+// carries no stress at all for the rest of the pull, while its faces keep moving apart.
+// Measured: 499.89 MPa in the last cycle before the spall (a cycle adds 2.5 MPa), the spall at
+// eps = 2.456e-3, 1.0 % past 500 / E (the hex's elastic slope is 0.6 % below E: the EOS is
+// p = K (V0/V - 1), the strain engineering, the lateral faces ring a little).
+TEST(VerificationMaterials, JohnsonCookMaxPrincipalStressSpall) {
+  const std::string spall =
+      "*MAT_JOHNSON_COOK\n1,7.83e-9,80000.0\n792.0,510.0,0.26,0.014,1.03,1793.0,294.0,1.0\n"
+      "4.77e8,-500.0,2.0\n*EOS_LINEAR_POLYNOMIAL\n1,0.0,160000.0\n";
+  std::string deck = uniaxialPull(spall, 100.0, 0.01);
+  const std::string part = "*PART\nbrick\n         1         1         1\n";
+  ASSERT_NE(deck.find(part), std::string::npos);
+  deck.replace(deck.find(part), part.size(), "*PART\nsteel\n1,1,1,1\n");
+  auto sim = Simulation::fromText("jc_spall", deck);
+  using Block = std::decay_t<decltype(sim->sd.solid_blocks.at(0))>;
+  const double E = 9.0 * 160000.0 * 80000.0 / (3.0 * 160000.0 + 80000.0);
+  double last_stress = 0.0, strain_at_spall = -1.0;
+  int after = 0;
+  while (!sim->solver->finished()) {
+    sim->solver->step();
+    const auto& blk = sim->sd.solid_blocks.at(0);
+    const double flag =
+        blk.hist.at(Block::blocked(blk.history, crumple::materials::JohnsonCook::kSpall, 0));
+    if (flag == 0.0) {
+      last_stress = blk.sigAt(0, 0);
+      EXPECT_LE(last_stress, 500.0);
+      continue;
+    }
+    if (strain_at_spall < 0.0) strain_at_spall = sim->x(2, 0) - sim->x(1, 0) - 1.0;
+    for (int k = 0; k < 6; ++k) EXPECT_EQ(blk.sigAt(k, 0), 0.0);
+    ++after;
+  }
+  ASSERT_GT(strain_at_spall, 0.0) << "the hex did not spall";
+  EXPECT_GT(after, 100);          // cycles after the spall, to 1 % strain
+  EXPECT_GT(last_stress, 495.0);  // within two cycles' rise of 500 MPa
+  EXPECT_NEAR(strain_at_spall, 500.0 / E, 0.02 * 500.0 / E);
+  EXPECT_GT(sim->x(2, 0) - sim->x(1, 0) - 1.0, 0.009);
+  RecordProperty("spall_strain",
+                 fmt::format("{:.5g} (500 / E = {:.5g})", strain_at_spall, 500.0 / E));
+}
+
 namespace {
 
 // *MAT_POWER_LAW_PLASTICITY (mm, s, t, MPa): E 210 GPa, PR 0.3, k 500 MPa, n 0.2, Cowper-Symonds

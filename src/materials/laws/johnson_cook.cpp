@@ -7,6 +7,7 @@
 #include "deck/card.hpp"
 #include "deck/layout.hpp"
 #include "materials/eos_return.hpp"
+#include "materials/principal.hpp"
 #include "materials/return_mapping.hpp"
 #include "util/error.hpp"
 
@@ -32,14 +33,14 @@ namespace {
 void readOptions(LawInput& in, const deck::Card& c1, const deck::Card& c3, const deck::Card& c4) {
   for (const char* f : {"E", "PR", "DTF"})
     if (c1.real(f) != 0.0) in.ignore(c1, f, "used by shells only; solids are supported");
-  if (c1.real("VP") != 0.0)
-    in.reject(c1, "VP", "only VP = 0 (rate effects scale the yield stress) is supported");
+  if (const double vp = c1.real("VP"); vp != 0.0 && vp != 1.0)
+    in.reject(c1, "VP", "VP is 0 (rate effects scale the yield stress) or 1 (viscoplastic)");
   if (c1.real("RATEOP") != 0.0)
     in.reject(c1, "RATEOP", "only RATEOP = 0 (the log-linear Johnson-Cook rate term) is supported");
-  if (c3.real("SPALL") != 1.0)
+  if (const double sp = c3.real("SPALL"); sp != 0.0 && sp != 1.0 && sp != 2.0 && sp != 3.0)
     in.reject(c3, "SPALL",
-              "only SPALL = 1 (the tensile pressure limit p >= PC) is supported; 0 (= 2, maximum "
-              "principal stress) and 3 (hydrostatic tension) are not");
+              "the spall model is 0 (= 2), 1 (pressure limit p >= PC), 2 (maximum principal "
+              "stress) or 3 (hydrostatic tension)");
   if (c3.real("IT") != 0.0) in.ignore(c3, "IT", "the plastic strain iteration of shells");
   if (c4.real("C2/P") != 0.0) in.ignore(c4, "C2/P", "a parameter of RATEOP = 1 or 3");
   if (c4.real("EROD") != 0.0)
@@ -91,6 +92,12 @@ JohnsonCook::Params JohnsonCook::read(LawInput& in) {
   for (int i = 0; i < 4; ++i) p.d[static_cast<std::size_t>(i)] = c3.real(kD[i]);
   p.d[4] = c4.real("D5");
   p.efmin = c4.real("EFMIN");
+  p.viscoplastic = c1.real("VP") == 1.0;
+  // SPALL = 0 is the Keyword Manual's default, "set to 2.0".
+  const double spall = c3.real("SPALL");
+  p.spall = spall == 1.0   ? Spall::PressureLimit
+            : spall == 3.0 ? Spall::HydrostaticTension
+                           : Spall::MaxPrincipalStress;
   checkFields(p, c1, c2, c3, c4);
   readOptions(in, c1, c3, c4);
   if (!(p.epso > 0.0)) p.epso = 1.0;  // unused (C = D4 = 0): any positive rate
@@ -153,21 +160,78 @@ double JohnsonCook::fractureStrain(double triax, double rate, double dT) const {
   return std::max(par.efmin, f);
 }
 
+double JohnsonCook::viscoplasticIncrement(double q, double eps_p, double scale, double dt) const {
+  // The flow stress rises with x both through the hardening and through the rate factor at
+  // x / dt (d/dx C ln(x / (dt EPSO)) = C / x above the threshold), so the residual still falls
+  // monotonically from x = 0 and the safeguarded Newton return of return_mapping.hpp applies.
+  return radialReturnIncrement(q, eps_p, 3.0 * par.G, [&](double e, double& y, double& h) {
+    const double x = e - eps_p, rate = plasticRate(x, dt), rf = rateFactor(rate);
+    y = scale * hardening(e) * rf;
+    h = scale * (hardeningSlope(e) * rf + (rate > par.epso ? hardening(e) * par.c / x : 0.0));
+  });
+}
+
 void JohnsonCook::update(PointBatch& b) const {
   for (int i = 0; i < b.n; ++i) {
-    const double dT = b.h[kHeat][i], e = b.eps_p[i];
-    double rate = 0.0, scale = 1.0;
-    // The radial return to the Johnson-Cook surface at the step's rate and starting
-    // temperature; the pressure cut off at PC (SPALL = 1).
-    const EosReturn r =
-        eosRadialReturn(b, i, par.G, eos, par.rho, par.pc, [&](double q, const double* d) {
-          rate = effectiveStrainRate(d, b.dt);
-          scale = rateFactor(rate) * thermalFactor(dT);
-          return q > scale * hardening(e) ? returnIncrement(q, e, scale) : 0.0;
-        });
-    b.eps_p[i] = e + r.x;
-    if (r.x > 0.0) heatAndDamage(b, i, Increment{e, r.x, scale, rate, dT, r.p});
+    if (par.spall == Spall::PressureLimit) {
+      plasticStep(b, i);
+    } else if (b.h[kSpall][i] != 0.0) {
+      rubbleStep(b, i);
+    } else if (const double p = plasticStep(b, i); spalls(b, i, p)) {
+      // Spalled for good (the flag goes through restart dumps with the other history).
+      b.h[kSpall][i] = 1.0;
+      setRubbleStress(b, i, p);
+    }
   }
+}
+
+double JohnsonCook::plasticStep(PointBatch& b, int i) const {
+  const double dT = b.h[kHeat][i], e = b.eps_p[i];
+  double rate = 0.0, scale = 1.0;
+  // The radial return to the Johnson-Cook surface at the step's rate and starting temperature;
+  // the pressure cut off at PC with SPALL = 1 only (SPALL 2 and 3 spall the point instead).
+  const double pc =
+      par.spall == Spall::PressureLimit ? par.pc : -std::numeric_limits<double>::infinity();
+  const EosReturn r =
+      eosRadialReturn(b, i, par.G, eos, par.rho, pc, [&](double q, const double* d) {
+        if (par.viscoplastic) {
+          // VP = 1: yield at the static surface; the rate factor at the plastic rate x / dt.
+          const double thermal = thermalFactor(dT);
+          const double x =
+              q > thermal * hardening(e) ? viscoplasticIncrement(q, e, thermal, b.dt) : 0.0;
+          rate = plasticRate(x, b.dt);
+          scale = rateFactor(rate) * thermal;
+          return x;
+        }
+        rate = effectiveStrainRate(d, b.dt);
+        scale = rateFactor(rate) * thermalFactor(dT);
+        return q > scale * hardening(e) ? returnIncrement(q, e, scale) : 0.0;
+      });
+  b.eps_p[i] = e + r.x;
+  if (r.x > 0.0) heatAndDamage(b, i, Increment{e, r.x, scale, rate, dT, r.p});
+  return r.p;
+}
+
+bool JohnsonCook::spalls(const PointBatch& b, int i, double p) const {
+  // The Keyword Manual's tests: sigma_max >= -PC (SPALL 2), p < PC (SPALL 3); strict for
+  // SPALL 2 as well, so that with PC = 0 a stress-free point does not spall.
+  if (par.spall == Spall::HydrostaticTension) return p < par.pc;
+  const Voigt s{b.s[0][i], b.s[1][i], b.s[2][i], b.s[3][i], b.s[4][i], b.s[5][i]};
+  return principalOf(s).value[2] > -par.pc;
+}
+
+void JohnsonCook::setRubbleStress(PointBatch& b, int i, double p) {
+  const double held = std::max(p, 0.0);
+  for (int k = 0; k < 6; ++k) b.s[k][i] = k < 3 ? -held : 0.0;
+}
+
+void JohnsonCook::rubbleStep(PointBatch& b, int i) const {
+  // No deviator, hence no deviatoric work; the EOS's pressure cut off at 0 (its energy update
+  // does the step's work at the cutoff when it holds).
+  const double tr = b.de[0][i] + b.de[1][i] + b.de[2][i];
+  const double p_old = -(b.s[0][i] + b.s[1][i] + b.s[2][i]) / 3.0;
+  setRubbleStress(b, i,
+                  eosPointStep(eos, par.rho, 0.0, b.h[0][i], b.h[1][i], b.h[2][i], 0.0, p_old, tr));
 }
 
 void JohnsonCook::heatAndDamage(PointBatch& b, int i, const Increment& in) const {
