@@ -43,16 +43,17 @@ def tip_node():
 
 
 def t_joint(merged=False, support="clamped", force=0.01, ramp=6.0, end=20.0, damping=1.0,
-            contact="*CONTACT_TIED_SHELL_EDGE_TO_SURFACE_ID", dt_out=0.5):
+            contact="*CONTACT_TIED_SHELL_EDGE_TO_SURFACE_ID", dt_out=0.5, gap=0.0, sst=None):
     """support: "clamped" (every plate node held: a rigid base) or "edges" (the plate held at
-    y = +-20 only, so that it bends under the strip's moment)."""
+    y = +-20 only, so that it bends under the strip's moment). `gap`: the strip stands that far
+    above the plate; `sst`: the contact's card 3 SST if given (negative: a tie distance)."""
     nodes = {}
     for j in range(PLATE_N + 1):
         for i in range(PLATE_N + 1):
             nodes[_plate_node(i, j)] = (H * i, H * j - 20.0, 0.0)
     for k in range(STRIP_NZ + 1):
         for i in range(STRIP_NX + 1):
-            nodes[_strip_node(i, k, merged)] = (10.0 + H * i, 0.0, H * k)
+            nodes[_strip_node(i, k, merged)] = (10.0 + H * i, 0.0, H * k + gap)
     shells = []
     for j in range(PLATE_N):
         for i in range(PLATE_N):
@@ -123,6 +124,8 @@ strip
     if not merged:
         s += node_list(2, edge)
         s += f"{contact}\n1,tee\n2,1,4,3\n"
+        if sst is not None:
+            s += f"0.0\n1.0,1.0,{sst},0.0\n"
     s += "*NODE\n" + "".join(f"{n},{x},{y},{z}\n" for n, (x, y, z) in sorted(nodes.items()))
     s += "*ELEMENT_SHELL\n" + "".join(",".join(str(v) for v in e) + "\n" for e in shells)
     return s + "*END\n"

@@ -579,9 +579,11 @@ void Contact::moveNode(std::size_t node, const Vec3& dx) {
 
 void Contact::tieNodes(std::size_t pass, bool keep_offset) {
   // Each node is tied to the nearest point of the segment it lies on (within a tolerance of
-  // the segment's size, as DYNA3D's tied slide surfaces), for the whole run; without _OFFSET
-  // it is first moved onto that point. Every rank does the same, in check order.
+  // the segment's size, as DYNA3D's tied slide surfaces, or the interface's tie distance:
+  // negative SST/MST), for the whole run; without _OFFSET it is first moved onto that point.
+  // Every rank does the same, in check order.
   const Pass& p = passes_[pass];
+  const double tie_distance = model_.contacts[std::size_t(p.iface)].tie_distance;
   for (std::size_t k = 0; k < p.node.size(); ++k) {
     const auto check = std::size_t(p.first_check) + k;
     const auto node = std::size_t(p.node[k]);
@@ -590,7 +592,7 @@ void Contact::tieNodes(std::size_t pass, bool keep_offset) {
     Projection best_pr;
     double best_dist = 1e300;
     std::vector<int32_t> candidates;
-    search_.collectCandidates(p, pass, int32_t(check), 0.0, x_, candidates);
+    search_.collectCandidates(p, pass, int32_t(check), tie_distance, x_, candidates);
     std::sort(candidates.begin(), candidates.end());
     for (int32_t s : candidates) {
       const auto& sn = p.seg[std::size_t(s)];
@@ -602,7 +604,9 @@ void Contact::tieNodes(std::size_t pass, bool keep_offset) {
       const double size =
           std::sqrt(0.5 * norm(cross(sub(at(x_, std::size_t(sn[2])), at(x_, std::size_t(sn[0]))),
                                      sub(at(x_, std::size_t(sn[3])), at(x_, std::size_t(sn[1]))))));
-      const double tolerance = std::max(0.05 * size, 2.0 * p.seg_half[std::size_t(s)]);
+      const double tolerance = tie_distance > 0.0
+                                   ? tie_distance
+                                   : std::max(0.05 * size, 2.0 * p.seg_half[std::size_t(s)]);
       if (dist <= tolerance && dist < best_dist) {
         best = s;
         best_pr = pr;

@@ -559,6 +559,18 @@ bool readContactType(const std::string& name, ContactInterface& ci) {
 
 namespace {
 
+// SST, MST: contact thicknesses, or, negative in a tied interface, the distance within which
+// its nodes are tied (Keyword Manual, *CONTACT card 3); the thicknesses are then the shells'.
+void readTieDistance(const Card& c3, ContactInterface& ci) {
+  for (auto [field, value] : {std::pair{"SST", &ci.sst}, std::pair{"MST", &ci.mst}}) {
+    if (*value >= 0) continue;
+    if (ci.kind != ContactKind::Tied)
+      c3.fail(field, "must not be negative (a negative value is a tie distance of tied contacts)");
+    ci.tie_distance = std::max(ci.tie_distance, -*value);
+    *value = 0;
+  }
+}
+
 std::string algorithmName(std::string_view keyword) {
   std::string name;
   for (std::size_t start = 0; start <= keyword.size();) {
@@ -643,8 +655,7 @@ void readContact(Context& ctx, const deck::Keyword& kw, const KeywordOptions& op
   ci.mst = c3.real("MST");
   if (ci.sfs <= 0) c3.fail("SFS", "must be positive");
   if (ci.sfm <= 0) c3.fail("SFM", "must be positive");
-  if (ci.sst < 0) c3.fail("SST", "must not be negative");
-  if (ci.mst < 0) c3.fail("MST", "must not be negative");
+  readTieDistance(c3, ci);
   ci.soft = int(ca.integer("SOFT"));
   if (ci.soft < 0 || ci.soft > 2) ctx.reject(ca, "SOFT", "only SOFT 0, 1 and 2 are supported");
   ci.sofscl = ca.real("SOFSCL");

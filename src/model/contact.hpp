@@ -86,6 +86,10 @@ struct ContactInterface {
   double birth = 0, death = 1e20;
   double sfs = 1, sfm = 1;  // penalty scale factors of the A and B segments (SFSA, SFSB)
   double sst = 0, mst = 0;  // contact thickness overrides of A and B (0 = shell thickness)
+  // Tied interfaces: the largest distance from a node to the segment it is tied to, when SST
+  // or MST is negative (Keyword Manual, *CONTACT card 3: a tie then depends only on the
+  // separation, against their absolute value); 0: the thickness-based tolerance.
+  double tie_distance = 0;
   // 1: stiffness also from the nodal masses and the time step; 2: segment-based contact,
   // segment pairs with a stiffness from their masses and the time step (docs/theory.md,
   // "Segment-based contact").

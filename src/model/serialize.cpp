@@ -396,6 +396,7 @@ void fields(A& a, M& m) {
         a(c.sfm);
         a(c.sst);
         a(c.mst);
+        a(c.tie_distance);
         a(c.soft);
         a(c.sofscl);
         a(c.sbopt);

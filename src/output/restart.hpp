@@ -29,7 +29,8 @@ namespace crumple::output {
 // variable (*MAT_JOHNSON_COOK's damage and temperature move to the fourth and fifth), and the
 // model's equations of state carry the tabulated forms' points.
 // 5: contact keeps the penalty energy each node check held last cycle (booked as contact
-// energy when the check ends while penetrated).
+// energy when the check ends while penetrated), and *MAT_JOHNSON_COOK a sixth history
+// variable (the spall flag).
 inline constexpr uint32_t kDumpVersion = 5;
 
 // One part of the state. `save` is collective (every rank calls every section's save, in

@@ -54,6 +54,27 @@ class TiedShellEdge(TempDirTest):
         glstat = rows(out, "glstat.csv")
         self.assertAlmostEqual(glstat[-1]["energy_ratio"], 1.0, delta=0.01)
 
+    def test_negative_sst_ties_across_a_gap(self):
+        # SST < 0 in a tied interface (Keyword Manual, *CONTACT card 3; abq2dyn writes -5.0):
+        # nodes within |SST| of the surface are tied, whatever the thicknesses. The strip stood
+        # 3 mm above the plate (more than the plate's thickness, the default tolerance) is
+        # tied with SST = -5, its gap kept (_BEAM_OFFSET), and is the same cantilever: the tip
+        # deflection within 1% of the strip standing on the plate. With SST = 0 nothing is
+        # tied; SST < 0 in a contact that is not tied is an error.
+        d = decks()
+        force = 0.01
+        on_plate, _ = self.run_tee("tied_on_plate", force=force)
+        contact = "*CONTACT_TIED_SHELL_EDGE_TO_SURFACE_ID_BEAM_OFFSET"
+        gapped, out = self.run_tee("tied_gap", force=force, gap=3.0, sst=-5.0, contact=contact)
+        self.assertEqual(clitest.read_summary(out)["contact"]["tied_nodes"], 5)
+        self.assertAlmostEqual(gapped / on_plate, 1.0, delta=0.01)
+        loose = self.run_deck("loose", d.t_joint(gap=3.0, sst=0.0, contact=contact, end=0.5))
+        self.assertEqual(clitest.read_summary(loose)["contact"]["tied_nodes"], 0)
+        bad = self.write("bad.k", d.t_joint(sst=-5.0, contact="*CONTACT_AUTOMATIC_NODES_TO_SURFACE_ID"))
+        p = clitest.crumple("check", bad, cwd=self.tmp)
+        self.assertNotEqual(p.returncode, 0)
+        self.assertIn("SST", p.stdout + p.stderr)
+
     def test_moment_goes_into_a_flexible_plate(self):
         tied, _ = self.run_tee("tied_plate", support="edges")
         merged, _ = self.run_tee("merged_plate", support="edges", merged=True)
