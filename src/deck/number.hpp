@@ -12,24 +12,38 @@
 
 namespace crumple::deck {
 
+// The first byte of s[first, last) that is not a space (last if none). Fixed-format fields
+// are mostly leading blanks ("               0"): eight at a time, the blanks of the first word
+// that is not all blank counted at once (bytes in memory order).
+inline std::size_t firstNonSpace(std::string_view s, std::size_t first, std::size_t last) {
+  static_assert(std::endian::native == std::endian::little);
+  constexpr uint64_t kEightBlanks = 0x2020202020202020ULL;
+  for (uint64_t w; last - first >= 8; first += 8) {
+    std::memcpy(&w, s.data() + first, 8);
+    if (const uint64_t other = w ^ kEightBlanks; other != 0)
+      return first + static_cast<std::size_t>(std::countr_zero(other) / 8);
+  }
+  while (first < last && s[first] == ' ') ++first;
+  return first;
+}
+
 // Leading and trailing blanks removed. Inline: a deck's fields are trimmed several times each
 // (a call was a tenth of the instructions of reading one), and a plain loop, because
 // find_first_not_of with a set of characters calls memchr once per character.
 inline std::string_view trim(std::string_view s) {
   const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
-  std::size_t first = 0, last = s.size();
-  // Fixed-format fields are mostly leading blanks ("               0"): eight at a time, the
-  // blanks of the first word that is not all blank counted at once (bytes in memory order).
-  static_assert(std::endian::native == std::endian::little);
-  constexpr uint64_t kEightBlanks = 0x2020202020202020ULL;
-  for (uint64_t w; last - first >= 8;) {
-    std::memcpy(&w, s.data() + first, 8);
-    const uint64_t other = w ^ kEightBlanks;
-    first += other == 0 ? 8 : static_cast<std::size_t>(std::countr_zero(other) / 8);
-    if (other != 0) break;
-  }
+  std::size_t first = firstNonSpace(s, 0, s.size()), last = s.size();
   while (first < last && blank(s[first])) ++first;
   while (last > first && blank(s[last - 1])) --last;
+  return s.substr(first, last - first);
+}
+
+// Leading and trailing spaces removed, nothing else: a field read in place (Card::readColumns)
+// holds no other blank, since a tab sends its line to the general reading.
+inline std::string_view trimSpaces(std::string_view s) {
+  std::size_t last = s.size();
+  while (last > 0 && s[last - 1] == ' ') --last;
+  const std::size_t first = firstNonSpace(s, 0, last);
   return s.substr(first, last - first);
 }
 
