@@ -115,6 +115,9 @@ class Card {
   // The usual card: fixed columns, every value a plain number or text, no comma, tab or '&'
   // anywhere in the line. False (the card unread) when anything needs the general reading.
   bool readColumns(std::string_view text);
+  // One field of such a line into `v` (left blank when it is); false when it needs the general
+  // reading.
+  static bool readPlainField(FieldType type, std::string_view raw, Value& v);
   // The text of each field in the card's columns into `out` (room for every field); how many.
   std::size_t fixedFields(std::string_view text, std::span<std::string_view> out) const;
   bool outOfColumns(std::string_view text, std::span<const std::string_view> fields) const;

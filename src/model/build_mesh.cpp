@@ -655,10 +655,9 @@ void noteDegenerateSolids(Context& ctx) {
   std::map<int32_t, std::array<std::size_t, 3>> count;
   for (std::size_t e = 0; e < m.solids.size(); ++e) {
     const Degenerate shape = degenerateShape(m.solids.nodes[e]);
+    if (shape == Degenerate::None) continue;  // the usual hexahedron: no formulation to look up
     const int form = m.solidFormulation(e);
-    if (shape == Degenerate::None || isTetrahedron(form) || form == 15 ||
-        isQuadraticTetrahedron(form))
-      continue;
+    if (isTetrahedron(form) || form == 15 || isQuadraticTetrahedron(form)) continue;
     ++count[m.solids.part[e]][static_cast<std::size_t>(shape) - 1];
   }
   for (const auto& [part, n] : count) {

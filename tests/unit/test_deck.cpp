@@ -753,37 +753,12 @@ std::string cardReading(const crumple::deck::CardSpec& spec, const crumple::deck
 
 // A field's text as decks write it, well or badly.
 std::string randomValue(std::mt19937_64& rng) {
-  static const std::array<const char*, 30> kOdd = {"",
-                                                   "-",
-                                                   ".",
-                                                   "+5",
-                                                   "1.5-3",
-                                                   "2.0D0",
-                                                   "1e400",
-                                                   "abc",
-                                                   "1 2",
-                                                   "\t7",
-                                                   "3\t",
-                                                   "4,5",
-                                                   "&p",
-                                                   "-&p",
-                                                   "&p*2",
-                                                   "&q",
-                                                   "1e",
-                                                   "1.e5",
-                                                   "-0",
-                                                   "-0.0",
-                                                   "0.5",
-                                                   "12.",
-                                                   "1E+2",
-                                                   "7.85e-6",
-                                                   "9007199254740993",
-                                                   "1234567890123456789",
-                                                   "-12345678901234567",
-                                                   "x1",
-                                                   "1.0",
-                                                   "2.5"};
-  std::uniform_int_distribution<int> kind(0, 5), digits(1, 9), small(0, 999999);
+  // Odd values, '|' between them: signs, Fortran and D exponents, blanks, tabs and commas inside,
+  // parameters, too many digits, leading zeros.
+  static constexpr std::string_view kOdd =
+      "|-|.|+5|1.5-3|2.0D0|1e400|abc|1 2|\t7|3\t|4,5|&p|-&p|&p*2|&q|1e|1.e5|-0|-0.0|0.5|12.|1E+2|"
+      "7.85e-6|9007199254740993|1234567890123456789|-12345678901234567|x1|1.0|00000012";
+  std::uniform_int_distribution<int> kind(0, 6), digits(1, 9), small(0, 999999);
   switch (kind(rng)) {
     case 0:
       return "";
@@ -799,8 +774,16 @@ std::string randomValue(std::mt19937_64& rng) {
       std::uniform_real_distribution<double> x(-1.0, 1.0);
       return fmt::format("{:.6E}", x(rng) * std::pow(10.0, digits(rng) - 5));
     }
-    default:
-      return kOdd[std::uniform_int_distribution<std::size_t>(0, kOdd.size() - 1)(rng)];
+    case 6:  // ids of eight digits, as large models number them
+      return std::to_string(std::uniform_int_distribution<int>(0, 99999999)(rng));
+    default: {
+      std::vector<std::string_view> odd;
+      for (std::size_t at = 0, bar = 0; bar != std::string_view::npos; at = bar + 1) {
+        bar = kOdd.find('|', at);
+        odd.push_back(kOdd.substr(at, bar == std::string_view::npos ? bar : bar - at));
+      }
+      return std::string(odd[std::uniform_int_distribution<std::size_t>(0, odd.size() - 1)(rng)]);
+    }
   }
 }
 
