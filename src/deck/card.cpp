@@ -94,10 +94,8 @@ bool parsePlainInteger(std::string_view s, int64_t& out) {
 // An integer field as pre-processors write ids and flags: blanks, then at most eight digits
 // that end the field (a field of eight columns or more, whole in the line). Read is the value
 // and the digits' text, Blank a field of blanks only, Other anything else (a sign, a blank
-// after the digits, more digits), left to the scalar reading. The eight digits are read at
-// once in a 64-bit word: each byte's digit, then pairs, quads and all eight by three
-// multiplications (Lemire, "Number parsing at a gigabyte per second", 2021), the leading
-// blanks read as zeros.
+// after the digits, more digits), left to the scalar reading. The last eight columns are read
+// at once (eightDigitsValue), the leading blanks among them as zeros.
 enum class Digits : uint8_t { Blank, Read, Other };
 Digits rightAlignedDigits(std::string_view s, int64_t& value, std::string_view& text) {
   if (s.size() < 8 || firstNonSpace(s, 0, s.size() - 8) != s.size() - 8) return Digits::Other;
@@ -107,16 +105,9 @@ Digits rightAlignedDigits(std::string_view s, int64_t& value, std::string_view& 
   if (nonblank == 0) return Digits::Blank;
   const int blanks = std::countr_zero(nonblank) / 8;  // the first bytes in memory order
   const uint64_t keep = ~uint64_t{0} << (8 * blanks);
-  // A digit byte XOR '0' is 0..9: with 0x76 added its high bit stays clear (carries between
-  // bytes only come from bytes already failed).
   const uint64_t d = w ^ 0x3030303030303030ULL;
-  if (((d | (d + 0x7676767676767676ULL)) & 0x8080808080808080ULL & keep) != 0) return Digits::Other;
-  uint64_t v = d & keep;
-  v = v * 10 + (v >> 8);
-  v = ((v & 0x000000FF000000FFULL) * 0x000F424000000064ULL +
-       ((v >> 16) & 0x000000FF000000FFULL) * 0x0000271000000001ULL) >>
-      32;
-  value = static_cast<int64_t>(static_cast<uint32_t>(v));
+  if ((nonDigitBytes(d) & keep) != 0) return Digits::Other;
+  value = static_cast<int64_t>(eightDigitsValue(d & keep));
   text = s.substr(s.size() - 8 + static_cast<std::size_t>(blanks));
   return Digits::Read;
 }

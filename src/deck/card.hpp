@@ -116,8 +116,8 @@ class Card {
   // anywhere in the line. False (the card unread) when anything needs the general reading.
   bool readColumns(std::string_view text);
   // One field of such a line into `v` (left blank when it is); false when it needs the general
-  // reading.
-  static bool readPlainField(FieldType type, std::string_view raw, Value& v);
+  // reading. Defined (inline) in card.cpp, its only user.
+  static inline bool readPlainField(FieldType type, std::string_view raw, Value& v);
   // The text of each field in the card's columns into `out` (room for every field); how many.
   std::size_t fixedFields(std::string_view text, std::span<std::string_view> out) const;
   bool outOfColumns(std::string_view text, std::span<const std::string_view> fields) const;
@@ -133,7 +133,7 @@ class Card {
   // Sets a numeric field; `what` names the value if an integer field gets a fraction.
   void setNumber(std::size_t i, double x, const std::string& what);
 
-  const CardSpec* spec_ = nullptr;
+  const CardSpec* spec_ = nullptr;  // a table entry: it outlives the card
   // The layout columns_ was compiled for (a reused card mostly reads the same layout again).
   const CardSpec* compiled_ = nullptr;
   Format compiled_format_ = Format::Standard;
