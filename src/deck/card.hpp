@@ -5,6 +5,7 @@
 //   deck.k:123: *MAT_ELASTIC card 1 field 3 (E): 'abc' is not a number
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <deque>
 #include <optional>
@@ -33,23 +34,34 @@ struct UnusedValue {
 
 class Card {
  public:
+  // How a line is read. Columns: a line of plainly written values in the card's columns is
+  // read in one pass over the compiled columns (readColumns), anything else as General; General
+  // only: for tests that compare the two readings value for value.
+  enum class Reading : uint8_t { Columns, General };
+
   // Parses `line` (nullptr: a card absent from the deck, all fields default). Throws
   // util::InputError for a value that is not of the field's type.
-  Card(const CardSpec& spec, const DataLine* line, const Keyword& keyword, const Deck& deck);
+  Card(const CardSpec& spec, const DataLine* line, const Keyword& keyword, const Deck& deck,
+       Reading reading = Reading::Columns);
   // The values view the deck's text and the card's own strings: a copy would view the
   // original's.
   Card(const Card&) = delete;
   Card& operator=(const Card&) = delete;
   // Reads another line into this card, keeping its storage (a list keyword reads one card per
   // record: no allocation per line).
-  void assign(const CardSpec& spec, const DataLine* line, const Keyword& keyword, const Deck& deck);
+  void assign(const CardSpec& spec, const DataLine* line, const Keyword& keyword, const Deck& deck,
+              Reading reading = Reading::Columns);
 
   // Values after defaulting: a blank field, or 0 in a kZeroIsDefault field, gives the default.
+  // A field by name, or by its slot of this card's layout (found once: no look-up per line).
   int64_t integer(std::string_view field) const;
+  int64_t integer(const FieldSlot& field) const;
   double real(std::string_view field) const;
+  double real(const FieldSlot& field) const;
   std::string text(std::string_view field) const;  // trimmed
   // True when the field was left blank (or the card is absent).
   bool blank(std::string_view field) const;
+  bool blank(const FieldSlot& field) const;
   bool allBlank() const;
 
   // "deck.k:12: *PART card 2 field 3 (MID)"
@@ -78,18 +90,41 @@ class Card {
     std::string name;
     bool negate = false;
   };
+  // A field's columns in the keyword's format: [begin, end), end kRestOfLine for a wide text
+  // field that ends the card. Worked out once per card layout and format (compile), not per
+  // field of every line.
+  struct Column {
+    std::size_t begin = 0, end = 0;
+    FieldType type = FieldType::Real;
+  };
+  static constexpr std::size_t kRestOfLine = std::string_view::npos;
   static std::optional<Reference> plainReference(std::string_view s);
+  void compile(const CardSpec& spec, Format format);
+  // The index of a slot of this card's layout (a slot of another layout is a coding error).
+  std::size_t slotIndex(const FieldSlot& field) const {
+    if (field.card != spec_) [[unlikely]]
+      wrongCard(field);
+    return field.index;
+  }
+  [[noreturn]] void wrongCard(const FieldSlot& field) const;
+  [[noreturn]] void notInteger(std::size_t i, std::string_view field) const;
+  void readGeneral(std::string_view text);
   bool splittable() const;
   bool freeFormat(std::string_view text) const;
   void readFree(std::string_view text);
-  // The usual card: fixed columns, every value a plain number or text. False (the card
-  // unread) when anything needs the general reading.
-  bool readPlainFixed(std::string_view text);
+  // The usual card: fixed columns, every value a plain number or text, no comma, tab or '&'
+  // anywhere in the line. False (the card unread) when anything needs the general reading.
+  bool readColumns(std::string_view text);
+  // One field of such a line into `v` (left blank when it is); false when it needs the general
+  // reading. Defined (inline) in card.cpp, its only user.
+  static inline bool readPlainField(FieldType type, std::string_view raw, Value& v);
   // The text of each field in the card's columns into `out` (room for every field); how many.
   std::size_t fixedFields(std::string_view text, std::span<std::string_view> out) const;
   bool outOfColumns(std::string_view text, std::span<const std::string_view> fields) const;
   bool readSpaced(std::string_view text);
   std::size_t index(std::string_view field) const;
+  int64_t integerAt(std::size_t i, std::string_view field) const;
+  double realAt(std::size_t i) const;
   // Keeps `text` (a parameter's value) for as long as the card: the value views it.
   std::string_view own(std::string text);
   void parseField(std::size_t i, std::string_view raw);
@@ -98,7 +133,11 @@ class Card {
   // Sets a numeric field; `what` names the value if an integer field gets a fraction.
   void setNumber(std::size_t i, double x, const std::string& what);
 
-  const CardSpec* spec_;
+  const CardSpec* spec_ = nullptr;  // a table entry: it outlives the card
+  // The layout columns_ was compiled for (a reused card mostly reads the same layout again).
+  const CardSpec* compiled_ = nullptr;
+  Format compiled_format_ = Format::Standard;
+  std::vector<Column> columns_;
   const Keyword* keyword_;
   const Deck* deck_;
   int32_t file_ = 0, line_ = 0;
@@ -112,6 +151,39 @@ class Card {
   mutable std::size_t next_field_ = 0;
   bool spaced_ = false;
 };
+
+// Inline: a list keyword reads every field of every line through these.
+inline int64_t Card::integerAt(std::size_t i, std::string_view field) const {
+  used_[i] = 1;
+  const FieldSpec& f = spec_->fields[i];
+  const Value& v = values_[i];
+  if (v.blank || (f.zeroIsDefault() && v.inum == 0)) return static_cast<int64_t>(f.def);
+  if (f.type == FieldType::Real) {
+    if (std::trunc(v.num) != v.num) notInteger(i, field);
+    return static_cast<int64_t>(v.num);
+  }
+  return v.inum;
+}
+
+inline int64_t Card::integer(const FieldSlot& field) const {
+  return integerAt(slotIndex(field), field.name);
+}
+
+inline double Card::realAt(std::size_t i) const {
+  used_[i] = 1;
+  const FieldSpec& f = spec_->fields[i];
+  const Value& v = values_[i];
+  if (v.blank || (f.zeroIsDefault() && v.num == 0.0)) return f.def;
+  return v.num;
+}
+
+inline double Card::real(const FieldSlot& field) const {
+  return realAt(slotIndex(field));
+}
+
+inline bool Card::blank(const FieldSlot& field) const {
+  return values_[slotIndex(field)].blank;
+}
 
 // Walks the data lines of one keyword, card by card.
 class CardCursor {

@@ -640,6 +640,15 @@ const CardSpec& KeywordSpec::card(std::string_view label) const {
   throw std::logic_error("no " + std::string(label) + " in the table of " + std::string(name));
 }
 
+FieldSlot CardSpec::slot(std::string_view name) const {
+  const auto named = [&](const FieldSpec& f) { return f.name == name; };
+  const auto it = std::find_if(fields.begin(), fields.end(), named);
+  if (it == fields.end() || std::count_if(it, fields.end(), named) != 1)
+    throw std::logic_error(std::string(it == fields.end() ? "no field " : "two fields ") +
+                           std::string(name) + " in " + std::string(label));
+  return {this, static_cast<std::size_t>(it - fields.begin()), it->name};
+}
+
 const KeywordSpec& keywordSpec(std::string_view name) {
   const auto& t = tables();
   auto it = std::lower_bound(t.begin(), t.end(), name,

@@ -4,6 +4,7 @@
 // adding a keyword is a table entry in keywords.cpp plus its meaning there.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string_view>
 #include <vector>
@@ -36,9 +37,23 @@ struct FieldSpec {
   bool quiet() const { return (flags & kQuiet) != 0; }
 };
 
+struct CardSpec;
+
+// A field of one card layout found once by name (CardSpec::slot), so that a builder reading a
+// card per line of a large list (*NODE, *ELEMENT_SOLID) asks for it without a look-up by name.
+struct FieldSlot {
+  const CardSpec* card = nullptr;  // the layout it belongs to (a card of another is a bug)
+  std::size_t index = 0;
+  std::string_view name;
+};
+
 struct CardSpec {
   std::string_view label;  // as the manual numbers it: "card 1", "title card", ...
   std::vector<FieldSpec> fields;
+
+  // The field of that name; throws std::logic_error if the card has none, or two (a coding
+  // error: a slot must name one field).
+  FieldSlot slot(std::string_view name) const;
 };
 
 struct KeywordSpec {

@@ -326,6 +326,7 @@ inline bool isSupportedIhq(int64_t ihq) {
   return (ihq >= 1 && ihq <= 5) || ihq == 8;
 }
 int64_t positiveId(const deck::Card& c, std::string_view field);
+int64_t positiveId(const deck::Card& c, const deck::FieldSlot& field);
 std::string readTitleCard(deck::CardCursor& cur, const deck::KeywordSpec& spec,
                           const KeywordOptions& opts);
 // MID and RO of card 1 (the definition is recorded; RO must be positive). Spring and damper

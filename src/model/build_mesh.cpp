@@ -70,10 +70,19 @@ const char* updateName(SectionKind k) {
 
 }  // namespace
 
-int64_t positiveId(const Card& c, std::string_view field) {
-  const int64_t id = c.integer(field);
+namespace {
+int64_t checkedPositive(const Card& c, std::string_view field, int64_t id) {
   if (id <= 0) c.fail(field, "the id must be a positive integer, not " + std::to_string(id));
   return id;
+}
+}  // namespace
+
+int64_t positiveId(const Card& c, std::string_view field) {
+  return checkedPositive(c, field, c.integer(field));
+}
+
+int64_t positiveId(const Card& c, const deck::FieldSlot& field) {
+  return checkedPositive(c, field.name, c.integer(field));
 }
 
 bool nextRecord(CardCursor& cur, bool starts_with_heading) {
@@ -114,15 +123,17 @@ std::string title(CardCursor& cur, const deck::KeywordSpec& spec, const KeywordO
 
 void readNodes(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
   const auto& spec = keywordSpec("*NODE").card("card 1");
+  // The fields found once, not by name per line.
+  const deck::FieldSlot nid = spec.slot("NID"), fx = spec.slot("X"), fy = spec.slot("Y"),
+                        fz = spec.slot("Z"), ftc = spec.slot("TC"), frc = spec.slot("RC");
   CardCursor cur(kw, ctx.deck);
   for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
     const auto& c = cur.read(spec);
-    // In card order: Card finds the next field first.
-    const int64_t id = positiveId(c, "NID");
-    const Vec3 x{c.real("X"), c.real("Y"), c.real("Z")};
-    const auto tc = c.integer("TC"), rc = c.integer("RC");
-    if (tc < 0 || tc > 7) c.fail("TC", "must be 0 to 7");
-    if (rc < 0 || rc > 7) c.fail("RC", "must be 0 to 7");
+    const int64_t id = positiveId(c, nid);
+    const Vec3 x{c.real(fx), c.real(fy), c.real(fz)};
+    const auto tc = c.integer(ftc), rc = c.integer(frc);
+    if (tc < 0 || tc > 7) c.fail(ftc.name, "must be 0 to 7");
+    if (rc < 0 || rc > 7) c.fail(frc.name, "must be 0 to 7");
     ctx.node_input.push_back(
         {id, x, static_cast<int>(tc), static_cast<int>(rc), c.fileIndex(), c.lineNumber()});
     ctx.collect(cur);
@@ -194,35 +205,46 @@ void readSolids(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
   const auto& spec = keywordSpec("*ELEMENT_SOLID");
   static constexpr std::string_view kN[10] = {"N1", "N2", "N3", "N4", "N5",
                                               "N6", "N7", "N8", "N9", "N10"};
+  // The fields of both cards found once, not by name per line.
+  const auto& card1 = spec.card("card 1");
+  const auto& card2 = spec.card("card 2");
+  const deck::FieldSlot eid_slot = card1.slot("EID"), pid_slot = card1.slot("PID");
+  std::array<deck::FieldSlot, 8> n1{};
+  std::array<deck::FieldSlot, 10> n2{};
+  for (std::size_t i = 0; i < 10; ++i) {
+    if (i < 8) n1[i] = card1.slot(kN[i]);
+    n2[i] = card2.slot(kN[i]);
+  }
   CardCursor cur(kw, ctx.deck);
   for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
-    const Card& c = cur.read(spec.card("card 1"));
-    const int64_t eid = positiveId(c, "EID");
-    const int32_t part = ctx.part(c, "PID", c.integer("PID"));
+    const Card& c = cur.read(card1);
+    const int64_t eid = positiveId(c, eid_slot);
+    const int32_t part = ctx.part(c, "PID", c.integer(pid_slot));
     ctx.checkPartUsable(c, part);
     checkSectionKind(ctx, c, part, SectionKind::Solid);
     // Card 1 with EID and PID only: the nodes follow on a second card of ten 8-character
     // fields (Keyword Manual, *ELEMENT_SOLID, the format of 10-node tetrahedra that
     // pre-processors also use for hexahedra).
     std::array<int64_t, 8> ids{};
-    for (int i = 0; i < 8; ++i) ids[i] = c.integer(kN[i]);
+    for (std::size_t i = 0; i < 8; ++i) ids[i] = c.integer(n1[i]);
     // Blank fields read as 0: only then can the card be the two-card form (a look at each
     // field's blankness per element was a tenth of reading the card).
-    const bool two_cards = std::all_of(ids.begin(), ids.end(), [](int64_t n) { return n == 0; }) &&
-                           std::all_of(kN, kN + 8, [&](auto n) { return c.blank(n); });
+    const bool two_cards =
+        std::all_of(ids.begin(), ids.end(), [](int64_t n) { return n == 0; }) &&
+        std::all_of(n1.begin(), n1.end(), [&](const deck::FieldSlot& n) { return c.blank(n); });
     const Card* nc = &c;
     const int elform = sectionElform(ctx, part);
     std::array<int64_t, 2> n9_n10{};
     if (two_cards) {
       if (cur.atEnd()) c.fail("N1", "the element has no nodes");
-      nc = &cur.read(spec.card("card 2"));
-      for (int i = 0; i < 2; ++i) n9_n10[std::size_t(i)] = nc->integer(kN[8 + i]);
+      nc = &cur.read(card2);
+      for (std::size_t i = 0; i < 2; ++i) n9_n10[i] = nc->integer(n2[8 + i]);
       if (!isQuadraticTetrahedron(elform) && (n9_n10[0] != 0 || n9_n10[1] != 0))
         ctx.reject(*nc, n9_n10[0] != 0 ? kN[8] : kN[9],
                    "a 10-node tetrahedron needs a *SECTION_SOLID with ELFORM 16 (its part's "
                    "section has ELFORM " +
                        std::to_string(elform) + ")");
-      for (int i = 0; i < 8; ++i) ids[i] = nc->integer(kN[i]);
+      for (std::size_t i = 0; i < 8; ++i) ids[i] = nc->integer(n2[i]);
     }
     Context::ElementInput<8> s{eid, part, {}, c.fileIndex(), c.lineNumber()};
     if (isQuadraticTetrahedron(elform)) {
@@ -633,10 +655,9 @@ void noteDegenerateSolids(Context& ctx) {
   std::map<int32_t, std::array<std::size_t, 3>> count;
   for (std::size_t e = 0; e < m.solids.size(); ++e) {
     const Degenerate shape = degenerateShape(m.solids.nodes[e]);
+    if (shape == Degenerate::None) continue;  // the usual hexahedron: no formulation to look up
     const int form = m.solidFormulation(e);
-    if (shape == Degenerate::None || isTetrahedron(form) || form == 15 ||
-        isQuadraticTetrahedron(form))
-      continue;
+    if (isTetrahedron(form) || form == 15 || isQuadraticTetrahedron(form)) continue;
     ++count[m.solids.part[e]][static_cast<std::size_t>(shape) - 1];
   }
   for (const auto& [part, n] : count) {

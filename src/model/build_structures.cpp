@@ -34,21 +34,34 @@ const char* sectionKeyword(SectionKind k) {
   return "*SECTION";
 }
 
-// Elements read with EID, PID and n node fields N1..Nn of card 1.
+// Card 1 of an element keyword: EID, PID and the node fields N1..Nn, found once per keyword
+// (not by name per line).
+template <int N>
+struct ElementSlots {
+  deck::FieldSlot eid, pid;
+  std::array<deck::FieldSlot, N> nodes;
+  ElementSlots(const deck::CardSpec& card, const std::array<std::string_view, N>& names)
+      : eid(card.slot("EID")), pid(card.slot("PID")) {
+    for (std::size_t i = 0; i < N; ++i) nodes[i] = card.slot(names[i]);
+  }
+};
+
+// Elements read with EID, PID and n node fields N1..Nn of card 1, in the order `nodes` gives.
 template <int N>
 Context::ElementInput<N> elementCard(Context& ctx, const Card& c, SectionKind kind,
-                                     const char* const* names) {
-  Context::ElementInput<N> e{positiveId(c, "EID"),
-                             ctx.part(c, "PID", c.integer("PID")),
+                                     const ElementSlots<N>& f,
+                                     const std::array<deck::FieldSlot, N>& nodes) {
+  Context::ElementInput<N> e{positiveId(c, f.eid),
+                             ctx.part(c, "PID", c.integer(f.pid)),
                              {},
                              c.fileIndex(),
                              c.lineNumber()};
   ctx.checkPartUsable(c, e.part);
   checkSectionKind(ctx, c, e.part, kind);
-  for (int i = 0; i < N; ++i) {
-    const int64_t id = c.integer(names[i]);
-    if (id == 0) c.fail(names[i], "node id missing");
-    e.nodes[static_cast<std::size_t>(i)] = ctx.node(c, names[i], id);
+  for (std::size_t i = 0; i < N; ++i) {
+    const int64_t id = c.integer(nodes[i]);
+    if (id == 0) c.fail(nodes[i].name, "node id missing");
+    e.nodes[i] = ctx.node(c, nodes[i].name, id);
   }
   return e;
 }
@@ -79,15 +92,20 @@ void checkShellThickness(const Context& ctx, const Card& c, const Context::Eleme
 
 void readShells(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const auto& spec = keywordSpec("*ELEMENT_SHELL");
-  static constexpr const char* kN[4] = {"N1", "N2", "N3", "N4"};
+  const auto& card1 = spec.card("card 1");
+  const ElementSlots<4> slots(card1, {"N1", "N2", "N3", "N4"});
+  // A triangle is written with N4 = N3 or N4 blank (Keyword Manual, *ELEMENT_SHELL).
+  const std::array<deck::FieldSlot, 4> tri{slots.nodes[0], slots.nodes[1], slots.nodes[2],
+                                           slots.nodes[2]};
+  const std::array<deck::FieldSlot, 4> n5_n8{card1.slot("N5"), card1.slot("N6"), card1.slot("N7"),
+                                             card1.slot("N8")};
   CardCursor cur(kw, ctx.deck);
   for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
-    const Card& c = cur.read(spec.card("card 1"));
-    // A triangle is written with N4 = N3 or N4 blank (Keyword Manual, *ELEMENT_SHELL).
-    static constexpr const char* kTri[4] = {"N1", "N2", "N3", "N3"};
-    auto e = elementCard<4>(ctx, c, SectionKind::Shell, c.integer("N4") == 0 ? kTri : kN);
-    for (auto n : {"N5", "N6", "N7", "N8"})
-      if (c.integer(n) != 0) ctx.reject(c, n, "8-node shells are not supported (4-node only)");
+    const Card& c = cur.read(card1);
+    auto e = elementCard<4>(ctx, c, SectionKind::Shell, slots,
+                            c.integer(slots.nodes[3]) == 0 ? tri : slots.nodes);
+    for (const auto& n : n5_n8)
+      if (c.integer(n) != 0) ctx.reject(c, n.name, "8-node shells are not supported (4-node only)");
     if (opts.has("THICKNESS")) {
       const Card& t = cur.read(spec.card("thickness card"));
       for (int i = 0; i < 4; ++i) {
@@ -196,17 +214,21 @@ int32_t elementSection(Context& ctx, const Card& t, int32_t section,
 
 void readBeams(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const auto& spec = keywordSpec("*ELEMENT_BEAM");
-  static constexpr const char* kN[2] = {"N1", "N2"};
+  const auto& card1 = spec.card("card 1");
+  const ElementSlots<2> slots(card1, {"N1", "N2"});
+  const deck::FieldSlot n3_slot = card1.slot("N3"), local = card1.slot("LOCAL");
+  const std::array<deck::FieldSlot, 4> releases{card1.slot("RT1"), card1.slot("RR1"),
+                                                card1.slot("RT2"), card1.slot("RR2")};
   std::map<std::pair<int32_t, std::array<double, 5>>, int32_t> made;
   CardCursor cur(kw, ctx.deck);
   for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
-    const Card& c = cur.read(spec.card("card 1"));
-    auto e = elementCard<2>(ctx, c, SectionKind::Beam, kN);
+    const Card& c = cur.read(card1);
+    auto e = elementCard<2>(ctx, c, SectionKind::Beam, slots, slots.nodes);
     if (e.nodes[0] == e.nodes[1]) c.fail("N2", "a beam needs two distinct nodes");
-    if (const int64_t n3 = c.integer("N3"); n3 != 0) e.aux = ctx.node(c, "N3", n3);
-    for (auto f : {"RT1", "RR1", "RT2", "RR2"})
-      if (c.integer(f) != 0) ctx.reject(c, f, "beam end releases are not supported");
-    c.integer("LOCAL");  // release coordinate system: no releases, no meaning
+    if (const int64_t n3 = c.integer(n3_slot); n3 != 0) e.aux = ctx.node(c, "N3", n3);
+    for (const auto& r : releases)
+      if (c.integer(r) != 0) ctx.reject(c, r.name, "beam end releases are not supported");
+    c.integer(local);  // release coordinate system: no releases, no meaning
     const int32_t section = ctx.model.parts[static_cast<std::size_t>(e.part)].section;
     if (opts.has("THICKNESS")) {
       const Card& t = cur.read(spec.card("thickness card"));
@@ -223,11 +245,12 @@ void readBeams(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts
 
 void readDiscretes(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
   const auto& spec = keywordSpec("*ELEMENT_DISCRETE");
-  static constexpr const char* kN[2] = {"N1", "N2"};
+  const auto& card1 = spec.card("card 1");
+  const ElementSlots<2> slots(card1, {"N1", "N2"});
   CardCursor cur(kw, ctx.deck);
   for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
-    const Card& c = cur.read(spec.card("card 1"));
-    auto e = elementCard<2>(ctx, c, SectionKind::Discrete, kN);
+    const Card& c = cur.read(card1);
+    auto e = elementCard<2>(ctx, c, SectionKind::Discrete, slots, slots.nodes);
     if (e.nodes[0] == e.nodes[1]) c.fail("N2", "a discrete element needs two distinct nodes");
     if (c.integer("VID") != 0)
       ctx.reject(c, "VID", "orientation vectors (*DEFINE_SD_ORIENTATION) are not supported");

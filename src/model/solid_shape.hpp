@@ -15,9 +15,9 @@ namespace crumple::model {
 inline int distinctNodes(const std::array<int32_t, 8>& n, int32_t out[8]) {
   int k = 0;
   for (int32_t v : n) {
-    bool seen = false;
-    for (int i = 0; i < k; ++i) seen = seen || out[i] == v;
-    if (!seen) out[k++] = v;
+    int i = 0;
+    while (i < k && out[i] != v) ++i;
+    if (i == k) out[k++] = v;
   }
   return k;
 }

@@ -66,6 +66,19 @@ cube
 1,1
 )";
 
+// A deck of one file "x.k" and, apart from it, a keyword `name` written at line 1 with `lines`
+// (the file and keyword a card test reads from).
+struct OneKeyword {
+  crumple::deck::Deck deck;
+  crumple::deck::Keyword kw;
+  OneKeyword(std::string name, std::vector<crumple::deck::DataLine> lines) {
+    deck.files = {"x.k"};
+    kw.name = std::move(name);
+    kw.line = 1;
+    kw.lines = std::move(lines);
+  }
+};
+
 // Reads "main.k" with `text` from memory, beside the files in `more`.
 crumple::deck::Deck memoryDeck(const std::string& text, Files more = {},
                                crumple::deck::ReadDeckOptions options = {}) {
@@ -648,12 +661,9 @@ TEST(DeckCase, KeywordsInCaseBlocksAreSkippedAndReported) {
 
 TEST(DeckCard, CursorReadsTypedFieldsAndReportsUnusedValues) {
   using namespace crumple::deck;
-  Deck deck;
-  deck.files = {"x.k"};
-  Keyword kw;
-  kw.name = "*CONTROL_SOLID";
+  auto [deck, kw] =
+      OneKeyword("*CONTROL_SOLID", {{"         1         0         0         2", 0, 5}});
   kw.line = 4;
-  kw.lines = {{"         1         0         0         2", 0, 5}};
   CardCursor cur(kw, deck);
   const Card& c = cur.read(keywordSpec("*CONTROL_SOLID").card("card 1"));
   EXPECT_EQ(c.integer("NIPTETS"), 4);  // 0 -> default 4
@@ -669,16 +679,13 @@ TEST(DeckCard, CursorReadsTypedFieldsAndReportsUnusedValues) {
 
 TEST(DeckCard, ValuesOutOfColumnsAreReadAsSpaceSeparatedFields) {
   using namespace crumple::deck;
-  Deck deck;
-  deck.files = {"x.k"};
-  Keyword kw;
-  kw.name = "*BOUNDARY_SPC_NODE";
-  kw.line = 1;
   // v41_ep_4p0uj.k (laser ablation): a script wrote 8-wide columns into this 10-wide card.
-  kw.lines = {{"       1       0       1       0       1       0       0       0", 0, 2},
-              {"2\t0\t0\t1", 0, 3},
-              {"         3         0         1         1", 0, 4},
-              {"      82       0       1       0       1       0       0       0", 0, 5}};
+  auto [deck, kw] =
+      OneKeyword("*BOUNDARY_SPC_NODE",
+                 {{"       1       0       1       0       1       0       0       0", 0, 2},
+                  {"2\t0\t0\t1", 0, 3},
+                  {"         3         0         1         1", 0, 4},
+                  {"      82       0       1       0       1       0       0       0", 0, 5}});
   const CardSpec& spec = keywordSpec("*BOUNDARY_SPC").card("card 1");
   CardCursor cur(kw, deck);
   const std::vector<std::array<int64_t, 5>> expected{
@@ -703,4 +710,177 @@ TEST(DeckCard, ValuesOutOfColumnsAreReadAsSpaceSeparatedFields) {
   EXPECT_EQ(errorOf([&] { again.read(spec); }),
             "x.k:7: *BOUNDARY_SPC_NODE card 1 field 1 (NID): '1 x\t1' is not an integer");
   EXPECT_TRUE(again.takeNotes().empty());
+}
+
+namespace {
+
+// Everything a card read from `text` shows, field by field (blank, the value's bits or its
+// message, the text), the unused values and whether it was read space-separated; or the
+// message the reading throws.
+std::string cardReading(const crumple::deck::CardSpec& spec, const crumple::deck::Keyword& kw,
+                        const crumple::deck::Deck& deck, const crumple::deck::DataLine& line,
+                        crumple::deck::Card::Reading reading) {
+  using crumple::deck::Card;
+  using crumple::deck::FieldType;
+  std::string out;
+  const auto attempt = [&out](auto&& f) {
+    try {
+      out += f();
+    } catch (const std::exception& e) {
+      out += std::string("! ") + e.what();
+    }
+    out += "|";
+  };
+  attempt([&] {
+    const Card fresh(spec, &line, kw, deck, reading);
+    std::string u = fresh.readAsSpaceSeparated() ? "spaced " : "";
+    for (const auto& v : fresh.unusedValues()) u += v.field + "=" + v.value + " ";
+    return u + (fresh.allBlank() ? "all blank" : "");
+  });
+  try {
+    const Card c(spec, &line, kw, deck, reading);
+    for (const auto& f : spec.fields) {
+      attempt([&] { return std::string(c.blank(f.name) ? "blank " : "") + c.text(f.name); });
+      if (f.type == FieldType::Text) continue;
+      attempt([&] { return std::to_string(std::bit_cast<uint64_t>(c.real(f.name))); });
+      attempt([&] { return std::to_string(c.integer(f.name)); });
+    }
+  } catch (const std::exception& e) {
+    out += std::string("! ") + e.what();
+  }
+  return out;
+}
+
+// A field's text as decks write it, well or badly.
+std::string randomValue(std::mt19937_64& rng) {
+  // Odd values, '|' between them: signs, Fortran and D exponents, blanks, tabs and commas inside,
+  // parameters, too many digits, leading zeros.
+  static constexpr std::string_view kOdd =
+      "|-|.|+5|1.5-3|2.0D0|1e400|abc|1 2|\t7|3\t|4,5|&p|-&p|&p*2|&q|1e|1.e5|-0|-0.0|0.5|12.|1E+2|"
+      "7.85e-6|9007199254740993|1234567890123456789|-12345678901234567|x1|1.0|00000012";
+  std::uniform_int_distribution<int> kind(0, 6), digits(1, 9), small(0, 999999);
+  switch (kind(rng)) {
+    case 0:
+      return "";
+    case 1:
+      return std::to_string(small(rng));
+    case 2:
+      return "-" + std::to_string(small(rng));
+    case 3: {
+      std::uniform_real_distribution<double> x(-1e3, 1e3);
+      return fmt::format("{:.{}g}", x(rng), digits(rng));
+    }
+    case 4: {
+      std::uniform_real_distribution<double> x(-1.0, 1.0);
+      return fmt::format("{:.6E}", x(rng) * std::pow(10.0, digits(rng) - 5));
+    }
+    case 6:  // ids of eight digits, as large models number them
+      return std::to_string(std::uniform_int_distribution<int>(0, 99999999)(rng));
+    default: {
+      std::vector<std::string_view> odd;
+      for (std::size_t at = 0, bar = 0; bar != std::string_view::npos; at = bar + 1) {
+        bar = kOdd.find('|', at);
+        odd.push_back(kOdd.substr(at, bar == std::string_view::npos ? bar : bar - at));
+      }
+      return std::string(odd[std::uniform_int_distribution<std::size_t>(0, odd.size() - 1)(rng)]);
+    }
+  }
+}
+
+// A line in the card's columns (values right-aligned, or left-aligned, sometimes spilling over
+// their width), sometimes cut short or followed by more text.
+std::string randomLine(std::mt19937_64& rng, const crumple::deck::CardSpec& spec, int widen) {
+  std::uniform_int_distribution<int> pick(0, 9);
+  std::string line;
+  for (const auto& f : spec.fields) {
+    const auto w = static_cast<std::size_t>(std::max(f.width, widen));
+    std::string v = f.type == crumple::deck::FieldType::Text && pick(rng) < 5
+                        ? std::string(pick(rng) < 2 ? "a,b" : "Name 1")
+                        : randomValue(rng);
+    if (pick(rng) == 0) v += "  ";  // left of its columns' end
+    const std::size_t pad = v.size() < w ? w - v.size() : 0;
+    line += pick(rng) == 0 ? v + std::string(pad, ' ') : std::string(pad, ' ') + v;
+  }
+  if (pick(rng) == 0) line.resize(std::uniform_int_distribution<std::size_t>(0, line.size())(rng));
+  if (pick(rng) == 0) line += pick(rng) < 5 ? "   tail" : " , 1";
+  return line;
+}
+
+}  // namespace
+
+// The one-pass reading of plain lines in compiled columns (Card::readColumns) gives every value,
+// text, unused value and message the general reading gives, on random lines of plain and
+// malformed fields in each format.
+TEST(DeckCard, ColumnReadingMatchesTheGeneralReadingBitForBit) {
+  using namespace crumple::deck;
+  Deck deck;
+  deck.files = {"x.k"};
+  deck.parameters["P"] = {"p", 'R', 2.5, "2.5", {}};
+  std::mt19937_64 rng(1919);
+  const std::vector<std::pair<std::string_view, std::string_view>> cards{
+      {"*NODE", "card 1"},
+      {"*ELEMENT_SOLID", "card 1"},
+      {"*ELEMENT_SHELL", "thickness card"},
+      {"*SECTION_SOLID", "card 1"},
+      {"*SET_NODE_LIST", "card 1"},
+      {"*CONTROL_TERMINATION", "card 1"},
+      {"*PARAMETER", "card 1"},
+      {"*INCLUDE", "card 1"},
+      {"*CONTROL_SOLID", "card 1"},
+      {"*SECTION_SHELL", "card 1"},
+      {"*PART", "card 1"}};
+  int plain_lines = 0, lines = 0;
+  for (const auto& [name, label] : cards) {
+    const CardSpec& spec = keywordSpec(name).card(label);
+    for (const auto& [format, widen] :
+         {std::pair{Format::Standard, 0}, {Format::I10, 10}, {Format::Long, 20}}) {
+      Keyword kw;
+      kw.name = std::string(name);
+      kw.format = format;
+      kw.line = 1;
+      for (int k = 0; k < 400; ++k) {
+        const std::string text = randomLine(rng, spec, widen);
+        const DataLine line{text, 0, k + 2};
+        const std::string general = cardReading(spec, kw, deck, line, Card::Reading::General);
+        EXPECT_EQ(cardReading(spec, kw, deck, line, Card::Reading::Columns), general)
+            << name << " " << label << " line '" << text << "'";
+        ++lines;
+        plain_lines += general.find('!') == std::string::npos &&
+                       text.find_first_of(",\t&") == std::string::npos;
+      }
+    }
+  }
+  // Both kinds are many: plain lines (the one-pass reading) and lines with messages.
+  EXPECT_GT(plain_lines, lines / 10);
+  EXPECT_LT(plain_lines, lines);
+}
+
+// A field slot reads the field it names, and only on a card of its own layout.
+TEST(DeckCard, FieldSlotsReadTheirFieldOfTheirLayoutOnly) {
+  using namespace crumple::deck;
+  auto [deck, kw] = OneKeyword(
+      "*NODE", {{"       7             1.5            -2.5          3.0e+1       1", 0, 2}});
+  const CardSpec& spec = keywordSpec("*NODE").card("card 1");
+  const FieldSlot nid = spec.slot("NID"), z = spec.slot("Z"), rc = spec.slot("RC");
+  EXPECT_EQ(nid.index, 0u);
+  EXPECT_EQ(z.name, "Z");
+  CardCursor cur(kw, deck);
+  const Card& c = cur.read(spec);
+  EXPECT_EQ(c.integer(nid), 7);
+  EXPECT_EQ(c.real(z), 30.0);
+  EXPECT_FALSE(c.blank(z));
+  EXPECT_TRUE(c.blank(rc));
+  EXPECT_EQ(c.integer(rc), 0);
+  EXPECT_THROW((void)spec.slot("N1"), std::logic_error);
+  const FieldSlot other = keywordSpec("*ELEMENT_SOLID").card("card 1").slot("EID");
+  EXPECT_THROW((void)c.integer(other), std::logic_error);
+  // *NODE TC read through its slot keeps the message of the name.
+  kw.lines = {{"       8               0               0               0       9", 0, 3}};
+  CardCursor again(kw, deck);
+  EXPECT_EQ(errorOf([&] {
+              const Card& d = again.read(spec);
+              const FieldSlot tc = spec.slot("TC");
+              if (d.integer(tc) > 7) d.fail(tc.name, "must be 0 to 7");
+            }),
+            "x.k:3: *NODE card 1 field 5 (TC): must be 0 to 7");
 }
