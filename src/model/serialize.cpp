@@ -375,7 +375,7 @@ void fields(A& a, M& m) {
   a.count(
       m.contacts.size(),
       [&](auto& c) {
-        util::fieldCount<30>(c);
+        util::fieldCount<31>(c);
         a(c.id);
         a(c.title);
         a(c.keyword);

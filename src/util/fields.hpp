@@ -10,7 +10,7 @@ namespace crumple::util {
 
 template <std::size_t N, class T>
 constexpr void fieldCount(const T& v) {
-  static_assert(N >= 1 && N <= 30, "fieldCount: between 1 and 30 members");
+  static_assert(N >= 1 && N <= 32, "fieldCount: between 1 and 32 members");
   if constexpr (N == 1) {
     [[maybe_unused]] const auto& [m0] = v;
   } else if constexpr (N == 2) {
@@ -90,6 +90,14 @@ constexpr void fieldCount(const T& v) {
     [[maybe_unused]] const auto& [m0, m1, m2, m3, m4, m5, m6, m7, m8, m9, m10, m11, m12, m13, m14,
                                   m15, m16, m17, m18, m19, m20, m21, m22, m23, m24, m25, m26, m27,
                                   m28, m29] = v;
+  } else if constexpr (N == 31) {
+    [[maybe_unused]] const auto& [m0, m1, m2, m3, m4, m5, m6, m7, m8, m9, m10, m11, m12, m13, m14,
+                                  m15, m16, m17, m18, m19, m20, m21, m22, m23, m24, m25, m26, m27,
+                                  m28, m29, m30] = v;
+  } else if constexpr (N == 32) {
+    [[maybe_unused]] const auto& [m0, m1, m2, m3, m4, m5, m6, m7, m8, m9, m10, m11, m12, m13, m14,
+                                  m15, m16, m17, m18, m19, m20, m21, m22, m23, m24, m25, m26, m27,
+                                  m28, m29, m30, m31] = v;
   }
 }
 
