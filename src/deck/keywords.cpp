@@ -151,6 +151,10 @@ std::vector<KeywordSpec> makeTables() {
        {{"card 1", {I("IRID"), I("NIP"), R("RA"), I("ICST"), I("K")}},
         {"card 2", {R("D1"), R("D2"), R("D3"), R("D4"), R("D5"), R("D6"), R("SREF"), R("TREF")}},
         {"point card", {R("S"), R("T"), R("WF"), I("PID")}}}});
+  // *INTEGRATION_SHELL (Keyword Manual vol. I): a point card per point (NIPTS).
+  t.push_back({"*INTEGRATION_SHELL",
+               {{"card 1", {I("IRID"), I("NIPTS"), I("ESOP"), I("FAILOPT")}},
+                {"point card", {R("S"), R("WF"), I("PID")}}}});
   t.push_back({"*SECTION_DISCRETE",
                {titleCard(),
                 {"card 1", {I("SECID"), I("DRO"), R("KD"), R("V0"), R("CL"), R("FD")}},

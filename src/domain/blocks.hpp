@@ -84,7 +84,8 @@ struct ShellBlock : BlockBase {
   std::vector<uint8_t> active;      // 0 once eroded
   std::vector<uint8_t> failed;      // eroded because every point reached the failure strain
   std::vector<double> mass_scale;   // empty if none
-  // Through-thickness rule: point i at z = zeta[i] t / 2, weight[i] (the weights sum to 1).
+  // Through-thickness rule: point i at z = zeta[i] t / 2, weight[i] (the weights sum to 1);
+  // Gauss or Lobatto from nip, or a section's *INTEGRATION_SHELL rule.
   std::vector<double> zeta, weight;
   // Integration-point state in the corotational element frame, stored batch by batch (one
   // contiguous record of `fields` x kShellBatch values per batch, like SolidBlock::sig). An

@@ -515,6 +515,10 @@ class SubdomainBuilder {
     // 2D solids (ELFORM 13, 15) have one point and no thickness direction.
     b.nip = b.planar() ? 1 : sec.nip;
     b.lobatto = !b.planar() && model.controls.shell_lobatto;
+    if (!b.planar() && !sec.zeta.empty()) {  // *INTEGRATION_SHELL (resizeShellBlock keeps it)
+      b.zeta = sec.zeta;
+      b.weight = sec.weight;
+    }
     b.shear_factor = sec.shrf;
     const auto hg = hourglassOf(model, part);
     b.ihq = hg.ihq;

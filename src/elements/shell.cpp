@@ -525,7 +525,9 @@ void throughThicknessRule(int nip, bool lobatto, std::vector<double>& zeta,
 
 void resizeShellBlock(domain::ShellBlock& blk, std::size_t n) {
   const std::size_t padded = (n + kShellBatch - 1) / kShellBatch * kShellBatch;
-  throughThicknessRule(blk.nip, blk.lobatto, blk.zeta, blk.weight);
+  // A user rule (*INTEGRATION_SHELL) comes with the block; the built-in ones from nip.
+  if (blk.zeta.size() != std::size_t(blk.nip))
+    throughThicknessRule(blk.nip, blk.lobatto, blk.zeta, blk.weight);
   blk.thick.assign(padded, 0.0);
   blk.area0.assign(padded, 0.0);
   blk.e_int.assign(padded, 0.0);

@@ -309,6 +309,7 @@ const std::vector<Meaning>& meanings() {
       {"*NODE", 0, readNodes, {}},
       // Before the sections that name it (QR/IRID < 0).
       {"*INTEGRATION_BEAM", 0, readIntegrationBeam, {}},
+      {"*INTEGRATION_SHELL", 0, readIntegrationShell, {}},
       // After the nodes it is built from; before the parts and loads that use it.
       {"*DEFINE_COORDINATE_NODE",
        1,

@@ -173,6 +173,11 @@ class Context {
   std::unordered_map<int64_t, int32_t> material_index, section_index, hourglass_index, eos_index;
   std::map<int64_t, Box> boxes;
   std::map<int64_t, Frame> frames;
+  // *INTEGRATION_SHELL rules by IRID: points and weights (SectionShell::zeta, weight).
+  struct ShellRule {
+    std::vector<double> zeta, weight;
+  };
+  std::map<int64_t, ShellRule> shell_rules;
   std::map<int64_t, Vec3> vectors;  // *DEFINE_VECTOR: unit direction tail -> head
   // Per part index: nothing, or why an element of the part cannot be run. A part no element
   // uses may be incomplete, as LS-DYNA allows: the problem is an error only on use.
@@ -384,6 +389,7 @@ void readElementMass(Context&, const deck::Keyword&, const KeywordOptions&);
 void readLoadSegment(Context&, const deck::Keyword&, const KeywordOptions&);
 void readLoadSegmentSet(Context&, const deck::Keyword&, const KeywordOptions&);
 void readIntegrationBeam(Context&, const deck::Keyword&, const KeywordOptions&);
+void readIntegrationShell(Context&, const deck::Keyword&, const KeywordOptions&);
 void readLoadBlastEnhanced(Context&, const deck::Keyword&, const KeywordOptions&);
 void readLoadBlastSegmentSet(Context&, const deck::Keyword&, const KeywordOptions&);
 void readLoadBody(Context&, const deck::Keyword&, const KeywordOptions&);

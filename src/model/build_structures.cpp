@@ -262,6 +262,79 @@ void readDiscretes(Context& ctx, const deck::Keyword& kw, const KeywordOptions&)
   }
 }
 
+namespace {
+
+// QR/IRID (Keyword Manual, *SECTION_SHELL): 0 Gauss (Lobatto with *CONTROL_SHELL INTGRD 1),
+// < 0 the *INTEGRATION_SHELL rule -QR/IRID, which gives the number of points (NIP is then
+// ignored, as the manual says); the built-in rules QR > 0 are refused.
+void readShellRule(Context& ctx, const Card& c, SectionShell& s) {
+  const int64_t qr = c.integer("QR/IRID");
+  if (qr > 0) {
+    ctx.reject(c, "QR/IRID", "of the quadrature rules only 0 (Gauss) and < 0 (*INTEGRATION_SHELL)");
+    return;
+  }
+  if (qr == 0) return;
+  const auto rule = ctx.shell_rules.find(-qr);
+  if (rule == ctx.shell_rules.end())
+    c.fail("QR/IRID", "no *INTEGRATION_SHELL with IRID " + std::to_string(-qr));
+  s.zeta = rule->second.zeta;
+  s.weight = rule->second.weight;
+  s.nip = static_cast<int>(s.zeta.size());
+}
+
+// One *INTEGRATION_SHELL rule's points: as given (ESOP 0; S in [-1, 1], WF the fraction of
+// the thickness, the fractions summing to 1), or NIPTS layers of equal thickness (ESOP 1:
+// the point cards, if any, only name PIDs; a keyword whose ESOP 1 rule has none holds no
+// other rule after it).
+Context::ShellRule readShellPoints(Context& ctx, CardCursor& cur, const deck::KeywordSpec& spec,
+                                   const Card& c, int64_t nipts, bool equal) {
+  Context::ShellRule r;
+  double total = 0.0;
+  for (int64_t k = 0; k < nipts; ++k) {
+    const bool card = !equal || !cur.atEnd();
+    if (card) {
+      const Card& p = cur.read(spec.card("point card"));
+      if (p.integer("PID") != 0)
+        ctx.reject(p, "PID", "a material per integration point (layered shells) is not supported");
+      if (!equal) {
+        if (!(std::abs(p.real("S")) <= 1.0)) p.fail("S", "the point must lie in [-1, 1]");
+        if (!(p.real("WF") > 0)) p.fail("WF", "the weighting factor must be positive");
+        r.zeta.push_back(p.real("S"));
+        r.weight.push_back(p.real("WF"));
+        total += p.real("WF");
+        continue;
+      }
+    }
+    r.zeta.push_back(-1.0 + (2.0 * double(k) + 1.0) / double(nipts));
+    r.weight.push_back(1.0 / double(nipts));
+  }
+  if (!equal && std::abs(total - 1.0) > 1e-3)
+    c.fail("NIPTS", "the weighting factors WF sum to " + std::to_string(total) +
+                        ", not 1 (each is the fraction of the thickness at its point)");
+  return r;
+}
+
+}  // namespace
+
+void readIntegrationShell(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*INTEGRATION_SHELL");
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(spec.card("card 1"));
+    const int64_t irid = positiveId(c, "IRID"), nipts = c.integer("NIPTS");
+    if (nipts < 1 || nipts > 10) c.fail("NIPTS", "give 1 to 10 points (as NIP)");
+    const int64_t esop = c.integer("ESOP");
+    if (esop != 0 && esop != 1) c.fail("ESOP", "must be 0 (points given) or 1 (equal layers)");
+    if (c.integer("FAILOPT") != 0)
+      ctx.ignore(kw.name, "FAILOPT", "failure across layers of different materials (PID)",
+                 c.where());
+    auto rule = readShellPoints(ctx, cur, spec, c, nipts, esop == 1);
+    if (!ctx.shell_rules.emplace(irid, std::move(rule)).second)
+      c.fail("IRID", "*INTEGRATION_SHELL " + std::to_string(irid) + " is already defined");
+    ctx.collect(cur);
+  }
+}
+
 void readSectionShell(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const auto& spec = keywordSpec("*SECTION_SHELL");
   CardCursor cur(kw, ctx.deck);
@@ -296,8 +369,7 @@ void readSectionShell(Context& ctx, const deck::Keyword& kw, const KeywordOption
     if (nip < 1 || nip > 10) c.fail("NIP", "must be 1 to 10 through-thickness points");
     s.nip = static_cast<int>(nip);
     c.real("PROPT");  // printout only
-    if (c.integer("QR/IRID") != 0)
-      ctx.reject(c, "QR/IRID", "user-defined integration rules are not supported");
+    readShellRule(ctx, c, s);
     if (c.integer("ICOMP") != 0)
       ctx.reject(c, "ICOMP", "composite (layered) shells are not supported");
     c.integer("SETYP");

@@ -157,6 +157,9 @@ struct SectionShell {
   int nip = 2;
   bool lobatto = false;
   std::array<double, 4> t{};
+  // QR/IRID < 0: the *INTEGRATION_SHELL rule (points in [-1, 1] of the half thickness, weights
+  // summing to 1), nip of them; empty: Gauss or Lobatto.
+  std::vector<double> zeta, weight;
   util::SourceLoc where;
 };
 

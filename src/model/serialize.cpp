@@ -84,13 +84,15 @@ void fields(A& a, M& m) {
   a.count(
       m.shell_sections.size(),
       [&](auto& s) {
-        util::fieldCount<7>(s);
+        util::fieldCount<9>(s);
         a(s.id);
         a(s.elform);
         a(s.shrf);
         a(s.nip);
         a(s.lobatto);
         a(s.t);
+        a(s.zeta);
+        a(s.weight);
         loc(a, s.where);
       },
       m.shell_sections);

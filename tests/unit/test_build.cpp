@@ -851,6 +851,35 @@ TEST(BuildRealDeckRules, ShellThicknessFromElementsWhenTheSectionGivesNone) {
             std::string::npos);
 }
 
+// *INTEGRATION_SHELL (QR/IRID < 0): the points as given (ESOP 0) or NIPTS equal layers (ESOP
+// 1, point cards optional); NIP is then the rule's. Bad rules name their field.
+TEST(BuildRealDeckRules, SectionShellTakesItsUserIntegrationRule) {
+  TempDir t;
+  const std::string rules =
+      "*INTEGRATION_SHELL\n7,3,0\n-0.8,0.25\n0.0,0.5\n0.8,0.25\n*INTEGRATION_SHELL\n8,4,1\n";
+  const auto sheet = [](int qr) {
+    return "*PART\nsheet\n2,2,1\n*SECTION_SHELL\n2,2,,5,0," + std::to_string(qr) +
+           "\n1.0\n*ELEMENT_SHELL\n11,2,1,2,3,4\n";
+  };
+  const Model m = build(t, rules + sheet(-7));
+  const auto& s = m.shell_sections.at(0);
+  EXPECT_EQ(s.nip, 3);
+  EXPECT_EQ(s.zeta, (std::vector<double>{-0.8, 0.0, 0.8}));
+  EXPECT_EQ(s.weight, (std::vector<double>{0.25, 0.5, 0.25}));
+  const Model e = build(t, rules + sheet(-8), "e.k");
+  EXPECT_EQ(e.shell_sections.at(0).zeta, (std::vector<double>{-0.75, -0.25, 0.25, 0.75}));
+  EXPECT_EQ(e.shell_sections.at(0).weight, (std::vector<double>(4, 0.25)));
+  const auto fails = [&](const std::string& text, const std::string& message) {
+    const auto p = t.write("bad.k", kMesh + text);
+    EXPECT_NE(errorOf([&] { readModel(p); }).find(message), std::string::npos) << text;
+  };
+  fails(sheet(-9), "(QR/IRID): no *INTEGRATION_SHELL with IRID 9");
+  fails("*INTEGRATION_SHELL\n7,2,0\n-0.5,0.5\n0.5,0.6\n" + sheet(-7),
+        "(NIPTS): the weighting factors WF sum to 1.1");
+  fails("*INTEGRATION_SHELL\n7,2,0\n-1.5,0.5\n0.5,0.5\n" + sheet(-7), "(S): the point");
+  fails("*INTEGRATION_SHELL\n7,2,0\n-0.5,0.5,3\n0.5,0.5\n" + sheet(-7), "PID");
+}
+
 TEST(BuildRealDeckRules, Mat024TableEndsAtTheFirstNonIncreasingStrain) {
   TempDir t;
   // EPS 0, 0.1, 0.2 then trailing zeros with their stresses: a three-point curve.

@@ -39,12 +39,13 @@ double staticShape(double xi) {
 // (all six freedoms). Node (i, j) has id 1 + i + (nx + 1) j. `extra` adds loads and controls;
 // `initial_speed` > 0 gives a z velocity in the static deflection shape.
 std::string stripDeck(int nx, int ny, int elform, const std::string& extra, double initial_speed,
-                      bool triangles = false) {
+                      bool triangles = false, int qr = 0) {
   std::string s = "*KEYWORD\n*TITLE\ncantilever strip\n" + extra;
   s += fmt::format("*MAT_ELASTIC\n         1{:10.4g}{:10.4g}       0.0\n", kRho, kE);
   s += fmt::format(
-      "*SECTION_SHELL\n         1{:10d}{:10.4g}         3\n{:10.4g}{:10.4g}{:10.4g}{:10.4g}\n",
-      elform, 5.0 / 6.0, kT, kT, kT, kT);
+      "*SECTION_SHELL\n         1{:10d}{:10.4g}         3       0.0{:10d}\n{:10.4g}{:10.4g}{:10.4g}"
+      "{:10.4g}\n",
+      elform, 5.0 / 6.0, qr, kT, kT, kT, kT);
   s += "*PART\nstrip\n         1         1         1\n*NODE\n";
   auto id = [&](int i, int j) { return 1 + i + (nx + 1) * j; };
   for (int j = 0; j <= ny; ++j)
@@ -170,6 +171,32 @@ TEST(VerificationShell, CantileverFirstFrequency) {
   EXPECT_LT(e.hourglass, 0.05 * e.initial);
 }
 
+// *INTEGRATION_SHELL (QR/IRID < 0): the bending stiffness is E t^3 / 12 times 3 sum w_i z_i^2
+// of the rule (z in [-1, 1], weights summing to 1). The three-point Gauss rule written as a
+// user rule gives the NIP = 3 strip's period to round-off; five layers of equal thickness
+// (ESOP 1, the midpoint rule) give 3 sum w z^2 = 1 - 1/25, a period longer by
+// 1 / sqrt(0.96) = 1.02062 (membrane and transverse shear are the same for any rule).
+TEST(VerificationShell, UserIntegrationRuleSetsTheBendingStiffness) {
+  const double period = cantileverPeriod();
+  const auto measure = [&](const std::string& name, int qr, const std::string& rule) {
+    auto sim = Simulation::fromText(
+        name, stripDeck(20, 2, 2, termination(1.7 * period) + rule, 0.05, false, qr));
+    return measuredPeriod(*sim, 21);
+  };
+  const double gauss = measure("rule_gauss3", 0, "");
+  const double g = std::sqrt(0.6);
+  const double user = measure("rule_user3", -7,
+                              fmt::format("*INTEGRATION_SHELL\n7,3,0\n{:.17g},{:.17g}\n0,{:.17g}\n"
+                                          "{:.17g},{:.17g}\n",
+                                          -g, 5.0 / 18.0, 8.0 / 18.0, g, 5.0 / 18.0));
+  const double layers = measure("rule_layers5", -8, "*INTEGRATION_SHELL\n8,5,1\n");
+  EXPECT_NEAR(user / gauss, 1.0, 1e-9);
+  EXPECT_NEAR(layers / gauss, 1.0 / std::sqrt(0.96), 2e-4) << layers / gauss;
+  std::printf("[ figure ] %s layers/gauss %.6f (theory %.6f)\n",
+              ::testing::UnitTest::GetInstance()->current_test_info()->name(), layers / gauss,
+              1.0 / std::sqrt(0.96));
+}
+
 TEST(VerificationShell, CantileverTipDeflection) {
   const double period = cantileverPeriod();
   // Tip nodes 21, 42, 63 carry P/4, P/2, P/4 (a consistent edge load).
@@ -269,8 +296,8 @@ std::string plasticHingeDeck(const std::string& hourglass) {
       fmt::format("*MAT_PLASTIC_KINEMATIC\n         1{:10.4g}{:10.4g}       0.3{:10.4g}       0.0"
                   "       1.0\n",
                   kRho, kE, kHingeSigy));
-  replace(fmt::format("{:10.4g}         3\n", 5.0 / 6.0),
-          fmt::format("{:10.4g}         5\n", 5.0 / 6.0));
+  replace(fmt::format("{:10.4g}         3       0.0", 5.0 / 6.0),
+          fmt::format("{:10.4g}         5       0.0", 5.0 / 6.0));
   replace(fmt::format("{:10.4g}{:10.4g}{:10.4g}{:10.4g}\n", kT, kT, kT, kT),
           fmt::format("{:10.4g}{:10.4g}{:10.4g}{:10.4g}\n", kHingeT, kHingeT, kHingeT, kHingeT));
   return deck;
