@@ -4,8 +4,6 @@
 
 namespace crumple::contact {
 
-namespace {}  // namespace
-
 std::vector<int32_t> SurfaceErosion::slotsOf(const std::vector<int64_t>& elements) const {
   std::vector<int32_t> out(elements.size(), -1);
   for (std::size_t k = 0; k < elements.size(); ++k)

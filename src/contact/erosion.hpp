@@ -5,11 +5,11 @@
 // ENMASS 0 (Keyword Manual: "eroding nodes are removed from the calculation"). With ENMASS 1
 // the free nodes of solids stay in every interface they were in, with their mass (the
 // debris of a perforated target still strikes); with 2 those of shells too.
-// *CONTACT_ERODING_ interfaces with EROSOP 1
-// go further (Keyword Manual, *CONTACT_ERODING_...): their surfaces hold every face of their
-// solids, and a face with a solid across it (ContactSurface::segment_neighbour) is in contact
-// once that solid has eroded and its own element lives; their checks are the nodes on faces
-// in contact, so the nodes erosion exposes join as the faces do.
+// *CONTACT_ERODING_ interfaces with EROSOP 1 go further (Keyword Manual, *CONTACT_ERODING_...):
+// their surfaces hold every face of their solids, and a face with a solid across it
+// (ContactSurface::segment_neighbour) is in contact once that solid has eroded and its own
+// element lives; their checks are the nodes on faces in contact, so the nodes erosion exposes
+// join as the faces do.
 //
 // Every rank holds the same flags. Each rank finds the eroded elements among its own
 // (erodedHere, when its element pass reports erosion), and the lists of every rank meet at
