@@ -173,6 +173,10 @@ struct BeamSection {
   std::vector<std::array<double, 3>> user_points;
   bool user_normalized = false;
   double user_ra = 1.0;
+  // End releases (*ELEMENT_BEAM RT1 RR1 RT2 RR2; elements/beam_release.hpp), model::SectionBeam's
+  // bits: end a (0, 1) frees its translation along r, s, t at bits 6a .. 6a + 2 and its
+  // rotation about r, s, t at bits 6a + 3 .. 6a + 5; 0 none.
+  int release = 0;
 };
 
 struct BeamBlock : BlockBase {

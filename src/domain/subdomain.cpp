@@ -561,6 +561,7 @@ class SubdomainBuilder {
     b.section.sa = sec.sa;
     b.section.shear_factor = sec.shrf;
     b.section.qr = sec.qr;
+    b.section.release = sec.release;
     if (sec.integration != model::kNone) {
       const auto& rule = model.beam_integrations[static_cast<std::size_t>(sec.integration)];
       b.section.user_points = rule.points;

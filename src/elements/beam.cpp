@@ -76,6 +76,7 @@
 #include <stdexcept>
 #include <variant>
 
+#include "elements/beam_release.hpp"
 #include "materials/laws/muscle.hpp"
 #include "materials/uniaxial.hpp"
 #include "util/curve.hpp"
@@ -552,6 +553,31 @@ std::array<double, 6> elasticIncrement(const Section& sec, double sa, double E, 
           kt * ((2.0 - phi_t) * dd[3] + (4.0 + phi_t) * dd[5])};
 }
 
+// The elastic stiffness of the deformation for the end releases (beam_release.hpp): ELFORM 2
+// that of elasticIncrement; Hughes-Liu that of its one point (top of file): M_s = E ISS
+// kappa_s, Q_t = SHRF^2 G A gamma_t, so that per plane (E I / L0) [1 -1; -1 1] +
+// (SHRF^2 G A L0 / 4) [1 1; 1 1].
+DeformationStiffness releaseStiffness(const Section& sec, const domain::BeamSection& bs, double E,
+                                      double G, double L0) {
+  DeformationStiffness K;
+  K.axial = E * sec.area / L0;
+  K.torsion = G * sec.j / L0;
+  if (bs.elform == 2) {
+    auto plane = [&](double inertia) -> std::array<double, 3> {
+      const double phi = bs.sa > 0.0 ? 12.0 * E * inertia / (G * bs.sa * L0 * L0) : 0.0;
+      const double k = E * inertia / (L0 * (1.0 + phi));
+      return {k * (4.0 + phi), k * (2.0 - phi), k * (4.0 + phi)};
+    };
+    K.s = plane(sec.iss);
+    K.t = plane(sec.itt);
+    return K;
+  }
+  const double shear = bs.shear_factor * bs.shear_factor * G * sec.area * L0 / 4.0;
+  K.s = {E * sec.iss / L0 + shear, shear - E * sec.iss / L0, E * sec.iss / L0 + shear};
+  K.t = {E * sec.itt / L0 + shear, shear - E * sec.itt / L0, E * sec.itt / L0 + shear};
+  return K;
+}
+
 // The end forces and moments on the nodes (minus the internal force vector) from the
 // resultants G = (N, T, G_1s, G_1t, G_2s, G_2t) conjugate to the deformation (top of file).
 void writeEndForces(const Frame& E, double length, const std::array<double, 6>& G_end,
@@ -689,6 +715,10 @@ BlockStatus beamForces(domain::BeamBlock& blk, const materials::FibreLaw& law, c
       std::array<double, 6> dd;
       for (std::size_t k = 0; k < 6; ++k) dd[k] = now[k] - blk.deformation[e][k];
       blk.deformation[e] = now;
+      // The work through the nodes: the releases' free deformation does none.
+      const std::array<double, 6> dd_nodes = dd;
+      if (bs.release != 0)
+        applyReleases(bs.release, releaseStiffness(sec, bs, E, G, L0), blk.resultant[e], dd);
 
       std::array<double, 6> R = blk.resultant[e];
       if (form == 2) {
@@ -698,7 +728,7 @@ BlockStatus beamForces(domain::BeamBlock& blk, const materials::FibreLaw& law, c
         for (std::size_t k = 0; k < 6; ++k) R[k] += dR[k];
         if (resultant_plastic) returnResultants(R, cap);
         double work = 0.0;
-        for (std::size_t k = 0; k < 6; ++k) work += 0.5 * (R_old[k] + R[k]) * dd[k];
+        for (std::size_t k = 0; k < 6; ++k) work += 0.5 * (R_old[k] + R[k]) * dd_nodes[k];
         blk.e_int[e] += work;
         blk.resultant[e] = R;
         // Stiffness damping: beta K dd/dt, the elastic increment over the step times beta/dt
@@ -708,7 +738,7 @@ BlockStatus beamForces(domain::BeamBlock& blk, const materials::FibreLaw& law, c
           for (std::size_t k = 0; k < 6; ++k) {
             const double Rd = beta / dt * dR[k];
             double& Rd_old = blk.damping_resultant[e][k];
-            blk.e_damp[e] += 0.5 * (Rd_old + Rd) * dd[k];
+            blk.e_damp[e] += 0.5 * (Rd_old + Rd) * dd_nodes[k];
             Rd_old = Rd;
             R[k] += Rd;
           }

@@ -173,18 +173,26 @@ void checkBeamSection(const Model& m, const Card& c, const SectionBeam& s, int64
 
 // *ELEMENT_BEAM_THICKNESS card 2: PARM1-5 by ELFORM (Keyword Manual, *ELEMENT_BEAM): 1 and 9
 // TS1 TS2 TT1 TT2; 2 A ISS ITT IRR (J) SA; 3 A. A field left 0 keeps the section's value.
-// Elements with the same dimensions share one section (blocks are per section).
-int32_t elementSection(Context& ctx, const Card& t, int32_t section,
-                       std::map<std::pair<int32_t, std::array<double, 5>>, int32_t>& made) {
+std::array<double, 5> elementDimensions(const Card& t) {
   std::array<double, 5> p{};
   for (std::size_t i = 0; i < 5; ++i) {
     const std::string f = "PARM" + std::to_string(i + 1);
     p[i] = t.real(f);
     if (p[i] < 0) t.fail(f, "a section dimension must not be negative");
   }
-  const auto key = std::make_pair(section, p);
+  return p;
+}
+
+// The section of an element with its own dimensions p (all 0: the section's) and end
+// releases (elements/beam_release.hpp's bits): a copy of its part's section. Elements with
+// the same share one (blocks are per section).
+using ElementSections = std::map<std::tuple<int32_t, std::array<double, 5>, int>, int32_t>;
+int32_t elementSection(Context& ctx, const util::SourceLoc& where, int32_t section,
+                       const std::array<double, 5>& p, int release, ElementSections& made) {
+  const auto key = std::make_tuple(section, p, release);
   if (const auto it = made.find(key); it != made.end()) return it->second;
   SectionBeam s = ctx.model.beam_sections[static_cast<std::size_t>(section)];
+  s.release = release;
   auto put = [&](double& field, double value) {
     if (value > 0) field = value;
   };
@@ -203,11 +211,46 @@ int32_t elementSection(Context& ctx, const Card& t, int32_t section,
     }
   }
   completeBeamSection(s);
-  s.where = t.where();
+  s.where = where;
   const auto index = static_cast<int32_t>(ctx.model.beam_sections.size());
   ctx.model.beam_sections.push_back(s);
   made.emplace(key, index);
   return index;
+}
+
+// RT1 RR1 RT2 RR2 (Keyword Manual, *ELEMENT_BEAM: 0 none, 1 x, 2 y, 3 z, 4 xy, 5 yz, 6 zx, 7
+// all) as elements/beam_release.hpp's bits, in the element's axes (LOCAL 2, the default; LOCAL 1,
+// global axes, is refused when an end is released). The corotational beams (ELFORM 1, 2) take
+// them; the manual gives them no meaning for the spot weld beam (9), nor have they one for a
+// truss (3).
+int beamReleases(Context& ctx, const Card& c, const std::array<deck::FieldSlot, 4>& codes,
+                 const deck::FieldSlot& local, int32_t section) {
+  std::array<int64_t, 4> v{};
+  for (std::size_t i = 0; i < 4; ++i) {
+    v[i] = c.integer(codes[i]);
+    if (v[i] < 0 || v[i] > 7) c.fail(codes[i].name, "must be 0 to 7");
+  }
+  const int64_t system = c.integer(local);
+  if (system != 0 && system != 1 && system != 2) c.fail(local.name, "must be 1 or 2");
+  if (std::all_of(v.begin(), v.end(), [](int64_t x) { return x == 0; })) return 0;
+  if (system == 1) {
+    ctx.reject(c, local.name, "end releases in global axes (LOCAL 1) are not supported");
+    return 0;
+  }
+  if (section != kNone) {
+    const int elform = ctx.model.beam_sections[static_cast<std::size_t>(section)].elform;
+    if (elform != 1 && elform != 2) {
+      const std::size_t first = v[0] != 0 ? 0 : v[1] != 0 ? 1 : v[2] != 0 ? 2 : 3;
+      ctx.reject(c, codes[first].name,
+                 "end releases apply to ELFORM 1 and 2 beams (the part's section has ELFORM " +
+                     std::to_string(elform) + ")");
+      return 0;
+    }
+  }
+  // Codes to axis bits (x 1, y 2, z 4); translations then rotations, six bits per end.
+  static constexpr int kAxes[8] = {0, 1, 2, 4, 3, 6, 5, 7};
+  auto end = [&](std::size_t rt, std::size_t rr) { return kAxes[v[rt]] | (kAxes[v[rr]] << 3); };
+  return end(0, 1) | (end(2, 3) << 6);
 }
 
 }  // namespace
@@ -219,20 +262,24 @@ void readBeams(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts
   const deck::FieldSlot n3_slot = card1.slot("N3"), local = card1.slot("LOCAL");
   const std::array<deck::FieldSlot, 4> releases{card1.slot("RT1"), card1.slot("RR1"),
                                                 card1.slot("RT2"), card1.slot("RR2")};
-  std::map<std::pair<int32_t, std::array<double, 5>>, int32_t> made;
+  ElementSections made;
   CardCursor cur(kw, ctx.deck);
   for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
     const Card& c = cur.read(card1);
     auto e = elementCard<2>(ctx, c, SectionKind::Beam, slots, slots.nodes);
     if (e.nodes[0] == e.nodes[1]) c.fail("N2", "a beam needs two distinct nodes");
     if (const int64_t n3 = c.integer(n3_slot); n3 != 0) e.aux = ctx.node(c, "N3", n3);
-    for (const auto& r : releases)
-      if (c.integer(r) != 0) ctx.reject(c, r.name, "beam end releases are not supported");
-    c.integer(local);  // release coordinate system: no releases, no meaning
     const int32_t section = ctx.model.parts[static_cast<std::size_t>(e.part)].section;
-    if (opts.has("THICKNESS")) {
-      const Card& t = cur.read(spec.card("thickness card"));
-      if (section != kNone) e.section = elementSection(ctx, t, section, made);
+    const int release = beamReleases(ctx, c, releases, local, section);
+    if (opts.has("THICKNESS") || release != 0) {
+      std::array<double, 5> dims{};
+      util::SourceLoc where = c.where();
+      if (opts.has("THICKNESS")) {
+        const Card& t = cur.read(spec.card("thickness card"));
+        dims = elementDimensions(t);
+        where = t.where();
+      }
+      if (section != kNone) e.section = elementSection(ctx, where, section, dims, release, made);
     }
     if (section != kNone) {
       const auto s = static_cast<std::size_t>(e.section != kNone ? e.section : section);

@@ -187,6 +187,11 @@ struct SectionBeam {
   int cst = 0;
   double ts1 = 0, ts2 = 0, tt1 = 0, tt2 = 0;
   double a = 0, iss = 0, itt = 0, j = 0, sa = 0;
+  // End releases of the elements that run with this section (a copy of the part's section
+  // per release pattern, like *ELEMENT_BEAM_THICKNESS's): end a (0, 1) frees its translation
+  // along the element's r, s, t at bits 6a .. 6a + 2 and its rotation about them at bits
+  // 6a + 3 .. 6a + 5; 0 none.
+  int release = 0;
   util::SourceLoc where;
 };
 

@@ -99,7 +99,7 @@ void fields(A& a, M& m) {
   a.count(
       m.beam_sections.size(),
       [&](auto& s) {
-        util::fieldCount<16>(s);
+        util::fieldCount<17>(s);
         a(s.id);
         a(s.elform);
         a(s.shrf);
@@ -115,6 +115,7 @@ void fields(A& a, M& m) {
         a(s.itt);
         a(s.j);
         a(s.sa);
+        a(s.release);
         loc(a, s.where);
       },
       m.beam_sections);

@@ -22,6 +22,7 @@
 
 #include "domain/blocks.hpp"
 #include "elements/beam.hpp"
+#include "elements/beam_release.hpp"
 #include "elements/discrete.hpp"
 #include "materials/materials.hpp"
 #include "materials/uniaxial.hpp"
@@ -1003,3 +1004,59 @@ TEST(Discrete, NonlinearSpringFollowsItsCurve) {
 }
 
 }  // namespace
+
+// The release condensation (elements/beam_release.hpp): after it, R_old + K dd meets each
+// released condition exactly and the increments moved only along the freed deformation (the
+// condition's own vector, so the hinge does no work); two conditions in a plane zero both
+// of its resultants; an end without releases is untouched.
+TEST(BeamRelease, CondensationMeetsTheReleasedCondition) {
+  using crumple::elements::applyReleases;
+  using crumple::elements::DeformationStiffness;
+  DeformationStiffness K;
+  K.axial = 3.0;
+  K.torsion = 0.7;
+  K.s = {4.0, 1.5, 5.0};
+  K.t = {2.0, -0.5, 2.5};
+  const std::array<double, 6> R_old = {0.3, -0.2, 1.1, -0.4, 0.6, 0.9};
+  const std::array<double, 6> dd0 = {0.01, 0.02, -0.03, 0.04, 0.05, -0.06};
+  auto after = [&](int release) {
+    std::array<double, 6> dd = dd0;
+    applyReleases(release, K, R_old, dd);
+    return dd;
+  };
+  auto resultant = [&](const std::array<double, 6>& dd, int k) {
+    const auto& p = (k == 2 || k == 4) ? K.s : K.t;
+    const int i = (k == 2 || k == 3) ? 0 : 1;
+    const int a = (k == 2 || k == 4) ? 2 : 3, b = a + 2;  // the plane's two components
+    return R_old[std::size_t(k)] + (i == 0 ? p[0] * dd[std::size_t(a)] + p[1] * dd[std::size_t(b)]
+                                           : p[1] * dd[std::size_t(a)] + p[2] * dd[std::size_t(b)]);
+  };
+  EXPECT_EQ(after(0), dd0);
+  // End 2 translation along r (bit 6): N = 0; the rest untouched.
+  auto d = after(1 << 6);
+  EXPECT_NEAR(R_old[0] + K.axial * d[0], 0.0, 1e-15);
+  for (std::size_t k = 1; k < 6; ++k) EXPECT_EQ(d[k], dd0[k]);
+  // End 1 rotation about r (bit 3): T = 0.
+  d = after(1 << 3);
+  EXPECT_NEAR(R_old[1] + K.torsion * d[1], 0.0, 1e-15);
+  // End 1 rotation about s (bit 4): G_1s = 0, only theta_1s moved.
+  d = after(1 << 4);
+  EXPECT_NEAR(resultant(d, 2), 0.0, 1e-15);
+  EXPECT_EQ(d[4], dd0[4]);
+  // End 2 rotation about t (bit 11): G_2t = 0, only theta_2t moved.
+  d = after(1 << 11);
+  EXPECT_NEAR(resultant(d, 5), 0.0, 1e-15);
+  EXPECT_EQ(d[3], dd0[3]);
+  // End 1 translation along s (bit 1): the shear along s, G_1t + G_2t = 0, with theta_1t and
+  // theta_2t moved alike (the chord's turn).
+  d = after(1 << 1);
+  EXPECT_NEAR(resultant(d, 3) + resultant(d, 5), 0.0, 1e-15);
+  EXPECT_NEAR(d[3] - dd0[3], d[5] - dd0[5], 1e-15);
+  EXPECT_NE(resultant(d, 3), 0.0);  // a couple remains
+  // Both ends hinged about s: plane s carries nothing.
+  d = after((1 << 4) | (1 << 10));
+  EXPECT_NEAR(resultant(d, 2), 0.0, 1e-15);
+  EXPECT_NEAR(resultant(d, 4), 0.0, 1e-15);
+  EXPECT_EQ(d[3], dd0[3]);
+  EXPECT_EQ(d[5], dd0[5]);
+}

@@ -262,6 +262,38 @@ TEST(BuildModel, HistoryElementsAndSetCrossSections) {
 
 // *SECTION_BEAM ELFORM 9, *MAT_SPOTWELD and *INITIAL_AXIAL_FORCE_BEAM on a *SET_BEAM; what
 // they refuse.
+// *ELEMENT_BEAM RT1 RR1 RT2 RR2 (0 none, 1 x, 2 y, 3 z, 4 xy, 5 yz, 6 zx, 7 all): the element
+// runs with a copy of its section holding the release bits (translations r s t at bits 0-2,
+// rotations at 3-5, end 2 six bits up); elements with the same releases share it.
+TEST(BuildModel, BeamEndReleasesGoToTheirElementsSection) {
+  TempDir t;
+  const std::string part = "*PART\nhl\n3,3,1\n*SECTION_BEAM\n3,1,1,2,1\n6.0\n";
+  const Model m = build(t, part +
+                               "*ELEMENT_BEAM\n42,3,3,29,0,0,3,5,0\n43,3,2,28\n"
+                               "44,3,1,27,0,0,3,5,0,2\n");
+  EXPECT_TRUE(m.unsupported.empty());
+  ASSERT_EQ(m.beam_sections.size(), 2u);
+  EXPECT_EQ(m.beam_sections[0].release, 0);
+  // End 1 RR 3: rotation about t (bit 5); end 2 RT 5: translations along s and t (bits 7, 8).
+  EXPECT_EQ(m.beam_sections[1].release, (1 << 5) | (1 << 7) | (1 << 8));
+  EXPECT_EQ(m.beams.section[0], 1);                      // 42
+  EXPECT_EQ(m.beams.section[1], crumple::model::kNone);  // 43: its part's section
+  EXPECT_EQ(m.beams.section[2], 1);                      // 44 shares 42's
+  auto err = [&](const std::string& extra) { return errorOf([&] { build(t, extra, "e.k"); }); };
+  EXPECT_NE(err(part + "*ELEMENT_BEAM\n42,3,3,29,0,8\n").find("field 6 (RT1): must be 0 to 7"),
+            std::string::npos);
+  EXPECT_NE(err(part + "*ELEMENT_BEAM\n42,3,3,29,0,0,0,0,0,3\n").find("(LOCAL): must be 1 or 2"),
+            std::string::npos);
+  // Global axes, and releases on a truss: refused.
+  EXPECT_NE(err(part + "*ELEMENT_BEAM\n42,3,3,29,0,0,3,0,0,1\n").find("global axes (LOCAL 1)"),
+            std::string::npos);
+  const std::string truss = "*PART\ntruss\n3,3,1\n*SECTION_BEAM\n3,3\n1.0\n";
+  EXPECT_NE(err(truss + "*ELEMENT_BEAM\n42,3,3,29,0,0,0,0,2\n")
+                .find("(RR2): end releases apply to "
+                      "ELFORM 1 and 2 beams"),
+            std::string::npos);
+}
+
 TEST(BuildModel, SpotweldBeamsAndTheirPreload) {
   TempDir t;
   const std::string weld =
