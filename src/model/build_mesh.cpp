@@ -716,9 +716,6 @@ void refuseQuadraticTetFeatures(Context& ctx) {
                ": a segment on 10-node tetrahedra is not supported (" + element + ")");
       break;
     }
-  if (m.controls.d3plot)
-    ctx.fail(m.deck_path + ": *DATABASE_BINARY_D3PLOT: the d3plot database of 10-node " +
-             "tetrahedra is not written yet (" + element + "); the VTU results are");
   if (!m.cross_sections.empty())
     ctx.fail(m.deck_path + ": *DATABASE_CROSS_SECTION: section forces through 10-node " +
              "tetrahedra are not supported (" + element + ")");

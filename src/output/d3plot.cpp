@@ -281,10 +281,12 @@ void streamRecords(const comm::Communicator& comm, WordFile* out, int64_t count,
   }
 }
 
-// The elements of one family this rank holds, ascending by model index.
+// The elements of one family this rank holds, ascending by model index; for the solid family
+// also which are 10-node tetrahedra (a domain::Tet10Block's, else a domain::SolidBlock's).
 struct Held {
   std::vector<int64_t> index;
   std::vector<std::pair<const domain::BlockBase*, std::size_t>> at;
+  std::vector<uint8_t> tet10;
 };
 template <class Block>
 Held heldElements(const std::vector<Block>& blocks, int64_t offset) {
@@ -305,6 +307,38 @@ template <class Block>
 float aliveFlag(const Held& held, std::size_t i) {
   const auto& [blk, k] = held.at[i];
   return static_cast<const Block&>(*blk).active[k] != 0 ? 1.0f : 0.0f;
+}
+
+// The solid family: hexahedra, pentahedra and linear tetrahedra, and the 10-node tetrahedra,
+// which the geometry section draws as their corner tetrahedra (the model's N1 N2 N3 N4 N4 N4 N4
+// N4, as the VTU does) with the mean stress of their points.
+Held heldSolids(const domain::Subdomain& sd) {
+  Held linear = heldElements(sd.solid_blocks, 0);
+  const Held quadratic = heldElements(sd.tet10_blocks, 0);
+  if (quadratic.index.empty()) {
+    linear.tet10.assign(linear.index.size(), 0);
+    return linear;
+  }
+  Held h;
+  std::size_t a = 0, b = 0;
+  while (a < linear.index.size() || b < quadratic.index.size()) {
+    const bool take_b = a == linear.index.size() ||
+                        (b < quadratic.index.size() && quadratic.index[b] < linear.index[a]);
+    const Held& from = take_b ? quadratic : linear;
+    std::size_t& i = take_b ? b : a;
+    h.index.push_back(from.index[i]);
+    h.at.push_back(from.at[i]);
+    h.tet10.push_back(take_b ? 1 : 0);
+    ++i;
+  }
+  return h;
+}
+
+// A solid's record: stress xx, yy, zz, xy, yz, zx in global axes, effective plastic strain.
+template <class Block>
+void solidRecord(const Block& b, std::size_t k, float* r) {
+  for (int c = 0; c < 6; ++c) r[c] = static_cast<float>(b.sigAt(c, k));
+  r[6] = b.eps_p.empty() ? 0.0f : static_cast<float>(b.eps_p[k]);
 }
 
 }  // namespace
@@ -450,7 +484,7 @@ void D3plotWriter::writeNodes(WordFile* out, const solver::Solver& s) const {
 // (solids, shells, beams: 1 in the model, 0 eroded).
 void D3plotWriter::writeElements(WordFile* out, const solver::Solver& s) const {
   const auto& sd = s.subdomain();
-  const Held solids = heldElements(sd.solid_blocks, 0);
+  const Held solids = heldSolids(sd);
   const Held shells = heldElements(sd.shell_blocks, 0);
   Held beams = heldElements(sd.beam_blocks, 0);
   const int64_t num_beams = layout_.num_beams;
@@ -461,9 +495,10 @@ void D3plotWriter::writeElements(WordFile* out, const solver::Solver& s) const {
   streamRecords(comm_, out, layout_.nel8, D3plotLayout::kNv3d, solids.index,
                 [&](std::size_t i, float* r) {
                   const auto& [blk, k] = solids.at[i];
-                  const auto& b = static_cast<const domain::SolidBlock&>(*blk);
-                  for (int c = 0; c < 6; ++c) r[c] = static_cast<float>(b.sigAt(c, k));
-                  r[6] = b.eps_p.empty() ? 0.0f : static_cast<float>(b.eps_p[k]);
+                  if (solids.tet10[i])
+                    solidRecord(static_cast<const domain::Tet10Block&>(*blk), k, r);
+                  else
+                    solidRecord(static_cast<const domain::SolidBlock&>(*blk), k, r);
                 });
   streamRecords(
       comm_, out, layout_.nel2, D3plotLayout::kNv1d, beams.index, [&](std::size_t i, float* r) {
@@ -480,8 +515,10 @@ void D3plotWriter::writeElements(WordFile* out, const solver::Solver& s) const {
                   const auto& [blk, k] = shells.at[i];
                   shellRecord(static_cast<const domain::ShellBlock&>(*blk), sd.x, k, r);
                 });
-  streamRecords(comm_, out, layout_.nel8, 1, solids.index,
-                [&](std::size_t i, float* r) { r[0] = aliveFlag<domain::SolidBlock>(solids, i); });
+  streamRecords(comm_, out, layout_.nel8, 1, solids.index, [&](std::size_t i, float* r) {
+    r[0] = solids.tet10[i] ? aliveFlag<domain::Tet10Block>(solids, i)
+                           : aliveFlag<domain::SolidBlock>(solids, i);
+  });
   streamRecords(comm_, out, layout_.nel4, 1, shells.index,
                 [&](std::size_t i, float* r) { r[0] = aliveFlag<domain::ShellBlock>(shells, i); });
   // Discrete elements (after the beams) do not erode.

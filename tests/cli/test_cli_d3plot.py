@@ -364,6 +364,24 @@ class SuiteDecks(D3plotCase):
                 self.compare_with_vtu(out, deck)
 
 
+class QuadraticTetrahedra(D3plotCase):
+    """10-node tetrahedra (ELFORM 16) in the d3plot as their corner tetrahedra with the mean
+    stress of their points: VTK reads the VTU's cells, nodes and values (the VTU draws them
+    the same way)."""
+
+    def test_tet10_bar(self):
+        with open(data_deck("tet10_bar.k"), encoding="utf-8") as f:
+            text = f.read()
+        deck = self.write("tet10_bar.k", text.replace(
+            "*KEYWORD\n", "*KEYWORD\n*DATABASE_BINARY_D3PLOT\n     0.004\n", 1))
+        out = os.path.join(self.tmp, "out")
+        self.run_ok("run", deck, "-o", out, "-q")
+        d3, _, cells = self.compare_with_vtu(out, deck)
+        self.assertEqual(d3["counts"]["solid"], read_summary(out)["counts"]["solids"])
+        # Plastic by the end: the stresses compared above are not all zero.
+        self.assertGreater(max(float(c["effective_plastic_strain"]) for c in cells.values()), 0)
+
+
 class Extent(D3plotCase):
     """*DATABASE_EXTENT_BINARY: the shell switches honoured, the rest reported."""
 

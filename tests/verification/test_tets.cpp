@@ -267,7 +267,7 @@ TEST(VerificationTets, QuadraticFreeVibrationConservesEnergy) {
 }
 
 // What the 10-node tetrahedra do not have yet is refused by name, and so are ELFORM 17 and
-// *ELEMENT_SOLID_TET4TOTET10.
+// *ELEMENT_SOLID_TET4TOTET10 (the d3plot they have: tests/cli/test_cli_d3plot.py).
 TEST(VerificationTets, QuadraticRefusesWhatItCannotRun) {
   const auto refused = [](const std::string& label, const std::string& deck,
                           const std::string& expect) {
@@ -287,8 +287,6 @@ TEST(VerificationTets, QuadraticRefusesWhatItCannotRun) {
   refused("tet17", with("         1        16\n", "         1        17\n"),
           "ELFORM=17 (the 10-node composite tetrahedron");
   refused("tet4totet10", with("*ELEMENT_SOLID\n", "*ELEMENT_SOLID_TET4TOTET10\n"), "TET4TOTET10");
-  refused("tet10_d3plot", with("*PART\n", "*DATABASE_BINARY_D3PLOT\n     0.001\n*PART\n"),
-          "the d3plot database of 10-node tetrahedra is not written yet");
   refused("tet10_contact",
           with("*PART\n",
                "*CONTACT_AUTOMATIC_SINGLE_SURFACE\n         1         0         3\n\n\n*PART\n"),
