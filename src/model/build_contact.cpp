@@ -119,6 +119,9 @@ struct Segment {
   int64_t element;
   double thickness, stiffness, depth;
   int64_t neighbour;  // the solid across the face (eroding surfaces), else -1
+  // The element face the segment lies on, when that is not the segment itself (the four
+  // triangles of a 10-node tetrahedron's face: its corners); else kNone.
+  std::array<int32_t, 4> face{kNone, kNone, kNone, kNone};
 };
 
 // Which solid faces a side takes (Keyword Manual, *CONTACT, the ERODING option's card).
@@ -173,6 +176,43 @@ Segment solidSegment(const Model& m, const std::array<int32_t, 4>& f, int64_t e,
   return {f, e, 0.0, k, area2 > 0.0 ? vol / std::sqrt(area2) : 0.0, neighbour};
 }
 
+// The mid-side node of 10-node tetrahedron e on the edge between corner nodes a and b (model.hpp:
+// N5 on edge 1-2, N6 2-3, N7 3-1, N8 1-4, N9 2-4, N10 3-4).
+int32_t edgeMidNode(const Model& m, std::size_t e, int32_t a, int32_t b) {
+  static constexpr int kMid[4][4] = {{-1, 0, 2, 3}, {0, -1, 1, 4}, {2, 1, -1, 5}, {3, 4, 5, -1}};
+  const auto& n = m.solids.nodes[e];
+  auto corner = [&](int32_t node) {
+    return static_cast<int>(std::find(n.begin(), n.begin() + 4, node) - n.begin());
+  };
+  return m.solids.mid[e][std::size_t(kMid[corner(a)][corner(b)])];
+}
+
+// A face (a, b, c) of a 10-node tetrahedron as the four flat triangles its mid-side nodes cut
+// it into, each turned as the face: a contact segment of 3 or 4 nodes is flat, and the six-node
+// face's corners alone would leave its mid-side nodes out of contact (docs/theory.md, "The
+// 10-node tetrahedron"). Each triangle is the face of one of the eight tetrahedra of volume V / 8
+// that the mid-side nodes cut the element into (exactly so for straight edges): its stiffness
+// K A^2 / (V / 8) and depth (V / 8) / A are that tetrahedron's.
+void appendQuadraticFace(const Model& m, const Segment& face, std::vector<Segment>& out) {
+  const auto e = static_cast<std::size_t>(face.element);
+  const int32_t a = face.nodes[0], b = face.nodes[1], c = face.nodes[2];
+  const int32_t ab = edgeMidNode(m, e, a, b), bc = edgeMidNode(m, e, b, c),
+                ca = edgeMidNode(m, e, c, a);
+  // K / V of the element from the face's K A^2 / V.
+  const Vec3 face_area = areaVector(m, face.nodes);
+  const double face_a2 = dot(face_area, face_area);
+  const double k_per_a2 = face_a2 > 0.0 ? face.stiffness / face_a2 : 0.0;
+  const double volume = face.depth * std::sqrt(face_a2);
+  for (const std::array<int32_t, 4>& t :
+       {std::array<int32_t, 4>{a, ab, ca, ca}, std::array<int32_t, 4>{ab, b, bc, bc},
+        std::array<int32_t, 4>{ca, bc, c, c}, std::array<int32_t, 4>{ab, bc, ca, ca}}) {
+    const Vec3 av = areaVector(m, t);
+    const double a2 = dot(av, av);
+    out.push_back({t, face.element, 0.0, 8.0 * k_per_a2 * a2,
+                   a2 > 0.0 ? volume / (8.0 * std::sqrt(a2)) : 0.0, face.neighbour, face.nodes});
+  }
+}
+
 // The faces of the solids of the given parts (flags per part index) that `rule` takes: those
 // with no solid across them (counting the solids of the parts, or of every part with
 // rule.across_all), and with rule.interior those with one solid across, in element order.
@@ -193,10 +233,16 @@ std::vector<Segment> solidSegments(const Model& m, const std::vector<uint8_t>& i
   std::vector<Segment> out;
   for (const auto& [f, e] : faces) {
     const FaceUse& u = use[keyOf(f)];
-    if (u.count == 1)
-      out.push_back(solidSegment(m, f, e, -1));
-    else if (u.count == 2 && rule.interior)
-      out.push_back(solidSegment(m, f, e, u.solid[0] == e ? u.solid[1] : u.solid[0]));
+    int64_t neighbour = -1;
+    if (u.count == 2 && rule.interior)
+      neighbour = u.solid[0] == e ? u.solid[1] : u.solid[0];
+    else if (u.count != 1)
+      continue;
+    const Segment s = solidSegment(m, f, e, neighbour);
+    if (m.solids.quadratic(std::size_t(e)))
+      appendQuadraticFace(m, s, out);
+    else
+      out.push_back(s);
   }
   return out;
 }
@@ -277,6 +323,37 @@ struct Side {
   bool nodes_only = false;
 };
 
+// The segments of *SET_SEGMENT id: each a free face of a solid or a shell, in the user's
+// orientation, with the stiffness and depth of the element it bounds; the face of a 10-node
+// tetrahedron (its corners) gives its four triangles (appendQuadraticFace), turned as the user's.
+std::vector<Segment> setSegments(Context& ctx, const Card& c, std::string_view id_field,
+                                 int64_t id) {
+  const Model& m = ctx.model;
+  std::multimap<FaceKey, std::size_t> owner;
+  const auto all = partSegments(m, std::vector<uint8_t>(m.parts.size(), 1));
+  for (std::size_t k = 0; k < all.size(); ++k)
+    owner.insert({keyOf(all[k].face[0] == kNone ? all[k].nodes : all[k].face), k});
+  std::vector<Segment> out;
+  for (const auto& s : ctx.segmentSet(c, id_field, id)) {
+    const auto [first, last] = owner.equal_range(keyOf(s));
+    if (first == last)
+      c.fail(id_field, "segment set " + std::to_string(id) +
+                           " has a segment that is not a free face of a solid or a shell");
+    for (auto it = first; it != last; ++it) {
+      Segment seg = all[it->second];
+      seg.neighbour = -1;
+      if (seg.face[0] == kNone)
+        seg.nodes = s;
+      else if (dot(areaVector(m, seg.nodes), areaVector(m, s)) < 0.0) {
+        std::swap(seg.nodes[1], seg.nodes[2]);
+        seg.nodes[3] = seg.nodes[2];
+      }
+      out.push_back(seg);
+    }
+  }
+  return out;
+}
+
 Side readSide(Context& ctx, const Card& c, std::string_view id_field, std::string_view type_field,
               bool beam_edges, FaceRule rule = {}) {
   const Model& m = ctx.model;
@@ -287,19 +364,7 @@ Side readSide(Context& ctx, const Card& c, std::string_view id_field, std::strin
   switch (type) {
     case 0: {
       if (id == 0) c.fail(id_field, "a segment set id is required for type 0");
-      // Segments of a set keep the user's orientation; stiffness from the element they bound.
-      std::map<FaceKey, std::pair<int64_t, std::size_t>> owner;
-      std::fill(in_part.begin(), in_part.end(), 1);
-      const auto all = partSegments(m, in_part);
-      for (std::size_t k = 0; k < all.size(); ++k) owner[keyOf(all[k].nodes)] = {all[k].element, k};
-      for (auto s : ctx.segmentSet(c, id_field, id)) {
-        auto it = owner.find(keyOf(s));
-        if (it == owner.end())
-          c.fail(id_field, "segment set " + std::to_string(id) +
-                               " has a segment that is not a free face of a solid or a shell");
-        const Segment& base = all[it->second.second];
-        side.segments.push_back({s, base.element, base.thickness, base.stiffness, base.depth, -1});
-      }
+      side.segments = setSegments(ctx, c, id_field, id);
       break;
     }
     case 2:

@@ -691,19 +691,6 @@ void refuseQuadraticTetFeatures(Context& ctx) {
   if (first == m.solids.size()) return;
   const std::string element = "solid element " + std::to_string(m.solids.id[first]) +
                               " is a 10-node tetrahedron (*SECTION_SOLID ELFORM 16)";
-  for (const auto& c : m.contacts)
-    for (const ContactSurface* side : {&c.a, &c.b}) {
-      bool touches = std::any_of(side->nodes.begin(), side->nodes.end(),
-                                 [&](int32_t n) { return on_tet10[std::size_t(n)] != 0; });
-      for (const auto& s : side->segments)
-        for (int32_t n : s) touches = touches || on_tet10[std::size_t(n)] != 0;
-      if (touches) {
-        ctx.fail(c.where.str() + ": " + c.keyword + " " + std::to_string(c.id) +
-                 ": a contact surface on 10-node tetrahedra is not supported (" + element +
-                 "; its faces are quadratic and contact reads flat 3- and 4-node segments)");
-        return;
-      }
-    }
   // Pressure, airbag and blast segments: a 3- or 4-node segment on a quadratic face would load
   // the corners only (the consistent load of a 6-node face puts it on the mid-side nodes).
   for (const auto& p : m.pressure_loads)
