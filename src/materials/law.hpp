@@ -34,8 +34,11 @@
 //                              one-point solids are the only ones that give them)
 //   bulkViscosity() (optional) false when the law's solids take no bulk viscosity (LS-DYNA's
 //                              *MAT_LOW_DENSITY_FOAM BVFLAG 0); else *CONTROL_BULK_VISCOSITY's
-//   kBeamOnly (optional)       the one *SECTION_BEAM ELFORM its parts may use (a BeamOnly);
-//                              parts of other sections are refused (model/build_mesh.cpp)
+//   kBeamOnly (optional)       the one *SECTION_BEAM ELFORM its beam parts may use (a BeamOnly,
+//                              which may allow solid parts too); parts of other sections are
+//                              refused (model/build_mesh.cpp)
+//   solidRefusal(Params) (opt.) why its solids cannot run these parameters (what only its beams
+//                              do), else empty: a solid part of it is then refused
 //   massDensity(ro) (optional) the density of its beams' nodal masses from RO (else RO)
 //   Params                     the deck's parameters, stored in the Model (trivially copyable:
 //                              the Model is sent to the other ranks as bytes); Params::Law
@@ -172,6 +175,7 @@ struct PointBatch {
 struct BeamOnly {
   int elform = 0;
   std::string_view what;
+  bool solids = false;  // solid parts may use it too
 };
 
 // Elastic moduli every continuum law exposes for wave speeds and hourglass control.

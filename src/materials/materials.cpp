@@ -162,6 +162,18 @@ const BeamOnly* beamOnlyOf(const LawParams& p) {
       p);
 }
 
+std::string solidRefusalOf(const LawParams& p) {
+  return std::visit(
+      [](const auto& l) -> std::string {
+        using U = UnitOf<std::decay_t<decltype(l)>>;
+        if constexpr (requires { U::solidRefusal(l); })
+          return U::solidRefusal(l);
+        else
+          return {};
+      },
+      p);
+}
+
 Law makeLaw(const LawParams& p, const CurveAt& curves, const std::string& at, const Eos* eos) {
   return std::visit(
       [&](const auto& params) -> Law {

@@ -109,6 +109,9 @@ bool needsDeformationGradient(const LawParams& p);
 
 // The one beam formulation the law runs on (its unit's kBeamOnly), or null for any.
 const BeamOnly* beamOnlyOf(const LawParams& p);
+// What the law's parameters need that its solids do not have (its unit's
+// solidRefusal(Params), e.g. a spot weld's resultant failure), or empty.
+std::string solidRefusalOf(const LawParams& p);
 
 // The kernel law of a continuum part; `at` prefixes messages ("deck.k:12: *MAT_ELASTIC 3: ").
 // `eos` is the part's equation of state, given to a law that declares kEos (solid blocks).

@@ -421,14 +421,20 @@ bool oneSolidPoint(const Model& m, const Part& p) {
 bool onItsBeams(Context& ctx, const Part& p, const Material& m) {
   const materials::BeamOnly* only = materials::beamOnlyOf(m.law);
   if (!only) return true;
+  const std::string head = p.where.str() + ": *PART card 2 field 3 (MID): part " +
+                           std::to_string(p.id) + " has material " + std::to_string(m.id) + " (" +
+                           std::string(materialKeyword(m.law)) + ")";
+  if (only->solids && p.section_kind == SectionKind::Solid) {
+    const std::string why = materials::solidRefusalOf(m.law);
+    if (!why.empty()) ctx.fail(head + " on solid elements: " + why);
+    return why.empty();
+  }
   const bool ok =
       p.section_kind == SectionKind::Beam &&
       ctx.model.beam_sections[static_cast<std::size_t>(p.section)].elform == only->elform;
   if (!ok)
-    ctx.fail(p.where.str() + ": *PART card 2 field 3 (MID): part " + std::to_string(p.id) +
-             " has material " + std::to_string(m.id) + " (" + materialKeyword(m.law) +
-             "), which Crumple runs only on " + std::string(only->what) +
-             "; other sections are not supported");
+    ctx.fail(head + ", which Crumple runs only on " + std::string(only->what) +
+             (only->solids ? " and solids" : "") + "; other sections are not supported");
   return ok;
 }
 

@@ -262,6 +262,24 @@ TEST(BuildModel, HistoryElementsAndSetCrossSections) {
 
 // *SECTION_BEAM ELFORM 9, *MAT_SPOTWELD and *INITIAL_AXIAL_FORCE_BEAM on a *SET_BEAM; what
 // they refuse.
+// *MAT_SPOTWELD on a hexahedral part: the solid weld runs with EFAIL; TFAIL and the resultant
+// limits, which only the spot-weld beam evaluates, are refused naming the part.
+TEST(BuildModel, SpotweldOnSolidsTakesEfailOnly) {
+  TempDir t;
+  const std::string part =
+      "*PART\nweld\n2,2,2\n*SECTION_SOLID\n2,1\n*ELEMENT_SOLID\n"
+      "30,2,1,2,3,4,5,6,7,8\n";
+  const Model m = build(t, part + "*MAT_SPOTWELD\n2,7.8e-9,2e5,0.3,300,1000\n0.1\n");
+  EXPECT_EQ(m.solids.size(), 3u);
+  auto err = [&](const std::string& extra) { return errorOf([&] { build(t, extra, "e.k"); }); };
+  EXPECT_NE(err(part + "*MAT_SPOTWELD\n2,7.8e-9,2e5,0.3,300,1000,0,1e-3\n")
+                .find("part 2 has material 2 (*MAT_SPOTWELD) on solid elements: TFAIL"),
+            std::string::npos);
+  EXPECT_NE(err(part + "*MAT_SPOTWELD\n2,7.8e-9,2e5,0.3,300,1000\n0.1,5\n")
+                .find("the resultant failure NRR .. MTT is applied to spot-weld beams only"),
+            std::string::npos);
+}
+
 // *ELEMENT_BEAM RT1 RR1 RT2 RR2 (0 none, 1 x, 2 y, 3 z, 4 xy, 5 yz, 6 zx, 7 all): the element
 // runs with a copy of its section holding the release bits (translations r s t at bits 0-2,
 // rotations at 3-5, end 2 six bits up); elements with the same releases share it.

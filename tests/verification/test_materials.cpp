@@ -634,3 +634,39 @@ TEST(VerificationMaterials, ViscoelasticRelaxesInUniaxialStrain) {
   EXPECT_LT(worst_p, 0.01 * K * std::abs(eps1));
   RecordProperty("worst_deviator_error_over_peak", std::to_string(worst / peak));
 }
+
+// *MAT_SPOTWELD on a hexahedral weld (mm, s, t, MPa): the hex of isochoricPull stretched at
+// 100 /s. Once plastic, its von Mises stress is SIGY + EH eps_p (linear isotropic hardening, no
+// rate effect), and the element is deleted in the cycle its effective plastic strain reaches
+// EFAIL = 0.05 (Keyword Manual, *MAT_SPOTWELD: "effective plastic strain in weld material at
+// failure"); a weld without EFAIL stays.
+TEST(VerificationMaterials, SpotweldHexYieldsAndFailsAtEfail) {
+  auto pull = [](const std::string& card2, double& worst, double& eps_at_deletion) {
+    const std::string mat = "*MAT_SPOTWELD\n1,7.85e-9,210000,0.3,300,1000\n" + card2;
+    auto sim = Simulation::fromText("spotweld_hex_pull", isochoricPull(mat, 100.0));
+    bool deleted = false;
+    sim->run([&](const auto&) {
+      const auto& blk = sim->sd.solid_blocks.at(0);
+      if (deleted) return;
+      if (!blk.active.at(0)) {
+        deleted = true;
+        eps_at_deletion = blk.eps_p.at(0);
+        return;
+      }
+      const double eps_p = blk.eps_p.at(0);
+      if (eps_p > 1e-3)
+        worst = std::max(worst, std::abs(misesOf(blk) - (300.0 + 1000.0 * eps_p)) / 300.0);
+    });
+    return deleted;
+  };
+  double worst = 0.0, eps_at_deletion = 0.0;
+  EXPECT_TRUE(pull("0.05\n", worst, eps_at_deletion));
+  EXPECT_LT(worst, 1e-3);
+  EXPECT_GE(eps_at_deletion, 0.05);
+  EXPECT_LT(eps_at_deletion, 0.0505);
+  RecordProperty("worst_flow_stress_error", fmt::format("{:.3g}", worst));
+  RecordProperty("plastic_strain_at_deletion", fmt::format("{:.5g}", eps_at_deletion));
+  double worst_kept = 0.0, unused = 0.0;
+  EXPECT_FALSE(pull("\n", worst_kept, unused));
+  EXPECT_LT(worst_kept, 1e-3);
+}

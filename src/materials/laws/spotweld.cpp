@@ -70,6 +70,24 @@ Spotweld Spotweld::make(const Params& p, const CurveAt&, const std::string& at) 
   return law;
 }
 
+std::string Spotweld::solidRefusal(const Params& p) {
+  if (p.tfail > 0) return "TFAIL (failure by time) is applied to spot-weld beams only";
+  if (p.nrr > 0 || p.nrs > 0 || p.nrt > 0 || p.mrr > 0 || p.mss > 0 || p.mtt > 0)
+    return "the resultant failure NRR .. MTT is applied to spot-weld beams only (the resultants "
+           "of a hexahedral weld are not computed)";
+  return {};
+}
+
+// Solid welds: von Mises plasticity with the isotropic hardening EH (no rate effect), failing
+// at EFAIL.
+void Spotweld::update(PointBatch& b) const {
+  LinearHardening h;
+  h.sigy = sigy;
+  h.Hi = eh;
+  linearHardeningReturn(b, moduli, h, false);
+  markFailed(b, efail);
+}
+
 FibreLaw Spotweld::fibre() const {
   FibreLaw f;
   f.E = youngOf(moduli);
