@@ -394,9 +394,6 @@ template <class Law>
 shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVector& x,
                  const domain::NodeVector& v, const domain::NodeVector& w, double dt, double* slots,
                  std::size_t range_first, std::size_t range_last) {
-  // Shell blocks store no law history besides eps_p and alpha: a law with more needs its
-  // storage here (blocks.hpp, resizeShellBlock) before it can offer a plane-stress update.
-  static_assert(materials::historyOf<Law>() == 0, "shell blocks do not store law history yet");
   constexpr int B = kShellBatch;
   const std::size_t ne = range_last;
   const std::size_t batch0 = range_first / B;
@@ -426,8 +423,11 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
       Lanes work, failed_points;
       double* ero_batch =
           p.erosion ? blk.erosion_state.data() + first * std::size_t(blk.erosionFields()) : nullptr;
+      double* hist_batch = materials::historyOf<Law>() > 0
+                               ? blk.hist.data() + first * std::size_t(blk.histFields())
+                               : nullptr;
       pointStresses(law, p, s, sig_batch, ep_batch, alpha_batch, ln, r, work, failed_points,
-                    ero_batch);
+                    ero_batch, hist_batch);
       dropDeletedPoints(p, s, failed_points);
       ShellResultants q;
       resultantsOf(p, s, sig_batch, ln, r, work, q);
@@ -553,6 +553,8 @@ void resizeShellBlock(domain::ShellBlock& blk, std::size_t n) {
     blk.hgq.clear();
   }
   blk.drill.assign(padded * 4, 0.0);
+  blk.history = blk.planar() ? 0 : materials::historyCount(blk.law);
+  blk.hist.assign(padded * static_cast<std::size_t>(blk.histFields()), 0.0);
   blk.erosion_state.assign(blk.erosion.any() && !blk.planar()
                                ? padded * static_cast<std::size_t>(blk.erosionFields())
                                : 0,
