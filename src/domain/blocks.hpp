@@ -90,6 +90,10 @@ struct ShellBlock : BlockBase {
   // *SECTION_SHELL ICOMP 1: the material angle of each point through the thickness in radians
   // (nip of them); empty: every point at angle 0. Only orthotropic laws use them.
   std::vector<double> ply;
+  // Laws whose a axis comes from a vector (*MAT_054 AOPT 2, 3): per element (padded), the angle
+  // of that axis about the normal from the element frame's first axis at the initial geometry
+  // (set by initializeShells); empty otherwise.
+  std::vector<double> axis_angle;
   // Integration-point state in the corotational element frame, stored batch by batch (one
   // contiguous record of `fields` x kShellBatch values per batch, like SolidBlock::sig). An
   // element has inPlanePoints() in-plane points q (1; 4 for ELFORM 16, 2 x 2 Gauss), each with

@@ -166,6 +166,7 @@ struct ShellParams {
   bool layered = false;
   double ply[kMaxShellPoints] = {};
   double g_xz = 0, g_yz = 0, g_c = 0;
+  const double* axis_angle = nullptr;  // ShellBlock::axis_angle, null when empty
   int history = 0;
 };
 
@@ -174,6 +175,7 @@ template <class Law>
 inline void layersOf(const Law& law, const domain::ShellBlock& blk, ShellParams& p) {
   if constexpr (materials::isLayered<Law>()) {
     p.layered = true;
+    p.axis_angle = blk.axis_angle.empty() ? nullptr : blk.axis_angle.data();
     for (int i = 0; i < p.nip; ++i) {
       const auto k = static_cast<std::size_t>(i);
       p.ply[i] = k < blk.ply.size() ? blk.ply[k] : 0.0;
@@ -343,7 +345,8 @@ inline void pointStresses(const Law& law, const ShellParams& p, ShellScratch& s,
     for (int k = 0; k < materials::historyOf<Law>(); ++k) pts.h[k] = hist_batch + k * npts;
     if constexpr (materials::isLayered<Law>()) {
       for (int ip = 0; ip < nip; ++ip)
-        for (int l = 0; l < B; ++l) s.ply[ip * B + l] = p.ply[ip];
+        for (int l = 0; l < B; ++l)
+          s.ply[ip * B + l] = p.ply[ip] + (p.axis_angle ? p.axis_angle[ln.first + l] : 0.0);
       pts.ply = s.ply;
     }
     law.updatePlaneStress(pts);

@@ -381,6 +381,16 @@ void resolveHourglass(Context& ctx, const Card& c, Part& p, Context::PartProblem
   }
 }
 
+// A part's heading card and card 2 (*PART, *PART_COMPOSITE): its id, title and place; gives
+// card 2.
+const Card& readPartHeading(CardCursor& cur, const deck::KeywordSpec& spec, Part& p) {
+  p.title = cur.read(spec.card("card 1")).text("HEADING");
+  const Card& c = cur.read(spec.card("card 2"));
+  p.id = positiveId(c, "PID");
+  p.where = c.where();
+  return c;
+}
+
 // The section of *PART_COMPOSITE card 2 (ELFORM, SHRF, NLOC) and its ply cards; sets the part's
 // material (MID1). Empty (no points) when the section cannot run.
 SectionShell readPlies(Context& ctx, CardCursor& cur, const deck::KeywordSpec& spec, const Card& c,
@@ -438,12 +448,8 @@ SectionShell readPlies(Context& ctx, CardCursor& cur, const deck::KeywordSpec& s
 void readPartComposite(Context& ctx, const deck::Keyword& kw) {
   const auto& spec = keywordSpec("*PART_COMPOSITE");
   CardCursor cur(kw, ctx.deck);
-  const std::string heading = cur.read(spec.card("card 1")).text("HEADING");
-  const Card& c = cur.read(spec.card("card 2"));
   Part p;
-  p.id = positiveId(c, "PID");
-  p.title = heading;
-  p.where = c.where();
+  const Card& c = readPartHeading(cur, spec, p);
   Context::PartProblem problem;
   SectionShell sec = readPlies(ctx, cur, spec, c, p, problem);
   if (!sec.zeta.empty()) {
@@ -471,12 +477,8 @@ void readParts(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts
   CardCursor cur(kw, ctx.deck);
   // One keyword may hold several parts, each a heading card and card 2.
   while (nextRecord(cur, true)) {
-    const std::string heading = cur.read(spec.card("card 1")).text("HEADING");
-    const Card& c = cur.read(spec.card("card 2"));
     Part p;
-    p.id = positiveId(c, "PID");
-    p.title = heading;
-    p.where = c.where();
+    const Card& c = readPartHeading(cur, spec, p);
     // A part no element uses may be incomplete (no section, an undefined or unusable
     // material), as LS-DYNA accepts: the first problem is kept and is an error on use.
     Context::PartProblem problem;

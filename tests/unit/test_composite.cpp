@@ -160,6 +160,21 @@ TEST(EnhancedComposite, DegradedModuliAndStrengths) {
   EXPECT_EQ(intact.failed, 0);
 }
 
+// AOPT 2: A projected on the element's plane; AOPT 3: V x the normal; the angle from the
+// frame's first axis about the normal (frame rows e1, e2, n).
+TEST(EnhancedComposite, AxesFromVectors) {
+  const double e[3][3] = {{0, 1, 0}, {-1, 0, 0}, {0, 0, 1}};  // e1 = y, e2 = -x
+  auto p = plyParams();
+  p.aopt = 2;
+  p.a = {1.0, 1.0, 5.0};  // projected: (1, 1, 0), 45 degrees from x, -45 from e1 = y
+  EXPECT_NEAR(lawOf(p).axisAngle(e), -kPi / 4, 1e-15);
+  p.aopt = 3;
+  p.v = {1.0, 0.0, 0.0};  // V x n = (0, -1, 0) = -e1
+  EXPECT_NEAR(std::abs(lawOf(p).axisAngle(e)), kPi, 1e-15);
+  p.v = {0.0, 0.0, 2.0};  // along the normal: no direction
+  EXPECT_TRUE(std::isnan(lawOf(p).axisAngle(e)));
+}
+
 // The laminate's transverse shear moduli turn with the layer: at 90 degrees xz takes GBC.
 TEST(EnhancedComposite, TransverseShearTurnsWithTheLayer) {
   const auto law = lawOf(plyParams());
@@ -203,6 +218,7 @@ TEST(EnhancedComposite, ReadFromTheDeck) {
   EXPECT_EQ(p.crit, 54);    // CRIT blank: 54
   EXPECT_EQ(p.ycfac, 2.0);  // YCFAC blank: 2
   EXPECT_EQ(p.sc, 0.068);
+  EXPECT_EQ(p.tfail, 0.0);
   // NIP 10: the angles on two cards, B1..B8 then B9, B10.
   const auto& sec = model.shell_sections.at(0);
   ASSERT_EQ(sec.ply_angle.size(), 10u);
@@ -213,6 +229,12 @@ TEST(EnhancedComposite, ReadFromTheDeck) {
   deck.replace(deck.find("*MAT_ENHANCED_COMPOSITE_DAMAGE"), 30, "*MAT_054");
   const auto m55 = crumple::model::readModel(t.write("b.k", deck));
   EXPECT_EQ(std::get<m::EnhancedComposite::Params>(m55.materials.at(0).law).crit, 55);
+  // TFAIL <= 0.1: the law's deletion step (the element erodes below it).
+  const auto tf =
+      crumple::model::readModel(t.write("c.k", compositeDeck("1e-6", "1.5,1.5,0.246,0.04,0.068")));
+  const auto pt = std::get<m::EnhancedComposite::Params>(tf.materials.at(0).law);
+  EXPECT_EQ(pt.tfail, 1e-6);
+  EXPECT_EQ(lawOf(pt).deletionStep(), 1e-6);
 }
 
 // Errors and refusals name the file, the line, the card and the field.
@@ -230,12 +252,16 @@ TEST(EnhancedComposite, BadOrRefusedFieldsAreErrors) {
   const std::string k = "bad.k:", c5 = "0,0,0,0,0,0,0,0", c6 = "1.5,1.5,0.246,0.04,0.068";
   const std::string sec = "1,2,0.833,10,1,0,1\n1.0\n0,45,-45,90,90,-45,45,0\n0,90\n";
   const std::string mat = " *MAT_ENHANCED_COMPOSITE_DAMAGE card ";
+  has(error(compositeDeck(c5, c6, sec, "7.17,3.0,7.17,0,1")),
+      k + "4:" + mat + "2 field 5 (AOPT): only AOPT 0 (the element's side 1-2), 2 (vector A)");
   has(error(compositeDeck(c5, c6, sec, "7.17,3.0,7.17,0,2")),
-      k + "4:" + mat + "2 field 5 (AOPT): only AOPT 0");
+      k + "5:" + mat + "3 field 4 (A1): AOPT 2 needs a non-zero vector");
+  has(error(compositeDeck(c5, c6, sec, "7.17,3.0,7.17,0,3")),
+      k + "6:" + mat + "4 field 1 (V1): AOPT 3 needs a non-zero vector");
   has(error(compositeDeck(c5, c6, sec, "7.17,0,7.17")), k + "4:" + mat + "2 field 2 (GBC)");
   has(error(compositeDeck("0,0,0,0,0,0.02,-0.02", c6)),
       k + "7:" + mat + "5 field 6 (DFAILT): strain-based layer failure");
-  has(error(compositeDeck("1e-6", c6)), k + "7:" + mat + "5 field 1 (TFAIL)");
+  has(error(compositeDeck("0.5", c6)), k + "7:" + mat + "5 field 1 (TFAIL): TFAIL > 0.1");
   has(error(compositeDeck("0,0.3", c6)), k + "7:" + mat + "5 field 2 (ALPH)");
   has(error(compositeDeck("0,0,0.8", c6)), k + "7:" + mat + "5 field 3 (SOFT)");
   has(error(compositeDeck(c5, "1.5,1.5,0.246,0.04,0.068,22")),

@@ -33,11 +33,13 @@ using crumple::testing::termination;
 // XT 1.5, YC 0.246, YT 0.04, SC 0.068.
 constexpr double kRho = 1.6e-6, kXt = 1.5, kYt = 0.04;
 
-std::string plyMaterial(int crit = 54) {
+// `axes`: cards 2 (from AOPT on), 3 and 4 up to D3; `card5` card 5.
+std::string plyMaterial(int crit = 54, const std::string& axes = "0\n0,0,0,0,0,0,0\n0,0,0,0,0,0",
+                        const std::string& card5 = "0,0,0,0,0,0,0,0") {
   return fmt::format(
-      "*MAT_ENHANCED_COMPOSITE_DAMAGE\n1,{},181,10.3,0,0.016\n7.17,3.0,7.17,0,0\n"
-      "0,0,0,0,0,0,0\n0,0,0,0,0,0,0,0\n0,0,0,0,0,0,0,0\n1.5,1.5,0.246,0.04,0.068,{}\n",
-      kRho, crit);
+      "*MAT_ENHANCED_COMPOSITE_DAMAGE\n1,{},181,10.3,0,0.016\n7.17,3.0,7.17,0,{},0,0\n{}\n"
+      "1.5,1.5,0.246,0.04,0.068,{}\n",
+      kRho, axes, card5, crit);
 }
 
 // A section of thickness 1 with one point per ply (ESOP 1: equal layers) at these angles.
@@ -107,8 +109,8 @@ TEST(VerificationComposite, QuasiIsotropicMembraneIsTheAMatrix) {
     EXPECT_NEAR(n[0] / (76.37395134 * eps), 1.0, 1e-6) << elform;
     EXPECT_NEAR(n[1] / (22.61737507 * eps), 1.0, 1e-6) << elform;
     EXPECT_LT(std::abs(n[2]), 1e-9 * n[0]) << elform;
-    std::printf("[ figure ] ELFORM %d N_x / (A11 eps) %.9f, N_y / (A12 eps) %.9f (eps %.3g)\n",
-                elform, n[0] / (76.37395134 * eps), n[1] / (22.61737507 * eps), eps);
+    std::printf("[ figure ] ELFORM %d N_x / (A11 eps) - 1 = %.2g, N_y / (A12 eps) - 1 = %.2g\n",
+                elform, n[0] / (76.37395134 * eps) - 1.0, n[1] / (22.61737507 * eps) - 1.0);
   }
 }
 
@@ -118,18 +120,34 @@ TEST(VerificationComposite, QuasiIsotropicMembraneIsTheAMatrix) {
 // stiffness (an angle of the wrong sign, or none) leaves N_xy of the order of N_x.
 TEST(VerificationComposite, OffAxisPlyShowsTheShearCoupling) {
   const double r = 1e-3, ry = -0.226852171 * r, g = -1.351465143 * r;
-  auto sim = Simulation::fromText(
-      "composite_off_axis",
-      drivenElement(plyMaterial(), "*SECTION_SHELL\n1,2,0.8333,1,1,0,1\n1.0,1.0,1.0,1.0\n30\n", r,
-                    ry, 0.5 * g, 0.1));
-  const double eps = std::log(runDriven(*sim) / 10.0);
-  const auto n = membrane(*sim);
+  const auto run = [&](const std::string& name, const std::string& axes, int angle) {
+    auto sim = Simulation::fromText(
+        name, drivenElement(
+                  plyMaterial(54, axes),
+                  fmt::format("*SECTION_SHELL\n1,2,0.8333,1,1,0,1\n1.0,1.0,1.0,1.0\n{}\n", angle),
+                  r, ry, 0.5 * g, 0.1));
+    const double eps = std::log(runDriven(*sim) / 10.0);
+    const auto n = membrane(*sim);
+    return std::array<double, 4>{n[0], n[1], n[2], eps};
+  };
+  const auto n = run("composite_off_axis", "0\n0,0,0,0,0,0,0\n0,0,0,0,0,0", 30);
+  const double eps = n[3];
   EXPECT_NEAR(n[0] / eps / 28.78211421, 1.0, 1e-3);
   EXPECT_LT(std::abs(n[1]), 1e-3 * n[0]);
   EXPECT_LT(std::abs(n[2]), 1e-3 * n[0]);
   std::printf(
       "[ figure ] 30-degree ply: N_x / (eps_x / a11) %.6f, N_y / N_x %.2g, N_xy / N_x %.2g\n",
       n[0] / eps / 28.78211421, n[1] / n[0], n[2] / n[0]);
+  // The same ply by its axes: AOPT 2 with A at 30 degrees (tilted out of the plane: projected),
+  // AOPT 3 with V x normal at 30 degrees (V = (-sin 30, cos 30, 0)), AOPT 0 with MANGLE 20 and
+  // B1 10.
+  const auto a2 =
+      run("composite_off_axis_a2", "2\n0,0,0,0.8660254037844386,0.5,0.7,0\n0,0,0,0,0,0", 0);
+  const auto a3 =
+      run("composite_off_axis_a3", "3\n0,0,0,0,0,0,0\n-0.5,0.8660254037844386,0,0,0,0", 0);
+  const auto m0 = run("composite_off_axis_mangle", "0\n0,0,0,0,0,0,20\n0,0,0,0,0,0", 10);
+  for (const auto& other : {a2, a3, m0})
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(other[k], n[k], 1e-9 * n[0]) << k;
 }
 
 namespace {
@@ -250,5 +268,19 @@ TEST(VerificationComposite, TransverseTensionFailsTheMatrixAtYt) {
     EXPECT_EQ(p.flags[0], 0.0) << crit;
     std::printf("[ figure ] CRIT %d transverse tension peak / YT %.5f, then 0, element kept\n",
                 crit, p.peak / kYt);
+  }
+}
+
+// TFAIL 0.01 ms, above the element's step (about 8.4e-4 ms): deleted in the first pass, as a
+// *MAT_024 TDEL element; TFAIL 1e-4 ms, below it: kept.
+TEST(VerificationComposite, TfailDeletesElementsBelowTheStep) {
+  for (double tfail : {0.01, 1e-4}) {
+    auto sim = Simulation::fromText(
+        "composite_tfail",
+        drivenElement(plyMaterial(54, "0\n0,0,0,0,0,0,0\n0,0,0,0,0,0", fmt::format("{}", tfail)),
+                      "*SECTION_SHELL\n1,2,0.8333,1,1,0,1\n1.0,1.0,1.0,1.0\n0\n", 1e-3, 0, 0,
+                      0.005));
+    sim->run();
+    EXPECT_EQ(sim->sd.shell_blocks.at(0).active[0] == 0, tfail > 1e-3) << tfail;
   }
 }

@@ -1,7 +1,10 @@
 #include "materials/laws/enhanced_composite.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <utility>
 
 #include "deck/card.hpp"
 #include "deck/layout.hpp"
@@ -28,44 +31,71 @@ void rejectNonZero(LawInput& in, const deck::Card& c, std::initializer_list<std:
     if (c.real(name) != 0.0) in.reject(c, name, why);
 }
 
-void readElasticCards(LawInput& in, EnhancedComposite::Params& p) {
+// Reads each field into its member; each must be positive (else an error naming it).
+void readPositive(const deck::Card& c,
+                  std::initializer_list<std::pair<std::string_view, double*>> fields,
+                  const char* why) {
+  for (const auto& [name, to] : fields) {
+    *to = c.real(name);
+    if (!(*to > 0)) c.fail(name, why);
+  }
+}
+
+// AOPT (shells): 0 the element's side 1-2, 2 the vector A projected on the element, 3 V x the
+// normal; MANGLE (AOPT 0, 3) and the section's angles turn the axes about the normal. Reads
+// cards 3 and 4; gives card 4 (its DFAILM, DFAILS are read with the failure cards).
+const deck::Card& readAxes(LawInput& in, const deck::Card& c2, EnhancedComposite::Params& p) {
+  const double aopt = c2.real("AOPT");
+  const deck::Card& c3 = in.card("card 3");
+  const deck::Card& c4 = in.card("card 4");
+  p.mangle = c3.real("MANGLE");
+  if (aopt != 0.0 && aopt != 2.0 && aopt != 3.0) {
+    in.reject(c2, "AOPT",
+              "only AOPT 0 (the element's side 1-2), 2 (vector A) and 3 (V x the normal) are "
+              "supported");
+    return c4;
+  }
+  p.aopt = static_cast<int>(aopt);
+  const bool two = p.aopt == 2;
+  const deck::Card& c = two ? c3 : c4;
+  auto& vec = two ? p.a : p.v;
+  for (int k = 0; k < 3; ++k)
+    vec[std::size_t(k)] = c.real(std::string(two ? "A" : "V") + std::to_string(k + 1));
+  if (p.aopt != 0 && vec[0] == 0 && vec[1] == 0 && vec[2] == 0)
+    c.fail(two ? "A1" : "V1", "AOPT " + std::to_string(p.aopt) + " needs a non-zero vector");
+  if (two && p.mangle != 0) in.ignore(c3, "MANGLE", "MANGLE applies to AOPT 0 and 3 only");
+  return c4;
+}
+
+const deck::Card& readElasticCards(LawInput& in, EnhancedComposite::Params& p) {
   const deck::Card& c = in.card("card 1");
-  p.ea = c.real("EA");
-  p.eb = c.real("EB");
+  readPositive(c, {{"EA", &p.ea}, {"EB", &p.eb}}, "must be positive");
   p.ec = c.real("EC");
   p.prba = c.real("PRBA");
   p.prca = c.real("PRCA");
   p.prcb = c.real("PRCB");
-  if (!(p.ea > 0)) c.fail("EA", "must be positive");
-  if (!(p.eb > 0)) c.fail("EB", "must be positive");
   if (!(p.ec >= 0)) c.fail("EC", "must not be negative");
   if (!(p.prba >= 0)) c.fail("PRBA", "must not be negative");
   if (!(p.prba * p.prba * p.ea / p.eb < 1.0))
     c.fail("PRBA", "nu_ab nu_ba = PRBA^2 EA / EB must be below 1 (positive definite)");
   const deck::Card& c2 = in.card("card 2");
-  p.gab = c2.real("GAB");
-  p.gbc = c2.real("GBC");
-  p.gca = c2.real("GCA");
-  for (const auto f : {"GAB", "GBC", "GCA"})
-    if (!(c2.real(f) > 0))
-      c2.fail(f, "must be positive (the shells' transverse shear uses GBC, GCA)");
-  const double aopt = c2.real("AOPT");
-  if (aopt != 0.0)
-    in.reject(c2, "AOPT",
-              "only AOPT 0 (material axes from the element's side 1-2, turned by MANGLE and the "
-              "section's angles) is supported");
+  readPositive(c2, {{"GAB", &p.gab}, {"GBC", &p.gbc}, {"GCA", &p.gca}},
+               "must be positive (the shells' transverse shear uses GBC, GCA)");
   rejectNonZero(in, c2, {"2WAY"}, "the two-way fibre option is not supported");
-  p.mangle = in.card("card 3").real("MANGLE");
+  return readAxes(in, c2, p);
 }
 
-void readFailureCards(LawInput& in, EnhancedComposite::Params& p) {
-  const deck::Card& c4 = in.card("card 4");
+void readFailureCards(LawInput& in, const deck::Card& c4, EnhancedComposite::Params& p) {
   rejectNonZero(
       in, c4, {"DFAILM", "DFAILS"},
       "strain-based layer failure (DFAILM, DFAILS, DFAILT, DFAILC, EFS) is not supported");
   const deck::Card& c5 = in.card("card 5");
-  if (c5.real("TFAIL") > 0)
-    in.reject(c5, "TFAIL", "element deletion by the time step (TFAIL > 0) is not supported");
+  // TFAIL in (0, 0.1]: an element whose step falls below it is deleted (as *MAT_024 TDEL).
+  p.tfail = std::max(c5.real("TFAIL"), 0.0);
+  if (p.tfail > 0.1)
+    in.reject(c5, "TFAIL",
+              "TFAIL > 0.1 (deletion by the ratio of the element's step to its first) is not "
+              "supported; TFAIL <= 0.1 (an absolute step) is");
   rejectNonZero(in, c5, {"ALPH"}, "the nonlinear shear term (ALPH) is not supported");
   const double soft = c5.real("SOFT");
   if (soft != 0.0 && soft != 1.0)
@@ -78,13 +108,8 @@ void readFailureCards(LawInput& in, EnhancedComposite::Params& p) {
   p.ycfac = c5.real("YCFAC");
   if (!(p.ycfac > 0)) c5.fail("YCFAC", "must be positive");
   const deck::Card& c6 = in.card("card 6");
-  p.xc = c6.real("XC");
-  p.xt = c6.real("XT");
-  p.yc = c6.real("YC");
-  p.yt = c6.real("YT");
-  p.sc = c6.real("SC");
-  for (const auto f : {"XC", "XT", "YC", "YT", "SC"})
-    if (!(c6.real(f) > 0)) c6.fail(f, "the strength must be positive");
+  readPositive(c6, {{"XC", &p.xc}, {"XT", &p.xt}, {"YC", &p.yc}, {"YT", &p.yt}, {"SC", &p.sc}},
+               "the strength must be positive");
   const double crit = c6.real("CRIT");
   if (crit != 54.0 && crit != 55.0) c6.fail("CRIT", "must be 54 (Chang-Chang) or 55 (Tsai-Wu)");
   p.crit = static_cast<int>(crit);
@@ -137,8 +162,8 @@ const deck::KeywordSpec& EnhancedComposite::cards() {
 
 EnhancedComposite::Params EnhancedComposite::read(LawInput& in) {
   Params p;
-  readElasticCards(in, p);
-  readFailureCards(in, p);
+  const deck::Card& c4 = readElasticCards(in, p);
+  readFailureCards(in, c4, p);
   readOptionalCards(in);
   return p;
 }
@@ -164,7 +189,12 @@ EnhancedComposite EnhancedComposite::make(const Params& p, const CurveAt&, const
   law.zz_b = p.ec > 0 ? -p.prcb / p.ec : 0.0;
   law.gbc = p.gbc;
   law.gca = p.gca;
-  law.mangle = p.mangle * kDegree;
+  law.mangle = p.aopt == 2 ? 0.0 : p.mangle * kDegree;
+  law.aopt = p.aopt;
+  law.a = p.a;
+  law.v = p.v;
+  if (law.aopt != 0 && law.aopt != 2 && law.aopt != 3)
+    throw util::InputError(at + "AOPT must be 0, 2 or 3");
   law.xc = p.xc;
   law.xt = p.xt;
   law.yc = p.yc;
@@ -173,8 +203,27 @@ EnhancedComposite EnhancedComposite::make(const Params& p, const CurveAt&, const
   law.beta = p.beta;
   law.fbrt = p.fbrt;
   law.ycfac = p.ycfac;
+  law.tfail = p.tfail;
   law.tsai_wu = p.crit == 55;
   return law;
+}
+
+double EnhancedComposite::axisAngle(const double e[3][3]) const {
+  double d[3];
+  if (aopt == 2) {  // A projected on the element's plane
+    const double an = a[0] * e[2][0] + a[1] * e[2][1] + a[2] * e[2][2];
+    for (int k = 0; k < 3; ++k) d[k] = a[std::size_t(k)] - an * e[2][k];
+  } else {  // V x the normal
+    d[0] = v[1] * e[2][2] - v[2] * e[2][1];
+    d[1] = v[2] * e[2][0] - v[0] * e[2][2];
+    d[2] = v[0] * e[2][1] - v[1] * e[2][0];
+  }
+  const double x = d[0] * e[0][0] + d[1] * e[0][1] + d[2] * e[0][2];
+  const double y = d[0] * e[1][0] + d[1] * e[1][1] + d[2] * e[1][2];
+  const double vec =
+      aopt == 2 ? a[0] * a[0] + a[1] * a[1] + a[2] * a[2] : v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+  if (!(x * x + y * y > 1e-12 * vec)) return std::numeric_limits<double>::quiet_NaN();
+  return std::atan2(y, x);
 }
 
 void EnhancedComposite::transverseShear(double ply, double g[3]) const {

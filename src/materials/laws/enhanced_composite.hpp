@@ -4,7 +4,9 @@
 // them (Keyword Manual vol. II, *MAT_054-055; Theory Manual, material models 22 and 54-55):
 // CRIT 54 the Chang-Chang matrix criteria, CRIT 55 the Tsai-Wu matrix criterion (Tsai & Wu
 // 1971). Shells only (plane stress, kLayered: each point turned by MANGLE plus its layer angle
-// B_i of *SECTION_SHELL ICOMP 1, from the element's first axis, side 1-2: AOPT 0).
+// B_i of *SECTION_SHELL ICOMP 1, from the element's first axis, side 1-2: AOPT 0; or from the
+// vector A projected on the element (AOPT 2, no MANGLE) or V x normal (AOPT 3), fixed in the
+// element frame from the initial geometry).
 //
 // In the material axes a, b (hypoelastic, in the corotational element frame turned by the
 // point's angle theta): s += Q de with
@@ -22,7 +24,8 @@
 // carries nothing: failed); fibre compression Ea = nu = 0 (s_aa dropped); matrix (either)
 // Eb = Gab = nu = 0 (s_bb, s_ab dropped). After matrix compression the fibre strengths become
 // Xc = YCFAC Yc and, with FBRT > 0, Xt = FBRT Xt. The element erodes when all its points have
-// failed in fibre tension (DFAILT = 0: LS-DYNA's rule).
+// failed in fibre tension (DFAILT = 0: LS-DYNA's rule), or when its time step falls below
+// TFAIL (0 < TFAIL <= 0.1).
 #pragma once
 
 #include <array>
@@ -52,8 +55,11 @@ struct EnhancedComposite {
     double ea = 0, eb = 0, ec = 0, prba = 0, prca = 0, prcb = 0;
     double gab = 0, gbc = 0, gca = 0;
     double mangle = 0;  // degrees
+    int aopt = 0;       // 0: side 1-2; 2: A projected on the shell; 3: V x normal
+    std::array<double, 3> a{}, v{};
     double xc = 0, xt = 0, yc = 0, yt = 0, sc = 0;
     double beta = 0, fbrt = 0, ycfac = 2.0;
+    double tfail = 0;  // element deletion below this time step (0 = none)
     int crit = 54;
   };
   static const deck::KeywordSpec& cards();
@@ -66,14 +72,23 @@ struct EnhancedComposite {
   double zz_a = 0, zz_b = 0;  // thickness strain per stress: -nu_ca / Ec, -nu_cb / Ec
   double gbc = 0, gca = 0;
   double mangle = 0;  // radians
+  int aopt = 0;
+  std::array<double, 3> a{}, v{};
   double xc = 0, xt = 0, yc = 0, yt = 0, sc = 0, beta = 0, fbrt = 0, ycfac = 2.0;
   bool tsai_wu = false;
+  double tfail = 0;
   void updatePlaneStress(PlaneStressPoints& b) const;
   // Transverse shear moduli in the element frame of a layer at `ply` (radians): g[0] xz-xz,
   // g[1] yz-yz, g[2] the coupling.
   void transverseShear(double ply, double g[3]) const;
+  // Whether the a axis comes from a vector (AOPT 2, 3) rather than the element's side 1-2; then
+  // axisAngle(e) is the angle of that axis about the normal e[2] from e[0] in an element frame
+  // e (rows: e1, e2, normal), taken once from the initial geometry (NaN when the vector gives no
+  // direction in the element's plane).
+  bool elementAxes() const { return aopt != 0; }
+  double axisAngle(const double e[3][3]) const;
   double failureStrain() const { return 0.0; }
-  double deletionStep() const { return 0.0; }
+  double deletionStep() const { return tfail; }
 };
 
 }  // namespace crumple::materials
