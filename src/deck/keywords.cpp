@@ -104,6 +104,15 @@ std::vector<KeywordSpec> makeTables() {
                   I("VID", 0, 0, 8), R("S", 1, Z, 16), I("PF", 0, 0, 8), R("OFFSET", 0, 0, 16)}}}});
   // ---- parts, sections, materials -----------------------------------------------------------
   // *PART; _INERTIA adds cards 3-5 (and card 6 for IRCS=1) after card 2 of each part.
+  // *PART_COMPOSITE: a heading, card 2, then ply cards of two plies each (Keyword Manual vol. I).
+  t.push_back({"*PART_COMPOSITE",
+               {{"card 1", {A("HEADING", 70)}},
+                {"card 2",
+                 {I("PID"), I("ELFORM", 2, Z), R("SHRF", 1, Z), R("NLOC"), R("MAREA"), I("HGID"),
+                  I("ADPOPT"), I("ITHELFM")}},
+                {"ply card",
+                 {I("MID1"), R("THICK1"), R("B1"), I("TMID1"), I("MID2"), R("THICK2"), R("B2"),
+                  I("TMID2")}}}});
   t.push_back(
       {"*PART",
        {{"card 1", {A("HEADING", 70)}},
@@ -135,7 +144,9 @@ std::vector<KeywordSpec> makeTables() {
          {I("SECID"), I("ELFORM", 2, Z), R("SHRF", 1, Z), I("NIP", 2, Z), R("PROPT", 1, Z),
           I("QR/IRID"), I("ICOMP"), I("SETYP", 1, Z)}},
         {"card 2",
-         {R("T1"), R("T2"), R("T3"), R("T4"), R("NLOC"), R("MAREA"), I("IDOF"), I("EDGSET")}}}});
+         {R("T1"), R("T2"), R("T3"), R("T4"), R("NLOC"), R("MAREA"), I("IDOF"), I("EDGSET")}},
+        // ICOMP = 1: the material angle of each integration point, 8 a card (NIP of them).
+        {"angle card", {R("B1"), R("B2"), R("B3"), R("B4"), R("B5"), R("B6"), R("B7"), R("B8")}}}});
   t.push_back(
       {"*SECTION_BEAM",
        {titleCard(),

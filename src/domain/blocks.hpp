@@ -87,6 +87,13 @@ struct ShellBlock : BlockBase {
   // Through-thickness rule: point i at z = zeta[i] t / 2, weight[i] (the weights sum to 1);
   // Gauss or Lobatto from nip, or a section's *INTEGRATION_SHELL rule.
   std::vector<double> zeta, weight;
+  // *SECTION_SHELL ICOMP 1: the material angle of each point through the thickness in radians
+  // (nip of them); empty: every point at angle 0. Only orthotropic laws use them.
+  std::vector<double> ply;
+  // Laws whose a axis comes from a vector (*MAT_054 AOPT 2, 3): per element (padded), the angle
+  // of that axis about the normal from the element frame's first axis at the initial geometry
+  // (set by initializeShells); empty otherwise.
+  std::vector<double> axis_angle;
   // Integration-point state in the corotational element frame, stored batch by batch (one
   // contiguous record of `fields` x kShellBatch values per batch, like SolidBlock::sig). An
   // element has inPlanePoints() in-plane points q (1; 4 for ELFORM 16, 2 x 2 Gauss), each with
@@ -112,6 +119,13 @@ struct ShellBlock : BlockBase {
   //          (xx, yy, xy tensor shear, zz) and 1 once the point has failed; else empty
   static constexpr int kErosionFields = 5;
   std::vector<double> erosion_state;
+  //   hist:  the law's history variables (materials::historyOf, `history` of them) per point,
+  //          nip x history fields per in-plane point q, variable k of point i at field
+  //          q nip history + k nip + i (so that one variable of all a point set's points is
+  //          contiguous); empty for laws without
+  int history = 0;
+  std::vector<double> hist;
+  int histFields() const { return inPlanePoints() * nip * history; }
   int erosionFields() const { return inPlanePoints() * kErosionFields * nip; }
   static std::size_t blocked(int fields, int field, std::size_t e) {
     return (e / kShellBatch) * std::size_t(fields) * kShellBatch +

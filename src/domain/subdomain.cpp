@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iterator>
 #include <map>
+#include <numbers>
 #include <numeric>
 #include <set>
 #include <stdexcept>
@@ -519,6 +520,8 @@ class SubdomainBuilder {
       b.zeta = sec.zeta;
       b.weight = sec.weight;
     }
+    if (!b.planar())
+      for (const double deg : sec.ply_angle) b.ply.push_back(deg * (std::numbers::pi / 180.0));
     b.shear_factor = sec.shrf;
     const auto hg = hourglassOf(model, part);
     b.ihq = hg.ihq;

@@ -101,12 +101,14 @@
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
+#include <string>
 #include <variant>
 #include <vector>
 
 #include "elements/hex8_kernel.hpp"
 #include "elements/shell_kernel.hpp"
 #include "materials/plane_stress.hpp"
+#include "util/error.hpp"
 
 namespace crumple::elements {
 
@@ -394,9 +396,6 @@ template <class Law>
 shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVector& x,
                  const domain::NodeVector& v, const domain::NodeVector& w, double dt, double* slots,
                  std::size_t range_first, std::size_t range_last) {
-  // Shell blocks store no law history besides eps_p and alpha: a law with more needs its
-  // storage here (blocks.hpp, resizeShellBlock) before it can offer a plane-stress update.
-  static_assert(materials::historyOf<Law>() == 0, "shell blocks do not store law history yet");
   constexpr int B = kShellBatch;
   const std::size_t ne = range_last;
   const std::size_t batch0 = range_first / B;
@@ -426,8 +425,11 @@ shellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVect
       Lanes work, failed_points;
       double* ero_batch =
           p.erosion ? blk.erosion_state.data() + first * std::size_t(blk.erosionFields()) : nullptr;
+      double* hist_batch = materials::historyOf<Law>() > 0
+                               ? blk.hist.data() + first * std::size_t(blk.histFields())
+                               : nullptr;
       pointStresses(law, p, s, sig_batch, ep_batch, alpha_batch, ln, r, work, failed_points,
-                    ero_batch);
+                    ero_batch, hist_batch);
       dropDeletedPoints(p, s, failed_points);
       ShellResultants q;
       resultantsOf(p, s, sig_batch, ln, r, work, q);
@@ -553,6 +555,8 @@ void resizeShellBlock(domain::ShellBlock& blk, std::size_t n) {
     blk.hgq.clear();
   }
   blk.drill.assign(padded * 4, 0.0);
+  blk.history = blk.planar() ? 0 : materials::historyCount(blk.law);
+  blk.hist.assign(padded * static_cast<std::size_t>(blk.histFields()), 0.0);
   blk.erosion_state.assign(blk.erosion.any() && !blk.planar()
                                ? padded * static_cast<std::size_t>(blk.erosionFields())
                                : 0,
@@ -564,8 +568,39 @@ double shellTimeStep(double area, double longest_side, bool triangle, double wav
   return (triangle ? 2.0 : 1.0) * (area / longest_side) * (1.0 / wave_speed);
 }
 
+namespace {
+
+// ShellBlock::axis_angle of a law whose axes come from a vector: the angle of its a axis in each
+// element's frame at x0; an element in whose plane the vector gives no direction is an input
+// error naming it.
+template <class L>
+void setAxisAngles(const L& law, domain::ShellBlock& blk, const domain::NodeVector& x0) {
+  blk.axis_angle.clear();
+  if constexpr (requires(const double e[3][3]) { law.axisAngle(e); }) {
+    if (!law.elementAxes()) return;
+    blk.axis_angle.assign(blk.paddedSize(), 0.0);
+    NodalShell xs;
+    for (std::size_t e = 0; e < blk.paddedSize(); ++e) {
+      const std::size_t r = std::min(e, blk.size() - 1);
+      gatherCorners(blk, r, 1, x0, xs);
+      const LaneFrame f = frameAt(xs, 0);
+      const double angle = law.axisAngle(f.e);
+      // A degenerate element (no area) is reported by initializeShells as such.
+      if (std::isnan(angle) && f.area > 0.0)
+        throw util::InputError("part " + std::to_string(blk.part_id) + ": shell element " +
+                               std::to_string(blk.elem_id[r]) +
+                               ": the material's AOPT vector has no direction in its plane");
+      blk.axis_angle[e] = std::isnan(angle) ? 0.0 : angle;
+    }
+  }
+}
+
+}  // namespace
+
 BlockStatus initializeShells(domain::ShellBlock& blk, const domain::NodeVector& x0, double* slots,
                              std::vector<double>& element_dt) {
+  if (!blk.planar() && blk.size() > 0)
+    std::visit([&](const auto& l) { setAxisAngles(l, blk, x0); }, blk.law);
   const std::size_t ne = blk.size();
   if (blk.thick.size() != blk.paddedSize()) resizeShellBlock(blk, ne);
   const ShellConstants mc = constantsOf(blk.law, blk.rho0);

@@ -291,7 +291,11 @@ inline void fullPointStresses(const Law& law, const ShellParams& p, domain::Shel
                         ? blk.erosion_state.data() + first * std::size_t(blk.erosionFields()) +
                               std::size_t(q * domain::ShellBlock::kErosionFields * p.nip * B)
                         : nullptr;
-    pointStresses(law, p, s, sig_q, ep_q, alpha_q, ln, fb.r[q], fb.work, failed_q, ero_q);
+    double* hist_q = materials::historyOf<Law>() > 0
+                         ? blk.hist.data() + first * std::size_t(blk.histFields()) +
+                               std::size_t(q * p.history * p.nip * B)
+                         : nullptr;
+    pointStresses(law, p, s, sig_q, ep_q, alpha_q, ln, fb.r[q], fb.work, failed_q, ero_q, hist_q);
     resultantsOf(p, s, sig_q, ln, fb.r[q], fb.work, fb.q[q]);
     storePoints<Law>(p, s, alive, sig_q, ep_q, alpha_q, fb.q[q]);
     for (int l = 0; l < B; ++l) {
@@ -326,7 +330,6 @@ template <class Law>
 fullShellBlockForces(const Law& law, domain::ShellBlock& blk, const domain::NodeVector& x,
                      const domain::NodeVector& v, const domain::NodeVector& w, double dt,
                      double* slots, std::size_t range_first, std::size_t range_last) {
-  static_assert(materials::historyOf<Law>() == 0, "shell blocks do not store law history yet");
   constexpr int B = kShellBatch;
   const std::size_t batch0 = range_first / B;
   const std::size_t nbatch = range_last > range_first ? (range_last - range_first + B - 1) / B : 0;

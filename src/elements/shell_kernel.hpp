@@ -119,6 +119,7 @@ struct ShellScratch {
   double s[3][kMaxPoints], de[3][kMaxPoints], alpha[3][kMaxPoints];
   double dzz[kMaxPoints], ep[kMaxPoints];
   uint8_t failed[kMaxPoints];
+  double ply[kMaxPoints];              // the layer angle of each point (laws with kLayered)
   double zeros[5 * kShellBatch] = {};  // the "stored" resistances of the viscous forms
 };
 
@@ -159,7 +160,33 @@ struct ShellParams {
   const materials::Erosion* erosion = nullptr;  // the block's criteria; null when it has none
   double time = 0;
   double zeta[kMaxShellPoints] = {}, weight[kMaxShellPoints] = {};
+  // Layered (orthotropic) laws: each point's layer angle, and the transverse shear moduli of
+  // the laminate in the element frame (g_xz, g_yz and their coupling: the layers' moduli turned
+  // by their angles, weighted by their thickness fractions).
+  bool layered = false;
+  double ply[kMaxShellPoints] = {};
+  double g_xz = 0, g_yz = 0, g_c = 0;
+  const double* axis_angle = nullptr;  // ShellBlock::axis_angle, null when empty
+  int history = 0;
 };
+
+// The layer angles and the laminate's transverse shear moduli of a layered law.
+template <class Law>
+inline void layersOf(const Law& law, const domain::ShellBlock& blk, ShellParams& p) {
+  if constexpr (materials::isLayered<Law>()) {
+    p.layered = true;
+    p.axis_angle = blk.axis_angle.empty() ? nullptr : blk.axis_angle.data();
+    for (int i = 0; i < p.nip; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      p.ply[i] = k < blk.ply.size() ? blk.ply[k] : 0.0;
+      double g[3];
+      law.transverseShear(p.ply[i], g);
+      p.g_xz += p.weight[i] * g[0];
+      p.g_yz += p.weight[i] * g[1];
+      p.g_c += p.weight[i] * g[2];
+    }
+  }
+}
 
 template <class Law>
 inline ShellParams shellParamsOf(const Law& law, const domain::ShellBlock& blk, double dt) {
@@ -180,7 +207,7 @@ inline ShellParams shellParamsOf(const Law& law, const domain::ShellBlock& blk, 
   p.drill_coef = kDrillStiffness * p.mc.E * (1.0 / 12.0);
   p.thickness_update = blk.thickness_update;
   p.scaled_mass = !blk.mass_scale.empty();
-  p.can_fail = law.failureStrain() > 0.0 || blk.erosion.any();
+  p.can_fail = law.failureStrain() > 0.0 || blk.erosion.any() || materials::failsPoints<Law>();
   p.fail_points = p.nip * blk.inPlanePoints();
   if (blk.erosion.any()) {
     p.erosion = &blk.erosion;
@@ -191,6 +218,8 @@ inline ShellParams shellParamsOf(const Law& law, const domain::ShellBlock& blk, 
     p.zeta[i] = blk.zeta[static_cast<std::size_t>(i)];
     p.weight[i] = blk.weight[static_cast<std::size_t>(i)];
   }
+  p.history = materials::historyOf<Law>();
+  layersOf(law, blk, p);
   return p;
 }
 
@@ -264,12 +293,14 @@ inline void erodeShellPoints(const ShellParams& p, ShellScratch& s, double* ero_
 // The plane-stress update at every point through the thickness. The stress work is the
 // midpoint rule, (s_old + s) / 2 : de summed over the points: its s_old half is taken here into
 // work, as the stresses are loaded. A failed point carries no stress; failed_points counts them.
-// ero_batch: the points' erosion records (null without erosion criteria).
+// ero_batch: the points' erosion records (null without erosion criteria); hist_batch: the
+// points' law history (ShellBlock::hist, updated in place; null for laws without).
 template <class Law>
 inline void pointStresses(const Law& law, const ShellParams& p, ShellScratch& s,
                           const double* sig_batch, const double* ep_batch,
                           const double* alpha_batch, const ShellLanes& ln, const ShellRates& r,
-                          Lanes& work, Lanes& failed_points, double* ero_batch = nullptr) {
+                          Lanes& work, Lanes& failed_points, double* ero_batch,
+                          double* hist_batch) {
   constexpr int B = kShellBatch;
   const int nip = p.nip, npts = p.npts;
   const double dt = p.dt;
@@ -311,6 +342,13 @@ inline void pointStresses(const Law& law, const ShellParams& p, ShellScratch& s,
     pts.eps_p = Law::kPlastic ? s.ep : nullptr;
     pts.failed = p.can_fail ? s.failed : nullptr;
     if (p.can_fail) std::fill(s.failed, s.failed + npts, uint8_t{0});
+    for (int k = 0; k < materials::historyOf<Law>(); ++k) pts.h[k] = hist_batch + k * npts;
+    if constexpr (materials::isLayered<Law>()) {
+      for (int ip = 0; ip < nip; ++ip)
+        for (int l = 0; l < B; ++l)
+          s.ply[ip * B + l] = p.ply[ip] + (p.axis_angle ? p.axis_angle[ln.first + l] : 0.0);
+      pts.ply = s.ply;
+    }
     law.updatePlaneStress(pts);
   }
   if (ero_batch != nullptr) erodeShellPoints(p, s, ero_batch);
@@ -352,8 +390,13 @@ inline void resultantsOf(const ShellParams& p, const ShellScratch& s, const doub
     const double* rec_zx = sig_batch + (3 * nip + 1) * B;
     for (int l = 0; l < B; ++l) {
       const double old_yz = rec_yz[l], old_zx = rec_zx[l];
-      q.tau_yz[l] = old_yz + p.mc.G * r.gyz[l] * dt;
-      q.tau_zx[l] = old_zx + p.mc.G * r.gxz[l] * dt;
+      if (p.layered) {  // the laminate's moduli (ShellParams)
+        q.tau_yz[l] = old_yz + (p.g_c * r.gxz[l] + p.g_yz * r.gyz[l]) * dt;
+        q.tau_zx[l] = old_zx + (p.g_xz * r.gxz[l] + p.g_c * r.gyz[l]) * dt;
+      } else {
+        q.tau_yz[l] = old_yz + p.mc.G * r.gyz[l] * dt;
+        q.tau_zx[l] = old_zx + p.mc.G * r.gxz[l] * dt;
+      }
       q.de_int[l] = kappa * 0.5 *
                     ((old_yz + q.tau_yz[l]) * r.gyz[l] + (old_zx + q.tau_zx[l]) * r.gxz[l]) * dt;
       q.ezz[l] = q.nxx[l] = q.nyy[l] = q.nxy[l] = q.mxx[l] = q.myy[l] = q.mxy[l] = 0.0;

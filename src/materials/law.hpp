@@ -32,6 +32,14 @@
 //                              at the mid-step geometry (PointBatch::length: viscous stresses
 //                              of the form rho c L D); with kDeformationGradient only (the
 //                              one-point solids are the only ones that give them)
+//   kLayered (optional)        an orthotropic shell law: its shell points get their layer's
+//                              angle (PlaneStressPoints::ply, *SECTION_SHELL ICOMP 1) and the
+//                              elements take their transverse shear moduli from
+//                              transverseShear(angle, g) (g[0] xz-xz, g[1] yz-yz, g[2] the
+//                              coupling, in the element frame), averaged over the layers
+//   kPointFailure (optional)   its plane-stress update sets PlaneStressPoints::failed itself
+//                              (a failed point carries no stress; the element erodes when all
+//                              its points have failed), whatever failureStrain() says
 //   bulkViscosity() (optional) false when the law's solids take no bulk viscosity (LS-DYNA's
 //                              *MAT_LOW_DENSITY_FOAM BVFLAG 0); else *CONTROL_BULK_VISCOSITY's
 //   kBeamOnly (optional)       the one *SECTION_BEAM ELFORM its beam parts may use (a BeamOnly,
@@ -126,6 +134,24 @@ constexpr bool keepsShellStrain() {
 template <class L>
 constexpr bool shellAlphaOf() {
   return L::kKinematic || keepsShellStrain<L>();
+}
+
+// Whether the law is an orthotropic layered shell law (its kLayered, else false).
+template <class L>
+constexpr bool isLayered() {
+  if constexpr (requires { L::kLayered; })
+    return L::kLayered;
+  else
+    return false;
+}
+
+// Whether the law's plane-stress update fails points itself (its kPointFailure, else false).
+template <class L>
+constexpr bool failsPoints() {
+  if constexpr (requires { L::kPointFailure; })
+    return L::kPointFailure;
+  else
+    return false;
 }
 
 // Whether the law reports its points' wave modulus (its kWaveModulus, else false).

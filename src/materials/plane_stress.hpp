@@ -38,7 +38,11 @@ struct PlaneStressPoints {
   // Back stress xx, yy, xy in plane-stress form (kinematic laws), or the accumulated in-plane
   // logarithmic strain xx, yy, xy (tensor shear) of kShellStrain laws; in/out.
   double* alpha[3] = {};
-  uint8_t* failed = nullptr;  // out: 1 where the point has reached the failure strain, else 0
+  uint8_t* failed = nullptr;    // out: 1 where the point has reached the failure strain, else 0
+  double* h[kMaxHistory] = {};  // the law's history variables h[0..kHistory), in/out
+  // In, for laws that declare kLayered (else null): the angle of each point's layer in radians
+  // about the shell normal, from the element frame's first axis (*SECTION_SHELL ICOMP 1).
+  const double* ply = nullptr;
 };
 
 // Young's modulus and Poisson's ratio from the moduli every law stores.

@@ -8,6 +8,7 @@
 #include "materials/laws/crushable_foam.hpp"
 #include "materials/laws/elastic.hpp"
 #include "materials/laws/elastic_plastic_hydro.hpp"
+#include "materials/laws/enhanced_composite.hpp"
 #include "materials/laws/frazer_nash.hpp"
 #include "materials/laws/honeycomb.hpp"
 #include "materials/laws/johnson_cook.hpp"
@@ -38,6 +39,6 @@ using AllLaws = LawList<Elastic, PlasticKinematic, PiecewiseLinear, Rigid, Sprin
                         DamperViscous, SpringNonlinear, SoilAndFoam, MatNull, CrushableFoam,
                         JohnsonCook, PowerLaw, StrainRatePlasticity, ModifiedPiecewiseLinear,
                         Spotweld, ElasticPlasticHydro, MooneyRivlin, FrazerNash, Muscle,
-                        Viscoelastic, LowDensityFoam, BlatzKo, Ogden, Honeycomb>;
+                        Viscoelastic, LowDensityFoam, BlatzKo, Ogden, Honeycomb, EnhancedComposite>;
 
 }  // namespace crumple::materials

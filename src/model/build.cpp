@@ -360,7 +360,7 @@ const std::vector<Meaning>& meanings() {
       {"*EOS_008", 1, readEosTabulatedCompaction, {"TITLE"}, U::Definition, Kind::Eos},
       {"*EOS_TABULATED", 1, readEosTabulated, {"TITLE"}, U::Definition, Kind::Eos},
       {"*EOS_009", 1, readEosTabulated, {"TITLE"}, U::Definition, Kind::Eos},
-      {"*PART", 2, readParts, {"INERTIA", "CONTACT"}, U::Reject},
+      {"*PART", 2, readParts, {"INERTIA", "CONTACT", "COMPOSITE"}, U::Reject},
       {"*MAT_ADD_EROSION", 2, readAddErosion, {"TITLE"}, U::Reject},
       {"*ELEMENT_SOLID", 3, readSolids, {}, U::Reject},
       {"*ELEMENT_SPH", 3, readElementSph, {}, U::Reject},

@@ -344,51 +344,152 @@ void finishSolids(Context& ctx) {
                });
 }
 
+namespace {
+
+// The model index of the definition a part's field names, or kNone with the first problem kept
+// in `problem` (a part no element uses may be incomplete, as LS-DYNA accepts: the problem is an
+// error on use).
+int32_t resolvePartField(Context& ctx, const Card& c, std::string_view field, Kind kind,
+                         const std::unordered_map<int64_t, int32_t>& index, int64_t part_id,
+                         Context::PartProblem& problem) {
+  const int64_t id = c.integer(field);
+  const std::string part = "part " + std::to_string(part_id);
+  auto it = index.find(id);
+  if (it != index.end()) return it->second;
+  if (!problem.empty()) return kNone;
+  if (id == 0) {
+    problem.message = c.context(field) + ": a " + std::string(kindName(kind)) + " id is required";
+  } else if (const std::string broken = ctx.brokenMessage(kind, id); !broken.empty()) {
+    problem.message = broken;
+  } else if (ctx.isUnsupported(kind, id)) {
+    problem = {
+        part + " uses " + ctx.unsupportedDefinition(kind, id) + ", which is not supported yet",
+        ctx.unsupportedFeature(kind, id)};
+  } else {
+    problem.message = c.context(field) + ": " + ctx.undefinedMessage(kind, id);
+  }
+  return kNone;
+}
+
+void resolveHourglass(Context& ctx, const Card& c, Part& p, Context::PartProblem& problem) {
+  if (const int64_t hg = c.integer("HGID"); hg != 0) {
+    auto it = ctx.hourglass_index.find(hg);
+    if (it != ctx.hourglass_index.end())
+      p.hourglass = it->second;
+    else if (problem.empty())
+      problem.message = c.context("HGID") + ": " + ctx.undefinedMessage(Kind::Hourglass, hg);
+  }
+}
+
+// A part's heading card and card 2 (*PART, *PART_COMPOSITE): its id, title and place; gives
+// card 2.
+const Card& readPartHeading(CardCursor& cur, const deck::KeywordSpec& spec, Part& p) {
+  p.title = cur.read(spec.card("card 1")).text("HEADING");
+  const Card& c = cur.read(spec.card("card 2"));
+  p.id = positiveId(c, "PID");
+  p.where = c.where();
+  return c;
+}
+
+// The section of *PART_COMPOSITE card 2 (ELFORM, SHRF, NLOC) and its ply cards; sets the part's
+// material (MID1). Empty (no points) when the section cannot run.
+SectionShell readPlies(Context& ctx, CardCursor& cur, const deck::KeywordSpec& spec, const Card& c,
+                       Part& p, Context::PartProblem& problem) {
+  SectionShell s;
+  s.id = p.id;
+  s.where = c.where();
+  const int64_t elform = c.integer("ELFORM");
+  if (elform != 2 && elform != 4 && elform != 10 && elform != 16)
+    ctx.reject(c, "ELFORM", "composite parts run ELFORM 2, 4, 10 and 16");
+  s.elform = static_cast<int>(elform);
+  s.shrf = c.real("SHRF");
+  if (!(s.shrf > 0)) c.fail("SHRF", "the shear factor must be positive");
+  if (c.real("NLOC") != 0)
+    ctx.reject(c, "NLOC", "reference surfaces off the mid-surface are not supported");
+  std::vector<double> thick;
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& ply = cur.read(spec.card("ply card"));
+    for (int k = 1; k <= 2; ++k) {
+      const std::string n = std::to_string(k);
+      if (ply.integer("MID" + n) == 0 && ply.real("THICK" + n) == 0) continue;
+      const int32_t mat =
+          resolvePartField(ctx, ply, "MID" + n, Kind::Material, ctx.material_index, p.id, problem);
+      if (thick.empty())
+        p.material = mat;
+      else if (mat != p.material)
+        ctx.reject(ply, "MID" + n, "a material per ply is not supported (every MIDi the same)");
+      if (!(ply.real("THICK" + n) > 0)) ply.fail("THICK" + n, "the ply thickness must be positive");
+      thick.push_back(ply.real("THICK" + n));
+      s.ply_angle.push_back(ply.real("B" + n));
+    }
+  }
+  if (thick.empty()) c.fail("PID", "a *PART_COMPOSITE needs at least one ply card");
+  if (thick.size() > 10) {
+    ctx.reject(c, "PID", "more than 10 plies (integration points) are not supported");
+    return {};
+  }
+  double total = 0.0;
+  for (const double t : thick) total += t;
+  double below = 0.0;
+  for (const double t : thick) {
+    s.zeta.push_back(-1.0 + (2.0 * below + t) / total);
+    s.weight.push_back(t / total);
+    below += t;
+  }
+  s.nip = static_cast<int>(thick.size());
+  s.t = {total, total, total, total};
+  return s;
+}
+
+// *PART_COMPOSITE (Keyword Manual vol. I): a shell part whose section is its plies, MIDi
+// THICKi Bi TMIDi two a card: one integration point per ply at its mid-thickness, weighted by
+// its share of the thickness (sum THICKi), at its angle Bi (as *SECTION_SHELL ICOMP 1 with a
+// user rule). One material for all plies (a material per ply is refused).
+void readPartComposite(Context& ctx, const deck::Keyword& kw) {
+  const auto& spec = keywordSpec("*PART_COMPOSITE");
+  CardCursor cur(kw, ctx.deck);
+  Part p;
+  const Card& c = readPartHeading(cur, spec, p);
+  Context::PartProblem problem;
+  SectionShell sec = readPlies(ctx, cur, spec, c, p, problem);
+  if (!sec.zeta.empty()) {
+    p.section = static_cast<int32_t>(ctx.model.shell_sections.size());
+    p.section_kind = SectionKind::Shell;
+    ctx.model.shell_sections.push_back(std::move(sec));
+  }
+  resolveHourglass(ctx, c, p, problem);
+  ctx.model.parts.push_back(std::move(p));
+  ctx.part_problem.push_back(std::move(problem));
+  ctx.collect(cur);
+}
+
+}  // namespace
+
 void readParts(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  if (opts.has("COMPOSITE")) {
+    if (opts.has("CONTACT") || opts.has("INERTIA"))
+      ctx.fail(ctx.deck.loc(kw.file, kw.line).str() + ": " + kw.name +
+               ": _COMPOSITE with other options is not supported");
+    readPartComposite(ctx, kw);
+    return;
+  }
   const auto& spec = keywordSpec("*PART");
   CardCursor cur(kw, ctx.deck);
   // One keyword may hold several parts, each a heading card and card 2.
   while (nextRecord(cur, true)) {
-    const std::string heading = cur.read(spec.card("card 1")).text("HEADING");
-    const Card& c = cur.read(spec.card("card 2"));
     Part p;
-    p.id = positiveId(c, "PID");
-    p.title = heading;
-    p.where = c.where();
+    const Card& c = readPartHeading(cur, spec, p);
     // A part no element uses may be incomplete (no section, an undefined or unusable
     // material), as LS-DYNA accepts: the first problem is kept and is an error on use.
     Context::PartProblem problem;
     auto resolve = [&](std::string_view field, Kind kind,
-                       const std::unordered_map<int64_t, int32_t>& index) -> int32_t {
-      const int64_t id = c.integer(field);
-      const std::string part = "part " + std::to_string(p.id);
-      auto it = index.find(id);
-      if (it != index.end()) return it->second;
-      if (!problem.empty()) return kNone;
-      if (id == 0) {
-        problem.message =
-            c.context(field) + ": a " + std::string(kindName(kind)) + " id is required";
-      } else if (const std::string broken = ctx.brokenMessage(kind, id); !broken.empty()) {
-        problem.message = broken;
-      } else if (ctx.isUnsupported(kind, id)) {
-        problem = {
-            part + " uses " + ctx.unsupportedDefinition(kind, id) + ", which is not supported yet",
-            ctx.unsupportedFeature(kind, id)};
-      } else {
-        problem.message = c.context(field) + ": " + ctx.undefinedMessage(kind, id);
-      }
-      return kNone;
+                       const std::unordered_map<int64_t, int32_t>& index) {
+      return resolvePartField(ctx, c, field, kind, index, p.id, problem);
     };
     p.section = resolve("SECID", Kind::Section, ctx.section_index);
     if (p.section != kNone) p.section_kind = ctx.section_kind.at(c.integer("SECID"));
     p.material = resolve("MID", Kind::Material, ctx.material_index);
-    if (const int64_t hg = c.integer("HGID"); hg != 0) {
-      auto it = ctx.hourglass_index.find(hg);
-      if (it != ctx.hourglass_index.end())
-        p.hourglass = it->second;
-      else if (problem.empty())
-        problem.message = c.context("HGID") + ": " + ctx.undefinedMessage(Kind::Hourglass, hg);
-    }
+    resolveHourglass(ctx, c, p, problem);
     if (c.integer("EOSID") != 0) p.eos = resolve("EOSID", Kind::Eos, ctx.eos_index);
     if (opts.has("CONTACT")) {
       // _CONTACT (Keyword Manual, *PART_CONTACT): SSF scales the penalty stiffness of the

@@ -361,6 +361,25 @@ Context::ShellRule readShellPoints(Context& ctx, CardCursor& cur, const deck::Ke
   return r;
 }
 
+// ICOMP (Keyword Manual, *SECTION_SHELL): 1 reads the material angle of every integration
+// point, B1..B8 a card after card 2, as many cards as NIP needs (the rule's points with
+// QR/IRID < 0). An isotropic law ignores the angles; an orthotropic one turns its axes by them.
+void readPlyAngles(CardCursor& cur, const deck::KeywordSpec& spec, const Card& c, SectionShell& s,
+                   bool planar) {
+  const int64_t icomp = c.integer("ICOMP");
+  if (icomp == 0) return;
+  if (icomp != 1) c.fail("ICOMP", "must be 0 or 1 (layered: an angle per integration point)");
+  if (planar) c.fail("ICOMP", "a 2D solid (ELFORM 13, 15) has no layers");
+  for (int k = 0; k < s.nip; k += 8) {
+    if (cur.atEnd())
+      c.fail("ICOMP", "ICOMP 1 needs " + std::to_string(s.nip) +
+                          " angles B1.. (NIP), on cards after card 2; the keyword ends first");
+    const Card& a = cur.read(spec.card("angle card"));
+    for (int j = 0; j < 8 && k + j < s.nip; ++j)
+      s.ply_angle.push_back(a.real("B" + std::to_string(j + 1)));
+  }
+}
+
 }  // namespace
 
 void readIntegrationShell(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
@@ -417,13 +436,12 @@ void readSectionShell(Context& ctx, const deck::Keyword& kw, const KeywordOption
     s.nip = static_cast<int>(nip);
     c.real("PROPT");  // printout only
     readShellRule(ctx, c, s);
-    if (c.integer("ICOMP") != 0)
-      ctx.reject(c, "ICOMP", "composite (layered) shells are not supported");
     c.integer("SETYP");
     for (int i = 0; i < 4; ++i) {
       const std::string f = "T" + std::to_string(i + 1);
       s.t[static_cast<std::size_t>(i)] = c2.real(f);
     }
+    readPlyAngles(cur, spec, c, s, planar);
     // T1 = 0 is valid when the elements give their own thickness (*ELEMENT_SHELL_THICKNESS,
     // as pre-processors write per-element thickness): checked per element.
     if (!(s.t[0] >= 0)) c2.fail("T1", "the shell thickness must not be negative");

@@ -160,6 +160,9 @@ struct SectionShell {
   // QR/IRID < 0: the *INTEGRATION_SHELL rule (points in [-1, 1] of the half thickness, weights
   // summing to 1), nip of them; empty: Gauss or Lobatto.
   std::vector<double> zeta, weight;
+  // ICOMP = 1: the material angle of each integration point in degrees (B1..BNIP, about the
+  // shell normal from the material's own axes), nip of them; empty: ICOMP = 0.
+  std::vector<double> ply_angle;
   util::SourceLoc where;
 };
 

@@ -84,7 +84,7 @@ void fields(A& a, M& m) {
   a.count(
       m.shell_sections.size(),
       [&](auto& s) {
-        util::fieldCount<9>(s);
+        util::fieldCount<10>(s);
         a(s.id);
         a(s.elform);
         a(s.shrf);
@@ -93,6 +93,7 @@ void fields(A& a, M& m) {
         a(s.t);
         a(s.zeta);
         a(s.weight);
+        a(s.ply_angle);
         loc(a, s.where);
       },
       m.shell_sections);

@@ -91,6 +91,8 @@ void visitShell(B& b, std::size_t e, F&& f) {
   if (!b.erosion_state.empty())
     for (int k = 0; k < b.erosionFields(); ++k)
       f(b.erosion_state[b.blocked(b.erosionFields(), k, e)]);
+  if (!b.hist.empty())
+    for (int k = 0; k < b.histFields(); ++k) f(b.hist[b.blocked(b.histFields(), k, e)]);
 }
 
 template <class B, class F>

@@ -3,7 +3,8 @@
 - restart equality: a run with *DATABASE_BINARY_D3DUMP is restarted from its mid-run dump in a
   copy of its results folder; state_digest and every history file must come out byte for byte
   those of the uninterrupted run (bar impact, Taylor bar, shells/beams/springs, rigid bodies
-  and welds, loads and constraints, the tabulated equations of state, Johnson-Cook spall);
+  and welds, loads and constraints, the tabulated equations of state, Johnson-Cook spall,
+  laminated shells with failed plies);
 - across rank counts (dump at 2 ranks, restart at 1 and 3): state_digest and nodout.csv
   bitwise; glstat.csv time, cycle and dt bitwise and the energies to rounding (their sums over
   ranks are added in another grouping at another rank count, as in uninterrupted runs);
@@ -93,6 +94,8 @@ class RestartEquality(RestartCase):
             (data_deck("honeycomb_barrier.k"), [], 5000),
             # Spalled by cycle 40: the spall flag (law history) must come back from the dump.
             (data_deck("jc_spall_bar.k"), [], 40),
+            # Plies failed by the dump: the failure flags (shell law history) come back.
+            (data_deck("composite_plate.k"), [], 900),
         ]
 
     def test_restart_from_mid_run_dump_is_bitwise(self):

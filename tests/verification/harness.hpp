@@ -3,6 +3,7 @@
 #pragma once
 
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -69,6 +70,23 @@ class Simulation {
   domain::Subdomain sd;
   std::unique_ptr<solver::Solver> solver;
 };
+
+// Period of a node's free vibration from the first two downward zero crossings of its z
+// displacement (linear interpolation between cycles); 0 (and a failed expectation) when the
+// run ends before two crossings.
+inline double measuredPeriod(Simulation& sim, int64_t node) {
+  std::vector<double> crossings;
+  double z_prev = 0.0, t_prev = 0.0;
+  sim.run([&](const solver::Solver& s) {
+    const double z = sim.x(node, 2) - sim.x0(node, 2);
+    if (z_prev > 0.0 && z <= 0.0)
+      crossings.push_back(t_prev + (s.time() - t_prev) * z_prev / (z_prev - z));
+    z_prev = z;
+    t_prev = s.time();
+  });
+  EXPECT_GE(crossings.size(), 2u);
+  return crossings.size() >= 2 ? crossings[1] - crossings[0] : 0.0;
+}
 
 // *CONTROL_TERMINATION at time t.
 inline std::string termination(double t) {
