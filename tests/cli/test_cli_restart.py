@@ -93,7 +93,7 @@ class RestartEquality(RestartCase):
             (data_deck("honeycomb_barrier.k"), [], 5000),
             # Spalled by cycle 40: the spall flag (law history) must come back from the dump.
             (data_deck("jc_spall_bar.k"), [], 40),
-            (data_deck("tshell_plate.k"), [], 300),
+            (data_deck("tshell_plate.k"), [], 400),
         ]
 
     def test_restart_from_mid_run_dump_is_bitwise(self):
