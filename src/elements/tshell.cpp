@@ -203,21 +203,8 @@ void loadPoints(const TShellParams& p, const domain::SolidBlock& blk, std::size_
 // The plane-stress law at every point; a failed point carries no stress. w.failed: every
 // point of the element has failed (the element is deleted at the end of the pass).
 template <class Law>
-void planeStressUpdate(const Law& law, const TShellParams& p, TShellPoints& q, BatchScratch& w) {
-  const int npts = p.nip * kBatch;
-  materials::PlaneStressPoints pts;
-  pts.n = npts;
-  pts.dt = p.dt;
-  for (int k = 0; k < 3; ++k) {
-    pts.s[k] = q.s[k];
-    pts.de[k] = q.de[k];
-    pts.alpha[k] = materials::shellAlphaOf<Law>() ? q.alpha[k] : nullptr;
-  }
-  pts.de_zz = q.dzz;
-  pts.eps_p = Law::kPlastic ? q.ep : nullptr;
-  std::fill(q.failed, q.failed + npts, uint8_t{0});
-  pts.failed = p.can_fail ? q.failed : nullptr;
-  law.updatePlaneStress(pts);
+void lawUpdate(const Law& law, const TShellParams& p, TShellPoints& q, BatchScratch& w) {
+  shell_detail::planeStressUpdate(law, p.nip * kBatch, p.dt, p.can_fail, q);
   for (int l = 0; l < kBatch; ++l) w.failed[l] = p.can_fail ? 1 : 0;
   for (int ip = 0; ip < p.nip; ++ip)
     for (int l = 0; l < kBatch; ++l) {
@@ -236,7 +223,7 @@ void updatePoints(const Law& law, const TShellParams& p, TShellPoints& q, BatchS
   for (int l = 0; l < kBatch; ++l) q.work[l] = 0.0;
   for (int ip = 0; ip < p.nip; ++ip)
     for (int l = 0; l < kBatch; ++l) q.work[l] += 0.5 * pointWork(q, ip * kBatch + l, q.szz[l]);
-  planeStressUpdate(law, p, q, w);
+  lawUpdate(law, p, q, w);
   const double kg = p.kappa * p.G;
   LaneArray stretch;
   for (int l = 0; l < kBatch; ++l) stretch[l] = 0.0;
