@@ -1,5 +1,6 @@
 // Hex kernel throughput: one element pass (strain rate, material, stress divergence,
-// hourglass, time step) plus the ordered nodal gather, on a 100k-element brick.
+// hourglass, time step) plus the ordered nodal gather, on a 100k-element brick; the same brick
+// of thick shells (*SECTION_TSHELL ELFORM 1, 5 points through the thickness: TShell*).
 // Reports ns per element-cycle; run with OMP_NUM_THREADS=1 and =2 for the speed-up.
 //   build/release/bench/crumple_bench --benchmark_filter=Hex8
 #include <benchmark/benchmark.h>
@@ -10,13 +11,15 @@
 #include "brick_model.hpp"
 #include "domain/subdomain.hpp"
 #include "elements/hex8.hpp"
+#include "elements/tshell.hpp"
 #include "model/model.hpp"
 
 namespace {
 
 using namespace crumple;
 
-model::Model brick(int nx, int ny, int nz, model::MaterialLaw law, int ihq) {
+// tshell_nip > 0: the elements are thick shells with that many points through the thickness.
+model::Model brick(int nx, int ny, int nz, model::MaterialLaw law, int ihq, int tshell_nip) {
   testing::BrickOptions opt;
   opt.law = law;
   opt.ihq = ihq;
@@ -25,13 +28,18 @@ model::Model brick(int nx, int ny, int nz, model::MaterialLaw law, int ihq) {
   opt.position = [](int i, int j, int k) {
     return model::Vec3{i + 0.05 * std::sin(j + k), j + 0.05 * std::cos(i + k), double(k)};
   };
-  return testing::brickModel(nx, ny, nz, opt);
+  auto m = testing::brickModel(nx, ny, nz, opt);
+  if (tshell_nip > 0) {
+    m.solid_sections[0].elform = model::kThickShellOnePoint;
+    m.solid_sections[0].nip = tshell_nip;
+  }
+  return m;
 }
 
-void runKernel(benchmark::State& state, model::MaterialLaw law, int ihq) {
+void runKernel(benchmark::State& state, model::MaterialLaw law, int ihq, int tshell_nip = 0) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
   // Range 1: brick edge in elements along z (40 = 100k elements; 4 = 10k, which fits in cache).
-  const auto m = brick(50, 50, static_cast<int>(state.range(1)), law, ihq);
+  const auto m = brick(50, 50, static_cast<int>(state.range(1)), law, ihq, tshell_nip);
   auto sd = domain::buildSerialSubdomain(m);
   std::vector<double> dt_e;
   for (auto& b : sd.solid_blocks) elements::initializeSolids(b, sd.x0, sd.slots.data(), dt_e, {});
@@ -47,7 +55,10 @@ void runKernel(benchmark::State& state, model::MaterialLaw law, int ihq) {
   const std::size_t nn = sd.numNodes();
   for (auto _ : state) {
     for (auto& b : sd.solid_blocks)
-      elements::computeSolidForces(b, sd.x, sd.v, dt, bv, sd.slots.data());
+      if (b.thickShell())
+        elements::computeThickShellForces(b, sd.x, sd.v, dt, sd.slots.data(), 0, b.size());
+      else
+        elements::computeSolidForces(b, sd.x, sd.v, dt, bv, sd.slots.data());
 #pragma omp parallel for schedule(static)
     for (std::size_t n = 0; n < nn; ++n) {
       double s[3] = {0, 0, 0};
@@ -101,6 +112,26 @@ void Hex8Counted(benchmark::State& s) {
 }
 BENCHMARK(Hex8Counted)->Args({1, 4})->Iterations(10)->Unit(benchmark::kMillisecond);
 BENCHMARK(Hex8PlasticHourglassStiffness)->Apply(hexArgs);
+void TShellElastic(benchmark::State& s) {
+  runKernel(s, materials::Elastic::Params{210.0, 0.3}, 4, 5);
+}
+void TShellPlasticHourglassStiffness(benchmark::State& s) {
+  materials::PiecewiseLinear::Params law;
+  law.E = 210.0;
+  law.nu = 0.3;
+  law.sigy = 0.001;
+  law.etan = 1.0;
+  runKernel(s, law, 4, 5);
+}
+BENCHMARK(TShellElastic)->Apply(hexArgs);
+BENCHMARK(TShellPlasticHourglassStiffness)->Apply(hexArgs);
+// Instruction counts as Hex8Counted:
+//   valgrind --tool=callgrind --toggle-collect='*thickShellBlockForces*' crumple_bench
+//     --benchmark_filter=TShellCounted   -> Ir / (10 iterations x 10,000 elements)
+void TShellCounted(benchmark::State& s) {
+  TShellPlasticHourglassStiffness(s);
+}
+BENCHMARK(TShellCounted)->Args({1, 4})->Iterations(10)->Unit(benchmark::kMillisecond);
 BENCHMARK(Hex8PlasticKinematicViscousHourglass)->Apply(hexArgs);
 
 }  // namespace

@@ -48,6 +48,10 @@
                       backed by copper (*MAT_JOHNSON_COOK with *EOS_TABULATED and its energy
                       term) onto a stonewall: the soil compacts, unloads and reloads as the
                       waves run through it.
+  tshell_plate.k      thick shells across ranks and restarts: a plastic (*MAT_024) plate of
+                      *ELEMENT_TSHELL (*SECTION_TSHELL ELFORM 1, NIP 3, stiffness hourglass
+                      IHQ 4) clamped on one edge and swung down about it, so that it bends
+                      into a plastic hinge at the clamp.
   jc_spall_bar.k      *MAT_JOHNSON_COOK spall across ranks and restarts: a free steel bar
                       stretched from its middle by its initial velocity; the middle yields and
                       spalls (part 1 SPALL 2 with VP 1, part 2 SPALL 3) and carries no
@@ -848,6 +852,40 @@ spall3
 """
 
 
+def tshell_plate(nx: int = 10, ny: int = 6, v: float = 20.0, end: float = 0.5) -> str:
+    """mm, ms, kg, GPa. A 50 x 30 x 4 mm plate of nx x ny thick shells (one through the
+    thickness, N1-N4 on the bottom face z = 0), clamped at x = 0, swung down about the clamp
+    at the start (z velocity -v x / 50 mm: smooth, so mostly the low modes ring)."""
+    m = Mesh()
+    block(m, 1, (0, 0, 0), (50.0, 30.0, 4.0), (nx, ny, 1))
+    clamped = m.node_ids(lambda x, y, z: x <= 1e-9)
+    velocities = "".join(f"{n + 1:10d}{0.0:10.4g}{0.0:10.4g}{-v * p[0] / 50.0:10.4g}\n"
+                         for n, p in enumerate(m.nodes) if p[0] > 1e-9)
+    # The mesh's 8-node elements are the thick shells.
+    mesh = m.keyword_text().replace("*ELEMENT_SOLID", "*ELEMENT_TSHELL")
+    return f"""*KEYWORD
+*TITLE
+thick shell plate: *MAT_024 *ELEMENT_TSHELL ELFORM 1 clamped on one edge and swung down
+*CONTROL_TERMINATION
+{end:10.4g}
+*DATABASE_GLSTAT
+     0.005
+*PART
+plate
+         1         1         1         0         1
+*SECTION_TSHELL
+         1         1    0.8333         3
+*MAT_PIECEWISE_LINEAR_PLASTICITY
+         1   7.85e-6     210.0       0.3      0.25       1.0
+*HOURGLASS
+         1         4      0.05
+{node_set(1, clamped)}*BOUNDARY_SPC_SET
+         1         0         1         1         1
+*INITIAL_VELOCITY_NODE
+{velocities}{mesh}*END
+"""
+
+
 def main() -> None:
     out = ROOT / "tests" / "data" / "decks"
     out.mkdir(parents=True, exist_ok=True)
@@ -872,10 +910,11 @@ def main() -> None:
     (out / "shearfix_blocks.k").write_text(shearfix_blocks())
     (out / "eos_tabulated.k").write_text(eos_tabulated())
     (out / "jc_spall_bar.k").write_text(jc_spall_bar())
+    (out / "tshell_plate.k").write_text(tshell_plate())
     print("wrote tests/data/decks/mixed_conditions.k, structures.k, structures_shell16.k, "
           "rigid_welds.k, contact_blocks.k, contact_tube.k, contact_tied.k, contact_cask.k, "
           "tet_blocks.k, tet13_blocks.k, tet10_bar.k, axisym_rod.k, erosion.k, prism_blocks.k, "
-          "joints.k, shearfix_blocks.k, eos_tabulated.k and jc_spall_bar.k")
+          "joints.k, shearfix_blocks.k, eos_tabulated.k, jc_spall_bar.k and tshell_plate.k")
 
 
 if __name__ == "__main__":

@@ -16,19 +16,21 @@ namespace crumple::app {
 namespace {
 
 // Per part, the solids that run as tetrahedra (ELFORM 10) and as pentahedra (ELFORM 15),
-// native or sorted by ESORT, as the note the summary adds to the part's line.
+// native or sorted by ESORT, and the thick shells (kept with the solids), as the note the
+// summary adds to the part's line.
 std::map<int32_t, std::string> shapesPerPart(const model::Model& m) {
-  std::map<int32_t, std::array<std::size_t, 3>> count;
+  std::map<int32_t, std::array<std::size_t, 4>> count;
   for (std::size_t e = 0; e < m.solids.size(); ++e) {
     const int form = m.solidFormulation(e);
-    if (form == 10 || form == 15 || form == 16)
-      ++count[m.solids.part[e]][form == 10 ? 0 : form == 15 ? 1 : 2];
+    if (form == 10 || form == 15 || form == 16 || model::isThickShell(form))
+      ++count[m.solids.part[e]][form == 10 ? 0 : form == 15 ? 1 : form == 16 ? 2 : 3];
   }
   std::map<int32_t, std::string> out;
   for (const auto& [part, n] : count)
     out[part] = (n[0] > 0 ? fmt::format(", {} as ELFORM 10 tetrahedra", n[0]) : "") +
                 (n[1] > 0 ? fmt::format(", {} as ELFORM 15 pentahedra", n[1]) : "") +
-                (n[2] > 0 ? fmt::format(", {} as ELFORM 16 10-node tetrahedra", n[2]) : "");
+                (n[2] > 0 ? fmt::format(", {} as ELFORM 16 10-node tetrahedra", n[2]) : "") +
+                (n[3] > 0 ? fmt::format(", {} thick shells (*ELEMENT_TSHELL)", n[3]) : "");
   return out;
 }
 

@@ -69,6 +69,12 @@ std::vector<KeywordSpec> makeTables() {
                  {I("N1", 0, 0, 8), I("N2", 0, 0, 8), I("N3", 0, 0, 8), I("N4", 0, 0, 8),
                   I("N5", 0, 0, 8), I("N6", 0, 0, 8), I("N7", 0, 0, 8), I("N8", 0, 0, 8),
                   I("N9", 0, 0, 8), I("N10", 0, 0, 8)}}}});
+  // *ELEMENT_TSHELL 10I8: EID PID N1..N8, N1-N4 the bottom face, N5-N8 the top (Keyword Manual).
+  t.push_back({"*ELEMENT_TSHELL",
+               {{"card 1",
+                 {I("EID", 0, 0, 8), I("PID", 0, 0, 8), I("N1", 0, 0, 8), I("N2", 0, 0, 8),
+                  I("N3", 0, 0, 8), I("N4", 0, 0, 8), I("N5", 0, 0, 8), I("N6", 0, 0, 8),
+                  I("N7", 0, 0, 8), I("N8", 0, 0, 8)}}}});
   // *ELEMENT_MASS I8,I8,E16,I8 (Keyword Manual, *ELEMENT_MASS).
   t.push_back({"*ELEMENT_MASS",
                {{"card 1",
@@ -146,6 +152,14 @@ std::vector<KeywordSpec> makeTables() {
         {"card 2",
          {R("T1"), R("T2"), R("T3"), R("T4"), R("NLOC"), R("MAREA"), I("IDOF"), I("EDGSET")}},
         // ICOMP = 1: the material angle of each integration point, 8 a card (NIP of them).
+        {"angle card", {R("B1"), R("B2"), R("B3"), R("B4"), R("B5"), R("B6"), R("B7"), R("B8")}}}});
+  // *SECTION_TSHELL (Keyword Manual vol. I): card 2 holds the ICOMP = 1 layer angles.
+  t.push_back(
+      {"*SECTION_TSHELL",
+       {titleCard(),
+        {"card 1",
+         {I("SECID"), I("ELFORM", 1, Z), R("SHRF", 1, Z), I("NIP", 2, Z), R("PROPT", 1, Z), I("QR"),
+          I("ICOMP"), I("TSHEAR")}},
         {"angle card", {R("B1"), R("B2"), R("B3"), R("B4"), R("B5"), R("B6"), R("B7"), R("B8")}}}});
   t.push_back(
       {"*SECTION_BEAM",

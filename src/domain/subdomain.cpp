@@ -459,11 +459,25 @@ class SubdomainBuilder {
     const bool plastic = materials::isPlastic(b.law);
     const bool kinematic = materials::isKinematic(b.law);
     b.elform = elform;
+    if (b.thickShell()) return thickShellBlock(std::move(b), part, plastic);
     // A fully integrated element has no hourglass modes to control.
     b.resize(b.size(), plastic, kinematic, b.elform == 1 && b.hourglass.qm > 0.0,
              model::isFullyIntegratedHex(b.elform) ? 8 : (b.elform == 15 ? 2 : 0),
              materials::historyCount(b.law));
     if (b.elform == 13) b.ev_nodal.assign(b.paddedSize(), 0.0);
+    return b;
+  }
+
+  // Thick shells: NIP points of state through the thickness (SolidBlock), the section's rule
+  // and shear factor; the plane-stress laws' back stress or strain in alpha_ip.
+  SolidBlock thickShellBlock(SolidBlock b, const model::Part& part, bool plastic) const {
+    const auto& sec = model.solid_sections[static_cast<std::size_t>(part.section)];
+    b.shear_factor = sec.shrf;
+    b.lobatto = sec.zeta.empty() && model.controls.shell_lobatto;
+    b.zeta = sec.zeta;
+    b.weight = sec.weight;
+    b.erosion = {};  // refused on thick-shell parts (model/build_erosion.cpp)
+    b.resize(b.size(), plastic, materials::hasShellAlpha(b.law), b.hourglass.qm > 0.0, sec.nip, 0);
     return b;
   }
 

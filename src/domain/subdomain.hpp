@@ -100,6 +100,18 @@ struct SolidBlock : BlockBase {
   // ELFORM 13 only (else empty): the element's volumetric strain, the mean of ln(V_a / V0_a)
   // over its four nodes' volumes (elements/tet_nodal.hpp), at the last pass.
   std::vector<double> ev_nodal;
+  // Thick shells (model::isThickShell(elform); src/elements/tshell.hpp) only: the rule through
+  // the thickness (points at zeta in [-1, 1] from the bottom face N1-N4 to the top N5-N8,
+  // weights summing to 1; Gauss or Lobatto from `points` = NIP, filled by initializeSolids when
+  // the section gives no *INTEGRATION_SHELL rule) and the transverse shear factor. Their points
+  // keep the state in the element's lamina frame: sig_ip 0-2 the in-plane stress xx, yy, xy,
+  // 3, 4 the transverse shear yz, zx, 5 the thickness-stretch stress (one value per element,
+  // kept at every point); alpha_ip 0-2 the plane-stress back stress or shell strain; eps_p_ip.
+  // sig and eps_p hold the through-thickness means (sig in the global frame) for output.
+  std::vector<double> zeta, weight;
+  bool lobatto = false;
+  double shear_factor = 1.0;
+  bool thickShell() const { return model::isThickShell(elform); }
 
   // Elements plus padding: a whole number of batches.
   std::size_t paddedSize() const {

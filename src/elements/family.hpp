@@ -14,6 +14,7 @@
 #include "elements/shell.hpp"
 #include "elements/solid2d.hpp"
 #include "elements/tet10.hpp"
+#include "elements/tshell.hpp"
 #include "model/model.hpp"
 
 namespace crumple::elements {
@@ -36,6 +37,7 @@ template <>
 struct FamilyTraits<domain::SolidBlock> {
   static BlockStatus forces(domain::SolidBlock& b, const KernelInputs& in, std::size_t first,
                             std::size_t last) {
+    if (b.thickShell()) return computeThickShellForces(b, in.x, in.v, in.dt, in.slots, first, last);
     return model::isFullyIntegratedHex(b.elform) || b.elform == 15
                ? computeFullSolidForces(b, in.x, in.v, in.dt, in.bv, in.slots, first, last)
                : computeSolidForces(b, in.x, in.v, in.dt, in.bv, in.slots, first, last,

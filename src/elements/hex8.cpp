@@ -1,6 +1,7 @@
 #include "elements/hex8.hpp"
 
 #include "elements/hex8_kernel.hpp"
+#include "elements/tshell.hpp"
 #include "materials/erosion.hpp"
 
 #include <algorithm>
@@ -15,10 +16,14 @@ namespace {
 
 using detail::BatchScratch;
 using detail::gatherNodal;
+using detail::hourglassForces;
 using detail::LaneArray;
 using detail::laneElement;
 using detail::maxFaceArea;
 using detail::rotateJaumann;
+using detail::SolidGeometry;
+using detail::SolidParams;
+using detail::SolidSpin;
 using detail::volumeOf;
 
 // Node permutation of FB 1981 (Appendix): the formula for node 1 gives node a's gradient
@@ -27,13 +32,6 @@ constexpr int kPerm[8][8] = {{0, 1, 2, 3, 4, 5, 6, 7}, {1, 2, 3, 0, 5, 6, 7, 4},
                              {2, 3, 0, 1, 6, 7, 4, 5}, {3, 0, 1, 2, 7, 4, 5, 6},
                              {4, 7, 6, 5, 0, 3, 2, 1}, {5, 4, 7, 6, 1, 0, 3, 2},
                              {6, 5, 4, 7, 2, 1, 0, 3}, {7, 6, 5, 4, 3, 2, 1, 0}};
-
-// Hourglass base vectors Gamma (FB 1981 eq. 43): eta*zeta, zeta*xi, xi*eta, xi*eta*zeta at
-// the nodes of the LS-DYNA ordering (1-4 bottom face, 5-8 top face).
-constexpr double kGamma[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
-                                 {1, -1, -1, 1, -1, 1, 1, -1},
-                                 {1, -1, 1, -1, 1, -1, 1, -1},
-                                 {-1, 1, -1, 1, 1, -1, 1, -1}};
 
 // dV/dx of node A, component C, from the other two components (Y, Z) = (C+1, C+2) mod 3:
 // FB 1981 eq. 79 for every lane, all indices known at compile time.
@@ -108,30 +106,11 @@ inline void nodalVolumetricStep(domain::SolidBlock& blk, std::size_t first, int 
   }
 }
 
-// The constants of one block for one call.
-struct SolidParams {
-  double dt = 0, lam2mu = 0, qm = 0;
-  bool stiffness_hg = false;
-  bool projected_hg = false;  // FB orthogonal hourglass vectors gamma; type 1 uses Gamma
-};
-
 // Kinematics of one batch at the mid-step geometry x(n-1/2) = x(n) - dt/2 v(n-1/2): the
 // volume and the velocity gradient L = dv_i/dx_j.
 struct SolidRates {
   LaneArray vol_mid;
   double L[3][3][kBatch];
-};
-
-// The spin increments (for the stress and the stored hourglass resistances) and the trace of
-// the rate of deformation (for the bulk viscosity).
-struct SolidSpin {
-  LaneArray trace_d, spin_xy, spin_yz, spin_zx;
-};
-
-// The current geometry and what follows from it: volume, density, wave speed, characteristic
-// length, bulk viscosity.
-struct SolidGeometry {
-  LaneArray vol, area, rho, c, c_dt, len, q, cbrt_vol;
 };
 
 template <class Shape>
@@ -307,97 +286,6 @@ inline void stressDivergence(const SolidParams& p, domain::SolidBlock& blk, std:
     }
 }
 
-// Hourglass control (FB 1981 sec. 4; LS-DYNA Theory Manual "Hourglass control"), QM > 0:
-// adds the hourglass forces to w.f and their work to de_hg. Every loop runs over lanes
-// innermost so it vectorises.
-inline void hourglassForces(const SolidParams& p, domain::SolidBlock& blk, std::size_t first,
-                            BatchScratch& w, const SolidSpin& sp, const SolidGeometry& geo,
-                            LaneArray& de_hg) {
-  const double dt = p.dt;
-  const bool stiffness_hg = p.stiffness_hg;
-  LaneArray coef, inv_vol;
-  for (int l = 0; l < kBatch; ++l) {
-    double bb = 0.0;
-    for (int cc = 0; cc < 3; ++cc)
-      for (int a = 0; a < 8; ++a) bb += w.b[cc][a][l] * w.b[cc][a][l];
-    inv_vol[l] = 1.0 / geo.vol[l];
-    // Viscous: a_h = QM rho V^(2/3) c / 4 on the unnormalised vectors (LS-DYNA).
-    // Stiffness: QM (lambda + 2 mu) B:B / V per mode, integrated incrementally; FB
-    // normalise the hourglass vectors by 1/sqrt(8), hence the 1/8 on the +-1 vectors.
-    coef[l] = stiffness_hg
-                  ? 0.125 * p.qm * p.lam2mu * bb * inv_vol[l] * dt
-                  : 0.25 * p.qm * geo.rho[l] * geo.cbrt_vol[l] * geo.cbrt_vol[l] * geo.c[l];
-  }
-  // This batch's record of the last pass's hourglass forces.
-  double* hgq_batch = blk.hgq.data() + first * 12;
-  if (stiffness_hg) {
-    // The stored resistance of each mode is a vector in the global frame: it turns with
-    // the element, by the same spin increment as the stress (FB 1981 sec. 4.2), or a
-    // rotated element would be pushed along its old directions.
-    for (int alpha = 0; alpha < 4; ++alpha) {
-      double* qx = hgq_batch + (3 * alpha) * kBatch;
-      double* qy = hgq_batch + (3 * alpha + 1) * kBatch;
-      double* qz = hgq_batch + (3 * alpha + 2) * kBatch;
-      for (int l = 0; l < kBatch; ++l) {
-        const double x0 = qx[l], y0 = qy[l], z0 = qz[l];
-        qx[l] = x0 + sp.spin_xy[l] * y0 - sp.spin_zx[l] * z0;
-        qy[l] = y0 - sp.spin_xy[l] * x0 + sp.spin_yz[l] * z0;
-        qz[l] = z0 + sp.spin_zx[l] * x0 - sp.spin_yz[l] * y0;
-      }
-    }
-  }
-  // All four modes first (vectors gamma and resistances), then one pass that adds their
-  // forces to the nodes: f_ia -= sum_alpha Q_i,alpha gamma_a,alpha.
-  double g[4][8][kBatch];
-  double force[4][3][kBatch];
-  for (int alpha = 0; alpha < 4; ++alpha) {
-    for (int a = 0; a < 8; ++a)
-      for (int l = 0; l < kBatch; ++l) g[alpha][a][l] = kGamma[alpha][a];
-    if (p.projected_hg) {
-      // gamma_a = Gamma_a - (1/V) (sum_b x_b Gamma_b) . B_a: orthogonal to linear fields.
-      double h[3][kBatch];
-      for (int cc = 0; cc < 3; ++cc)
-        for (int l = 0; l < kBatch; ++l) {
-          double sum = 0.0;
-          for (int a = 0; a < 8; ++a) sum += w.x[cc][a][l] * kGamma[alpha][a];
-          h[cc][l] = sum * inv_vol[l];
-        }
-      for (int a = 0; a < 8; ++a)
-        for (int l = 0; l < kBatch; ++l)
-          g[alpha][a][l] -=
-              h[0][l] * w.b[0][a][l] + h[1][l] * w.b[1][a][l] + h[2][l] * w.b[2][a][l];
-    }
-    for (int i = 0; i < 3; ++i) {
-      double qdot[kBatch], mean_force[kBatch];
-      for (int l = 0; l < kBatch; ++l) {
-        double sum = 0.0;
-        for (int a = 0; a < 8; ++a) sum += w.v[i][a][l] * g[alpha][a][l];
-        qdot[l] = sum;
-      }
-      // Work by the trapezoidal rule on the force, as for the stress: the force of the last
-      // pass acts over half of this step in the equations of motion (as the bulk viscosity's
-      // does: detail::bulkViscosityWork). The viscous force is new each pass, the stiffness
-      // resistance adds to the stored one.
-      double* fq = force[alpha][i];
-      double* stored = hgq_batch + (3 * alpha + i) * kBatch;
-      for (int l = 0; l < kBatch; ++l) {
-        const double old = stored[l];
-        // A failing element gives no force in its last pass (finishElement): its resistance
-        // ends, and only the old half of the trapezoid is work.
-        fq[l] = w.failed[l] ? 0.0 : (stiffness_hg ? old : 0.0) + coef[l] * qdot[l];
-        mean_force[l] = 0.5 * (old + fq[l]);
-        stored[l] = fq[l];
-      }
-      for (int l = 0; l < kBatch; ++l) de_hg[l] += mean_force[l] * qdot[l] * dt;
-    }
-  }
-  for (int i = 0; i < 3; ++i)
-    for (int a = 0; a < 8; ++a)
-      for (int l = 0; l < kBatch; ++l)
-        w.f[i][a][l] -= force[0][i][l] * g[0][a][l] + force[1][i][l] * g[1][a][l] +
-                        force[2][i][l] * g[2][a][l] + force[3][i][l] * g[3][a][l];
-}
-
 // Stores the state (whole batch, contiguous), then per element: forces and stable step.
 template <class Law>
 inline void storeSolidBatch(domain::SolidBlock& blk, std::size_t first, int n, double* sig_batch,
@@ -510,6 +398,9 @@ double solidTimeStep(double length, double wave_speed, double trace_d, const Bul
 }
 
 void markIsolatedElements(domain::SolidBlock& blk, const domain::GatherPlan& plan) {
+  blk.dt_scale.clear();
+  // A thick shell's step is the plate's (tshell.hpp), not the breathing brick's.
+  if (blk.thickShell()) return;
   const materials::Moduli mod = materials::moduliOf(blk.law);
   // A free tetrahedron's highest mode (lumped mass) has 2 / omega between 0.5 and 0.87 of
   // its minimum altitude over c: 0.51 for the regular one at nu = 0.49, 0.50 in the limit,
@@ -519,7 +410,6 @@ void markIsolatedElements(domain::SolidBlock& blk, const domain::GatherPlan& pla
       model::isTetrahedron(blk.elform)
           ? 0.5
           : std::min(1.0, std::sqrt((mod.bulk + 4.0 / 3.0 * mod.shear) / (3.0 * mod.bulk)));
-  blk.dt_scale.clear();
   for (std::size_t e = 0; e < blk.size(); ++e) {
     bool isolated = true;
     for (int a = 0; a < 8 && isolated; ++a) {
@@ -569,7 +459,13 @@ BlockStatus computeSolidForces(domain::SolidBlock& block, const domain::NodeVect
 BlockStatus initializeSolids(domain::SolidBlock& blk, const domain::NodeVector& x0, double* slots,
                              std::vector<double>& element_dt, const BulkViscosity& bv) {
   const materials::Moduli mod = materials::moduliOf(blk.law);
-  const double c = std::sqrt((mod.bulk + 4.0 / 3.0 * mod.shear) / blk.rho0);
+  // Thick shells: the plate wave speed over the smaller of the thickness and the in-plane
+  // length, no bulk viscosity (tshell.hpp).
+  const bool tshell = blk.thickShell();
+  if (tshell) setThickShellRule(blk);
+  const double c =
+      tshell ? thickShellWaveSpeed(blk) : std::sqrt((mod.bulk + 4.0 / 3.0 * mod.shear) / blk.rho0);
+  const BulkViscosity bv_step = tshell ? BulkViscosity{0.0, 0.0} : bv;
   BlockStatus st;
   NodalBatch xb, bb;
   const bool tet = model::isTetrahedron(blk.elform);
@@ -595,6 +491,9 @@ BlockStatus initializeSolids(domain::SolidBlock& blk, const domain::NodeVector& 
       volumeOf(xb, bb, vol);
       maxFaceArea(xb, area);
     }
+    LaneArray length;
+    if (tshell) thickShellLengths(xb, length);
+    for (int l = 0; l < kBatch; ++l) length[l] = tshell ? length[l] : vol[l] / area[l];
     if (gradients) detail::storeInitialGradient(blk, first, bb, vol);
     for (int l = 0; l < n; ++l) {
       const std::size_t e = first + static_cast<std::size_t>(l);
@@ -613,7 +512,7 @@ BlockStatus initializeSolids(domain::SolidBlock& blk, const domain::NodeVector& 
         slot[3 * a] = carries(a) ? corner_mass : 0.0;
         slot[3 * a + 1] = slot[3 * a + 2] = 0.0;
       }
-      double dte = solidTimeStep(vol[l] / area[l], c, 0.0, bv);
+      double dte = solidTimeStep(length[l], c, 0.0, bv_step);
       if (!blk.dt_scale.empty()) dte *= blk.dt_scale[e];
       element_dt[e] = dte;
       st.observeStep(dte, blk.elem[e]);

@@ -278,6 +278,129 @@ inline void finishElement(domain::SolidBlock& blk, std::size_t e, int l, const N
   st.observeStep(dte, blk.elem[e]);
 }
 
+// Hourglass base vectors Gamma (FB 1981 eq. 43): eta*zeta, zeta*xi, xi*eta, xi*eta*zeta at
+// the nodes of the LS-DYNA ordering (1-4 bottom face, 5-8 top face).
+constexpr double kHexGamma[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
+                                    {1, -1, -1, 1, -1, 1, 1, -1},
+                                    {1, -1, 1, -1, 1, -1, 1, -1},
+                                    {-1, 1, -1, 1, 1, -1, 1, -1}};
+
+// The constants of one block for one call.
+struct SolidParams {
+  double dt = 0, lam2mu = 0, qm = 0;
+  bool stiffness_hg = false;
+  bool projected_hg = false;  // FB orthogonal hourglass vectors gamma; type 1 uses Gamma
+};
+
+// The spin increments (for the stress and the stored hourglass resistances) and the trace of
+// the rate of deformation (for the bulk viscosity).
+struct SolidSpin {
+  LaneArray trace_d, spin_xy, spin_yz, spin_zx;
+};
+
+// The current geometry and what follows from it: volume, density, wave speed, characteristic
+// length, bulk viscosity.
+struct SolidGeometry {
+  LaneArray vol, area, rho, c, c_dt, len, q, cbrt_vol;
+};
+
+// Hourglass control (FB 1981 sec. 4; LS-DYNA Theory Manual "Hourglass control"), QM > 0:
+// adds the hourglass forces of modes first_mode..3 to w.f and their work to de_hg (the hexahedron
+// controls all four; the one-point thick shell, whose points through the thickness see modes 0
+// and 1, the last two: src/elements/tshell.cpp). Every loop runs over lanes innermost so it
+// vectorises.
+inline void hourglassForces(const SolidParams& p, domain::SolidBlock& blk, std::size_t first,
+                            BatchScratch& w, const SolidSpin& sp, const SolidGeometry& geo,
+                            LaneArray& de_hg, int first_mode = 0) {
+  const double dt = p.dt;
+  const bool stiffness_hg = p.stiffness_hg;
+  LaneArray coef, inv_vol;
+  for (int l = 0; l < kBatch; ++l) {
+    double bb = 0.0;
+    for (int cc = 0; cc < 3; ++cc)
+      for (int a = 0; a < 8; ++a) bb += w.b[cc][a][l] * w.b[cc][a][l];
+    inv_vol[l] = 1.0 / geo.vol[l];
+    // Viscous: a_h = QM rho V^(2/3) c / 4 on the unnormalised vectors (LS-DYNA).
+    // Stiffness: QM (lambda + 2 mu) B:B / V per mode, integrated incrementally; FB
+    // normalise the hourglass vectors by 1/sqrt(8), hence the 1/8 on the +-1 vectors.
+    coef[l] = stiffness_hg
+                  ? 0.125 * p.qm * p.lam2mu * bb * inv_vol[l] * dt
+                  : 0.25 * p.qm * geo.rho[l] * geo.cbrt_vol[l] * geo.cbrt_vol[l] * geo.c[l];
+  }
+  // This batch's record of the last pass's hourglass forces.
+  double* hgq_batch = blk.hgq.data() + first * 12;
+  if (stiffness_hg) {
+    // The stored resistance of each mode is a vector in the global frame: it turns with
+    // the element, by the same spin increment as the stress (FB 1981 sec. 4.2), or a
+    // rotated element would be pushed along its old directions.
+    for (int alpha = 0; alpha < 4; ++alpha) {
+      double* qx = hgq_batch + (3 * alpha) * kBatch;
+      double* qy = hgq_batch + (3 * alpha + 1) * kBatch;
+      double* qz = hgq_batch + (3 * alpha + 2) * kBatch;
+      for (int l = 0; l < kBatch; ++l) {
+        const double x0 = qx[l], y0 = qy[l], z0 = qz[l];
+        qx[l] = x0 + sp.spin_xy[l] * y0 - sp.spin_zx[l] * z0;
+        qy[l] = y0 - sp.spin_xy[l] * x0 + sp.spin_yz[l] * z0;
+        qz[l] = z0 + sp.spin_zx[l] * x0 - sp.spin_yz[l] * y0;
+      }
+    }
+  }
+  // All four modes first (vectors gamma and resistances), then one pass that adds their
+  // forces to the nodes: f_ia -= sum_alpha Q_i,alpha gamma_a,alpha.
+  double g[4][8][kBatch];
+  double force[4][3][kBatch];
+  for (int alpha = 0; alpha < first_mode; ++alpha)
+    for (int i = 0; i < 3; ++i)
+      for (int l = 0; l < kBatch; ++l) force[alpha][i][l] = 0.0;
+  for (int alpha = 0; alpha < 4; ++alpha) {
+    for (int a = 0; a < 8; ++a)
+      for (int l = 0; l < kBatch; ++l) g[alpha][a][l] = kHexGamma[alpha][a];
+    if (alpha < first_mode) continue;
+    if (p.projected_hg) {
+      // gamma_a = Gamma_a - (1/V) (sum_b x_b Gamma_b) . B_a: orthogonal to linear fields.
+      double h[3][kBatch];
+      for (int cc = 0; cc < 3; ++cc)
+        for (int l = 0; l < kBatch; ++l) {
+          double sum = 0.0;
+          for (int a = 0; a < 8; ++a) sum += w.x[cc][a][l] * kHexGamma[alpha][a];
+          h[cc][l] = sum * inv_vol[l];
+        }
+      for (int a = 0; a < 8; ++a)
+        for (int l = 0; l < kBatch; ++l)
+          g[alpha][a][l] -=
+              h[0][l] * w.b[0][a][l] + h[1][l] * w.b[1][a][l] + h[2][l] * w.b[2][a][l];
+    }
+    for (int i = 0; i < 3; ++i) {
+      double qdot[kBatch], mean_force[kBatch];
+      for (int l = 0; l < kBatch; ++l) {
+        double sum = 0.0;
+        for (int a = 0; a < 8; ++a) sum += w.v[i][a][l] * g[alpha][a][l];
+        qdot[l] = sum;
+      }
+      // Work by the trapezoidal rule on the force, as for the stress: the force of the last
+      // pass acts over half of this step in the equations of motion (as the bulk viscosity's
+      // does: detail::bulkViscosityWork). The viscous force is new each pass, the stiffness
+      // resistance adds to the stored one.
+      double* fq = force[alpha][i];
+      double* stored = hgq_batch + (3 * alpha + i) * kBatch;
+      for (int l = 0; l < kBatch; ++l) {
+        const double old = stored[l];
+        // A failing element gives no force in its last pass (finishElement): its resistance
+        // ends, and only the old half of the trapezoid is work.
+        fq[l] = w.failed[l] ? 0.0 : (stiffness_hg ? old : 0.0) + coef[l] * qdot[l];
+        mean_force[l] = 0.5 * (old + fq[l]);
+        stored[l] = fq[l];
+      }
+      for (int l = 0; l < kBatch; ++l) de_hg[l] += mean_force[l] * qdot[l] * dt;
+    }
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int a = 0; a < 8; ++a)
+      for (int l = 0; l < kBatch; ++l)
+        w.f[i][a][l] -= force[0][i][l] * g[0][a][l] + force[1][i][l] * g[1][a][l] +
+                        force[2][i][l] * g[2][a][l] + force[3][i][l] * g[3][a][l];
+}
+
 // Per-batch results merged in batch order: the result does not depend on the thread count.
 inline BlockStatus mergeStatus(const std::vector<BlockStatus>& status) {
   BlockStatus total;

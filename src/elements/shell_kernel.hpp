@@ -290,6 +290,33 @@ inline void erodeShellPoints(const ShellParams& p, ShellScratch& s, double* ero_
   }
 }
 
+// The law's plane-stress update of n points held as structure of arrays in q (members s, de,
+// alpha, dzz, ep, failed: the shells' ShellScratch, the thick shells' points): stress, back
+// stress (or shell strain) and plastic strain advanced by de, the thickness strain returned in
+// dzz; failed cleared, then set by a law that can fail.
+// hist: the points' law history, kHistory arrays of n (laws with history); ply: each point's
+// layer angle (layered laws).
+template <class Law, class Points>
+inline void planeStressUpdate(const Law& law, int n, double dt, bool can_fail, Points& q,
+                              double* hist = nullptr, const double* ply = nullptr) {
+  materials::PlaneStressPoints pts;
+  pts.n = n;
+  pts.dt = dt;
+  for (int k = 0; k < 3; ++k) {
+    pts.s[k] = q.s[k];
+    pts.de[k] = q.de[k];
+    pts.alpha[k] = materials::shellAlphaOf<Law>() ? q.alpha[k] : nullptr;
+  }
+  pts.de_zz = q.dzz;
+  pts.eps_p = Law::kPlastic ? q.ep : nullptr;
+  pts.failed = can_fail ? q.failed : nullptr;
+  std::fill(q.failed, q.failed + n, uint8_t{0});
+  if (hist != nullptr)
+    for (int k = 0; k < materials::historyOf<Law>(); ++k) pts.h[k] = hist + k * n;
+  if constexpr (materials::isLayered<Law>()) pts.ply = ply;
+  law.updatePlaneStress(pts);
+}
+
 // The plane-stress update at every point through the thickness. The stress work is the
 // midpoint rule, (s_old + s) / 2 : de summed over the points: its s_old half is taken here into
 // work, as the stresses are loaded. A failed point carries no stress; failed_points counts them.
@@ -329,28 +356,12 @@ inline void pointStresses(const Law& law, const ShellParams& p, ShellScratch& s,
     for (int k = 0; k < 3; ++k)
       for (int ip = 0; ip < nip; ++ip)
         for (int l = 0; l < B; ++l) s.alpha[k][ip * B + l] = alpha_batch[(3 * ip + k) * B + l];
-  {
-    materials::PlaneStressPoints pts;
-    pts.n = npts;
-    pts.dt = dt;
-    for (int k = 0; k < 3; ++k) {
-      pts.s[k] = s.s[k];
-      pts.de[k] = s.de[k];
-      pts.alpha[k] = materials::shellAlphaOf<Law>() ? s.alpha[k] : nullptr;
-    }
-    pts.de_zz = s.dzz;
-    pts.eps_p = Law::kPlastic ? s.ep : nullptr;
-    pts.failed = p.can_fail ? s.failed : nullptr;
-    if (p.can_fail) std::fill(s.failed, s.failed + npts, uint8_t{0});
-    for (int k = 0; k < materials::historyOf<Law>(); ++k) pts.h[k] = hist_batch + k * npts;
-    if constexpr (materials::isLayered<Law>()) {
-      for (int ip = 0; ip < nip; ++ip)
-        for (int l = 0; l < B; ++l)
-          s.ply[ip * B + l] = p.ply[ip] + (p.axis_angle ? p.axis_angle[ln.first + l] : 0.0);
-      pts.ply = s.ply;
-    }
-    law.updatePlaneStress(pts);
+  if constexpr (materials::isLayered<Law>()) {
+    for (int ip = 0; ip < nip; ++ip)
+      for (int l = 0; l < B; ++l)
+        s.ply[ip * B + l] = p.ply[ip] + (p.axis_angle ? p.axis_angle[ln.first + l] : 0.0);
   }
+  planeStressUpdate(law, npts, dt, p.can_fail, s, hist_batch, s.ply);
   if (ero_batch != nullptr) erodeShellPoints(p, s, ero_batch);
   for (int l = 0; l < B; ++l) failed_points[l] = 0.0;
   if (p.can_fail) {

@@ -264,6 +264,8 @@ void readShells(Context&, const deck::Keyword&, const KeywordOptions&);
 void readBeams(Context&, const deck::Keyword&, const KeywordOptions&);
 void readDiscretes(Context&, const deck::Keyword&, const KeywordOptions&);
 void readSectionShell(Context&, const deck::Keyword&, const KeywordOptions&);
+void readSectionTShell(Context&, const deck::Keyword&, const KeywordOptions&);
+void readTShells(Context&, const deck::Keyword&, const KeywordOptions&);
 void readSectionBeam(Context&, const deck::Keyword&, const KeywordOptions&);
 void readSectionDiscrete(Context&, const deck::Keyword&, const KeywordOptions&);
 

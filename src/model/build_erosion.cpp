@@ -111,7 +111,11 @@ void checkPartErosion(Context& ctx, std::size_t part) {
   const auto idx = static_cast<std::size_t>(p.section);
   // The shell criteria of *MAT_123 (EPSTHIN, EPSMAJ) do not apply to the other families.
   bool ok = !er.forSolids().any();
-  if (p.section_kind == SectionKind::Solid)
+  const bool tshell =
+      p.section_kind == SectionKind::Solid && isThickShell(ctx.model.solid_sections[idx].elform);
+  if (tshell)
+    ok = false;
+  else if (p.section_kind == SectionKind::Solid)
     ok = ok || !isFullyIntegratedHex(ctx.model.solid_sections[idx].elform);
   else if (p.section_kind == SectionKind::Shell)
     ok = ctx.model.shell_sections[idx].elform != 13 && ctx.model.shell_sections[idx].elform != 15;
@@ -127,7 +131,8 @@ void checkPartErosion(Context& ctx, std::size_t part) {
     return;
   }
   if (ok) return;
-  const std::string family = p.section_kind == SectionKind::Solid   ? "ELFORM 2 solids (and -1, -2)"
+  const std::string family = tshell                                 ? "thick shells"
+                             : p.section_kind == SectionKind::Solid ? "ELFORM 2 solids (and -1, -2)"
                              : p.section_kind == SectionKind::Shell ? "2D solids"
                                                                     : "beams and discretes";
   // Refused where an element uses the part (Context::checkPartUsable), as a missing feature.

@@ -70,9 +70,16 @@ Context::ElementInput<N> elementCard(Context& ctx, const Card& c, SectionKind ki
 
 void checkSectionKind(Context& ctx, const Card& c, int32_t part, SectionKind kind) {
   const Part& p = ctx.model.parts[static_cast<std::size_t>(part)];
-  if (p.section == kNone || p.section_kind == kind) return;
-  c.fail("PID", "part " + std::to_string(p.id) + " has a " + sectionKeyword(p.section_kind) +
-                    " section, but " + c.keyword().name + " needs a " + sectionKeyword(kind));
+  if (p.section == kNone) return;
+  // Thick shells keep their *SECTION_TSHELL among the solid sections (model.hpp).
+  const bool tshell_part = p.section_kind == SectionKind::Solid &&
+                           isThickShell(ctx.model.solid_sections[std::size_t(p.section)].elform);
+  const bool tshell_keyword = c.keyword().name == "*ELEMENT_TSHELL";
+  if (p.section_kind == kind && tshell_part == tshell_keyword) return;
+  c.fail("PID", "part " + std::to_string(p.id) + " has a " +
+                    (tshell_part ? "*SECTION_TSHELL" : sectionKeyword(p.section_kind)) +
+                    " section, but " + c.keyword().name + " needs a " +
+                    (tshell_keyword ? "*SECTION_TSHELL" : sectionKeyword(kind)));
 }
 
 namespace {
@@ -314,16 +321,18 @@ namespace {
 // QR/IRID (Keyword Manual, *SECTION_SHELL): 0 Gauss (Lobatto with *CONTROL_SHELL INTGRD 1),
 // < 0 the *INTEGRATION_SHELL rule -QR/IRID, which gives the number of points (NIP is then
 // ignored, as the manual says); the built-in rules QR > 0 are refused.
-void readShellRule(Context& ctx, const Card& c, SectionShell& s) {
-  const int64_t qr = c.integer("QR/IRID");
+// *SECTION_TSHELL's QR reads the same (field `qr_field`).
+template <class Section>
+void readShellRule(Context& ctx, const Card& c, std::string_view qr_field, Section& s) {
+  const int64_t qr = c.integer(qr_field);
   if (qr > 0) {
-    ctx.reject(c, "QR/IRID", "of the quadrature rules only 0 (Gauss) and < 0 (*INTEGRATION_SHELL)");
+    ctx.reject(c, qr_field, "of the quadrature rules only 0 (Gauss) and < 0 (*INTEGRATION_SHELL)");
     return;
   }
   if (qr == 0) return;
   const auto rule = ctx.shell_rules.find(-qr);
   if (rule == ctx.shell_rules.end())
-    c.fail("QR/IRID", "no *INTEGRATION_SHELL with IRID " + std::to_string(-qr));
+    c.fail(qr_field, "no *INTEGRATION_SHELL with IRID " + std::to_string(-qr));
   s.zeta = rule->second.zeta;
   s.weight = rule->second.weight;
   s.nip = static_cast<int>(s.zeta.size());
@@ -435,7 +444,7 @@ void readSectionShell(Context& ctx, const deck::Keyword& kw, const KeywordOption
     if (nip < 1 || nip > 10) c.fail("NIP", "must be 1 to 10 through-thickness points");
     s.nip = static_cast<int>(nip);
     c.real("PROPT");  // printout only
-    readShellRule(ctx, c, s);
+    readShellRule(ctx, c, "QR/IRID", s);
     c.integer("SETYP");
     for (int i = 0; i < 4; ++i) {
       const std::string f = "T" + std::to_string(i + 1);
@@ -461,6 +470,97 @@ void readSectionShell(Context& ctx, const deck::Keyword& kw, const KeywordOption
       ctx.reject(c2, "NLOC", "reference surfaces off the mid-surface are not supported");
     ctx.define(Kind::Section, s.id, c, "SECID");
     ctx.model.shell_sections.push_back(s);
+    ctx.collect(cur);
+  }
+}
+
+namespace {
+
+// ICOMP = 1: the layer angles B1..B(NIP), eight to a card. Zero angles change nothing for the
+// isotropic laws thick shells run, so they are read and noted; others are refused.
+void readTShellAngles(Context& ctx, CardCursor& cur, const deck::KeywordSpec& spec, const Card& c,
+                      int nip) {
+  for (int k = 0; k < nip; k += 8) {
+    if (cur.atEnd()) c.fail("ICOMP", "ICOMP = 1 needs the angle cards B1..B" + std::to_string(nip));
+    const Card& a = cur.read(spec.card("angle card"));
+    for (int i = k; i < std::min(nip, k + 8); ++i) {
+      const std::string f = "B" + std::to_string(i - k + 1);
+      if (a.real(f) != 0.0)
+        ctx.reject(a, f, "layer angles (composite thick shells, ICOMP = 1) other than 0");
+    }
+  }
+  ctx.ignore("*SECTION_TSHELL", "ICOMP",
+             "ICOMP = 1 with every angle 0 runs as ICOMP = 0 (the material axes are the element's)",
+             c.where());
+}
+
+}  // namespace
+
+// *SECTION_TSHELL (Keyword Manual vol. I): ELFORM 1 (one point in the plane, NIP through the
+// thickness, hourglass control; src/elements/tshell.hpp) runs; the others are refused when an
+// element uses the section. Kept among the solid sections (model.hpp, kThickShellOnePoint).
+void readSectionTShell(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
+  const auto& spec = keywordSpec("*SECTION_TSHELL");
+  CardCursor cur(kw, ctx.deck);
+  while (nextRecord(cur, opts.has("TITLE"))) {
+    readTitleCard(cur, spec, opts);
+    const Card& c = cur.read(spec.card("card 1"));
+    SectionSolid s;
+    s.id = positiveId(c, "SECID");
+    s.where = c.where();
+    const int64_t nip = c.integer("NIP");
+    if (nip < 1 || nip > 10) c.fail("NIP", "must be 1 to 10 through-thickness points");
+    s.nip = static_cast<int>(nip);
+    const int64_t icomp = c.integer("ICOMP");
+    if (icomp != 0 && icomp != 1) c.fail("ICOMP", "must be 0 or 1");
+    if (icomp == 1) readTShellAngles(ctx, cur, spec, c, s.nip);
+    const auto elform = c.integer("ELFORM");
+    ctx.define(Kind::Section, s.id, c, "SECID");
+    if (elform != 1) {
+      ctx.defineUnsupported(Kind::Section, s.id, kw.name + " ELFORM=" + std::to_string(elform),
+                            c.where());
+      ctx.reportUnsupported(kw,
+                            "ELFORM " + std::to_string(elform) +
+                                " not supported yet (ELFORM 1, one point in the plane, is)",
+                            false);
+      ctx.collect(cur);
+      continue;
+    }
+    s.elform = kThickShellOnePoint;
+    s.shrf = c.real("SHRF");
+    if (!(s.shrf > 0)) c.fail("SHRF", "the shear factor must be positive");
+    c.real("PROPT");  // printout only
+    readShellRule(ctx, c, "QR", s);
+    // One point through the thickness leaves the element's bending modes free.
+    if (s.nip < 2)
+      c.fail(s.zeta.empty() ? "NIP" : "QR",
+             "a one-point-in-plane thick shell (ELFORM 1) needs at least 2 points through the "
+             "thickness");
+    if (c.integer("TSHEAR") != 0)
+      ctx.reject(c, "TSHEAR", "the parabolic transverse shear (TSHEAR = 1); 0 is supported");
+    ctx.model.solid_sections.push_back(s);
+    ctx.collect(cur);
+  }
+}
+
+// *ELEMENT_TSHELL: EID PID N1..N8, stored with the solids (their ids share the solids' id
+// space here). Degenerate (prism) thick shells are refused.
+void readTShells(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
+  const auto& spec = keywordSpec("*ELEMENT_TSHELL");
+  const auto& card1 = spec.card("card 1");
+  const ElementSlots<8> slots(card1, {"N1", "N2", "N3", "N4", "N5", "N6", "N7", "N8"});
+  CardCursor cur(kw, ctx.deck);
+  for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
+    const Card& c = cur.read(card1);
+    auto e = elementCard<8>(ctx, c, SectionKind::Solid, slots, slots.nodes);
+    for (std::size_t i = 0; i < 8; ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (e.nodes[i] == e.nodes[j])
+          c.fail(slots.nodes[i].name,
+                 "degenerate thick shells (prisms: N3 = N4 and N7 = N8) are not supported: " +
+                     std::string(slots.nodes[i].name) + " repeats " +
+                     std::string(slots.nodes[j].name) + " (give 8 distinct nodes)");
+    ctx.solid_input.push_back(e);
     ctx.collect(cur);
   }
 }

@@ -108,7 +108,22 @@ struct SectionSolid {
   // transverse shear correction for poor aspect ratios (src/elements/hex8_full.cpp)
   int elform = 1;
   util::SourceLoc where;
+  // *SECTION_TSHELL sections are kept here too (their elements are 8-node bricks of the solid
+  // family; src/elements/tshell.hpp) with elform kThickShellOnePoint: NIP points through the
+  // thickness on the Gauss (or Lobatto, QR = 0 with *CONTROL_SHELL INTGRD 1) rule, or the
+  // *INTEGRATION_SHELL rule's zeta / weight (QR < 0); SHRF the transverse shear factor.
+  int nip = 0;
+  double shrf = 1.0;
+  bool lobatto = false;
+  std::vector<double> zeta = {}, weight = {};
 };
+
+// The internal formulation code of *SECTION_TSHELL ELFORM 1 (one point in the plane, NIP
+// through the thickness, hourglass control): outside LS-DYNA's *SECTION_SOLID codes.
+inline constexpr int kThickShellOnePoint = 101;
+inline bool isThickShell(int elform) {
+  return elform == kThickShellOnePoint;
+}
 
 // *SECTION_SPH (Keyword Manual vol. I, *SECTION_SPH): the smoothing length of a part's SPH
 // particles. h0 = CSLH x the largest of the part's nearest-neighbour distances (or SPHINI when

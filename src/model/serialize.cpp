@@ -75,10 +75,15 @@ void fields(A& a, M& m) {
   a.count(
       m.solid_sections.size(),
       [&](auto& s) {
-        util::fieldCount<3>(s);
+        util::fieldCount<8>(s);
         a(s.id);
         a(s.elform);
         loc(a, s.where);
+        a(s.nip);
+        a(s.shrf);
+        a(s.lobatto);
+        a(s.zeta);
+        a(s.weight);
       },
       m.solid_sections);
   a.count(

@@ -236,4 +236,49 @@ inline std::filesystem::path sourceDir() {
   return CRUMPLE_SOURCE_DIR;
 }
 
+// ---- cantilever helpers (test_structures.cpp, test_tshells.cpp) ----
+
+// The static deflection shape of a tip-loaded cantilever, xi = x / L, tip value 1: close to
+// the first mode, so an initial velocity in this shape excites almost only mode 1.
+inline double staticShape(double xi) {
+  return 0.5 * xi * xi * (3.0 - xi);
+}
+
+// Period of the tip's free vibration from the first two downward zero crossings of its z
+// displacement (linear interpolation between cycles).
+inline double measuredPeriod(Simulation& sim, int64_t tip) {
+  std::vector<double> crossings;
+  double z_prev = 0.0, t_prev = 0.0;
+  sim.run([&](const crumple::solver::Solver& s) {
+    const double z = sim.x(tip, 2) - sim.x0(tip, 2);
+    if (z_prev > 0.0 && z <= 0.0)
+      crossings.push_back(t_prev + (s.time() - t_prev) * z_prev / (z_prev - z));
+    z_prev = z;
+    t_prev = s.time();
+  });
+  EXPECT_GE(crossings.size(), 2u);
+  return crossings.size() >= 2 ? crossings[1] - crossings[0] : 0.0;
+}
+
+// Mean tip deflection over the hold after a slow ramp of the tip load P: the residual
+// vibration averages out over whole periods.
+inline double quasiStaticTip(Simulation& sim, int64_t tip, double t_hold) {
+  double sum = 0.0, time = 0.0;
+  sim.run([&](const crumple::solver::Solver& s) {
+    if (s.time() <= t_hold) return;
+    sum += (sim.x(tip, 2) - sim.x0(tip, 2)) * s.dt();
+    time += s.dt();
+  });
+  return sum / time;
+}
+
+// Ramp over 4 periods, hold for 2: tip load split over the tip nodes in `loads`.
+inline std::string tipLoad(double period, const std::string& loads) {
+  return termination(6.0 * period) +
+         fmt::format(
+             "*DEFINE_CURVE\n         1\n{:20.6g}{:20.6g}\n{:20.6g}{:20.6g}\n{:20.6g}{:20.6g}\n",
+             0.0, 0.0, 4.0 * period, 1.0, 1000.0, 1.0) +
+         "*LOAD_NODE_POINT\n" + loads;
+}
+
 }  // namespace crumple::testing

@@ -15,8 +15,11 @@
 namespace {
 
 using crumple::testing::measuredPeriod;
+using crumple::testing::quasiStaticTip;
 using crumple::testing::Simulation;
+using crumple::testing::staticShape;
 using crumple::testing::termination;
+using crumple::testing::tipLoad;
 
 // Steel strip in mm, ms, kg, GPa (kN). nu = 0, so that a strip and a beam of the same section
 // have the same bending stiffness E I whatever the width (no anticlastic plate effect).
@@ -28,12 +31,6 @@ double cantileverPeriod() {
   const double f1 =
       1.8751 * 1.8751 / (2.0 * M_PI) * std::sqrt(kE * kI / (kRho * kA * std::pow(kL, 4)));
   return 1.0 / f1;
-}
-
-// The static deflection shape of a tip-loaded cantilever, xi = x / L, tip value 1: close to
-// the first mode, so an initial velocity in this shape excites almost only mode 1.
-double staticShape(double xi) {
-  return 0.5 * xi * xi * (3.0 - xi);
 }
 
 // A cantilever strip of nx x ny Belytschko-Tsay shells in the x-y plane, clamped at x = 0
@@ -113,27 +110,6 @@ std::string beamDeck(int n, int elform, const std::string& extra, double initial
                        initial_speed * staticShape(double(i) / n));
   }
   return s + "*END\n";
-}
-
-// Mean tip deflection over the hold after a slow ramp of the tip load P: the residual
-// vibration averages out over whole periods.
-double quasiStaticTip(Simulation& sim, int64_t tip, double t_hold) {
-  double sum = 0.0, time = 0.0;
-  sim.run([&](const crumple::solver::Solver& s) {
-    if (s.time() <= t_hold) return;
-    sum += (sim.x(tip, 2) - sim.x0(tip, 2)) * s.dt();
-    time += s.dt();
-  });
-  return sum / time;
-}
-
-// Ramp over 4 periods, hold for 2: tip load split over the tip nodes in `loads`.
-std::string tipLoad(double period, const std::string& loads) {
-  return termination(6.0 * period) +
-         fmt::format(
-             "*DEFINE_CURVE\n         1\n{:20.6g}{:20.6g}\n{:20.6g}{:20.6g}\n{:20.6g}{:20.6g}\n",
-             0.0, 0.0, 4.0 * period, 1.0, 1000.0, 1.0) +
-         "*LOAD_NODE_POINT\n" + loads;
 }
 
 constexpr double kP = 1e-3;  // kN: tip deflection 1.9 mm, 2% of the length (small rotation)

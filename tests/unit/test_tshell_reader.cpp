@@ -1,0 +1,103 @@
+// *SECTION_TSHELL and *ELEMENT_TSHELL (src/model/build_structures.cpp): cards, defaults, the
+// refused options and their messages.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "model/build.hpp"
+#include "temp_dir.hpp"
+
+using crumple::model::Model;
+using crumple::model::readModel;
+
+namespace {
+
+using crumple::testing::errorOf;
+
+class TempDir : public crumple::testing::TempDir {
+ public:
+  TempDir() : crumple::testing::TempDir("crumple_test_tshell_reader") {}
+};
+
+// One thick shell on the unit cube, part 1 with section 1 (the section card comes from the
+// test).
+std::string deck(const std::string& section,
+                 const std::string& element = "10,1,1,2,3,4,5,6,7,8\n") {
+  return "*KEYWORD\n*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,0,0,1\n6,1,0,1\n7,1,1,1\n"
+         "8,0,1,1\n*PART\nplate\n1,1,1\n*MAT_ELASTIC\n1,7.8e-9,2.0e5,0.3\n" +
+         section + "*ELEMENT_TSHELL\n" + element;
+}
+
+TEST(TShellReader, DefaultsAreElform1TwoGaussPointsShearFactorOne) {
+  TempDir t;
+  const Model m = readModel(t.write("d.k", deck("*SECTION_TSHELL\n1\n")));
+  ASSERT_EQ(m.solid_sections.size(), 1u);
+  const auto& s = m.solid_sections[0];
+  EXPECT_TRUE(crumple::model::isThickShell(s.elform));
+  EXPECT_EQ(s.nip, 2);
+  EXPECT_EQ(s.shrf, 1.0);
+  EXPECT_TRUE(s.zeta.empty());
+  ASSERT_EQ(m.solids.size(), 1u);
+  EXPECT_EQ(m.solids.id[0], 10);
+  EXPECT_EQ(m.solids.nodes[0][4], m.nodeIndex(5));
+}
+
+TEST(TShellReader, FieldsAndTitle) {
+  TempDir t;
+  const Model m =
+      readModel(t.write("d.k", deck("*SECTION_TSHELL_TITLE\nthick\n1,1,0.8333,5,1.0,0,0,0\n")));
+  const auto& s = m.solid_sections[0];
+  EXPECT_EQ(s.nip, 5);
+  EXPECT_NEAR(s.shrf, 0.8333, 1e-12);
+}
+
+TEST(TShellReader, IntegrationShellRule) {
+  TempDir t;
+  const Model m = readModel(
+      t.write("d.k", deck("*INTEGRATION_SHELL\n7,3,1\n*SECTION_TSHELL\n1,1,1.0,2,1.0,-7\n")));
+  const auto& s = m.solid_sections[0];
+  EXPECT_EQ(s.nip, 3);
+  ASSERT_EQ(s.zeta.size(), 3u);
+  EXPECT_NEAR(s.weight[1], 1.0 / 3.0, 1e-15);
+}
+
+TEST(TShellReader, RefusedOptionsNameTheField) {
+  TempDir t;
+  auto err = [&](const std::string& section,
+                 const std::string& element = "10,1,1,2,3,4,5,6,7,8\n") {
+    return errorOf([&] { readModel(t.write("e.k", deck(section, element))); });
+  };
+  EXPECT_NE(err("*SECTION_TSHELL\n1,1,1.0,1\n").find("field 4 (NIP)"), std::string::npos);
+  EXPECT_NE(err("*SECTION_TSHELL\n1,1,1.0,2,1.0,0,0,1\n").find("(TSHEAR)"), std::string::npos);
+  const std::string angles = err("*SECTION_TSHELL\n1,1,1.0,2,1.0,0,1\n30.0,0.0\n");
+  EXPECT_NE(angles.find("(B1)"), std::string::npos) << angles;
+  // Zero angles run as ICOMP 0.
+  EXPECT_EQ(err("*SECTION_TSHELL\n1,1,1.0,2,1.0,0,1\n0.0,0.0\n"), "");
+  const std::string form = err("*SECTION_TSHELL\n1,3\n");
+  EXPECT_NE(form.find("*SECTION_TSHELL ELFORM=3"), std::string::npos) << form;
+  const std::string prism = err("*SECTION_TSHELL\n1\n", "10,1,1,2,3,3,5,6,7,7\n");
+  EXPECT_NE(prism.find("(N4)"), std::string::npos) << prism;
+  EXPECT_NE(prism.find("degenerate thick shells"), std::string::npos) << prism;
+  const std::string solid = err("*SECTION_SOLID\n1,1\n");
+  EXPECT_NE(solid.find("needs a *SECTION_TSHELL"), std::string::npos) << solid;
+}
+
+TEST(TShellReader, SolidElementOnAThickShellPartIsRefused) {
+  TempDir t;
+  std::string d = deck("*SECTION_TSHELL\n1\n");
+  d.replace(d.find("*ELEMENT_TSHELL"), 15, "*ELEMENT_SOLID");
+  const std::string e = errorOf([&] { readModel(t.write("s.k", d)); });
+  EXPECT_NE(e.find("has a *SECTION_TSHELL section, but *ELEMENT_SOLID needs a *SECTION_SOLID"),
+            std::string::npos)
+      << e;
+}
+
+TEST(TShellReader, LawWithoutPlaneStressUpdateIsRefused) {
+  TempDir t;
+  std::string d = deck("*SECTION_TSHELL\n1\n");
+  d.replace(d.find("*MAT_ELASTIC\n1,7.8e-9,2.0e5,0.3\n"), 31, "*MAT_NULL\n1,7.8e-9\n");
+  const std::string e = errorOf([&] { readModel(t.write("n.k", d)); });
+  EXPECT_NE(e.find("*SECTION_TSHELL section but material 1"), std::string::npos) << e;
+}
+
+}  // namespace
