@@ -244,22 +244,6 @@ inline double staticShape(double xi) {
   return 0.5 * xi * xi * (3.0 - xi);
 }
 
-// Period of the tip's free vibration from the first two downward zero crossings of its z
-// displacement (linear interpolation between cycles).
-inline double measuredPeriod(Simulation& sim, int64_t tip) {
-  std::vector<double> crossings;
-  double z_prev = 0.0, t_prev = 0.0;
-  sim.run([&](const crumple::solver::Solver& s) {
-    const double z = sim.x(tip, 2) - sim.x0(tip, 2);
-    if (z_prev > 0.0 && z <= 0.0)
-      crossings.push_back(t_prev + (s.time() - t_prev) * z_prev / (z_prev - z));
-    z_prev = z;
-    t_prev = s.time();
-  });
-  EXPECT_GE(crossings.size(), 2u);
-  return crossings.size() >= 2 ? crossings[1] - crossings[0] : 0.0;
-}
-
 // Mean tip deflection over the hold after a slow ramp of the tip load P: the residual
 // vibration averages out over whole periods.
 inline double quasiStaticTip(Simulation& sim, int64_t tip, double t_hold) {
