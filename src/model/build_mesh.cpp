@@ -574,20 +574,20 @@ void finishParts(Context& ctx) {
                         isThickShell(ctx.model.solid_sections[std::size_t(p.section)].elform);
     // *MAT_NULL's shells are bypassed (mass only); its thick shells would have no update. Thick
     // shells keep no law history (the layered composite laws' failure flags).
-    if (tshell && materials::historyCountOf(m.law) > 0)
-      ctx.fail(p.where.str() + ": *PART card 2 field 3 (MID): part " + std::to_string(p.id) +
-               " has a *SECTION_TSHELL section and material " + std::to_string(m.id) + " (" +
-               materialKeyword(m.law) +
-               "), whose points keep history variables: thick shells do not store them yet");
-    else if (!materials::supports(m.law,
-                                  tshell ? materials::Family::Shell : lawFamily(p.section_kind)) ||
-             (tshell && materials::massOnlyStructures(m.law)))
+    if (!materials::supports(m.law,
+                             tshell ? materials::Family::Shell : lawFamily(p.section_kind)) ||
+        (tshell && materials::massOnlyStructures(m.law)))
       ctx.fail(p.where.str() + ": *PART card 2 field 3 (MID): part " + std::to_string(p.id) +
                " has " + (tshell ? "a *SECTION_TSHELL" : sectionName(p.section_kind)) +
                " section but material " + std::to_string(m.id) + " (" + materialKeyword(m.law) +
                ") has no " +
                (tshell ? "plane-stress update (thick shells take the shells' laws)"
                        : updateName(p.section_kind)));
+    else if (tshell && materials::historyCountOf(m.law) > 0)
+      ctx.fail(p.where.str() + ": *PART card 2 field 3 (MID): part " + std::to_string(p.id) +
+               " has a *SECTION_TSHELL section and material " + std::to_string(m.id) + " (" +
+               materialKeyword(m.law) +
+               "), whose points keep history variables: thick shells do not store them yet");
     else if (tshell)
       continue;
     else if (p.section_kind == SectionKind::Solid && materials::needsDeformationGradient(m.law) &&

@@ -100,4 +100,18 @@ TEST(TShellReader, LawWithoutPlaneStressUpdateIsRefused) {
   EXPECT_NE(e.find("*SECTION_TSHELL section but material 1"), std::string::npos) << e;
 }
 
+// A law whose points keep history (the layered composite *MAT_054) on thick shells: refused,
+// thick shells do not store it.
+TEST(TShellReader, LawWithPointHistoryIsRefused) {
+  TempDir t;
+  std::string d = deck("*SECTION_TSHELL\n1\n");
+  d.replace(d.find("*MAT_ELASTIC\n1,7.8e-9,2.0e5,0.3\n"), 31,
+            "*MAT_054\n1,1.6e-6,181,10.3,0,0.016\n7.17,3.0,7.17\n0\n0\n0\n"
+            "1.5,1.5,0.246,0.04,0.068\n");
+  const std::string e = errorOf([&] { readModel(t.write("c.k", d)); });
+  EXPECT_NE(e.find("whose points keep history variables: thick shells do not store them yet"),
+            std::string::npos)
+      << e;
+}
+
 }  // namespace
