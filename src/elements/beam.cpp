@@ -539,12 +539,21 @@ namespace {
 
 // The increments of the ELFORM 2 resultants for the deformation increment dd through the
 // elastic Timoshenko beam stiffness (top of file).
+// One bending plane of the Timoshenko beam of second moment `inertia`: phi = 12 E I /
+// (G SA L0^2) (0 without a shear area) and k = E I / (L0 (1 + phi)); the end moments are
+// k ((4 + phi) theta_1 + (2 - phi) theta_2) and the same with the ends swapped.
+struct PlaneBending {
+  double k, phi;
+};
+PlaneBending timoshenkoPlane(double E, double G, double inertia, double sa, double L0) {
+  const double phi = sa > 0.0 ? 12.0 * E * inertia / (G * sa * L0 * L0) : 0.0;
+  return {E * inertia / (L0 * (1.0 + phi)), phi};
+}
+
 std::array<double, 6> elasticIncrement(const Section& sec, double sa, double E, double G, double L0,
                                        const std::array<double, 6>& dd) {
-  const double phi_s = sa > 0.0 ? 12.0 * E * sec.iss / (G * sa * L0 * L0) : 0.0;
-  const double phi_t = sa > 0.0 ? 12.0 * E * sec.itt / (G * sa * L0 * L0) : 0.0;
-  const double ks = E * sec.iss / (L0 * (1.0 + phi_s));
-  const double kt = E * sec.itt / (L0 * (1.0 + phi_t));
+  const auto [ks, phi_s] = timoshenkoPlane(E, G, sec.iss, sa, L0);
+  const auto [kt, phi_t] = timoshenkoPlane(E, G, sec.itt, sa, L0);
   return {E * sec.area * dd[0] / L0,
           G * sec.j * dd[1] / L0,
           ks * ((4.0 + phi_s) * dd[2] + (2.0 - phi_s) * dd[4]),
@@ -564,8 +573,7 @@ DeformationStiffness releaseStiffness(const Section& sec, const domain::BeamSect
   K.torsion = G * sec.j / L0;
   if (bs.elform == 2) {
     auto plane = [&](double inertia) -> std::array<double, 3> {
-      const double phi = bs.sa > 0.0 ? 12.0 * E * inertia / (G * bs.sa * L0 * L0) : 0.0;
-      const double k = E * inertia / (L0 * (1.0 + phi));
+      const auto [k, phi] = timoshenkoPlane(E, G, inertia, bs.sa, L0);
       return {k * (4.0 + phi), k * (2.0 - phi), k * (4.0 + phi)};
     };
     K.s = plane(sec.iss);
