@@ -384,7 +384,8 @@ void Run::relax() {
   const auto& dr = model_.controls.relaxation;
   log_.say(fmt::format(
       "dynamic relaxation {} after {} cycles at relaxation time {:.6g}: distortional kinetic "
-      "energy {:.4g} x its peak {:.6g} (DRTOL {:.4g}); relaxed internal + hourglass energy "
+      "energy {:.4g} x its peak {:.6g} (DRTOL {:.4g}); relaxed internal + hourglass + drilling "
+      "energy "
       "{:.6g}; the transient starts at t = 0 from the relaxed state, its energy balance "
       "from there\n",
       r.converged ? "converged" : "ended by DRTERM", r.cycles, r.time, r.ratio, r.peak, dr.drtol,
@@ -507,15 +508,15 @@ int Run::finish() {
   const auto e = s.energies();
   log_.say(fmt::format(
       "{} termination at time {:.6g}, cycle {}\nenergy: kinetic {:.6g} internal {:.6g} hourglass "
-      "{:.6g} rigidwall {:.6g} external work {:.6g} ratio {:.6f}\n",
-      info_.termination, s.time(), s.cycle(), e.kinetic, e.internal, e.hourglass, e.rigidwall,
-      e.external_work, e.ratio));
+      "{:.6g} drilling {:.6g} rigidwall {:.6g} external work {:.6g} ratio {:.6f}\n",
+      info_.termination, s.time(), s.cycle(), e.kinetic, e.internal, e.hourglass, e.drilling,
+      e.rigidwall, e.external_work, e.ratio));
   if (writer_) log_.say(writer_->energyAudit().verdict());
   if (const auto er = s.eroded(); er.elements > 0)
     log_.say(
         fmt::format("eroded: {} element(s), mass {:.6g}, internal energy {:.6g}, hourglass energy "
-                    "{:.6g}\n",
-                    er.elements, er.mass, er.internal, er.hourglass));
+                    "{:.6g}, drilling energy {:.6g}\n",
+                    er.elements, er.mass, er.internal, er.hourglass, er.drilling));
   log_.say(timingTable(s.timing(), output_s, info_.setup_s, info_.wall_s));
   std::string phases;
   for (const auto& [phase, seconds] : info_.setup_phases)

@@ -81,9 +81,12 @@ struct ShellBlock : BlockBase {
   std::vector<double> thick;        // current thickness
   std::vector<double> area0;        // initial mid-surface area
   std::vector<double> e_int, e_hg;  // internal and hourglass energy
-  std::vector<uint8_t> active;      // 0 once eroded
-  std::vector<uint8_t> failed;      // eroded because every point reached the failure strain
-  std::vector<double> mass_scale;   // empty if none
+  // Work of the drilling-rotation constraint (src/elements/shell.cpp, "Drilling rotations"):
+  // a penalty of Crumple's own, reported apart from the hourglass energy.
+  std::vector<double> e_drill;
+  std::vector<uint8_t> active;     // 0 once eroded
+  std::vector<uint8_t> failed;     // eroded because every point reached the failure strain
+  std::vector<double> mass_scale;  // empty if none
   // Through-thickness rule: point i at z = zeta[i] t / 2, weight[i] (the weights sum to 1);
   // Gauss or Lobatto from nip, or a section's *INTEGRATION_SHELL rule.
   std::vector<double> zeta, weight;

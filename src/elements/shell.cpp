@@ -322,9 +322,10 @@ inline void cornerForces(const ShellParams& p, const domain::ShellBlock& blk, Sh
     // Drilling moments (none for triangles), accumulated like the stiffness hourglass
     // resistances; the membrane spin's share goes to the in-plane forces.
     const double kd = quad * p.drill_coef * t * t * t;
-    double mz[4], drill_sum = 0.0;
-    drillMoments(drill_prev, r.rdrill, kd, dt, l, mz, o.drill_new, drill_sum, e_hg);
+    double mz[4], drill_sum = 0.0, e_drill = 0.0;
+    drillMoments(drill_prev, r.rdrill, kd, dt, l, mz, o.drill_new, drill_sum, e_drill);
     o.de_hg[l] = e_hg;
+    o.de_drill[l] = e_drill;
     for (int a = 0; a < 4; ++a) {
       fx[a] += hf[0] * g[a] + 0.5 * f.b2[a] * drill_sum;
       fy[a] += hf[1] * g[a] - 0.5 * f.b1[a] * drill_sum;
@@ -383,6 +384,7 @@ inline void storeState(const ShellParams& p, domain::ShellBlock& blk, const Shel
     blk.thick[e] = alive[l] != 0.0 ? q.t_new[l] : blk.thick[e];
     blk.e_int[e] += alive[l] != 0.0 ? q.de_int[l] : 0.0;
     blk.e_hg[e] += alive[l] != 0.0 ? o.de_hg[l] : 0.0;
+    blk.e_drill[e] += alive[l] != 0.0 ? o.de_drill[l] : 0.0;
   }
 }
 
@@ -534,6 +536,7 @@ void resizeShellBlock(domain::ShellBlock& blk, std::size_t n) {
   blk.area0.assign(padded, 0.0);
   blk.e_int.assign(padded, 0.0);
   blk.e_hg.assign(padded, 0.0);
+  blk.e_drill.assign(padded, 0.0);
   blk.active.assign(padded, 1);
   blk.failed.assign(padded, 0);
   blk.sig.assign(padded * static_cast<std::size_t>(blk.sigFields()), 0.0);

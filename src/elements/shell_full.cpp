@@ -244,10 +244,10 @@ inline void fullCornerForces(const ShellParams& p, const domain::ShellBlock& blk
     o.area[l] = A;
     o.dte[l] = A / longestSide(s.x, l) * inv_c_dt[l];
     const double t = fb.t_mean[l];
-    double drill_sum = 0.0, e_hg = 0.0;
+    double drill_sum = 0.0, e_drill = 0.0;
     drillMoments(drill_prev, fb.r[0].rdrill, p.drill_coef * t * t * t, p.dt, l, mz, o.drill_new,
-                 drill_sum, e_hg);
-    o.de_hg[l] = e_hg;
+                 drill_sum, e_drill);
+    o.de_drill[l] = e_drill;
     for (int a = 0; a < 4; ++a) {
       fx[a] += 0.5 * f.b2[a] * drill_sum;
       fy[a] -= 0.5 * f.b1[a] * drill_sum;
@@ -319,7 +319,7 @@ inline void storeFull(domain::ShellBlock& blk, const ShellLanes& ln, const FullB
     const std::size_t e = ln.first + static_cast<std::size_t>(l);
     blk.thick[e] = alive[l] != 0.0 ? fb.t_mean[l] : blk.thick[e];
     blk.e_int[e] += alive[l] != 0.0 ? fb.de_int[l] : 0.0;
-    blk.e_hg[e] += alive[l] != 0.0 ? o.de_hg[l] : 0.0;
+    blk.e_drill[e] += alive[l] != 0.0 ? o.de_drill[l] : 0.0;
   }
 }
 

@@ -243,9 +243,10 @@ struct ShellResultants {
   Lanes tau_yz, tau_zx, de_int, t_new, ezz, nxx, nyy, nxy, mxx, myy, mxy, qx, qy;
 };
 
-// What the force phase leaves for the stores: area, hourglass energy, stable step, resistances.
+// What the force phase leaves for the stores: area, hourglass and drilling-constraint energy,
+// stable step, resistances.
 struct ShellForcesOut {
-  Lanes area, de_hg, dte;
+  Lanes area, de_hg, de_drill, dte;
   double hg_new[5][kShellBatch], drill_new[4][kShellBatch];
 };
 
@@ -488,16 +489,17 @@ inline void loadDrill(const domain::ShellBlock& blk, std::size_t first,
 
 // The drilling constraint of lane l (src/elements/shell.cpp, "Drilling rotations"): corner
 // moments mz about the normal accumulated from the drilling rates with stiffness kd, their
-// sum (whose reaction goes to the in-plane forces) and their midpoint work added to e_hg.
+// sum (whose reaction goes to the in-plane forces) and their midpoint work added to e_drill
+// (booked apart from the hourglass energy: LS-DYNA's shells have no such term to compare).
 inline void drillMoments(const double (&prev)[4][kShellBatch], const double (&rate)[4][kShellBatch],
                          double kd, double dt, int l, double mz[4], double (&next)[4][kShellBatch],
-                         double& drill_sum, double& e_hg) {
+                         double& drill_sum, double& e_drill) {
   for (int a = 0; a < 4; ++a) {
     const double old = prev[a][l];
     mz[a] = old + kd * rate[a][l] * dt;
     next[a][l] = mz[a];
     drill_sum += mz[a];
-    e_hg += 0.5 * (old + mz[a]) * rate[a][l] * dt;
+    e_drill += 0.5 * (old + mz[a]) * rate[a][l] * dt;
   }
 }
 

@@ -458,7 +458,9 @@ void D3plotWriter::writeGlobals(WordFile& out, const solver::Energies& e,
     for (int c = 0; c < 3; ++c) out.real(p.mass > 0.0 ? p.momentum[c] / p.mass : 0.0);
   });
   each([&](const solver::PartSums& p) { out.real(p.mass); });
-  each([&](const solver::PartSums& p) { out.real(p.hourglass); });
+  // The database has no drilling term: the shells' drilling-constraint energy goes with the
+  // hourglass energy, as in the ASCII glstat and matsum.
+  each([&](const solver::PartSums& p) { out.real(p.hourglass + p.drilling); });
 }
 
 // Current coordinates, velocities and accelerations of the nodes, from the ranks owning them.

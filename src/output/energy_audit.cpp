@@ -21,6 +21,7 @@ std::vector<Term> changes(const solver::Energies& a, const solver::Energies& b) 
   return {{"kinetic", b.kinetic - a.kinetic},
           {"internal", b.internal - a.internal},
           {"hourglass", b.hourglass - a.hourglass},
+          {"drilling", b.drilling - a.drilling},
           {"contact", b.contact - a.contact},
           {"stonewall", b.rigidwall - a.rigidwall},
           {"damping", b.damping - a.damping},

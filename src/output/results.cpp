@@ -41,9 +41,10 @@ long peakMemoryBytes() {
 namespace {
 const std::vector<std::string> kGlstatColumns = {
     "time",          "cycle", "dt",           "kinetic",   "internal",   "hourglass", "contact",
-    "external_work", "total", "energy_ratio", "rigidwall", "added_mass", "damping"};
-const std::vector<std::string> kMatsumColumns = {
-    "time", "part", "kinetic", "internal", "hourglass", "x_momentum", "y_momentum", "z_momentum"};
+    "external_work", "total", "energy_ratio", "rigidwall", "added_mass", "damping",   "drilling"};
+const std::vector<std::string> kMatsumColumns = {"time",       "part",       "kinetic",
+                                                 "internal",   "hourglass",  "x_momentum",
+                                                 "y_momentum", "z_momentum", "drilling"};
 const std::vector<std::string> kNodoutColumns = {"time", "node", "x",  "y",  "z",  "dx", "dy",
                                                  "dz",   "vx",   "vy", "vz", "ax", "ay", "az"};
 const std::vector<std::string> kRwforcColumns = {"time", "wall", "fn", "fx", "fy", "fz"};
@@ -346,16 +347,19 @@ ascii::GlstatSample ResultsWriter::glstatSample(const solver::Solver& s,
   g.dt = s.dt();
   g.kinetic = e.kinetic;
   g.internal = e.internal;
-  g.hourglass = e.hourglass;
+  // LS-DYNA's glstat has no drilling term: the shells' drilling-constraint energy is shown
+  // with the hourglass energy there (stabilisation energy), so that its total adds up.
+  g.hourglass = e.hourglass + e.drilling;
   g.contact = e.contact;
   g.external_work = e.external_work;
   g.eroded_internal = eroded.internal;
-  g.eroded_hourglass = eroded.hourglass;
+  g.eroded_hourglass = eroded.hourglass + eroded.drilling;
   g.total = e.total;
   g.ratio = e.ratio;
   // The eroded energies stay in Crumple's sums (summary.json "eroded_internal_energy").
   g.ratio_without_eroded =
-      e.total != 0.0 ? e.ratio * (e.total - eroded.internal - eroded.hourglass) / e.total : e.ratio;
+      e.total != 0.0 ? e.ratio * (e.total - eroded.internal - g.eroded_hourglass) / e.total
+                     : e.ratio;
   g.stonewall = !model_.rigid_walls.empty();
   g.stonewall_energy = e.rigidwall;
   g.damping = e.damping;
@@ -371,7 +375,8 @@ void ResultsWriter::writeGlstat(const solver::Solver& s) {
   const double t = s.time();
   if (root)
     glstat_csv_.row({t, double(s.cycle()), s.dt(), e.kinetic, e.internal, e.hourglass, e.contact,
-                     e.external_work, e.total, e.ratio, e.rigidwall, s.addedMass(), e.damping});
+                     e.external_work, e.total, e.ratio, e.rigidwall, s.addedMass(), e.damping,
+                     e.drilling});
   if (root) glstat_csv_.flush();
   if (model_.controls.ascii.glstat) {
     const ascii::GlstatSample g = glstatSample(s, e);  // collective
@@ -390,12 +395,12 @@ void ResultsWriter::writeMatsum(const solver::Solver& s) {
   std::vector<ascii::MatsumPart> parts;
   for (const auto& p : sums) {
     matsum_csv_.row({t, double(p.part_id), p.kinetic, p.internal, p.hourglass, p.momentum[0],
-                     p.momentum[1], p.momentum[2]});
+                     p.momentum[1], p.momentum[2], p.drilling});
     ascii::MatsumPart m;
     m.id = p.part_id;
     m.internal = p.internal;
     m.kinetic = p.kinetic;
-    m.hourglass = p.hourglass;
+    m.hourglass = p.hourglass + p.drilling;  // as glstat's: LS-DYNA's files know no drilling
     m.momentum = {p.momentum[0], p.momentum[1], p.momentum[2]};
     parts.push_back(m);
   }
@@ -778,15 +783,11 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
                  {"shells", sd.global_family[std::size_t(model::Family::Shell)]},
                  {"beams", sd.global_family[std::size_t(model::Family::Beam)]},
                  {"discretes", sd.global_family[std::size_t(model::Family::Discrete)]}};
-  j["energy"] = {{"kinetic", e.kinetic},
-                 {"internal", e.internal},
-                 {"hourglass", e.hourglass},
-                 {"contact", e.contact},
-                 {"external_work", e.external_work},
-                 {"rigidwall", e.rigidwall},
-                 {"damping", e.damping},
-                 {"total", e.total},
-                 {"ratio", e.ratio}};
+  j["energy"] = {{"kinetic", e.kinetic},     {"internal", e.internal},
+                 {"hourglass", e.hourglass}, {"drilling", e.drilling},
+                 {"contact", e.contact},     {"external_work", e.external_work},
+                 {"rigidwall", e.rigidwall}, {"damping", e.damping},
+                 {"total", e.total},         {"ratio", e.ratio}};
   const auto& audit = audit_.summary();
   j["energy_audit"] = {{"band", {EnergyAudit::kLow, EnergyAudit::kHigh}},
                        {"min_ratio", audit.min_ratio},
@@ -807,6 +808,7 @@ void ResultsWriter::writeSummary(const solver::Solver& s, const RunInfo& info) c
   j["eroded_mass"] = eroded_sums.mass;
   j["eroded_internal_energy"] = eroded_sums.internal;
   j["eroded_hourglass_energy"] = eroded_sums.hourglass;
+  j["eroded_drilling_energy"] = eroded_sums.drilling;
   j["initial_dt"] = s.initialDt();
   j["peak_memory_bytes"] = peak;  // the largest rank
   j["communication_s"] = s.timing().communication;

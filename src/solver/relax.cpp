@@ -100,7 +100,7 @@ Solver::Relaxation Solver::relax() {
   r.cycles = cycle_;
   r.time = time_;
   const Energies e = energies();
-  r.energy = e.internal + e.hourglass;
+  r.energy = e.internal + e.hourglass + e.drilling;
   startTransient();
   return r;
 }

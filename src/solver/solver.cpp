@@ -746,7 +746,7 @@ std::string Solver::mostEnergeticElement() const {
 
 ErodedSums Solver::eroded() const {
   // Per-element values summed in block order, then over ranks in rank order.
-  double mass = 0.0, internal = 0.0, hourglass = 0.0;
+  double mass = 0.0, internal = 0.0, hourglass = 0.0, drilling = 0.0;
   auto add = [&](const auto& blk, auto&& element_mass) {
     if (blk.active.empty()) return;
     for (std::size_t e = 0; e < blk.size(); ++e) {
@@ -754,6 +754,7 @@ ErodedSums Solver::eroded() const {
       mass += element_mass(e);
       internal += blk.e_int[e];
       if constexpr (requires { blk.e_hg; }) hourglass += blk.e_hg[e];
+      if constexpr (requires { blk.e_drill; }) drilling += blk.e_drill[e];
     }
   };
   for (const auto& blk : sd_.solid_blocks)
@@ -764,8 +765,8 @@ ErodedSums Solver::eroded() const {
     add(sd_.shell_blocks[ib], [&](std::size_t e) { return shell_mass_[ib][e]; });
   for (std::size_t ib = 0; ib < sd_.beam_blocks.size(); ++ib)
     add(sd_.beam_blocks[ib], [&](std::size_t e) { return beam_mass_[ib][e]; });
-  const auto sums = comm_.sumOrdered({mass, internal, hourglass});
-  return {static_cast<int64_t>(comm_.sumAll(eroded_)), sums[0], sums[1], sums[2]};
+  const auto sums = comm_.sumOrdered({mass, internal, hourglass, drilling});
+  return {static_cast<int64_t>(comm_.sumAll(eroded_)), sums[0], sums[1], sums[2], sums[3]};
 }
 
 namespace {
@@ -782,6 +783,7 @@ Energies Solver::energies() const {
       for (std::size_t k = 0; k < blk.size(); ++k) {
         e.internal += blk.e_int[k];
         if constexpr (requires { blk.e_hg; }) e.hourglass += blk.e_hg[k];
+        if constexpr (requires { blk.e_drill; }) e.drilling += blk.e_drill[k];
       }
   });
   for (double u : sd_.sph.e_int) e.internal += u;
@@ -810,14 +812,16 @@ Energies Solver::energies() const {
   double damping = -(damping_work_ - damping_ahead_);
   for (const auto& blk : sd_.beam_blocks)
     for (double d : blk.e_damp) damping += d;
-  const auto sums = comm_.sumOrdered({e.kinetic, e.internal, e.hourglass,
-                                      external_work_ - work_ahead_, rigidwall_energy_, damping});
+  const auto sums =
+      comm_.sumOrdered({e.kinetic, e.internal, e.hourglass, external_work_ - work_ahead_,
+                        rigidwall_energy_, damping, e.drilling});
   e.kinetic = sums[0];
   e.internal = sums[1];
   e.hourglass = sums[2];
   e.external_work = sums[3];
   e.rigidwall = sums[4];
   e.damping = sums[5];
+  e.drilling = sums[6];
   e.kinetic += boundary_.wallKineticEnergy();  // the same on every rank: added once
   // Rigid bodies: translation and rotation of the body (the energy its integrator keeps;
   // with *PART_INERTIA the nodal masses are not the body's), the same on every rank.
@@ -826,7 +830,7 @@ Energies Solver::energies() const {
     e.internal += rigid_->jointEnergy();
   }
   if (contact_) e.contact = contact_->energy();
-  e.total = e.kinetic + e.internal + e.hourglass + e.contact + e.rigidwall + e.damping;
+  e.total = e.kinetic + e.internal + e.hourglass + e.contact + e.rigidwall + e.damping + e.drilling;
   e.initial = initial_energy_;
   const double reference = initial_energy_ + e.external_work;
   e.ratio = reference != 0.0 ? e.total / reference : 1.0;
@@ -834,9 +838,9 @@ Energies Solver::energies() const {
 }
 
 std::vector<PartSums> Solver::partSums() const {
-  // Eight sums per model part (element count, kinetic, internal, hourglass, momentum, mass),
-  // added over this rank's blocks and then over ranks in rank order.
-  constexpr std::size_t kFields = 8;
+  // Nine sums per model part (element count, kinetic, internal, hourglass, momentum, mass,
+  // drilling), added over this rank's blocks and then over ranks in rank order.
+  constexpr std::size_t kFields = 9;
   std::vector<double> local(kFields * model_.parts.size(), 0.0);
   for (const auto& blk : sd_.solid_blocks) {
     double* p = &local[kFields * static_cast<std::size_t>(blk.part)];
@@ -879,8 +883,10 @@ std::vector<PartSums> Solver::partSums() const {
       p[0] += double(blk.size());
       for (std::size_t k = 0; k < blk.size(); ++k) {
         p[2] += blk.e_int[k];
-        if constexpr (std::is_same_v<std::decay_t<decltype(blk)>, domain::ShellBlock>)
+        if constexpr (std::is_same_v<std::decay_t<decltype(blk)>, domain::ShellBlock>) {
           p[3] += blk.e_hg[k];
+          p[8] += blk.e_drill[k];
+        }
         const auto& conn = blk.conn[k];
         const std::size_t corners =
             conn.size() == 4 && conn[2] == conn[3] ? 3 : 2 + (conn.size() == 4 ? 2 : 0);
@@ -926,6 +932,7 @@ std::vector<PartSums> Solver::partSums() const {
     ps.hourglass = p[3];
     for (int c = 0; c < 3; ++c) ps.momentum[c] = p[4 + c];
     ps.mass = p[7];
+    ps.drilling = p[8];
     out.push_back(ps);
   }
   return out;

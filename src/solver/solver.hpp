@@ -40,13 +40,16 @@ struct Energies {
   double kinetic = 0, internal = 0, hourglass = 0, contact = 0, external_work = 0;
   double rigidwall = 0;  // energy absorbed by stonewalls
   double damping = 0;    // energy taken out by *DAMPING_ mass and stiffness damping
+  // Work of the shells' drilling-rotation constraint (src/elements/shell.cpp): Crumple's own
+  // penalty, booked apart from the hourglass energy (LS-DYNA's shells have no such term).
+  double drilling = 0;
   double total = 0, initial = 0, ratio = 1;
 };
 
 // Per-part sums for matsum.
 struct PartSums {
   int64_t part_id = 0;
-  double kinetic = 0, internal = 0, hourglass = 0;
+  double kinetic = 0, internal = 0, hourglass = 0, drilling = 0;
   double momentum[3] = {0, 0, 0};
   double mass = 0;  // the mass the kinetic energy and momentum above count (d3plot part mass)
 };
@@ -55,7 +58,7 @@ struct PartSums {
 // internal and hourglass energy they held when they were removed.
 struct ErodedSums {
   int64_t elements = 0;
-  double mass = 0, internal = 0, hourglass = 0;
+  double mass = 0, internal = 0, hourglass = 0, drilling = 0;
 };
 
 struct Timing {

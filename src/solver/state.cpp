@@ -78,6 +78,7 @@ void visitShell(B& b, std::size_t e, F&& f) {
   f(b.thick[e]);
   f(b.e_int[e]);
   f(b.e_hg[e]);
+  f(b.e_drill[e]);
   f(b.active[e]);
   f(b.failed[e]);
   for (int k = 0; k < b.sigFields(); ++k) f(b.sig[b.blocked(b.sigFields(), k, e)]);

@@ -105,8 +105,8 @@ class BarImpactResults(unittest.TestCase):
         for key, value in (("nodes", NODES), ("solids", SOLIDS), ("shells", 0), ("beams", 0)):
             self.assertEqual(s["counts"].get(key), value, f"counts.{key}")
         energy = s["energy"]
-        for key in ("kinetic", "internal", "hourglass", "contact", "external_work", "total",
-                    "ratio"):
+        for key in ("kinetic", "internal", "hourglass", "drilling", "contact", "external_work",
+                    "total", "ratio"):
             self.assertIn(key, energy, f"summary.json energy lacks '{key}'")
             self.assertTrue(math.isfinite(energy[key]), key)
         self.assertAlmostEqual(energy["ratio"], 1.0, delta=0.01)

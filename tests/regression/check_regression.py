@@ -25,6 +25,7 @@ TOLERANCES = {
     "kinetic": 1e-6,
     "internal": 1e-6,
     "hourglass": 1e-5,
+    "drilling": 1e-5,
     "external_work": 1e-6,
     "rigidwall": 1e-5,
     "total": 1e-6,
@@ -45,7 +46,7 @@ def summarise(crumple: str, source: str, case: dict, tmp: str) -> dict:
         s = json.load(f)
     e = s["energy"]
     return {"cycles": s["cycles"], "initial_dt": s["initial_dt"], "kinetic": e["kinetic"],
-            "internal": e["internal"], "hourglass": e["hourglass"],
+            "internal": e["internal"], "hourglass": e["hourglass"], "drilling": e["drilling"],
             "external_work": e["external_work"], "rigidwall": e["rigidwall"], "total": e["total"],
             "added_mass": s["mass"]["added"], "eroded_elements": s["eroded_elements"]}
 
