@@ -777,7 +777,7 @@ Model buildModel(const deck::Deck& deck, const std::filesystem::path& path,
   ctx.attempt([&] { finishPlaneSph(ctx); });
   inferUnits(ctx.model);
   ctx.attempt([&] { noteDegenerateSolids(ctx); });
-  ctx.attempt([&] { refuseQuadraticTetFeatures(ctx); });
+  ctx.attempt([&] { finishQuadraticTets(ctx); });
   if (model.nodes.size() == 0)
     ctx.fail(path.string() + ": the deck defines no nodes (*NODE)");
   else if (model.numElements() == 0 && model.sph.size() == 0 && !options.allow_unsupported)

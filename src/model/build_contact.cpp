@@ -176,17 +176,6 @@ Segment solidSegment(const Model& m, const std::array<int32_t, 4>& f, int64_t e,
   return {f, e, 0.0, k, area2 > 0.0 ? vol / std::sqrt(area2) : 0.0, neighbour};
 }
 
-// The mid-side node of 10-node tetrahedron e on the edge between corner nodes a and b (model.hpp:
-// N5 on edge 1-2, N6 2-3, N7 3-1, N8 1-4, N9 2-4, N10 3-4).
-int32_t edgeMidNode(const Model& m, std::size_t e, int32_t a, int32_t b) {
-  static constexpr int kMid[4][4] = {{-1, 0, 2, 3}, {0, -1, 1, 4}, {2, 1, -1, 5}, {3, 4, 5, -1}};
-  const auto& n = m.solids.nodes[e];
-  auto corner = [&](int32_t node) {
-    return static_cast<int>(std::find(n.begin(), n.begin() + 4, node) - n.begin());
-  };
-  return m.solids.mid[e][std::size_t(kMid[corner(a)][corner(b)])];
-}
-
 // A face (a, b, c) of a 10-node tetrahedron as the four flat triangles its mid-side nodes cut
 // it into, each turned as the face: a contact segment of 3 or 4 nodes is flat, and the six-node
 // face's corners alone would leave its mid-side nodes out of contact (docs/theory.md, "The
@@ -195,17 +184,13 @@ int32_t edgeMidNode(const Model& m, std::size_t e, int32_t a, int32_t b) {
 // K A^2 / (V / 8) and depth (V / 8) / A are that tetrahedron's.
 void appendQuadraticFace(const Model& m, const Segment& face, std::vector<Segment>& out) {
   const auto e = static_cast<std::size_t>(face.element);
-  const int32_t a = face.nodes[0], b = face.nodes[1], c = face.nodes[2];
-  const int32_t ab = edgeMidNode(m, e, a, b), bc = edgeMidNode(m, e, b, c),
-                ca = edgeMidNode(m, e, c, a);
   // K / V of the element from the face's K A^2 / V.
   const Vec3 face_area = areaVector(m, face.nodes);
   const double face_a2 = dot(face_area, face_area);
   const double k_per_a2 = face_a2 > 0.0 ? face.stiffness / face_a2 : 0.0;
   const double volume = face.depth * std::sqrt(face_a2);
   for (const std::array<int32_t, 4>& t :
-       {std::array<int32_t, 4>{a, ab, ca, ca}, std::array<int32_t, 4>{ab, b, bc, bc},
-        std::array<int32_t, 4>{ca, bc, c, c}, std::array<int32_t, 4>{ab, bc, ca, ca}}) {
+       quadraticFaceTriangles(m, e, face.nodes[0], face.nodes[1], face.nodes[2])) {
     const Vec3 av = areaVector(m, t);
     const double a2 = dot(av, av);
     out.push_back({t, face.element, 0.0, 8.0 * k_per_a2 * a2,

@@ -284,10 +284,16 @@ void finishPlaneSph(Context&);
 void readControlSolid(Context&, const deck::Keyword&, const KeywordOptions&);
 // After every keyword: the degenerate solids that run as hexahedra, noted per part.
 void noteDegenerateSolids(Context&);
-// Refuses what needs the faces or the element records of 10-node tetrahedra (ELFORM 16) and
-// Crumple does not give them yet: contact surfaces, the d3plot database, cross sections and
-// element histories (build_mesh.cpp).
-void refuseQuadraticTetFeatures(Context&);
+// Pressure, airbag and blast segments on the faces of 10-node tetrahedra (ELFORM 16) become
+// the face's four flat triangles (quadraticFaceTriangles); refuses what needs the element
+// records of 10-node tetrahedra and Crumple does not give them yet: cross sections and element
+// histories (build_mesh.cpp).
+void finishQuadraticTets(Context&);
+// The four flat triangles (a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca) that the
+// mid-side nodes ab, bc, ca of 10-node tetrahedron e cut its face (a, b, c) into, each turned as
+// the face and written as a 3-node segment (N4 = N3); build_mesh.cpp.
+std::array<std::array<int32_t, 4>, 4> quadraticFaceTriangles(const Model& m, std::size_t e,
+                                                             int32_t a, int32_t b, int32_t c);
 // After every keyword (build_planar.cpp): the checks of 2D solids (*SECTION_SHELL ELFORM 13,
 // 15): their laws and hourglass types, a model of 2D solids only, radii x >= 0; their nodes'
 // z and rotational freedoms are held by SPCs.

@@ -801,7 +801,100 @@ void noteDegenerateSolids(Context& ctx) {
   }
 }
 
-void refuseQuadraticTetFeatures(Context& ctx) {
+namespace {
+
+// The mid-side node of 10-node tetrahedron e on the edge between corner nodes a and b (model.hpp:
+// N5 on edge 1-2, N6 2-3, N7 3-1, N8 1-4, N9 2-4, N10 3-4).
+int32_t edgeMidNode(const Model& m, std::size_t e, int32_t a, int32_t b) {
+  static constexpr int kMid[4][4] = {{-1, 0, 2, 3}, {0, -1, 1, 4}, {2, 1, -1, 5}, {3, 4, 5, -1}};
+  const auto& n = m.solids.nodes[e];
+  auto corner = [&](int32_t node) {
+    return static_cast<int>(std::find(n.begin(), n.begin() + 4, node) - n.begin());
+  };
+  return m.solids.mid[e][std::size_t(kMid[corner(a)][corner(b)])];
+}
+
+using CornerKey = std::array<int32_t, 3>;
+CornerKey cornerKey(int32_t a, int32_t b, int32_t c) {
+  CornerKey k{a, b, c};
+  std::sort(k.begin(), k.end());
+  return k;
+}
+
+// Each face of a 10-node tetrahedron by its sorted corners, with the first element (in
+// element order) it bounds.
+std::map<CornerKey, std::size_t> quadraticFaces(const Model& m) {
+  static constexpr int kFace[4][3] = {{0, 1, 2}, {0, 1, 3}, {1, 2, 3}, {0, 2, 3}};
+  std::map<CornerKey, std::size_t> faces;
+  for (std::size_t e = 0; e < m.solids.size(); ++e) {
+    if (!m.solids.quadratic(e)) continue;
+    const auto& n = m.solids.nodes[e];
+    for (const auto& f : kFace)
+      faces.emplace(cornerKey(n[std::size_t(f[0])], n[std::size_t(f[1])], n[std::size_t(f[2])]), e);
+  }
+  return faces;
+}
+
+// Pressure, airbag and blast segments on 10-node tetrahedra: a segment naming the three corners
+// of a face (N4 = N3, as preprocessors write them) becomes the four flat triangles the mid-side
+// nodes cut the face into, in its place and with its load, so that the mid-side nodes carry
+// their share (a uniform pressure puts 1/4 of the face's load on each triangle, 1/12 on each of
+// its nodes: 1/12 on a corner and 1/4 on a mid-side node, the face's total force and centre
+// kept; docs/theory.md, "The 10-node tetrahedron"). Airbags keep their range of segments.
+void splitQuadraticPressureSegments(Context& ctx, const std::vector<char>& on_tet10,
+                                    const std::string& element) {
+  Model& m = ctx.model;
+  const auto faces = quadraticFaces(m);
+  std::vector<PressureLoad> out;
+  std::vector<std::size_t> start(m.pressure_loads.size() + 1, 0);
+  for (std::size_t i = 0; i < m.pressure_loads.size(); ++i) {
+    start[i] = out.size();
+    const PressureLoad& p = m.pressure_loads[i];
+    const auto& n = p.nodes;
+    if (std::none_of(n.begin(), n.end(), [&](int32_t k) { return on_tet10[std::size_t(k)]; })) {
+      out.push_back(p);
+      continue;
+    }
+    const auto face = n[2] == n[3] ? faces.find(cornerKey(n[0], n[1], n[2])) : faces.end();
+    if (face == faces.end()) {
+      ctx.fail(m.deck_path + ": " +
+               (p.airbag != kNone  ? "*AIRBAG"
+                : p.blast != kNone ? "*LOAD_BLAST_SEGMENT_SET"
+                                   : "*LOAD_SEGMENT") +
+               ": a segment on 10-node tetrahedra must name the three corner nodes of an "
+               "element face (N4 = N3); segment " +
+               fmt::format("{} {} {} {}", m.nodes.id[std::size_t(n[0])],
+                           m.nodes.id[std::size_t(n[1])], m.nodes.id[std::size_t(n[2])],
+                           m.nodes.id[std::size_t(n[3])]) +
+               " is not (" + element + ")");
+      return;
+    }
+    for (const auto& t : quadraticFaceTriangles(m, face->second, n[0], n[1], n[2])) {
+      PressureLoad q = p;
+      q.nodes = t;
+      out.push_back(q);
+    }
+  }
+  start.back() = out.size();
+  for (auto& bag : m.airbags) {
+    const std::size_t last = bag.first + bag.count;
+    bag.first = start[bag.first];
+    bag.count = start[last] - bag.first;
+  }
+  m.pressure_loads = std::move(out);
+}
+
+}  // namespace
+
+std::array<std::array<int32_t, 4>, 4> quadraticFaceTriangles(const Model& m, std::size_t e,
+                                                             int32_t a, int32_t b, int32_t c) {
+  const int32_t ab = edgeMidNode(m, e, a, b), bc = edgeMidNode(m, e, b, c),
+                ca = edgeMidNode(m, e, c, a);
+  return {std::array<int32_t, 4>{a, ab, ca, ca}, std::array<int32_t, 4>{ab, b, bc, bc},
+          std::array<int32_t, 4>{ca, bc, c, c}, std::array<int32_t, 4>{ab, bc, ca, ca}};
+}
+
+void finishQuadraticTets(Context& ctx) {
   const Model& m = ctx.model;
   if (m.solids.mid.empty()) return;
   std::size_t first = m.solids.size();  // the first 10-node tetrahedron
@@ -815,18 +908,7 @@ void refuseQuadraticTetFeatures(Context& ctx) {
   if (first == m.solids.size()) return;
   const std::string element = "solid element " + std::to_string(m.solids.id[first]) +
                               " is a 10-node tetrahedron (*SECTION_SOLID ELFORM 16)";
-  // Pressure, airbag and blast segments: a 3- or 4-node segment on a quadratic face would load
-  // the corners only (the consistent load of a 6-node face puts it on the mid-side nodes).
-  for (const auto& p : m.pressure_loads)
-    if (std::any_of(p.nodes.begin(), p.nodes.end(),
-                    [&](int32_t n) { return on_tet10[std::size_t(n)] != 0; })) {
-      ctx.fail(m.deck_path + ": " +
-               (p.airbag != kNone  ? "*AIRBAG"
-                : p.blast != kNone ? "*LOAD_BLAST_SEGMENT_SET"
-                                   : "*LOAD_SEGMENT") +
-               ": a segment on 10-node tetrahedra is not supported (" + element + ")");
-      break;
-    }
+  splitQuadraticPressureSegments(ctx, on_tet10, element);
   if (!m.cross_sections.empty())
     ctx.fail(m.deck_path + ": *DATABASE_CROSS_SECTION: section forces through 10-node " +
              "tetrahedra are not supported (" + element + ")");

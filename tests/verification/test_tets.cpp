@@ -366,6 +366,61 @@ TEST(VerificationTets, QuadraticFacesAreContactSurfaces) {
   }
 }
 
+// A free cube of 10-node tetrahedra (2 x 2 x 2 Kuhn cells, 10 mm) with a pressure on its face
+// x = 0, given as the cells' corner triangles (N4 = N3, turned out of the cube): each becomes
+// the four flat triangles of the quadratic face (src/model/build_mesh.cpp), mid-side nodes
+// loaded too, and the cube takes the impulse p A t as the hexahedra do
+// (VerificationLoads.PressureSegmentImpulse). A segment on the element's nodes that is not a
+// face's corners is refused, naming its nodes.
+TEST(VerificationTets, QuadraticFacePressureImpulse) {
+  const double p = 0.01, t_end = 0.1, A = 100.0;
+  auto id = [](int j, int k) { return 1 + 3 * (j + 3 * k); };  // corner node (0, j, k)
+  std::string segs = "*SET_SEGMENT\n         1\n";
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j) {
+      // The cell's corners h0 (j, k), h3 (j+1, k), h4 (j, k+1), h7 (j+1, k+1): its Kuhn
+      // tetrahedra have the face triangles (h0 h4 h7) and (h0 h7 h3), normal -x.
+      const int h0 = id(j, k), h3 = id(j + 1, k), h4 = id(j, k + 1), h7 = id(j + 1, k + 1);
+      segs += fmt::format("{:10d}{:10d}{:10d}{:10d}\n{:10d}{:10d}{:10d}{:10d}\n", h0, h4, h7, h7,
+                          h0, h7, h3, h3);
+    }
+  const std::string load = kSteel + termination(t_end) + segs +
+                           "*DEFINE_CURVE\n         1\n                 0.0                 1.0\n"
+                           "               100.0                 1.0\n"
+                           "*LOAD_SEGMENT_SET\n$     ssid      lcid        sf\n"
+                           "         1         1      0.01\n";
+  auto sim = Simulation::fromText("tet10_pressure", tet10Deck(2, 2, 2, 10, 10, 10, load));
+  // Eight corner triangles, four flat triangles each, tiling the face: every node of the face
+  // (9 corners, 16 mid-side nodes) is loaded.
+  const auto& loads = sim->model.pressure_loads;
+  ASSERT_EQ(loads.size(), 32U);
+  std::set<int32_t> loaded;
+  for (const auto& s : loads) loaded.insert(s.nodes.begin(), s.nodes.end());
+  EXPECT_EQ(loaded.size(), 25U);
+  sim->run();
+  const double t_half = sim->solver->time() - 0.5 * sim->solver->dt();
+  std::printf("[ figure ] tet10 face pressure impulse / (p A t) = %.6f\n",
+              sim->momentum(0) / (p * A * t_half));
+  EXPECT_NEAR(sim->momentum(0), p * A * t_half, 1e-4 * p * A * t_end);
+  // The Kuhn cells are not symmetric about the face's centre: the follower pressure tilts with
+  // the face as it deforms (measured 3.7e-6 of the impulse sideways).
+  EXPECT_NEAR(sim->momentum(1), 0.0, 2e-5 * p * A * t_end);
+  EXPECT_NEAR(sim->momentum(2), 0.0, 2e-5 * p * A * t_end);
+  // A 4-node segment on the face's corners is not a face of the element.
+  std::string quad =
+      "*SET_SEGMENT\n         1\n" +
+      fmt::format("{:10d}{:10d}{:10d}{:10d}\n", id(0, 0), id(0, 1), id(1, 1), id(1, 0));
+  std::string bad = load;
+  bad.replace(bad.find("*SET_SEGMENT"), segs.size(), quad);
+  try {
+    Simulation::fromText("tet10_pressure_quad", tet10Deck(2, 2, 2, 10, 10, 10, bad));
+    ADD_FAILURE() << "a 4-node segment on 10-node tetrahedra was accepted";
+  } catch (const crumple::util::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("must name the three corner nodes"), std::string::npos)
+        << e.what();
+  }
+}
+
 // What the 10-node tetrahedra do not have yet is refused by name, and so are ELFORM 17 and
 // *ELEMENT_SOLID_TET4TOTET10 (the d3plot they have: tests/cli/test_cli_d3plot.py).
 TEST(VerificationTets, QuadraticRefusesWhatItCannotRun) {
