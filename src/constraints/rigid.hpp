@@ -116,7 +116,9 @@ class RigidBodies {
   // 1 / (1/m + |r|^2 / I_min)): the joint's own frequency then stays below the step's limit
   // (omega dt <= sqrt(RPS / 2)), as LS-DYNA scales its joint penalty with the masses and the
   // time step (Theory Manual, "Rigid Body Joints"). Damping is 10% of critical, times DAMP.
-  void addJointForces(double dt, domain::Subdomain& sd, const comm::Communicator& comm);
+  // dt_velocity: the step the velocities take with these forces (the damper's work).
+  void addJointForces(double dt, double dt_velocity, domain::Subdomain& sd,
+                      const comm::Communicator& comm);
   // The joints' forces on this rank's copies of their nodes in the last addJointForces, as
   // (local node, force): they sit in f_ext, and the solver takes their work back out of the
   // external work (their energy is internal, jointEnergy()).
@@ -223,9 +225,9 @@ class RigidBodies {
     bool across = false;
     std::size_t axis = 0;
     double dissipated = 0.0;
-    // The damper's force and the relative velocity of the last call, and its step: the
-    // damper's work over that step at the mean of that and the new relative velocity.
-    Vec3 damper{}, dv_last{};
+    // The damper's force of the last call and the velocity step it acted over: the second
+    // half of its work is booked at the next call, at the relative velocity it produced.
+    Vec3 damper{};
     double dt_last = 0.0;
   };
 

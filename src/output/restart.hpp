@@ -31,7 +31,8 @@ namespace crumple::output {
 // 5: contact keeps the penalty energy each node check held last cycle (booked as contact
 // energy when the check ends while penetrated), and *MAT_JOHNSON_COOK a sixth history
 // variable (the spall flag).
-// 6: shells keep their drilling-constraint energy apart from the hourglass energy.
+// 6: shells keep their drilling-constraint energy apart from the hourglass energy; joints no
+// longer keep their dampers' last relative velocity.
 inline constexpr uint32_t kDumpVersion = 6;
 
 // One part of the state. `save` is collective (every rank calls every section's save, in

@@ -449,16 +449,16 @@ void Solver::step() {
   }
   dt_next_ = next.dt;
   dt_elem_ = next.element;
-  computeExternalForces();
-  // Elements eroded in this pass leave the contact surfaces before contact is computed.
-  if (contact_ && eroded_ != eroded_before) contact_->noteErosion();
-  computeContactForces();
   // Land exactly on the end time rather than overshoot it.
   double dt_half = dt_next_;
   const double remaining = end_time_ - time_;
   if (remaining > 0.0 && dt_half > remaining) dt_half = remaining;
   // dt(n) centred on t(n); the first cycle starts from v(-1/2) = v(0) with half a step.
   const double dt_n = cycle_ == 0 ? 0.5 * dt_half : 0.5 * (dt_ + dt_half);
+  computeExternalForces(dt_n);
+  // Elements eroded in this pass leave the contact surfaces before contact is computed.
+  if (contact_ && eroded_ != eroded_before) contact_->noteErosion();
+  computeContactForces();
   updateVelocities(dt_n);
   addExternalWork(dt_n, applyConstraints(dt_n, dt_half));
   updatePositions(dt_half);
@@ -575,13 +575,13 @@ Solver::StableStep Solver::stableTimeStep(const ElementPass& pass) const {
   return {dt, element};
 }
 
-void Solver::computeExternalForces() {
+void Solver::computeExternalForces(double dt_n) {
   util::ScopedTimer timer(timing_.constraints);
   boundary_.externalForces(time_, sd_, sd_.f_ext);
   boundary_.addAirbagDamping(sd_, comm_);
   if (!damping_.empty()) damping_.addForces(model_, time_, sd_);
   if (rigid_) {
-    rigid_->addJointForces(dt_next_, sd_, comm_);
+    rigid_->addJointForces(dt_next_, dt_n, sd_, comm_);
     rigid_->computeBodyLoads(time_);
   }
 }

@@ -169,7 +169,8 @@ class Solver {
     int64_t element = -1;  // global element index; -1: none
   };
   StableStep stableTimeStep(const ElementPass& pass) const;
-  void computeExternalForces();
+  // dt_n: the velocity step these forces act over (half a step in the first cycle).
+  void computeExternalForces(double dt_n);
   void computeContactForces();
   // a = F/m and v(n+1/2), omega(n+1/2) over dt(n); keeps v(n-1/2) and notes non-finite values.
   void updateVelocities(double dt_n);
