@@ -99,9 +99,9 @@ void ignoreNonZero(LawInput& in, const deck::Card& c,
 // The layer's strain limits (Keyword Manual vol. II, *MAT_054-055, cards 4 and 5): DFAILT the
 // fibre tension strain, DFAILC the fibre compression strain (negative, required with DFAILT >
 // 0), DFAILM the matrix strain in tension or compression and DFAILS the tensor shear strain
-// (both positive, "active only ... if DFAILT > 0"), EFS the effective strain; all "MAT_054
-// only", so noted as ignored with CRIT 55. EFS < 0 (the manual's full-tensor effective strain)
-// is refused.
+// (both positive, acting only when DFAILT > 0), EFS the effective strain; the manual restricts
+// all of them to MAT_054, so they are noted as ignored with CRIT 55. EFS < 0 (the manual's
+// full-tensor effective strain) is refused.
 void readStrainLimits(LawInput& in, const deck::Card& c4, const deck::Card& c5,
                       EnhancedComposite::Params& p) {
   auto& l = p.lim;
@@ -344,8 +344,8 @@ NewModes checkCriteria(const EnhancedComposite& m, PointState& p) {
 }
 
 // The stresses of the failed modes: held between -SLIMC x strength and SLIMT x strength where
-// a residual factor is set (the *MAT_058-like "minimum stress limit after stress maximum" of
-// *MAT_054's SLIMT1 ... SLIMS; an elastic-perfectly plastic plateau), else dropped when the
+// a residual factor is set (*MAT_054's SLIMT1 ... SLIMS: the stress a mode keeps once past its
+// maximum, as in *MAT_058; an elastic-perfectly plastic plateau), else dropped when the
 // mode is reached (its modulus is then zero). Fibre tension drops the matrix and the shear too
 // (Eb = Gab = 0, the manual's degradation).
 void failedModeStresses(const EnhancedComposite& m, PointState& p, const NewModes& n) {

@@ -24,9 +24,9 @@
 // carries nothing: failed); fibre compression Ea = nu = 0 (s_aa dropped); matrix (either)
 // Eb = Gab = nu = 0 (s_bb, s_ab dropped). After matrix compression the fibre strengths become
 // Xc = YCFAC Yc and, with FBRT > 0, Xt = FBRT Xt.
-// Residual strength (SLIMT1, SLIMC1, SLIMT2, SLIMC2, SLIMS, *MAT_054 only; the manual: "factor
-// to determine the minimum stress limit after stress maximum", as *MAT_058): a failed mode with
-// a factor > 0 keeps its modulus and its stress is held within the factor times the strength
+// Residual strength (SLIMT1, SLIMC1, SLIMT2, SLIMC2, SLIMS, *MAT_054 only; the manual defines
+// them as the lower stress limit a mode keeps once past its maximum, as *MAT_058): a failed mode
+// with a factor > 0 keeps its modulus and its stress is held within the factor times the strength
 // (elastic-perfectly plastic), instead of dropping to zero.
 // Layer failure (Keyword Manual, *MAT_054 remarks: a layer fails by one of these rules; the
 // element is deleted when all its layers have failed): DFAILT = 0, the fibre tension
