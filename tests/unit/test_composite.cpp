@@ -39,7 +39,7 @@ m::EnhancedComposite::Params plyParams(int crit = 54, double beta = 0.0) {
 
 // One point: stress (xx, yy, xy) in, strain increment (tensor shear) in, at layer angle ply.
 struct Point {
-  double s[3] = {}, de[3] = {}, dzz = 0, h[4] = {}, ply = 0;
+  double s[3] = {}, de[3] = {}, dzz = 0, h[m::EnhancedComposite::kHistory] = {}, ply = 0;
   uint8_t failed = 0;
   void update(const m::EnhancedComposite& law) {
     m::PlaneStressPoints b;
@@ -48,7 +48,7 @@ struct Point {
       b.s[k] = &s[k];
       b.de[k] = &de[k];
     }
-    for (int k = 0; k < 4; ++k) b.h[k] = &h[k];
+    for (int k = 0; k < m::EnhancedComposite::kHistory; ++k) b.h[k] = &h[k];
     b.de_zz = &dzz;
     b.ply = &ply;
     b.failed = &failed;
@@ -237,6 +237,49 @@ TEST(EnhancedComposite, ReadFromTheDeck) {
   EXPECT_EQ(lawOf(pt).deletionStep(), 1e-6);
 }
 
+// The strain limits DFAILM, DFAILS (card 4), DFAILT, DFAILC, EFS (card 5) and the residual
+// strengths SLIMT1, SLIMC1, SLIMT2, SLIMC2, SLIMS (card 8) are read into their parameters. With
+// DFAILT = 0, DFAILC, DFAILM and DFAILS act not (the manual: only with DFAILT > 0): noted and
+// dropped; with CRIT 55 all of them are (*MAT_054 only).
+TEST(EnhancedComposite, StrainLimitsAndResidualStrengthsAreRead) {
+  crumple::testing::TempDir t("crumple_test_composite_limits");
+  const std::string c6 = "1.5,1.5,0.246,0.04,0.068", c8 = "\n0,0,0,0\n0.1,0.2,0.3,0.4,0.5";
+  const auto deck = [&](const std::string& c5, const std::string& card6) {
+    auto d = compositeDeck(c5, card6 + c8);
+    d.replace(d.find("0,0,0,0,0,0,0,0\n"), 16, "0,0,0,0,0,0,0.01,0.015\n");
+    return d;
+  };
+  const auto read = [&](const std::string& name, const std::string& d) {
+    return std::get<m::EnhancedComposite::Params>(
+        crumple::model::readModel(t.write(name, d)).materials.at(0).law);
+  };
+  const auto p = read("a.k", deck("0,0,0,0,0,0.02,-0.03,0.05", c6));
+  EXPECT_EQ(p.lim.dfailm, 0.01);
+  EXPECT_EQ(p.lim.dfails, 0.015);
+  EXPECT_EQ(p.lim.dfailt, 0.02);
+  EXPECT_EQ(p.lim.dfailc, -0.03);
+  EXPECT_EQ(p.lim.efs, 0.05);
+  EXPECT_EQ(p.lim.slimt1, 0.1);
+  EXPECT_EQ(p.lim.slimc1, 0.2);
+  EXPECT_EQ(p.lim.slimt2, 0.3);
+  EXPECT_EQ(p.lim.slimc2, 0.4);
+  EXPECT_EQ(p.lim.slims, 0.5);
+  const auto law = lawOf(p);
+  EXPECT_EQ(law.lim.dfailc, -0.03);
+  EXPECT_EQ(law.lim.slims, 0.5);
+  const auto off = read("b.k", deck("0,0,0,0,0,0,-0.03,0.05", c6));
+  EXPECT_EQ(off.lim.dfailm, 0.0);
+  EXPECT_EQ(off.lim.dfails, 0.0);
+  EXPECT_EQ(off.lim.dfailc, 0.0);
+  EXPECT_EQ(off.lim.efs, 0.05);  // EFS acts alone
+  EXPECT_EQ(off.lim.slimt1, 0.1);
+  const auto p55 = read("c.k", deck("0,0,0,0,0,0.02,-0.03,0.05", c6 + ",55"));
+  for (const double v :
+       {p55.lim.dfailm, p55.lim.dfails, p55.lim.dfailt, p55.lim.dfailc, p55.lim.efs, p55.lim.slimt1,
+        p55.lim.slimc1, p55.lim.slimt2, p55.lim.slimc2, p55.lim.slims})
+    EXPECT_EQ(v, 0.0);
+}
+
 // Errors and refusals name the file, the line, the card and the field.
 TEST(EnhancedComposite, BadOrRefusedFieldsAreErrors) {
   crumple::testing::TempDir t("crumple_test_composite_bad");
@@ -259,8 +302,15 @@ TEST(EnhancedComposite, BadOrRefusedFieldsAreErrors) {
   has(error(compositeDeck(c5, c6, sec, "7.17,3.0,7.17,0,3")),
       k + "6:" + mat + "4 field 1 (V1): AOPT 3 needs a non-zero vector");
   has(error(compositeDeck(c5, c6, sec, "7.17,0,7.17")), k + "4:" + mat + "2 field 2 (GBC)");
-  has(error(compositeDeck("0,0,0,0,0,0.02,-0.02", c6)),
-      k + "7:" + mat + "5 field 6 (DFAILT): strain-based layer failure");
+  has(error(compositeDeck("0,0,0,0,0,-0.02,-0.02", c6)),
+      k + "7:" + mat + "5 field 6 (DFAILT): must not be negative");
+  has(error(compositeDeck("0,0,0,0,0,0.02", c6)),
+      k + "7:" + mat + "5 field 7 (DFAILC): must be negative when DFAILT > 0");
+  has(error(compositeDeck("0,0,0,0,0,0,0,-0.1", c6)),
+      k + "7:" + mat + "5 field 8 (EFS): EFS < 0 (the effective strain of the full strain");
+  auto bad_dfailm = compositeDeck("0,0,0,0,0,0.02,-0.02", c6);
+  bad_dfailm.replace(bad_dfailm.find("0,0,0,0,0,0,0,0\n"), 16, "0,0,0,0,0,0,-0.1,0\n");
+  has(error(bad_dfailm), k + "6:" + mat + "4 field 7 (DFAILM): must not be negative");
   has(error(compositeDeck("0.5", c6)), k + "7:" + mat + "5 field 1 (TFAIL): TFAIL > 0.1");
   has(error(compositeDeck("0,0.3", c6)), k + "7:" + mat + "5 field 2 (ALPH)");
   has(error(compositeDeck("0,0,0.8", c6)), k + "7:" + mat + "5 field 3 (SOFT)");
@@ -268,7 +318,15 @@ TEST(EnhancedComposite, BadOrRefusedFieldsAreErrors) {
       k + "8:" + mat + "6 field 6 (CRIT): must be 54 (Chang-Chang) or 55 (Tsai-Wu)");
   has(error(compositeDeck(c5, "1.5,0,0.246,0.04,0.068")),
       k + "8:" + mat + "6 field 2 (XT): the strength must be positive");
-  has(error(compositeDeck(c5, c6 + "\n0,0,0,0\n0.1")), k + "10:" + mat + "8 field 1 (SLIMT1)");
+  has(error(compositeDeck(c5, c6 + "\n0,0,0,0\n1.5")),
+      k + "10:" + mat + "8 field 1 (SLIMT1): must lie in [0, 1]");
+  has(error(compositeDeck(c5, c6 + "\n0,0,0,0\n0,0,0,0,-0.1")),
+      k + "10:" + mat + "8 field 5 (SLIMS): must lie in [0, 1]");
+  // Still refused, by name: NCYRED, transverse shear damage, the strength curves.
+  has(error(compositeDeck(c5, c6 + "\n0,0,0,0\n0,0,0,0,0,3")),
+      k + "10:" + mat + "8 field 6 (NCYRED): the cycle reduction");
+  has(error(compositeDeck(c5, c6 + "\n0,0.1")), k + "9:" + mat + "7 field 2 (EPSF)");
+  has(error(compositeDeck(c5, c6 + "\n0\n0\n5")), k + "11:" + mat + "9 field 1 (LCXC)");
   auto bad_ea = compositeDeck();
   bad_ea.replace(bad_ea.find("181,"), 4, "-1,");
   has(error(bad_ea), k + "3:" + mat + "1 field 3 (EA): must be positive");

@@ -284,3 +284,217 @@ TEST(VerificationComposite, TfailDeletesElementsBelowTheStep) {
     EXPECT_EQ(sim->sd.shell_blocks.at(0).active[0] == 0, tfail > 1e-3) << tfail;
   }
 }
+
+namespace {
+
+// The ply's fibre modulus, its Poisson's ratios and the in-plane shear modulus (GPa).
+constexpr double kEa = 181.0, kEb = 10.3, kPrba = 0.016, kGab = 7.17, kXc = 1.5, kSc = 0.068;
+constexpr double kNuAb = kPrba * kEa / kEb;  // nu_ab = nu_ba Ea / Eb
+
+// One element of the ply (*MAT_054 with card 4's DFAILM, DFAILS = `dfail_ms`, card 5 and card 8)
+// driven with the velocity gradient l (drivenElement) at each section: each cycle while the
+// element is active, its first point's stress component k (element frame) and the point's
+// history variable h; at the end whether the element is active and its points' history.
+struct StrainPath {
+  std::vector<double> s, h;
+  bool active = true;
+  std::vector<double> hist;  // variable v of point ip at v nip + ip
+};
+
+std::string limitedPly(const std::string& dfail_ms, const std::string& card5,
+                       const std::string& card8 = "0") {
+  return fmt::format(
+      "*MAT_ENHANCED_COMPOSITE_DAMAGE\n1,{},181,10.3,0,0.016\n7.17,3.0,7.17,0,0\n0,0,0,0,0,0,0\n"
+      "0,0,0,0,0,0,{}\n{}\n1.5,1.5,0.246,0.04,0.068\n0\n{}\n",
+      kRho, dfail_ms, card5, card8);
+}
+
+StrainPath drivePath(const std::string& name, const std::string& material,
+                     const std::string& section, std::array<double, 3> l, double end, int k,
+                     int h) {
+  auto sim = Simulation::fromText(name, drivenElement(material, section, l[0], l[1], l[2], end));
+  const auto& blk = sim->sd.shell_blocks.at(0);
+  const auto hist = [&](int v, int ip) {
+    return blk.hist.at(crumple::domain::ShellBlock::blocked(blk.histFields(), v * blk.nip + ip, 0));
+  };
+  StrainPath out;
+  sim->run([&](const crumple::solver::Solver&) {
+    if (blk.active[0] == 0) return;
+    out.s.push_back(blk.sigAt(k, 0, 0));
+    out.h.push_back(hist(h, 0));
+  });
+  out.active = blk.active[0] != 0;
+  for (int v = 0; v < blk.history; ++v)
+    for (int ip = 0; ip < blk.nip; ++ip) out.hist.push_back(hist(v, ip));
+  return out;
+}
+
+// A path's largest stress, the least and the largest stress of the cycles after it, and their
+// number.
+struct Plateau {
+  double peak = 0, lo = 0, hi = 0;
+  long cycles = 0;
+};
+
+Plateau plateauAfterPeak(const std::vector<double>& s) {
+  const auto peak = std::max_element(s.begin(), s.end());
+  Plateau p{*peak, *peak, -*peak, long(s.end() - peak - 1)};
+  for (auto it = peak + 1; it != s.end(); ++it) {
+    p.lo = std::min(p.lo, *it);
+    p.hi = std::max(p.hi, *it);
+  }
+  return p;
+}
+
+const std::string kOnePly = "*SECTION_SHELL\n1,2,0.8333,1,1,0,1\n1.0,1.0,1.0,1.0\n0\n";
+
+}  // namespace
+
+// DFAILT 0.005, below XT / EA = 0.0083: pulled along the fibres in uniaxial stress (eps_b =
+// -nu_ab eps_a, so sigma_aa = EA eps_a) at 0.002 / ms, the layer fails when its fibre strain
+// passes DFAILT, at sigma_aa = EA DFAILT (each step adds 3.4e-4 of it), before the stress
+// criterion; its only point failed, the element erodes.
+TEST(VerificationComposite, DfailtFailsTheLayerAtItsFibreStrain) {
+  const double r = 0.002, dfailt = 0.005;
+  const auto p = drivePath("composite_dfailt", limitedPly("0,0", "0,0,0,0,0,0.005,-0.005"), kOnePly,
+                           {r, -kNuAb * r, 0}, 3.0, 0, 4);
+  ASSERT_FALSE(p.s.empty());
+  const double at_failure = p.s.back() / (kEa * dfailt);
+  EXPECT_NEAR(at_failure, 1.0, 1e-3);
+  EXPECT_LE(p.h.back(), dfailt);
+  EXPECT_FALSE(p.active);
+  EXPECT_GT(p.hist.at(4), dfailt);  // the fibre strain that failed it
+  EXPECT_EQ(p.hist.at(7), 1.0);     // failed by a strain limit
+  EXPECT_EQ(p.hist.at(0), 0.0);     // not by the fibre tension criterion
+  std::printf("[ figure ] DFAILT: sigma_aa at failure / (EA DFAILT) %.6f, eroded\n", at_failure);
+}
+
+// [0/90] with DFAILT 0.005 and DFAILM 0.008 stretched along x in uniaxial strain at 0.01 / ms:
+// the 0-degree layer fails at fibre strain 0.005 and the element stays (one layer left); the
+// 90-degree layer (its matrix cracked at YT, the stress criterion, which fails no layer) fails
+// at matrix strain 0.008 and the element erodes then, with all its layers failed.
+TEST(VerificationComposite, ElementErodesWhenAllLayersHaveFailed) {
+  const double r = 0.01;
+  const auto layers = [&](double end) {
+    return drivePath("composite_layers", limitedPly("0.008,0", "0,0,0,0,0,0.005,-0.005"),
+                     layup(2, {0, 90}), {r, 0, 0}, end, 0, 4);
+  };
+  const auto mid = layers(0.65);  // eps_x 0.0065
+  EXPECT_TRUE(mid.active);
+  EXPECT_EQ(mid.hist.at(7 * 2 + 0), 1.0);  // the 0-degree layer failed
+  EXPECT_EQ(mid.hist.at(7 * 2 + 1), 0.0);
+  EXPECT_EQ(mid.hist.at(2 * 2 + 1), 1.0);  // the 90-degree layer's matrix cracked
+  const auto all = layers(1.0);
+  EXPECT_FALSE(all.active);
+  // eps_x (the 0-degree layer's e_aa) in the last cycle before the element erodes.
+  const double eps = all.h.back();
+  EXPECT_EQ(all.hist.at(7 * 2 + 1), 1.0);
+  EXPECT_LE(eps, 0.008);
+  EXPECT_GT(eps, 0.008 * (1 - 2e-3));
+  std::printf("[ figure ] [0/90]: 0-degree layer failed at 0.005, element erodes at eps_x %.6f\n",
+              eps);
+}
+
+// DFAILC -0.005, above -XC / EA: compressed along the fibres in uniaxial stress, the layer
+// fails at sigma_aa = EA DFAILC and the element erodes.
+TEST(VerificationComposite, DfailcFailsTheLayerInFibreCompression) {
+  const double r = 0.002, dfailc = -0.005;
+  const auto p = drivePath("composite_dfailc", limitedPly("0,0", "0,0,0,0,0,0.05,-0.005"), kOnePly,
+                           {-r, kNuAb * r, 0}, 3.0, 0, 4);
+  ASSERT_FALSE(p.s.empty());
+  const double at_failure = p.s.back() / (kEa * dfailc);
+  EXPECT_NEAR(at_failure, 1.0, 1e-3);
+  EXPECT_LT(-p.s.back(), 0.7 * kXc);  // below XC: the strain limit, not the stress criterion
+  EXPECT_FALSE(p.active);
+  EXPECT_EQ(p.hist.at(1), 0.0);  // the fibre compression criterion not reached
+  std::printf("[ figure ] DFAILC: sigma_aa at failure / (EA DFAILC) %.6f, eroded\n", at_failure);
+}
+
+// DFAILM 0.002, below YT / EB = 0.0039: pulled across the fibres in uniaxial stress (eps_a =
+// -nu_ba eps_b, sigma_bb = EB eps_b), the layer fails at sigma_bb = EB DFAILM, before the
+// matrix criterion, and the element erodes.
+TEST(VerificationComposite, DfailmFailsTheLayerAtItsMatrixStrain) {
+  const double r = 0.001, dfailm = 0.002;
+  const auto p = drivePath("composite_dfailm", limitedPly("0.002,0", "0,0,0,0,0,0.05,-0.05"),
+                           kOnePly, {-kPrba * r, r, 0}, 3.0, 1, 5);
+  ASSERT_FALSE(p.s.empty());
+  const double at_failure = p.s.back() / (kEb * dfailm);
+  EXPECT_NEAR(at_failure, 1.0, 1e-3);
+  EXPECT_FALSE(p.active);
+  EXPECT_EQ(p.hist.at(2), 0.0);  // the matrix criterion not reached
+  std::printf("[ figure ] DFAILM: sigma_bb at failure / (EB DFAILM) %.6f, eroded\n", at_failure);
+}
+
+// DFAILS 0.003 (tensor shear), below SC / 2 GAB = 0.0047: in pure shear the layer fails at
+// sigma_ab = 2 GAB DFAILS and the element erodes.
+TEST(VerificationComposite, DfailsFailsTheLayerAtItsShearStrain) {
+  const double r = 0.002, dfails = 0.003;
+  const auto p = drivePath("composite_dfails", limitedPly("0,0.003", "0,0,0,0,0,0.05,-0.05"),
+                           kOnePly, {0, 0, r}, 2.0, 2, 6);
+  ASSERT_FALSE(p.s.empty());
+  const double at_failure = p.s.back() / (2.0 * kGab * dfails);
+  EXPECT_NEAR(at_failure, 1.0, 1e-3);
+  EXPECT_FALSE(p.active);
+  EXPECT_EQ(p.hist.at(2) + p.hist.at(3), 0.0);  // the matrix criterion not reached
+  std::printf("[ figure ] DFAILS: sigma_ab at failure / (2 GAB DFAILS) %.6f, eroded\n", at_failure);
+}
+
+// EFS 0.005 (DFAILT 0): in uniaxial strain along the fibres the volume-preserving effective
+// strain is sqrt(4/3) eps_a, so the layer fails at eps_a = EFS sqrt(3) / 2, sigma_aa = Q11 EFS
+// sqrt(3) / 2 with Q11 = EA / (1 - nu_ab nu_ba), below XT; the element erodes.
+TEST(VerificationComposite, EfsFailsTheLayerAtItsEffectiveStrain) {
+  const double r = 0.002, efs = 0.005, q11 = kEa / (1.0 - kNuAb * kPrba);
+  const auto p = drivePath("composite_efs", limitedPly("0,0", "0,0,0,0,0,0,0,0.005"), kOnePly,
+                           {r, 0, 0}, 3.0, 0, 4);
+  ASSERT_FALSE(p.s.empty());
+  const double at_failure = p.s.back() / (q11 * efs * std::sqrt(3.0) / 2.0);
+  EXPECT_NEAR(at_failure, 1.0, 1e-3);
+  EXPECT_FALSE(p.active);
+  EXPECT_EQ(p.hist.at(0), 0.0);
+  std::printf("[ figure ] EFS: sigma_aa at failure / (Q11 EFS sqrt(3)/2) %.6f, eroded\n",
+              at_failure);
+}
+
+// SLIMT1 0.3 with DFAILT 0.02: along the fibres in uniaxial stress sigma_aa peaks at XT, the
+// fibre tension criterion is reached and the fibre stress then stays at 0.3 XT under further
+// stretching (not 0), until the fibre strain passes DFAILT and the element erodes.
+TEST(VerificationComposite, Slimt1HoldsTheFibreStressAfterXt) {
+  const double r = 0.01, slim = 0.3;
+  const auto p = drivePath("composite_slimt1", limitedPly("0,0", "0,0,0,0,0,0.02,-0.02", "0.3"),
+                           kOnePly, {r, -kNuAb * r, 0}, 2.5, 0, 4);
+  ASSERT_FALSE(p.s.empty());
+  const auto q = plateauAfterPeak(p.s);
+  EXPECT_LE(q.peak, kXt);
+  EXPECT_GT(q.peak, 0.997 * kXt);
+  // Every cycle after the peak until the element erodes: 0.3 XT.
+  EXPECT_NEAR(q.lo / (slim * kXt), 1.0, 1e-12);
+  EXPECT_NEAR(q.hi / (slim * kXt), 1.0, 1e-12);
+  EXPECT_GT(q.cycles, 1000);  // held from eps 0.0083 to 0.02
+  EXPECT_NEAR(p.h.back() / 0.02, 1.0, 1e-3);
+  EXPECT_FALSE(p.active);
+  EXPECT_EQ(p.hist.at(0), 1.0);
+  std::printf(
+      "[ figure ] SLIMT1 0.3: peak / XT %.5f, held at %.6f XT over %ld cycles, eroded at "
+      "eps_a %.5f\n",
+      q.peak / kXt, q.hi / kXt, q.cycles, p.h.back());
+}
+
+// SLIMS 0.4: in pure shear sigma_ab peaks at SC (the matrix criterion, (sigma_ab / SC)^2 >= 1)
+// and then stays at 0.4 SC; the matrix failure fails no layer, the element stays.
+TEST(VerificationComposite, SlimsHoldsTheShearStressAfterSc) {
+  const double r = 0.01, slim = 0.4;
+  const auto p = drivePath("composite_slims", limitedPly("0,0", "0,0,0,0,0,0,0,0", "0,0,0,0,0.4"),
+                           kOnePly, {0, 0, r}, 1.5, 2, 6);
+  ASSERT_FALSE(p.s.empty());
+  const auto q = plateauAfterPeak(p.s);
+  // The shear of finite strain leaves a small s_bb < 0 in the criterion (the compression
+  // branch), which lets s_ab pass SC by a little.
+  EXPECT_NEAR(q.peak / kSc, 1.0, 2e-3);
+  EXPECT_NEAR(q.lo / (slim * kSc), 1.0, 1e-9);
+  EXPECT_NEAR(q.hi / (slim * kSc), 1.0, 1e-9);
+  EXPECT_GT(p.h.back(), 0.014);  // sheared on to e_ab 0.015
+  EXPECT_TRUE(p.active);
+  EXPECT_EQ(p.hist.at(2) + p.hist.at(3), 1.0);
+  std::printf("[ figure ] SLIMS 0.4: peak / SC %.5f, then %.9f SC, element kept\n", q.peak / kSc,
+              q.hi / kSc);
+}

@@ -85,10 +85,53 @@ const deck::Card& readElasticCards(LawInput& in, EnhancedComposite::Params& p) {
   return readAxes(in, c2, p);
 }
 
+// Fields LS-DYNA does not use in this setting: noted as ignored and dropped.
+void ignoreNonZero(LawInput& in, const deck::Card& c,
+                   std::initializer_list<std::pair<std::string_view, double*>> fields,
+                   const std::string& why) {
+  for (const auto& [name, v] : fields)
+    if (*v != 0.0) {
+      in.ignore(c, name, why);
+      *v = 0.0;
+    }
+}
+
+// The layer's strain limits (Keyword Manual vol. II, *MAT_054-055, cards 4 and 5): DFAILT the
+// fibre tension strain, DFAILC the fibre compression strain (negative, required with DFAILT >
+// 0), DFAILM the matrix strain in tension or compression and DFAILS the tensor shear strain
+// (both positive, acting only when DFAILT > 0), EFS the effective strain; the manual restricts
+// all of them to MAT_054, so they are noted as ignored with CRIT 55. EFS < 0 (the manual's
+// full-tensor effective strain) is refused.
+void readStrainLimits(LawInput& in, const deck::Card& c4, const deck::Card& c5,
+                      EnhancedComposite::Params& p) {
+  auto& l = p.lim;
+  l.dfailm = c4.real("DFAILM");
+  l.dfails = c4.real("DFAILS");
+  l.dfailt = c5.real("DFAILT");
+  l.dfailc = c5.real("DFAILC");
+  l.efs = c5.real("EFS");
+  if (!(l.dfailt >= 0)) c5.fail("DFAILT", "must not be negative (0: no fibre strain limit)");
+  if (!(l.dfailm >= 0)) c4.fail("DFAILM", "must not be negative (a strain magnitude)");
+  if (!(l.dfails >= 0)) c4.fail("DFAILS", "must not be negative (a strain magnitude)");
+  if (l.efs < 0)
+    in.reject(c5, "EFS",
+              "EFS < 0 (the effective strain of the full strain tensor) is not supported; EFS > "
+              "0 (volume preserving) is");
+  if (p.crit == 55) {
+    const std::string why = "the strain limits are *MAT_054 only (CRIT 54)";
+    ignoreNonZero(in, c4, {{"DFAILM", &l.dfailm}, {"DFAILS", &l.dfails}}, why);
+    ignoreNonZero(in, c5, {{"DFAILT", &l.dfailt}, {"DFAILC", &l.dfailc}, {"EFS", &l.efs}}, why);
+    return;
+  }
+  if (l.dfailt > 0 && !(l.dfailc < 0)) c5.fail("DFAILC", "must be negative when DFAILT > 0");
+  if (l.dfailt == 0) {
+    const std::string why = "acts only with DFAILT > 0";
+    ignoreNonZero(in, c4, {{"DFAILM", &l.dfailm}, {"DFAILS", &l.dfails}}, why);
+    ignoreNonZero(in, c5, {{"DFAILC", &l.dfailc}}, why);
+  }
+}
+
 void readFailureCards(LawInput& in, const deck::Card& c4, EnhancedComposite::Params& p) {
-  rejectNonZero(
-      in, c4, {"DFAILM", "DFAILS"},
-      "strain-based layer failure (DFAILM, DFAILS, DFAILT, DFAILC, EFS) is not supported");
   const deck::Card& c5 = in.card("card 5");
   // TFAIL in (0, 0.1]: an element whose step falls below it is deleted (as *MAT_024 TDEL).
   p.tfail = std::max(c5.real("TFAIL"), 0.0);
@@ -100,9 +143,6 @@ void readFailureCards(LawInput& in, const deck::Card& c4, EnhancedComposite::Par
   const double soft = c5.real("SOFT");
   if (soft != 0.0 && soft != 1.0)
     in.reject(c5, "SOFT", "crashfront softening (SOFT other than 1) is not supported");
-  rejectNonZero(
-      in, c5, {"DFAILT", "DFAILC", "EFS"},
-      "strain-based layer failure (DFAILM, DFAILS, DFAILT, DFAILC, EFS) is not supported");
   p.fbrt = c5.real("FBRT");
   if (!(p.fbrt >= 0 && p.fbrt <= 1)) c5.fail("FBRT", "must lie in [0, 1]");
   p.ycfac = c5.real("YCFAC");
@@ -115,21 +155,38 @@ void readFailureCards(LawInput& in, const deck::Card& c4, EnhancedComposite::Par
   p.crit = static_cast<int>(crit);
   p.beta = c6.real("BETA");
   if (!(p.beta >= 0 && p.beta <= 1)) c6.fail("BETA", "must lie in [0, 1]");
+  readStrainLimits(in, c4, c5, p);
 }
 
-void readOptionalCards(LawInput& in) {
+// Card 8: the residual-strength factors SLIMT1, SLIMC1 (fibre), SLIMT2, SLIMC2 (matrix), SLIMS
+// (shear), each in [0, 1] ("MAT_054 only": noted as ignored with CRIT 55).
+void readResidualStrengths(LawInput& in, EnhancedComposite::Params& p) {
+  auto& l = p.lim;
+  const deck::Card& c8 = in.optionalCard("card 8");
+  const std::initializer_list<std::pair<std::string_view, double*>> slim{{"SLIMT1", &l.slimt1},
+                                                                         {"SLIMC1", &l.slimc1},
+                                                                         {"SLIMT2", &l.slimt2},
+                                                                         {"SLIMC2", &l.slimc2},
+                                                                         {"SLIMS", &l.slims}};
+  for (const auto& [name, to] : slim) {
+    *to = c8.real(name);
+    if (!(*to >= 0 && *to <= 1)) c8.fail(name, "must lie in [0, 1]");
+  }
+  if (p.crit == 55) ignoreNonZero(in, c8, slim, "the residual strengths are *MAT_054 only");
+  rejectNonZero(in, c8, {"NCYRED"}, "the cycle reduction of the residual stress is not supported");
+}
+
+void readOptionalCards(LawInput& in, EnhancedComposite::Params& p) {
   const deck::Card& c7 = in.optionalCard("card 7");
   rejectNonZero(in, c7, {"EPSF", "EPSR"}, "transverse shear damage is not supported");
-  const deck::Card& c8 = in.optionalCard("card 8");
-  rejectNonZero(in, c8, {"SLIMT1", "SLIMC1", "SLIMT2", "SLIMC2", "SLIMS", "NCYRED"},
-                "stress limits after failure are not supported (the moduli drop at once)");
+  readResidualStrengths(in, p);
   const deck::Card& c9 = in.optionalCard("card 9");
   rejectNonZero(in, c9, {"LCXC", "LCXT", "LCYC", "LCYT", "LCSC"},
                 "rate-dependent strengths (curves) are not supported");
 }
 
 // One point's stress (material axes) after the step and its flags: the criteria, then the
-// stresses the newly failed modes drop.
+// stresses of the failed modes.
 struct PointState {
   double aa, bb, ab;
   double f[4];
@@ -164,7 +221,7 @@ EnhancedComposite::Params EnhancedComposite::read(LawInput& in) {
   Params p;
   const deck::Card& c4 = readElasticCards(in, p);
   readFailureCards(in, c4, p);
-  readOptionalCards(in);
+  readOptionalCards(in, p);
   return p;
 }
 
@@ -205,6 +262,7 @@ EnhancedComposite EnhancedComposite::make(const Params& p, const CurveAt&, const
   law.ycfac = p.ycfac;
   law.tfail = p.tfail;
   law.tsai_wu = p.crit == 55;
+  law.lim = p.lim;
   return law;
 }
 
@@ -235,13 +293,33 @@ void EnhancedComposite::transverseShear(double ply, double g[3]) const {
 
 namespace {
 
-// The criteria of the modes not yet reached, on the stress after the step; sets their flags
-// and drops the stresses the new modes carry no more.
-void checkFailure(const EnhancedComposite& m, PointState& p) {
+// The fibre strengths in force: after matrix compression Xc = YCFAC Yc and, with FBRT > 0,
+// Xt = FBRT Xt (Keyword Manual, *MAT_054: FBRT, YCFAC).
+double fibreTensionStrength(const EnhancedComposite& m, const double f[4]) {
+  return f[kMatrixCompression] != 0 && m.fbrt > 0 ? m.fbrt * m.xt : m.xt;
+}
+double fibreCompressionStrength(const EnhancedComposite& m, const double f[4]) {
+  return f[kMatrixCompression] != 0 ? m.ycfac * m.yc : m.xc;
+}
+
+// Whether the residual strengths hold a failed fibre, matrix or shear stress (SLIM > 0).
+bool holdsFibre(const EnhancedComposite& m) {
+  return m.lim.slimt1 > 0 || m.lim.slimc1 > 0;
+}
+bool holdsMatrix(const EnhancedComposite& m) {
+  return m.lim.slimt2 > 0 || m.lim.slimc2 > 0;
+}
+
+// The modes the criteria newly reach.
+struct NewModes {
+  bool ft = false, fc = false, matrix = false;
+};
+
+// The criteria of the modes not yet reached, on the stress after the step; sets their flags.
+NewModes checkCriteria(const EnhancedComposite& m, PointState& p) {
   const double ab = p.ab / m.sc;
   const bool matrix = p.f[kMatrixTension] != 0 || p.f[kMatrixCompression] != 0;
-  const double xt = p.f[kMatrixCompression] != 0 && m.fbrt > 0 ? m.fbrt * m.xt : m.xt;
-  const double xc = p.f[kMatrixCompression] != 0 ? m.ycfac * m.yc : m.xc;
+  const double xt = fibreTensionStrength(m, p.f), xc = fibreCompressionStrength(m, p.f);
   bool ft = false, fc = false, mt = false, mc = false;
   if (p.aa > 0) ft = (p.aa / xt) * (p.aa / xt) + m.beta * ab * ab >= 1.0;
   if (p.aa < 0) fc = (p.aa / xc) * (p.aa / xc) >= 1.0;
@@ -262,29 +340,71 @@ void checkFailure(const EnhancedComposite& m, PointState& p) {
   if (fc) p.f[kFibreCompression] = 1.0;
   if (mt) p.f[kMatrixTension] = 1.0;
   if (mc) p.f[kMatrixCompression] = 1.0;
-  if (fc || p.f[kFibreTension] != 0) p.aa = 0.0;
-  if (mt || mc || p.f[kFibreTension] != 0) p.bb = p.ab = 0.0;
+  return {ft, fc, mt || mc};
 }
 
-}  // namespace
+// The stresses of the failed modes: held between -SLIMC x strength and SLIMT x strength where
+// a residual factor is set (*MAT_054's SLIMT1 ... SLIMS: the stress a mode keeps once past its
+// maximum, as in *MAT_058; an elastic-perfectly plastic plateau), else dropped when the
+// mode is reached (its modulus is then zero). Fibre tension drops the matrix and the shear too
+// (Eb = Gab = 0, the manual's degradation).
+void failedModeStresses(const EnhancedComposite& m, PointState& p, const NewModes& n) {
+  const bool ft = p.f[kFibreTension] != 0, fibre = ft || p.f[kFibreCompression] != 0;
+  const bool matrix = p.f[kMatrixTension] != 0 || p.f[kMatrixCompression] != 0;
+  if (fibre && holdsFibre(m))
+    p.aa = std::clamp(p.aa, -m.lim.slimc1 * fibreCompressionStrength(m, p.f),
+                      m.lim.slimt1 * fibreTensionStrength(m, p.f));
+  else if (n.fc || ft)
+    p.aa = 0.0;
+  if (ft) {
+    p.bb = p.ab = 0.0;
+    return;
+  }
+  if (matrix && holdsMatrix(m))
+    p.bb = std::clamp(p.bb, -m.lim.slimc2 * m.yc, m.lim.slimt2 * m.yt);
+  else if (n.matrix)
+    p.bb = 0.0;
+  if (matrix && m.lim.slims > 0)
+    p.ab = std::clamp(p.ab, -m.lim.slims * m.sc, m.lim.slims * m.sc);
+  else if (n.matrix)
+    p.ab = 0.0;
+}
 
-namespace {
+// Whether the layer's total strain (ply axes; e_ab tensor shear) has reached a limit (Keyword
+// Manual, *MAT_054 remarks): with DFAILT > 0 the fibre strain above DFAILT or below DFAILC, the
+// matrix strain beyond DFAILM in tension or compression, the tensor shear strain beyond DFAILS;
+// with EFS > 0 the effective strain above EFS. The effective strain is the volume-preserving one
+// of the manual's EFS > 0, e_zz = -(e_aa + e_bb): sqrt(2/3 e_ij e_ij) = sqrt(4/3 (e_aa^2 + e_bb^2
+// + e_aa e_bb + e_ab^2)), an invariant of the in-plane strain.
+bool reachesStrainLimit(const EnhancedComposite::Limits& l, const double e[3]) {
+  if (l.dfailt > 0 && (e[0] > l.dfailt || e[0] < l.dfailc)) return true;
+  if (l.dfailm > 0 && std::abs(e[1]) > l.dfailm) return true;
+  if (l.dfails > 0 && std::abs(e[2]) > l.dfails) return true;
+  if (l.efs > 0) {
+    const double q = e[0] * e[0] + e[1] * e[1] + e[0] * e[1] + e[2] * e[2];
+    if (std::sqrt(4.0 / 3.0 * q) > l.efs) return true;
+  }
+  return false;
+}
 
-// The ply's stiffness with the moduli its failed modes leave (tensor shear: s_ab += g de_ab).
+// The ply's stiffness with the moduli its failed modes leave (tensor shear: s_ab += g de_ab): a
+// failed mode with a residual strength keeps its own modulus (no Poisson coupling).
 struct Stiffness {
   double k11, k22, k12, g;
 };
 
 Stiffness stiffnessOf(const EnhancedComposite& m, const double f[4]) {
-  const bool fibre = f[kFibreCompression] != 0;
+  const bool fibre = f[kFibreCompression] != 0 || f[kFibreTension] != 0;
   const bool matrix = f[kMatrixTension] != 0 || f[kMatrixCompression] != 0;
-  return {fibre ? 0.0 : (matrix ? m.ea : m.q11), matrix ? 0.0 : (fibre ? m.eb : m.q22),
-          fibre || matrix ? 0.0 : m.q12, matrix ? 0.0 : m.g2};
+  const double k11 = fibre ? (holdsFibre(m) ? m.ea : 0.0) : (matrix ? m.ea : m.q11);
+  const double k22 = matrix ? (holdsMatrix(m) ? m.eb : 0.0) : (fibre ? m.eb : m.q22);
+  return {k11, k22, fibre || matrix ? 0.0 : m.q12, matrix && !(m.lim.slims > 0) ? 0.0 : m.g2};
 }
 
 }  // namespace
 
 void EnhancedComposite::updatePlaneStress(PlaneStressPoints& b) const {
+  constexpr int kStrain = 4, kLayerFailed = 7;
   for (int i = 0; i < b.n; ++i) {
     const double th = mangle + (b.ply != nullptr ? b.ply[i] : 0.0);
     const double c = std::cos(th), s = std::sin(th), cc = c * c, ss = s * s, cs = c * s;
@@ -302,14 +422,26 @@ void EnhancedComposite::updatePlaneStress(PlaneStressPoints& b) const {
     p.aa = aa0 + k.k11 * daa + k.k12 * dbb;
     p.bb = bb0 + k.k12 * daa + k.k22 * dbb;
     p.ab = cs * (sy - sx) + (cc - ss) * sxy + k.g * dab;
-    if (p.f[kFibreTension] == 0) checkFailure(*this, p);
-    if (p.f[kFibreTension] != 0) p.aa = p.bb = p.ab = 0.0;
+    NewModes n;
+    if (p.f[kFibreTension] == 0) n = checkCriteria(*this, p);
+    failedModeStresses(*this, p, n);
+    // The total strain in the ply axes (the axes are fixed in the corotational frame, so the
+    // increments add up) and the layer's strain limits.
+    const double e[3] = {b.h[kStrain][i] + daa, b.h[kStrain + 1][i] + dbb,
+                         b.h[kStrain + 2][i] + dab};
+    const bool layer_failed = b.h[kLayerFailed][i] != 0 || reachesStrainLimit(lim, e);
+    if (layer_failed) p.aa = p.bb = p.ab = 0.0;
     b.de_zz[i] = zz_a * (p.aa - aa0) + zz_b * (p.bb - bb0);
     b.s[0][i] = cc * p.aa + ss * p.bb - 2.0 * cs * p.ab;
     b.s[1][i] = ss * p.aa + cc * p.bb + 2.0 * cs * p.ab;
     b.s[2][i] = cs * (p.aa - p.bb) + (cc - ss) * p.ab;
     for (int k2 = 0; k2 < 4; ++k2) b.h[k2][i] = p.f[k2];
-    if (b.failed != nullptr) b.failed[i] = p.f[kFibreTension] != 0 ? 1 : 0;
+    for (int k2 = 0; k2 < 3; ++k2) b.h[kStrain + k2][i] = e[k2];
+    b.h[kLayerFailed][i] = layer_failed ? 1.0 : 0.0;
+    // The layer fails (Keyword Manual, *MAT_054 remarks) in fibre tension when DFAILT = 0, by
+    // the strain limits otherwise; the element is deleted when all its layers have failed.
+    const bool fails = layer_failed || (lim.dfailt == 0 && p.f[kFibreTension] != 0);
+    if (b.failed != nullptr) b.failed[i] = fails ? 1 : 0;
   }
 }
 

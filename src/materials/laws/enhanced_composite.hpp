@@ -23,9 +23,17 @@
 // and a mode once reached stays (history): fibre tension Ea = Eb = Gab = nu = 0 (the point
 // carries nothing: failed); fibre compression Ea = nu = 0 (s_aa dropped); matrix (either)
 // Eb = Gab = nu = 0 (s_bb, s_ab dropped). After matrix compression the fibre strengths become
-// Xc = YCFAC Yc and, with FBRT > 0, Xt = FBRT Xt. The element erodes when all its points have
-// failed in fibre tension (DFAILT = 0: LS-DYNA's rule), or when its time step falls below
-// TFAIL (0 < TFAIL <= 0.1).
+// Xc = YCFAC Yc and, with FBRT > 0, Xt = FBRT Xt.
+// Residual strength (SLIMT1, SLIMC1, SLIMT2, SLIMC2, SLIMS, *MAT_054 only; the manual defines
+// them as the lower stress limit a mode keeps once past its maximum, as *MAT_058): a failed mode
+// with a factor > 0 keeps its modulus and its stress is held within the factor times the strength
+// (elastic-perfectly plastic), instead of dropping to zero.
+// Layer failure (Keyword Manual, *MAT_054 remarks: a layer fails by one of these rules; the
+// element is deleted when all its layers have failed): DFAILT = 0, the fibre tension
+// criterion; DFAILT > 0, the total fibre strain above DFAILT or below DFAILC, the matrix strain
+// beyond DFAILM, the tensor shear strain beyond DFAILS; EFS > 0, the effective strain above EFS.
+// The total strains are accumulated per point in the ply axes (history). The element also
+// erodes when its time step falls below TFAIL (0 < TFAIL <= 0.1).
 #pragma once
 
 #include <array>
@@ -47,9 +55,16 @@ struct EnhancedComposite {
   static constexpr bool kLayered = true;
   static constexpr bool kPointFailure = true;
   // h[0..3]: 1 once failed in fibre tension, fibre compression, matrix tension, matrix
-  // compression (else 0).
-  static constexpr int kHistory = 4;
+  // compression (else 0); h[4..6]: the total strain in the ply axes e_aa, e_bb, e_ab (tensor
+  // shear); h[7]: 1 once the layer has failed by a strain limit (DFAILT, DFAILC, DFAILM, DFAILS,
+  // EFS).
+  static constexpr int kHistory = 8;
 
+  // The layer's strain limits (0 = none; DFAILC < 0) and the residual-strength factors.
+  struct Limits {
+    double dfailm = 0, dfails = 0, dfailt = 0, dfailc = 0, efs = 0;
+    double slimt1 = 0, slimc1 = 0, slimt2 = 0, slimc2 = 0, slims = 0;
+  };
   struct Params {
     using Law = EnhancedComposite;
     double ea = 0, eb = 0, ec = 0, prba = 0, prca = 0, prcb = 0;
@@ -61,6 +76,7 @@ struct EnhancedComposite {
     double beta = 0, fbrt = 0, ycfac = 2.0;
     double tfail = 0;  // element deletion below this time step (0 = none)
     int crit = 54;
+    Limits lim;
   };
   static const deck::KeywordSpec& cards();
   static Params read(LawInput& in);
@@ -77,6 +93,7 @@ struct EnhancedComposite {
   double xc = 0, xt = 0, yc = 0, yt = 0, sc = 0, beta = 0, fbrt = 0, ycfac = 2.0;
   bool tsai_wu = false;
   double tfail = 0;
+  Limits lim;
   void updatePlaneStress(PlaneStressPoints& b) const;
   // Transverse shear moduli in the element frame of a layer at `ply` (radians): g[0] xz-xz,
   // g[1] yz-yz, g[2] the coupling.
