@@ -17,6 +17,12 @@
 // and the one the plane-stress law asks for) gives the mode in which the top face moves against
 // the bottom along the normal a resistance that plane stress alone would not. Theory notes in
 // docs/theory.md, "Thick shells".
+//
+// ELFORM 2 (selective reduced; LS-DYNA Theory Manual, "Thick shell", formulation 2: 2 x 2
+// integration in the plane, no hourglass control): the same element with the in-plane strains
+// and the thickness stretch at the 2 x 2 Gauss points of every thickness level (4 NIP points,
+// SolidBlock::plane_points = 4) and the transverse shear at the centre of the plane, one value
+// per thickness level (the 2 x 2 rule would lock it in bending).
 #pragma once
 
 #include <cstddef>

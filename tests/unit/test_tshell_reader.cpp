@@ -42,6 +42,16 @@ TEST(TShellReader, DefaultsAreElform1TwoGaussPointsShearFactorOne) {
   EXPECT_EQ(m.solids.nodes[0][4], m.nodeIndex(5));
 }
 
+// ELFORM 2 (selective reduced, 2 x 2 in the plane) reads as its own formulation.
+TEST(TShellReader, Elform2IsTheSelectiveReducedFormulation) {
+  TempDir t;
+  const Model m = readModel(t.write("d.k", deck("*SECTION_TSHELL\n1,2,0.8333,3\n")));
+  const auto& s = m.solid_sections[0];
+  EXPECT_EQ(s.elform, crumple::model::kThickShellSelective);
+  EXPECT_TRUE(crumple::model::isThickShell(s.elform));
+  EXPECT_EQ(s.nip, 3);
+}
+
 TEST(TShellReader, FieldsAndTitle) {
   TempDir t;
   const Model m =
@@ -115,3 +125,4 @@ TEST(TShellReader, LawWithPointHistoryIsRefused) {
 }
 
 }  // namespace
+
