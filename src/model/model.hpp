@@ -605,6 +605,8 @@ struct Model {
   // *SET_SOLID, *SET_SHELL, *SET_BEAM, *SET_DISCRETE by family (each keyword has its own ids):
   // the members as indices within the family, ascending.
   std::array<std::map<int64_t, std::vector<int32_t>>, kFamilies> element_sets;
+  // *SET_TSHELL (an id space of its own): thick shells as solid-family indices, ascending.
+  std::map<int64_t, std::vector<int32_t>> tshell_sets;
 
   std::vector<Spc> spcs;
   std::vector<PrescribedMotion> prescribed;
@@ -657,6 +659,8 @@ struct Model {
   int32_t nodeIndex(int64_t id) const;
   // Index within family f of element `id` (kNone if absent); the family's ascending ids.
   int32_t elementIndex(Family f, int64_t id) const;
+  // True if solid-family element e is a thick shell (its part has a *SECTION_TSHELL).
+  bool isThickShellElement(int32_t e) const;
   const std::vector<int64_t>& familyIds(Family f) const;
   int32_t partIndex(int64_t id) const;
   int32_t curveIndex(int64_t id) const;
