@@ -558,6 +558,51 @@ void thickShellLengths(const NodalBatch& x, double (&length)[kBatch]) {
   lengthsOf(fr, vol, length);
 }
 
+void thickShellLayerStress(const domain::SolidBlock& block, const domain::NodeVector& x,
+                           std::size_t e, double (&layers)[3][6], double (&eps)[3]) {
+  NodalBatch xb;
+  for (int c = 0; c < 3; ++c)
+    for (int a = 0; a < 8; ++a)
+      for (int l = 0; l < kBatch; ++l)
+        xb[c][a][l] = x[3 * std::size_t(block.conn[e][std::size_t(a)]) + std::size_t(c)];
+  LaminaFrames fr;
+  laminaFrames(xb, fr);
+  const int plane = block.plane_points, nip = block.points / plane;
+  const std::size_t padded = block.paddedSize();
+  const auto lowest = std::min_element(block.zeta.begin(), block.zeta.end());
+  const auto highest = std::max_element(block.zeta.begin(), block.zeta.end());
+  const int level[2] = {int(lowest - block.zeta.begin()), int(highest - block.zeta.begin())};
+  constexpr int kVoigt[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {2, 0}};
+  for (int side = 0; side < 2; ++side) {
+    double m[3][3] = {}, ep = 0.0;
+    for (int g = 0; g < plane; ++g) {
+      const std::size_t idx = std::size_t(g * nip + level[side]) * padded + e;
+      const double w = 1.0 / plane;
+      m[0][0] += w * block.sig_ip[0][idx];
+      m[1][1] += w * block.sig_ip[1][idx];
+      m[0][1] += w * block.sig_ip[2][idx];
+      m[1][2] += w * block.sig_ip[3][idx];
+      m[0][2] += w * block.sig_ip[4][idx];
+      m[2][2] += w * block.sig_ip[5][idx];
+      ep += block.eps_p_ip.empty() ? 0.0 : w * block.eps_p_ip[idx];
+    }
+    m[1][0] = m[0][1];
+    m[2][1] = m[1][2];
+    m[2][0] = m[0][2];
+    const int out = side == 0 ? 0 : 2;
+    for (int k = 0; k < 6; ++k) {
+      const int c = kVoigt[k][0], d = kVoigt[k][1];
+      double s = 0.0;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) s += fr.e[i][c][0] * m[i][j] * fr.e[j][d][0];
+      layers[out][k] = s;
+    }
+    eps[out] = ep;
+  }
+  for (int k = 0; k < 6; ++k) layers[1][k] = block.sigAt(k, e);
+  eps[1] = block.eps_p.empty() ? 0.0 : block.eps_p[e];
+}
+
 double thickShellWaveSpeed(const domain::SolidBlock& block) {
   const materials::Moduli m = materials::moduliOf(block.law);
   const double nu = materials::poissonRatio(m);

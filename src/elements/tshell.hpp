@@ -52,4 +52,12 @@ void thickShellLengths(const NodalBatch& x, double (&length)[kBatch]);
 // sqrt(E / (rho (1 - nu^2))) of the block's law at its initial density.
 double thickShellWaveSpeed(const domain::SolidBlock& block);
 
+// Cauchy stress in the global frame (Voigt xx, yy, zz, xy, yz, zx, tensor shear) and effective
+// plastic strain of thick shell e at its bottom (0) and top (2) thickness points (the lowest
+// and highest zeta, the mean over the in-plane points) in the lamina frame of the current
+// coordinates x, and (1) the element's through-thickness means (block.sig, block.eps_p). For
+// output (the d3plot thick-shell records).
+void thickShellLayerStress(const domain::SolidBlock& block, const domain::NodeVector& x,
+                           std::size_t e, double (&layers)[3][6], double (&eps)[3]);
+
 }  // namespace crumple::elements
