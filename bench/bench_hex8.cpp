@@ -1,6 +1,6 @@
 // Hex kernel throughput: one element pass (strain rate, material, stress divergence,
 // hourglass, time step) plus the ordered nodal gather, on a 100k-element brick; the same brick
-// of thick shells (*SECTION_TSHELL ELFORM 1, 5 points through the thickness: TShell*).
+// of thick shells (*SECTION_TSHELL ELFORM 1 and 2, 5 points through the thickness: TShell*).
 // Reports ns per element-cycle; run with OMP_NUM_THREADS=1 and =2 for the speed-up.
 //   build/release/bench/crumple_bench --benchmark_filter=Hex8
 #include <benchmark/benchmark.h>
@@ -18,8 +18,10 @@ namespace {
 
 using namespace crumple;
 
-// tshell_nip > 0: the elements are thick shells with that many points through the thickness.
-model::Model brick(int nx, int ny, int nz, model::MaterialLaw law, int ihq, int tshell_nip) {
+// tshell_nip > 0: the elements are thick shells with that many points through the thickness,
+// of formulation tshell_form (model::kThickShellOnePoint or kThickShellSelective).
+model::Model brick(int nx, int ny, int nz, model::MaterialLaw law, int ihq, int tshell_nip,
+                   int tshell_form) {
   testing::BrickOptions opt;
   opt.law = law;
   opt.ihq = ihq;
@@ -30,16 +32,17 @@ model::Model brick(int nx, int ny, int nz, model::MaterialLaw law, int ihq, int 
   };
   auto m = testing::brickModel(nx, ny, nz, opt);
   if (tshell_nip > 0) {
-    m.solid_sections[0].elform = model::kThickShellOnePoint;
+    m.solid_sections[0].elform = tshell_form;
     m.solid_sections[0].nip = tshell_nip;
   }
   return m;
 }
 
-void runKernel(benchmark::State& state, model::MaterialLaw law, int ihq, int tshell_nip = 0) {
+void runKernel(benchmark::State& state, model::MaterialLaw law, int ihq, int tshell_nip = 0,
+               int tshell_form = model::kThickShellOnePoint) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
   // Range 1: brick edge in elements along z (40 = 100k elements; 4 = 10k, which fits in cache).
-  const auto m = brick(50, 50, static_cast<int>(state.range(1)), law, ihq, tshell_nip);
+  const auto m = brick(50, 50, static_cast<int>(state.range(1)), law, ihq, tshell_nip, tshell_form);
   auto sd = domain::buildSerialSubdomain(m);
   std::vector<double> dt_e;
   for (auto& b : sd.solid_blocks) elements::initializeSolids(b, sd.x0, sd.slots.data(), dt_e, {});
@@ -115,16 +118,25 @@ BENCHMARK(Hex8PlasticHourglassStiffness)->Apply(hexArgs);
 void TShellElastic(benchmark::State& s) {
   runKernel(s, materials::Elastic::Params{210.0, 0.3}, 4, 5);
 }
-void TShellPlasticHourglassStiffness(benchmark::State& s) {
+// A soft plastic law that the benchmark's velocity field yields.
+materials::PiecewiseLinear::Params softPlastic() {
   materials::PiecewiseLinear::Params law;
   law.E = 210.0;
   law.nu = 0.3;
   law.sigy = 0.001;
   law.etan = 1.0;
-  runKernel(s, law, 4, 5);
+  return law;
+}
+void TShellPlasticHourglassStiffness(benchmark::State& s) {
+  runKernel(s, softPlastic(), 4, 5);
 }
 BENCHMARK(TShellElastic)->Apply(hexArgs);
 BENCHMARK(TShellPlasticHourglassStiffness)->Apply(hexArgs);
+// ELFORM 2: 2 x 2 points in the plane, no hourglass control (the IHQ is not used).
+void TShell2Plastic(benchmark::State& s) {
+  runKernel(s, softPlastic(), 4, 5, model::kThickShellSelective);
+}
+BENCHMARK(TShell2Plastic)->Apply(hexArgs);
 // Instruction counts as Hex8Counted:
 //   valgrind --tool=callgrind --toggle-collect='*thickShellBlockForces*' crumple_bench
 //     --benchmark_filter=TShellCounted   -> Ir / (10 iterations x 10,000 elements)

@@ -52,6 +52,8 @@
                       *ELEMENT_TSHELL (*SECTION_TSHELL ELFORM 1, NIP 3, stiffness hourglass
                       IHQ 4) clamped on one edge and swung down about it, so that it bends
                       into a plastic hinge at the clamp.
+  tshell2_plate.k     the same plate with *SECTION_TSHELL ELFORM 2 (selective reduced, 2 x 2
+                      points in the plane, no hourglass control).
   jc_spall_bar.k      *MAT_JOHNSON_COOK spall across ranks and restarts: a free steel bar
                       stretched from its middle by its initial velocity; the middle yields and
                       spalls (part 1 SPALL 2 with VP 1, part 2 SPALL 3) and carries no
@@ -852,10 +854,12 @@ spall3
 """
 
 
-def tshell_plate(nx: int = 10, ny: int = 6, v: float = 20.0, end: float = 0.5) -> str:
+def tshell_plate(nx: int = 10, ny: int = 6, v: float = 40.0, end: float = 0.5,
+                 elform: int = 1) -> str:
     """mm, ms, kg, GPa. A 50 x 30 x 4 mm plate of nx x ny thick shells (one through the
     thickness, N1-N4 on the bottom face z = 0), clamped at x = 0, swung down about the clamp
-    at the start (z velocity -v x / 50 mm: smooth, so mostly the low modes ring)."""
+    at the start (z velocity -v x / 50 mm: smooth, so mostly the low modes ring). ELFORM 2
+    (2 x 2 in the plane) takes the same deck; its *HOURGLASS card is read and not needed."""
     m = Mesh()
     block(m, 1, (0, 0, 0), (50.0, 30.0, 4.0), (nx, ny, 1))
     clamped = m.node_ids(lambda x, y, z: x <= 1e-9)
@@ -865,7 +869,7 @@ def tshell_plate(nx: int = 10, ny: int = 6, v: float = 20.0, end: float = 0.5) -
     mesh = m.keyword_text().replace("*ELEMENT_SOLID", "*ELEMENT_TSHELL")
     return f"""*KEYWORD
 *TITLE
-thick shell plate: *MAT_024 *ELEMENT_TSHELL ELFORM 1 clamped on one edge and swung down
+thick shell plate: *MAT_024 *ELEMENT_TSHELL ELFORM {elform} clamped on one edge and swung down
 *CONTROL_TERMINATION
 {end:10.4g}
 *DATABASE_GLSTAT
@@ -874,7 +878,7 @@ thick shell plate: *MAT_024 *ELEMENT_TSHELL ELFORM 1 clamped on one edge and swu
 plate
          1         1         1         0         1
 *SECTION_TSHELL
-         1         1    0.8333         3
+         1{elform:10d}    0.8333         3
 *MAT_PIECEWISE_LINEAR_PLASTICITY
          1   7.85e-6     210.0       0.3      0.25       1.0
 *HOURGLASS
@@ -911,10 +915,12 @@ def main() -> None:
     (out / "eos_tabulated.k").write_text(eos_tabulated())
     (out / "jc_spall_bar.k").write_text(jc_spall_bar())
     (out / "tshell_plate.k").write_text(tshell_plate())
+    (out / "tshell2_plate.k").write_text(tshell_plate(elform=2))
     print("wrote tests/data/decks/mixed_conditions.k, structures.k, structures_shell16.k, "
           "rigid_welds.k, contact_blocks.k, contact_tube.k, contact_tied.k, contact_cask.k, "
           "tet_blocks.k, tet13_blocks.k, tet10_bar.k, axisym_rod.k, erosion.k, prism_blocks.k, "
-          "joints.k, shearfix_blocks.k, eos_tabulated.k, jc_spall_bar.k and tshell_plate.k")
+          "joints.k, shearfix_blocks.k, eos_tabulated.k, jc_spall_bar.k, tshell_plate.k and "
+          "tshell2_plate.k")
 
 
 if __name__ == "__main__":

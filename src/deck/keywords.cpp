@@ -428,9 +428,11 @@ std::vector<KeywordSpec> makeTables() {
                 {"id card", {I("ID"), A("HEADING", 70)}}}});
   // *DATABASE_HISTORY_SOLID, _SHELL, _BEAM: element ids, or one per card with a heading (_ID);
   // _SET: ids of *SET_SOLID, *SET_SHELL, *SET_BEAM.
+  // _TSHELL, _TSHELL_SET: thick shells, *SET_TSHELL.
   for (auto [name, set] : Pairs{{"*DATABASE_HISTORY_SOLID", "*DATABASE_HISTORY_SOLID_SET"},
                                 {"*DATABASE_HISTORY_SHELL", "*DATABASE_HISTORY_SHELL_SET"},
-                                {"*DATABASE_HISTORY_BEAM", "*DATABASE_HISTORY_BEAM_SET"}}) {
+                                {"*DATABASE_HISTORY_BEAM", "*DATABASE_HISTORY_BEAM_SET"},
+                                {"*DATABASE_HISTORY_TSHELL", "*DATABASE_HISTORY_TSHELL_SET"}}) {
     t.push_back({name,
                  {idList("card 1", "ID1", "ID2", "ID3", "ID4", "ID5", "ID6", "ID7", "ID8"),
                   {"id card", {I("ID"), A("HEADING", 70)}}}});
@@ -481,9 +483,11 @@ std::vector<KeywordSpec> makeTables() {
                {titleCard(), setCard(),
                 idList("card 2", "PID1", "PID2", "PID3", "PID4", "PID5", "PID6", "PID7", "PID8"),
                 rangeCard()}});
-  // *SET_SOLID, *SET_BEAM, *SET_DISCRETE: SID, SOLVER; *SET_SHELL: SID, DA1-DA4, SOLVER
-  // (Keyword Manual vol. I). Eight element ids per card, or _GENERATE ranges; _ADD lists sets.
+  // *SET_SOLID, *SET_BEAM, *SET_DISCRETE, *SET_TSHELL: SID, SOLVER; *SET_SHELL: SID, DA1-DA4,
+  // SOLVER (Keyword Manual vol. I). Eight element ids per card, or _GENERATE ranges; _ADD lists
+  // sets.
   for (auto [name, add] : Pairs{{"*SET_SOLID", "*SET_SOLID_ADD"},
+                                {"*SET_TSHELL", "*SET_TSHELL_ADD"},
                                 {"*SET_BEAM", "*SET_BEAM_ADD"},
                                 {"*SET_DISCRETE", "*SET_DISCRETE_ADD"},
                                 {"*SET_SHELL", "*SET_SHELL_ADD"}}) {

@@ -477,7 +477,11 @@ class SubdomainBuilder {
     b.zeta = sec.zeta;
     b.weight = sec.weight;
     b.erosion = {};  // refused on thick-shell parts (model/build_erosion.cpp)
-    b.resize(b.size(), plastic, materials::hasShellAlpha(b.law), b.hourglass.qm > 0.0, sec.nip, 0);
+    // ELFORM 2 (2 x 2 in the plane) has no hourglass modes to control.
+    const bool selective = b.elform == model::kThickShellSelective;
+    b.plane_points = selective ? 4 : 1;
+    b.resize(b.size(), plastic, materials::hasShellAlpha(b.law), !selective && b.hourglass.qm > 0.0,
+             sec.nip * b.plane_points, 0);
     return b;
   }
 

@@ -108,9 +108,14 @@ struct SolidBlock : BlockBase {
   // 3, 4 the transverse shear yz, zx, 5 the thickness-stretch stress (one value per element,
   // kept at every point); alpha_ip 0-2 the plane-stress back stress or shell strain; eps_p_ip.
   // sig and eps_p hold the through-thickness means (sig in the global frame) for output.
+  // plane_points: 1 (ELFORM 1, the centre of the plane) or 4 (ELFORM 2, the 2 x 2 Gauss
+  // points); `points` = plane_points x NIP, point g NIP + k the in-plane point g at thickness
+  // point k. The thickness-stretch stress is one value per in-plane point, kept at each of its
+  // thickness points.
   std::vector<double> zeta, weight;
   bool lobatto = false;
   double shear_factor = 1.0;
+  int plane_points = 1;
   bool thickShell() const { return model::isThickShell(elform); }
 
   // Elements plus padding: a whole number of batches.

@@ -27,7 +27,10 @@ using detail::BatchScratch;
 using detail::LaneArray;
 
 static_assert(kBatch == kShellBatch, "the lamina frames reuse the shell kernel's lanes");
-constexpr int kMaxPoints = kMaxShellPoints * kBatch;
+// In-plane points: 1 (ELFORM 1, the centre) or 4 (ELFORM 2, the 2 x 2 Gauss rule).
+constexpr int kMaxPlanePoints = 4;
+constexpr int kMaxElementPoints = kMaxPlanePoints * kMaxShellPoints;
+constexpr int kMaxPoints = kMaxElementPoints * kBatch;
 
 // Natural coordinates of the brick's nodes (N1-N4 bottom, zeta = -1; N5-N8 top).
 constexpr double kXi[8] = {-1, 1, 1, -1, -1, 1, 1, -1};
@@ -38,25 +41,31 @@ constexpr double kZeta[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
 // (modes 2 and 3 of hex8_kernel.hpp; eta zeta and zeta xi give strains at zeta != 0).
 constexpr int kFirstHourglassMode = 2;
 
-// dN_a / dxi_i of the trilinear brick at (0, 0, zeta).
-void naturalDerivatives(double zeta, double (&d)[8][3]) {
+// dN_a / dxi_i of the trilinear brick at (xi, eta, zeta) (at xi = eta = 0 the factors
+// 1 + xi xi_a and 1 + eta eta_a are exactly 1).
+void naturalDerivatives(double xi, double eta, double zeta, double (&d)[8][3]) {
   for (int a = 0; a < 8; ++a) {
     const double fz = 0.125 * (1.0 + zeta * kZeta[a]);
-    d[a][0] = kXi[a] * fz;
-    d[a][1] = kEta[a] * fz;
-    d[a][2] = 0.125 * kZeta[a];
+    const double fx = 1.0 + xi * kXi[a], fy = 1.0 + eta * kEta[a];
+    d[a][0] = kXi[a] * fy * fz;
+    d[a][1] = kEta[a] * fx * fz;
+    d[a][2] = 0.125 * kZeta[a] * (fx * fy);
   }
 }
 
-// The constants of one block for one call.
+// The constants of one block for one call. Point ip = g nip + k of an element is in-plane
+// point g (of `plane`) at thickness point k; weight[ip] = w_g w_k sums to 1.
 struct TShellParams {
   double dt = 0, E = 0, G = 0, kappa = 1, c_plate = 0;
-  int nip = 0;
+  int nip = 0, plane = 1, points = 0;
   std::size_t padded = 0;
   bool can_fail = false;
-  double weight[kMaxShellPoints] = {};
-  double d[kMaxShellPoints][8][3] = {};  // natural derivatives at each point
-  detail::SolidParams hg;                // the hourglass control's constants
+  double weight[kMaxElementPoints] = {};
+  double thickness_weight[kMaxShellPoints] = {};  // w_k
+  double d[kMaxElementPoints][8][3] = {};         // natural derivatives at each point
+  // At (0, 0, zeta_k): the transverse shear's one in-plane point (selective reduced, ELFORM 2).
+  double dc[kMaxShellPoints][8][3] = {};
+  detail::SolidParams hg;  // the hourglass control's constants
 };
 
 // The lamina frame of each lane (the Belytschko-Tsay frame of the mid-surface quadrilateral,
@@ -75,7 +84,7 @@ struct TShellPoints {
   double ep[kMaxPoints];
   double tau[2][kMaxPoints], gam[2][kMaxPoints], dzz_kin[kMaxPoints], vol_mid[kMaxPoints];
   uint8_t failed[kMaxPoints];
-  LaneArray szz, work;
+  LaneArray szz[kMaxPlanePoints], work;  // the thickness-stretch stress at each in-plane point
 };
 
 void laminaFrames(const NodalBatch& x, LaminaFrames& fr) {
@@ -117,15 +126,29 @@ TShellParams paramsOf(const Law& law, const domain::SolidBlock& blk, double dt) 
   p.G = m.shear;
   p.kappa = blk.shear_factor;
   p.c_plate = std::sqrt(p.E / (blk.rho0 * (1.0 - nu * nu)));
-  p.nip = blk.points;
+  p.plane = blk.plane_points;
+  p.nip = blk.points / p.plane;
+  p.points = blk.points;
   p.padded = blk.paddedSize();
   p.can_fail = law.failureStrain() > 0.0;
-  if (blk.zeta.size() != std::size_t(p.nip) || p.nip < 1 || p.nip > kMaxShellPoints)
+  if (blk.zeta.size() != std::size_t(p.nip) || p.nip < 1 || p.nip > kMaxShellPoints ||
+      (p.plane != 1 && p.plane != 4) || p.nip * p.plane != blk.points)
     throw std::logic_error(
         "computeThickShellForces: no through-thickness rule (setThickShellRule)");
-  for (int ip = 0; ip < p.nip; ++ip) {
-    p.weight[ip] = blk.weight[std::size_t(ip)];
-    naturalDerivatives(blk.zeta[std::size_t(ip)], p.d[ip]);
+  // The 2 x 2 Gauss points of the plane (ELFORM 2), each a quarter of it; else the centre.
+  const double g = 1.0 / std::sqrt(3.0);
+  const double gxi[4] = {-g, g, g, -g}, geta[4] = {-g, -g, g, g};
+  const double wg = p.plane == 1 ? 1.0 : 0.25;
+  for (int k = 0; k < p.nip; ++k) {
+    const double zeta = blk.zeta[std::size_t(k)];
+    p.thickness_weight[k] = blk.weight[std::size_t(k)];
+    naturalDerivatives(0.0, 0.0, zeta, p.dc[k]);
+    for (int ig = 0; ig < p.plane; ++ig) {
+      const int ip = ig * p.nip + k;
+      p.weight[ip] = wg * blk.weight[std::size_t(k)];
+      naturalDerivatives(p.plane == 1 ? 0.0 : gxi[ig], p.plane == 1 ? 0.0 : geta[ig], zeta,
+                         p.d[ip]);
+    }
   }
   p.hg.dt = dt;
   p.hg.lam2mu = m.bulk + 4.0 / 3.0 * m.shear;
@@ -135,9 +158,21 @@ TShellParams paramsOf(const Law& law, const domain::SolidBlock& blk, double dt) 
   return p;
 }
 
+// The velocity gradient L_jk = sum_a v_j,a dN_a / dx_k of lane l.
+void velocityGradient(const NodalBatch& vl, const NodalBatch& grad, int l, double (&L)[3][3]) {
+  for (int j = 0; j < 3; ++j)
+    for (int k = 0; k < 3; ++k) {
+      double s = 0.0;
+      for (int a = 0; a < 8; ++a) s += vl[j][a][l] * grad[k][a][l];
+      L[j][k] = s;
+    }
+}
+
 // The strain increments of every point at the mid-step geometry x(n-1/2) = x(n) - dt/2 v, in
-// the lamina frame of that geometry: in-plane (tensor shear), transverse shear (engineering),
-// the kinematic thickness strain; and the points' volume weights.
+// the lamina frame of that geometry: in-plane (tensor shear) and the kinematic thickness strain
+// at the point, the transverse shear (engineering) at the plane's centre (0, 0, zeta_k), the
+// same for every in-plane point of thickness point k (selective reduced integration: with
+// ELFORM 2's 2 x 2 points the transverse shear would lock in bending); the volume weights.
 void midStepStrains(const TShellParams& p, BatchScratch& w, TShellPoints& q) {
   const double dt = p.dt;
   for (int c = 0; c < 3; ++c)
@@ -149,24 +184,32 @@ void midStepStrains(const TShellParams& p, BatchScratch& w, TShellPoints& q) {
   toLamina(fr, w.xm, xl);
   toLamina(fr, w.v, vl);
   LaneArray det;
-  for (int ip = 0; ip < p.nip; ++ip) {
-    detail::isoparametricGradients<8>(p.d[ip], 8.0 * p.weight[ip], xl, grad, det);
-    for (int l = 0; l < kBatch; ++l) {
-      double L[3][3];
-      for (int j = 0; j < 3; ++j)
-        for (int k = 0; k < 3; ++k) {
-          double s = 0.0;
-          for (int a = 0; a < 8; ++a) s += vl[j][a][l] * grad[k][a][l];
-          L[j][k] = s;
-        }
-      const int i = ip * kBatch + l;
-      q.de[0][i] = L[0][0] * dt;
-      q.de[1][i] = L[1][1] * dt;
-      q.de[2][i] = 0.5 * (L[0][1] + L[1][0]) * dt;
-      q.gam[0][i] = (L[1][2] + L[2][1]) * dt;
-      q.gam[1][i] = (L[2][0] + L[0][2]) * dt;
-      q.dzz_kin[i] = L[2][2] * dt;
-      q.vol_mid[i] = det[l];
+  for (int k = 0; k < p.nip; ++k) {
+    LaneArray gam_yz, gam_zx;
+    if (p.plane > 1) {
+      detail::isoparametricGradients<8>(p.dc[k], 1.0, xl, grad, det);
+      for (int l = 0; l < kBatch; ++l) {
+        double L[3][3];
+        velocityGradient(vl, grad, l, L);
+        gam_yz[l] = (L[1][2] + L[2][1]) * dt;
+        gam_zx[l] = (L[2][0] + L[0][2]) * dt;
+      }
+    }
+    for (int ig = 0; ig < p.plane; ++ig) {
+      const int ip = ig * p.nip + k;
+      detail::isoparametricGradients<8>(p.d[ip], 8.0 * p.weight[ip], xl, grad, det);
+      for (int l = 0; l < kBatch; ++l) {
+        double L[3][3];
+        velocityGradient(vl, grad, l, L);
+        const int i = ip * kBatch + l;
+        q.de[0][i] = L[0][0] * dt;
+        q.de[1][i] = L[1][1] * dt;
+        q.de[2][i] = 0.5 * (L[0][1] + L[1][0]) * dt;
+        q.gam[0][i] = p.plane > 1 ? gam_yz[l] : (L[1][2] + L[2][1]) * dt;
+        q.gam[1][i] = p.plane > 1 ? gam_zx[l] : (L[2][0] + L[0][2]) * dt;
+        q.dzz_kin[i] = L[2][2] * dt;
+        q.vol_mid[i] = det[l];
+      }
     }
   }
 }
@@ -183,7 +226,7 @@ double pointWork(const TShellPoints& q, int i, double szz) {
 template <class Law>
 void loadPoints(const TShellParams& p, const domain::SolidBlock& blk, std::size_t first,
                 TShellPoints& q) {
-  for (int ip = 0; ip < p.nip; ++ip)
+  for (int ip = 0; ip < p.points; ++ip)
     for (int l = 0; l < kBatch; ++l) {
       const std::size_t idx = std::size_t(ip) * p.padded + first + std::size_t(l);
       const int i = ip * kBatch + l;
@@ -197,16 +240,18 @@ void loadPoints(const TShellParams& p, const domain::SolidBlock& blk, std::size_
       if constexpr (materials::shellAlphaOf<Law>())
         for (int k = 0; k < 3; ++k) q.alpha[k][i] = blk.alpha_ip[std::size_t(k)][idx];
     }
-  for (int l = 0; l < kBatch; ++l) q.szz[l] = blk.sig_ip[5][first + std::size_t(l)];
+  for (int ig = 0; ig < p.plane; ++ig)
+    for (int l = 0; l < kBatch; ++l)
+      q.szz[ig][l] = blk.sig_ip[5][std::size_t(ig * p.nip) * p.padded + first + std::size_t(l)];
 }
 
 // The plane-stress law at every point; a failed point carries no stress. w.failed: every
 // point of the element has failed (the element is deleted at the end of the pass).
 template <class Law>
 void lawUpdate(const Law& law, const TShellParams& p, TShellPoints& q, BatchScratch& w) {
-  shell_detail::planeStressUpdate(law, p.nip * kBatch, p.dt, p.can_fail, q);
+  shell_detail::planeStressUpdate(law, p.points * kBatch, p.dt, p.can_fail, q);
   for (int l = 0; l < kBatch; ++l) w.failed[l] = p.can_fail ? 1 : 0;
-  for (int ip = 0; ip < p.nip; ++ip)
+  for (int ip = 0; ip < p.points; ++ip)
     for (int l = 0; l < kBatch; ++l) {
       const int i = ip * kBatch + l;
       const bool f = q.failed[i] != 0;
@@ -215,33 +260,85 @@ void lawUpdate(const Law& law, const TShellParams& p, TShellPoints& q, BatchScra
     }
 }
 
+// The stress work of every point (pointWork), summed per element with factor `half`.
+void addWork(const TShellParams& p, const TShellPoints& q, double half, LaneArray& work) {
+  for (int ip = 0; ip < p.points; ++ip)
+    for (int l = 0; l < kBatch; ++l)
+      work[l] += half * pointWork(q, ip * kBatch + l, q.szz[ip / p.nip][l]);
+}
+
 // One step of every point: the old half of the work, the law, the transverse shear (elastic,
-// kappa G), the thickness-stretch stress (E times the element's kinematic thickness strain
-// less the one the law asks for, both through-thickness means) and the new half of the work.
+// kappa G), the thickness-stretch stress of each in-plane point (E times the kinematic
+// thickness strain less the one the law asks for, both through-thickness means at that
+// in-plane point) and the new half of the work.
 template <class Law>
 void updatePoints(const Law& law, const TShellParams& p, TShellPoints& q, BatchScratch& w) {
   for (int l = 0; l < kBatch; ++l) q.work[l] = 0.0;
-  for (int ip = 0; ip < p.nip; ++ip)
-    for (int l = 0; l < kBatch; ++l) q.work[l] += 0.5 * pointWork(q, ip * kBatch + l, q.szz[l]);
+  addWork(p, q, 0.5, q.work);
   lawUpdate(law, p, q, w);
   const double kg = p.kappa * p.G;
   LaneArray stretch;
-  for (int l = 0; l < kBatch; ++l) stretch[l] = 0.0;
-  for (int ip = 0; ip < p.nip; ++ip)
-    for (int l = 0; l < kBatch; ++l) {
-      const int i = ip * kBatch + l;
-      const double keep = q.failed[i] ? 0.0 : 1.0;
-      q.tau[0][i] = keep * (q.tau[0][i] + kg * q.gam[0][i]);
-      q.tau[1][i] = keep * (q.tau[1][i] + kg * q.gam[1][i]);
-      stretch[l] += p.weight[ip] * (q.dzz_kin[i] - q.dzz[i]);
-    }
-  for (int l = 0; l < kBatch; ++l) q.szz[l] = w.failed[l] ? 0.0 : q.szz[l] + p.E * stretch[l];
-  for (int ip = 0; ip < p.nip; ++ip)
-    for (int l = 0; l < kBatch; ++l) q.work[l] += 0.5 * pointWork(q, ip * kBatch + l, q.szz[l]);
+  for (int ig = 0; ig < p.plane; ++ig) {
+    for (int l = 0; l < kBatch; ++l) stretch[l] = 0.0;
+    for (int k = 0; k < p.nip; ++k)
+      for (int l = 0; l < kBatch; ++l) {
+        const int i = (ig * p.nip + k) * kBatch + l;
+        const double keep = q.failed[i] ? 0.0 : 1.0;
+        q.tau[0][i] = keep * (q.tau[0][i] + kg * q.gam[0][i]);
+        q.tau[1][i] = keep * (q.tau[1][i] + kg * q.gam[1][i]);
+        stretch[l] += p.thickness_weight[k] * (q.dzz_kin[i] - q.dzz[i]);
+      }
+    for (int l = 0; l < kBatch; ++l)
+      q.szz[ig][l] = w.failed[l] ? 0.0 : q.szz[ig][l] + p.E * stretch[l];
+  }
+  addWork(p, q, 0.5, q.work);
 }
 
 // Corner forces at x(n): f_a = -sum_ip (8 w_ip det J) sigma' . grad N_a in the lamina frame of
 // x(n), turned to the global frame into w.f; vol the sum of the points' volume weights.
+// ELFORM 2: the transverse shear's part, at the plane's centre with the one-point rule
+// (8 w_k det J there) and the mean over the in-plane points of their shear stress (the same
+// unless a point has failed); the in-plane and thickness-stretch parts at the 2 x 2 points.
+void selectiveForces(const TShellParams& p, const NodalBatch& xl, const TShellPoints& q,
+                     NodalBatch& fl, LaneArray& vol) {
+  NodalBatch grad;
+  LaneArray det;
+  const double share = 1.0 / p.plane;
+  for (int k = 0; k < p.nip; ++k) {
+    detail::isoparametricGradients<8>(p.dc[k], 8.0 * p.thickness_weight[k], xl, grad, det);
+    for (int l = 0; l < kBatch; ++l) {
+      double tyz = 0.0, tzx = 0.0;
+      for (int ig = 0; ig < p.plane; ++ig) {
+        const int i = (ig * p.nip + k) * kBatch + l;
+        tyz += share * q.tau[0][i];
+        tzx += share * q.tau[1][i];
+      }
+      tyz *= det[l];
+      tzx *= det[l];
+      for (int a = 0; a < 8; ++a) {
+        fl[0][a][l] -= tzx * grad[2][a][l];
+        fl[1][a][l] -= tyz * grad[2][a][l];
+        fl[2][a][l] -= tzx * grad[0][a][l] + tyz * grad[1][a][l];
+      }
+    }
+  }
+  for (int ip = 0; ip < p.points; ++ip) {
+    detail::isoparametricGradients<8>(p.d[ip], 8.0 * p.weight[ip], xl, grad, det);
+    for (int l = 0; l < kBatch; ++l) {
+      const int i = ip * kBatch + l;
+      const double s0 = det[l] * q.s[0][i], s1 = det[l] * q.s[1][i], s2 = det[l] * q.s[2][i];
+      const double szz = det[l] * q.szz[ip / p.nip][l];
+      for (int a = 0; a < 8; ++a) {
+        const double gx = grad[0][a][l], gy = grad[1][a][l], gz = grad[2][a][l];
+        fl[0][a][l] -= s0 * gx + s2 * gy;
+        fl[1][a][l] -= s2 * gx + s1 * gy;
+        fl[2][a][l] -= szz * gz;
+      }
+      vol[l] += det[l];
+    }
+  }
+}
+
 void internalForces(const TShellParams& p, BatchScratch& w, const TShellPoints& q, LaminaFrames& fr,
                     LaneArray& vol) {
   laminaFrames(w.x, fr);
@@ -249,13 +346,14 @@ void internalForces(const TShellParams& p, BatchScratch& w, const TShellPoints& 
   toLamina(fr, w.x, xl);
   LaneArray det;
   for (int l = 0; l < kBatch; ++l) vol[l] = 0.0;
-  for (int ip = 0; ip < p.nip; ++ip) {
+  if (p.plane > 1) selectiveForces(p, xl, q, fl, vol);
+  for (int ip = 0; ip < (p.plane > 1 ? 0 : p.nip); ++ip) {
     detail::isoparametricGradients<8>(p.d[ip], 8.0 * p.weight[ip], xl, grad, det);
     for (int l = 0; l < kBatch; ++l) {
       const int i = ip * kBatch + l;
       const double s0 = det[l] * q.s[0][i], s1 = det[l] * q.s[1][i], s2 = det[l] * q.s[2][i];
       const double tyz = det[l] * q.tau[0][i], tzx = det[l] * q.tau[1][i];
-      const double szz = det[l] * q.szz[l];
+      const double szz = det[l] * q.szz[0][l];
       for (int a = 0; a < 8; ++a) {
         const double gx = grad[0][a][l], gy = grad[1][a][l], gz = grad[2][a][l];
         fl[0][a][l] -= s0 * gx + s2 * gy + tzx * gz;
@@ -298,7 +396,8 @@ void midStepSpin(const TShellParams& p, BatchScratch& w, detail::SolidSpin& sp) 
 void hourglassControl(const TShellParams& p, domain::SolidBlock& blk, std::size_t first,
                       BatchScratch& w, LaneArray& de_hg) {
   for (int l = 0; l < kBatch; ++l) de_hg[l] = 0.0;
-  if (!(p.hg.qm > 0.0)) return;
+  // ELFORM 2's 2 x 2 points see every mode: no hourglass control.
+  if (!(p.hg.qm > 0.0) || p.plane > 1) return;
   detail::SolidSpin sp;
   midStepSpin(p, w, sp);
   volumeGradient(w.x, w.b);
@@ -319,7 +418,7 @@ void storeMeans(const TShellParams& p, domain::SolidBlock& blk, std::size_t e, i
                 const LaminaFrames& fr, const TShellPoints& q) {
   double m[3][3] = {};
   double ep = 0.0;
-  for (int ip = 0; ip < p.nip; ++ip) {
+  for (int ip = 0; ip < p.points; ++ip) {
     const int i = ip * kBatch + l;
     const double wt = p.weight[ip];
     m[0][0] += wt * q.s[0][i];
@@ -329,7 +428,9 @@ void storeMeans(const TShellParams& p, domain::SolidBlock& blk, std::size_t e, i
     m[0][2] += wt * q.tau[1][i];
     ep += wt * q.ep[i];
   }
-  m[2][2] = q.szz[l];
+  m[2][2] = q.szz[0][l];
+  for (int ig = 1; ig < p.plane; ++ig) m[2][2] += q.szz[ig][l];
+  m[2][2] /= p.plane;
   m[1][0] = m[0][1];
   m[2][1] = m[1][2];
   m[2][0] = m[0][2];
@@ -348,7 +449,7 @@ void storeMeans(const TShellParams& p, domain::SolidBlock& blk, std::size_t e, i
 template <class Law>
 void storePoints(const TShellParams& p, domain::SolidBlock& blk, std::size_t first,
                  const TShellPoints& q) {
-  for (int ip = 0; ip < p.nip; ++ip)
+  for (int ip = 0; ip < p.points; ++ip)
     for (int l = 0; l < kBatch; ++l) {
       const std::size_t e = first + std::size_t(l), idx = std::size_t(ip) * p.padded + e;
       if (!blk.active[e]) continue;
@@ -356,7 +457,7 @@ void storePoints(const TShellParams& p, domain::SolidBlock& blk, std::size_t fir
       for (int k = 0; k < 3; ++k) blk.sig_ip[std::size_t(k)][idx] = q.s[k][i];
       blk.sig_ip[3][idx] = q.tau[0][i];
       blk.sig_ip[4][idx] = q.tau[1][i];
-      blk.sig_ip[5][idx] = q.szz[l];
+      blk.sig_ip[5][idx] = q.szz[ip / p.nip][l];
       if constexpr (Law::kPlastic) blk.eps_p_ip[idx] = q.ep[i];
       if constexpr (materials::shellAlphaOf<Law>())
         for (int k = 0; k < 3; ++k) blk.alpha_ip[std::size_t(k)][idx] = q.alpha[k][i];
@@ -443,7 +544,8 @@ BlockStatus computeThickShellForces(domain::SolidBlock& block, const domain::Nod
 
 void setThickShellRule(domain::SolidBlock& block) {
   if (block.zeta.empty())
-    throughThicknessRule(block.points, block.lobatto, block.zeta, block.weight);
+    throughThicknessRule(block.points / block.plane_points, block.lobatto, block.zeta,
+                         block.weight);
 }
 
 void thickShellLengths(const NodalBatch& x, double (&length)[kBatch]) {
@@ -454,6 +556,51 @@ void thickShellLengths(const NodalBatch& x, double (&length)[kBatch]) {
   LaneArray vol;
   detail::volumeOf(x, b, vol);
   lengthsOf(fr, vol, length);
+}
+
+void thickShellLayerStress(const domain::SolidBlock& block, const domain::NodeVector& x,
+                           std::size_t e, double (&layers)[3][6], double (&eps)[3]) {
+  NodalBatch xb;
+  for (int c = 0; c < 3; ++c)
+    for (int a = 0; a < 8; ++a)
+      for (int l = 0; l < kBatch; ++l)
+        xb[c][a][l] = x[3 * std::size_t(block.conn[e][std::size_t(a)]) + std::size_t(c)];
+  LaminaFrames fr;
+  laminaFrames(xb, fr);
+  const int plane = block.plane_points, nip = block.points / plane;
+  const std::size_t padded = block.paddedSize();
+  const auto lowest = std::min_element(block.zeta.begin(), block.zeta.end());
+  const auto highest = std::max_element(block.zeta.begin(), block.zeta.end());
+  const int level[2] = {int(lowest - block.zeta.begin()), int(highest - block.zeta.begin())};
+  constexpr int kVoigt[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {2, 0}};
+  for (int side = 0; side < 2; ++side) {
+    double m[3][3] = {}, ep = 0.0;
+    for (int g = 0; g < plane; ++g) {
+      const std::size_t idx = std::size_t(g * nip + level[side]) * padded + e;
+      const double w = 1.0 / plane;
+      m[0][0] += w * block.sig_ip[0][idx];
+      m[1][1] += w * block.sig_ip[1][idx];
+      m[0][1] += w * block.sig_ip[2][idx];
+      m[1][2] += w * block.sig_ip[3][idx];
+      m[0][2] += w * block.sig_ip[4][idx];
+      m[2][2] += w * block.sig_ip[5][idx];
+      ep += block.eps_p_ip.empty() ? 0.0 : w * block.eps_p_ip[idx];
+    }
+    m[1][0] = m[0][1];
+    m[2][1] = m[1][2];
+    m[2][0] = m[0][2];
+    const int out = side == 0 ? 0 : 2;
+    for (int k = 0; k < 6; ++k) {
+      const int c = kVoigt[k][0], d = kVoigt[k][1];
+      double s = 0.0;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) s += fr.e[i][c][0] * m[i][j] * fr.e[j][d][0];
+      layers[out][k] = s;
+    }
+    eps[out] = ep;
+  }
+  for (int k = 0; k < 6; ++k) layers[1][k] = block.sigAt(k, e);
+  eps[1] = block.eps_p.empty() ? 0.0 : block.eps_p[e];
 }
 
 double thickShellWaveSpeed(const domain::SolidBlock& block) {

@@ -17,6 +17,12 @@
 // and the one the plane-stress law asks for) gives the mode in which the top face moves against
 // the bottom along the normal a resistance that plane stress alone would not. Theory notes in
 // docs/theory.md, "Thick shells".
+//
+// ELFORM 2 (selective reduced; LS-DYNA Theory Manual, "Thick shell", formulation 2: 2 x 2
+// integration in the plane, no hourglass control): the same element with the in-plane strains
+// and the thickness stretch at the 2 x 2 Gauss points of every thickness level (4 NIP points,
+// SolidBlock::plane_points = 4) and the transverse shear at the centre of the plane, one value
+// per thickness level (the 2 x 2 rule would lock it in bending).
 #pragma once
 
 #include <cstddef>
@@ -45,5 +51,13 @@ void thickShellLengths(const NodalBatch& x, double (&length)[kBatch]);
 
 // sqrt(E / (rho (1 - nu^2))) of the block's law at its initial density.
 double thickShellWaveSpeed(const domain::SolidBlock& block);
+
+// Cauchy stress in the global frame (Voigt xx, yy, zz, xy, yz, zx, tensor shear) and effective
+// plastic strain of thick shell e at its bottom (0) and top (2) thickness points (the lowest
+// and highest zeta, the mean over the in-plane points) in the lamina frame of the current
+// coordinates x, and (1) the element's through-thickness means (block.sig, block.eps_p). For
+// output (the d3plot thick-shell records).
+void thickShellLayerStress(const domain::SolidBlock& block, const domain::NodeVector& x,
+                           std::size_t e, double (&layers)[3][6], double (&eps)[3]);
 
 }  // namespace crumple::elements

@@ -50,6 +50,8 @@ std::string_view kindName(Kind kind) {
       return "beam set";
     case Kind::DiscreteSet:
       return "discrete set";
+    case Kind::TShellSet:
+      return "thick shell set";
   }
   return "entity";
 }
@@ -236,6 +238,10 @@ const std::vector<int32_t>& Context::partSet(const deck::Card& card, std::string
                                              int64_t id) const {
   return lookup(*this, model.part_sets, Kind::PartSet, card, field, id);
 }
+const std::vector<int32_t>& Context::tshellSet(const deck::Card& card, std::string_view field,
+                                               int64_t id) const {
+  return lookup(*this, model.tshell_sets, Kind::TShellSet, card, field, id);
+}
 const std::vector<int32_t>& Context::elementSet(Family f, const deck::Card& card,
                                                 std::string_view field, int64_t id) const {
   return lookup(*this, model.element_sets[static_cast<std::size_t>(f)], elementSetKind(f), card,
@@ -406,11 +412,18 @@ const std::vector<Meaning>& meanings() {
        {"LIST", "TITLE", "GENERATE", "COLLECT"},
        U::Definition,
        Kind::DiscreteSet},
+      {"*SET_TSHELL",
+       4,
+       readElementSetList,
+       {"LIST", "TITLE", "GENERATE", "COLLECT"},
+       U::Definition,
+       Kind::TShellSet},
       // After the lists they add up (phase 4); an _ADD of an _ADD set follows it in the deck.
       {"*SET_SOLID_ADD", 5, readElementSetAdd, {"TITLE"}, U::Definition, Kind::SolidSet},
       {"*SET_SHELL_ADD", 5, readElementSetAdd, {"TITLE"}, U::Definition, Kind::ShellSet},
       {"*SET_BEAM_ADD", 5, readElementSetAdd, {"TITLE"}, U::Definition, Kind::BeamSet},
       {"*SET_DISCRETE_ADD", 5, readElementSetAdd, {"TITLE"}, U::Definition, Kind::DiscreteSet},
+      {"*SET_TSHELL_ADD", 5, readElementSetAdd, {"TITLE"}, U::Definition, Kind::TShellSet},
       {"*SET_NODE_GENERAL", 5, readNodeSetGeneral, {"TITLE"}, U::Definition, Kind::NodeSet},
       {"*BOUNDARY_SPC", 6, readSpc, {"NODE", "SET", "ID"}, U::Reject},
       // _NODES: the spelling of LS-DYNA's older examples (the 1997 Frazer-Nash test deck) for
@@ -504,6 +517,8 @@ const std::vector<Meaning>& meanings() {
       {"*DATABASE_HISTORY_SOLID_SET", 6, readHistoryElementSet, {}},
       {"*DATABASE_HISTORY_SHELL_SET", 6, readHistoryElementSet, {}},
       {"*DATABASE_HISTORY_BEAM_SET", 6, readHistoryElementSet, {}},
+      {"*DATABASE_HISTORY_TSHELL", 6, readHistoryElement, {"ID"}},
+      {"*DATABASE_HISTORY_TSHELL_SET", 6, readHistoryElementSet, {}},
       {"*DATABASE_ELOUT", 6, readDatabaseAscii, {}},
   });
   return m;

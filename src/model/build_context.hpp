@@ -45,6 +45,7 @@ enum class Kind : uint8_t {
   ShellSet,
   BeamSet,
   DiscreteSet,
+  TShellSet,  // *SET_TSHELL: thick shells (kept with the solids), an id space of its own
 };
 // The set kind of an element family.
 inline Kind elementSetKind(Family f) {
@@ -160,6 +161,9 @@ class Context {
   const std::vector<int32_t>& partSet(const deck::Card& card, std::string_view field,
                                       int64_t id) const;
   // Members (indices within family f) of the element set `id` of that family.
+  // *SET_TSHELL id -> its thick shells as solid-family indices.
+  const std::vector<int32_t>& tshellSet(const deck::Card& card, std::string_view field,
+                                        int64_t id) const;
   const std::vector<int32_t>& elementSet(Family f, const deck::Card& card, std::string_view field,
                                          int64_t id) const;
   const std::vector<std::array<int32_t, 4>>& segmentSet(const deck::Card& card,

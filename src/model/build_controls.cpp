@@ -301,19 +301,16 @@ CrossSection crossSectionHead(Context& ctx, CardCursor& cur, const deck::Keyword
 }  // namespace
 
 // Keyword Manual Vol. I, *DATABASE_CROSS_SECTION_SET: the force the given elements exert on the
-// given nodes (src/output/sections.hpp). Thick shells (TSID) and a local frame (ID) are not
-// supported: the section is left out and said so (output only).
+// given nodes (src/output/sections.hpp); the thick shells of TSID (*SET_TSHELL) join the
+// solids of HSID (they are kept with the solids). A local frame (ID) is not supported: the
+// section is left out and said so (output only).
 void readCrossSectionSet(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const auto& spec = keywordSpec("*DATABASE_CROSS_SECTION_SET");
   CardCursor cur(kw, ctx.deck);
   const Card* c = nullptr;
   CrossSection cs = crossSectionHead(ctx, cur, spec, kw, opts, "NSID", c);
-  if (c->integer("ID") != 0 || c->integer("TSID") != 0) {
-    ctx.reportUnsupported(kw,
-                          c->integer("ID") != 0
-                              ? "section forces in a local frame (ID, ITYPE) not supported"
-                              : "thick shells (TSID) not supported",
-                          false);
+  if (c->integer("ID") != 0) {
+    ctx.reportUnsupported(kw, "section forces in a local frame (ID, ITYPE) not supported", false);
     return;
   }
   cs.by_set = true;
@@ -332,7 +329,15 @@ void readCrossSectionSet(Context& ctx, const deck::Keyword& kw, const KeywordOpt
       cs.set_elements[static_cast<std::size_t>(f)] = ctx.elementSet(f, *c, field, id);
       any = true;
     }
-  if (!any) c->fail("HSID", "no element set: give HSID, SSID, BSID or DSID");
+  if (const int64_t id = c->integer("TSID"); id != 0) {
+    auto& solids = cs.set_elements[static_cast<std::size_t>(Family::Solid)];
+    const auto& thick = ctx.tshellSet(*c, "TSID", id);
+    solids.insert(solids.end(), thick.begin(), thick.end());
+    std::sort(solids.begin(), solids.end());
+    solids.erase(std::unique(solids.begin(), solids.end()), solids.end());
+    any = true;
+  }
+  if (!any) c->fail("HSID", "no element set: give HSID, SSID, BSID, DSID or TSID");
   ctx.model.cross_sections.push_back(std::move(cs));
   ctx.collect(cur);
 }
@@ -464,17 +469,24 @@ void readHistoryNodeSet(Context& ctx, const deck::Keyword& kw, const KeywordOpti
 }
 
 namespace {
-// The family of *DATABASE_HISTORY_SOLID, _SHELL or _BEAM (with or without _ID, _SET).
+// *DATABASE_HISTORY_TSHELL (with or without _ID, _SET): thick shells, of the solid family.
+bool historyTShell(std::string_view name) {
+  return name.rfind("*DATABASE_HISTORY_TSHELL", 0) == 0;
+}
+// The family of *DATABASE_HISTORY_SOLID, _SHELL, _BEAM or _TSHELL (with or without _ID, _SET).
 model::Family historyFamily(std::string_view name) {
-  if (name.rfind("*DATABASE_HISTORY_SOLID", 0) == 0) return model::Family::Solid;
+  if (name.rfind("*DATABASE_HISTORY_SOLID", 0) == 0 || historyTShell(name))
+    return model::Family::Solid;
   if (name.rfind("*DATABASE_HISTORY_SHELL", 0) == 0) return model::Family::Shell;
   return model::Family::Beam;
 }
 // The spec name of the keyword without _ID ("*DATABASE_HISTORY_SOLID" or its _SET).
-std::string historySpec(model::Family f, bool set) {
+std::string historySpec(std::string_view name, model::Family f, bool set) {
   static constexpr std::string_view kName[] = {"*DATABASE_HISTORY_SOLID", "*DATABASE_HISTORY_SHELL",
                                                "*DATABASE_HISTORY_BEAM"};
-  return std::string(kName[static_cast<int>(f)]) + (set ? "_SET" : "");
+  const std::string_view base =
+      historyTShell(name) ? "*DATABASE_HISTORY_TSHELL" : kName[static_cast<int>(f)];
+  return std::string(base) + (set ? "_SET" : "");
 }
 void addHistoryElement(Context& ctx, model::Family f, int32_t e) {
   auto& h = ctx.model.history_elements[static_cast<std::size_t>(f)];
@@ -484,16 +496,18 @@ void addHistoryElement(Context& ctx, model::Family f, int32_t e) {
 }  // namespace
 
 // Keyword Manual vol. I, *DATABASE_HISTORY_OPTION: the elements whose stresses (solids,
-// shells) or resultants (beams) elout lists at *DATABASE_ELOUT's DT.
+// shells, thick shells: these kept with the solids, elout lists them with the solids) or
+// resultants (beams) elout lists at *DATABASE_ELOUT's DT.
 void readHistoryElement(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const model::Family f = historyFamily(kw.name);
-  const auto& spec = keywordSpec(historySpec(f, false));
+  const bool tshell = historyTShell(kw.name);
+  const auto& spec = keywordSpec(historySpec(kw.name, f, false));
   CardCursor cur(kw, ctx.deck);
   auto add = [&](const Card& c, std::string_view field, int64_t id) {
     const int32_t e = ctx.model.elementIndex(f, id);
-    if (e == kNone)
-      c.fail(field, std::string(model::familyName(f)) + " element " + std::to_string(id) +
-                        " is not defined");
+    if (e == kNone || (tshell && !ctx.model.isThickShellElement(e)))
+      c.fail(field, (tshell ? std::string("thick shell") : std::string(model::familyName(f))) +
+                        " element " + std::to_string(id) + " is not defined");
     addHistoryElement(ctx, f, e);
   };
   while (nextRecord(cur, opts.has("ID"))) {
@@ -513,14 +527,16 @@ void readHistoryElement(Context& ctx, const deck::Keyword& kw, const KeywordOpti
 
 void readHistoryElementSet(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
   const model::Family f = historyFamily(kw.name);
-  const auto& spec = keywordSpec(historySpec(f, true)).card("card 1");
+  const bool tshell = historyTShell(kw.name);
+  const auto& spec = keywordSpec(historySpec(kw.name, f, true)).card("card 1");
   CardCursor cur(kw, ctx.deck);
   for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
     const Card& c = cur.read(spec);
     for (int k = 1; k <= 8; ++k) {
       const std::string field = "ID" + std::to_string(k);
       if (const int64_t id = c.integer(field); id != 0)
-        for (int32_t e : ctx.elementSet(f, c, field, id)) addHistoryElement(ctx, f, e);
+        for (int32_t e : tshell ? ctx.tshellSet(c, field, id) : ctx.elementSet(f, c, field, id))
+          addHistoryElement(ctx, f, e);
     }
     ctx.collect(cur);
   }

@@ -468,6 +468,13 @@ namespace crumple::model::build {
 
 namespace {
 
+// *SET_TSHELL (Keyword Manual vol. I): thick shells, kept with the solids (model.hpp), in a set
+// id space of their own; its members must be thick shells.
+constexpr std::string_view kTShellSet = "*SET_TSHELL";
+bool isTShellSet(std::string_view name) {
+  return name.substr(0, kTShellSet.size()) == kTShellSet;
+}
+
 // The element-set keywords of each family (Keyword Manual vol. I, *SET_SOLID, *SET_SHELL,
 // *SET_BEAM, *SET_DISCRETE), in Family order.
 constexpr std::string_view kElementSet[kFamilies] = {"*SET_SOLID", "*SET_SHELL", "*SET_BEAM",
@@ -476,6 +483,7 @@ constexpr std::string_view kElementSetAdd[kFamilies] = {"*SET_SOLID_ADD", "*SET_
                                                         "*SET_BEAM_ADD", "*SET_DISCRETE_ADD"};
 
 Family elementSetFamily(std::string_view name) {
+  if (isTShellSet(name)) return Family::Solid;
   for (int k = 0; k < kFamilies; ++k)
     if (name.substr(0, kElementSet[k].size()) == kElementSet[k]) return static_cast<Family>(k);
   throw std::logic_error("not an element set keyword: " + std::string(name));
@@ -484,13 +492,26 @@ Family elementSetFamily(std::string_view name) {
 }  // namespace
 
 namespace {
+// The sets a keyword's ids name and their kind: *SET_TSHELL's or the family's.
+Kind setKindOf(const deck::Keyword& kw, Family f) {
+  return isTShellSet(kw.name) ? Kind::TShellSet : elementSetKind(f);
+}
+std::map<int64_t, std::vector<int32_t>>& setsOf(Context& ctx, const deck::Keyword& kw, Family f) {
+  return isTShellSet(kw.name) ? ctx.model.tshell_sets
+                              : ctx.model.element_sets[static_cast<std::size_t>(f)];
+}
+const deck::KeywordSpec& setSpec(const deck::Keyword& kw, Family f, bool add) {
+  if (isTShellSet(kw.name)) return keywordSpec(add ? "*SET_TSHELL_ADD" : kTShellSet);
+  return keywordSpec((add ? kElementSetAdd : kElementSet)[static_cast<int>(f)]);
+}
+
 // The SID card, then `member(card spec, members, out)` for each card; the set is stored in
-// its family's map unless a member made it unusable.
+// its family's map (*SET_TSHELL: the thick-shell sets) unless a member made it unusable.
 template <class Member>
 void readElementSet(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts,
                     const deck::KeywordSpec& spec, Family f, Member member) {
   CardCursor cur(kw, ctx.deck);
-  const Kind kind = elementSetKind(f);
+  const Kind kind = setKindOf(kw, f);
   const int64_t sid = readSetId(ctx, cur, spec, opts, kind);
   Members members(ctx, kind, sid);
   std::vector<int32_t> elements;
@@ -498,38 +519,48 @@ void readElementSet(Context& ctx, const deck::Keyword& kw, const KeywordOptions&
     member(cur, members, elements);
     ctx.collect(cur);
   }
-  storeSet(ctx, members, kw, ctx.model.element_sets[static_cast<std::size_t>(f)], sid,
-           std::move(elements));
+  storeSet(ctx, members, kw, setsOf(ctx, kw, f), sid, std::move(elements));
 }
 }  // namespace
 
 // Members name elements of the keyword's family by id (_GENERATE: the ids between B and E that
-// exist); one that does not exist makes the set an error where it is used.
+// exist; *SET_TSHELL: the thick shells among them); one that does not exist (*SET_TSHELL: or
+// is not a thick shell) makes the set an error where it is used.
 void readElementSetList(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const Family f = elementSetFamily(kw.name);
-  const auto& spec = keywordSpec(kElementSet[static_cast<int>(f)]);
+  const bool tshell = isTShellSet(kw.name);
+  const auto& spec = setSpec(kw, f, false);
   const std::vector<int64_t>& ids = ctx.model.familyIds(f);
-  readElementSet(
-      ctx, kw, opts, spec, f, [&](CardCursor& cur, Members& members, std::vector<int32_t>& out) {
-        if (opts.has("GENERATE")) {
-          generate(cur.read(spec.card("range card")), ids, [&](int32_t i) { out.push_back(i); });
-          return;
-        }
-        const Card& c = cur.read(spec.card("card 2"));
-        for (int k = 1; k <= 8; ++k) {
-          const std::string field = "K" + std::to_string(k);
-          if (const int64_t id = c.integer(field); id != 0)
-            out.push_back(members.resolveElement(c, field, id, f));
-        }
-      });
+  const Model& m = ctx.model;
+  readElementSet(ctx, kw, opts, spec, f,
+                 [&](CardCursor& cur, Members& members, std::vector<int32_t>& out) {
+                   if (opts.has("GENERATE")) {
+                     generate(cur.read(spec.card("range card")), ids, [&](int32_t i) {
+                       if (!tshell || m.isThickShellElement(i)) out.push_back(i);
+                     });
+                     return;
+                   }
+                   const Card& c = cur.read(spec.card("card 2"));
+                   for (int k = 1; k <= 8; ++k) {
+                     const std::string field = "K" + std::to_string(k);
+                     const int64_t id = c.integer(field);
+                     if (id == 0) continue;
+                     const int32_t e = members.resolveElement(c, field, id, f);
+                     if (tshell && e != kNone && !m.isThickShellElement(e))
+                       members.problem(c, field,
+                                       "element " + std::to_string(id) +
+                                           " is a solid, not a thick shell (*ELEMENT_TSHELL)");
+                     out.push_back(e);
+                   }
+                 });
 }
 
 // _ADD: the union of the sets of the same family it names (read after every list; an _ADD
 // set it names must come before it in the deck).
 void readElementSetAdd(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const Family f = elementSetFamily(kw.name);
-  const auto& spec = keywordSpec(kElementSetAdd[static_cast<int>(f)]);
-  const auto& sets = ctx.model.element_sets[static_cast<std::size_t>(f)];
+  const auto& spec = setSpec(kw, f, true);
+  const auto& sets = setsOf(ctx, kw, f);
   readElementSet(ctx, kw, opts, spec, f,
                  [&](CardCursor& cur, Members& members, std::vector<int32_t>& out) {
                    const Card& c = cur.read(spec.card("card 2"));
@@ -540,7 +571,7 @@ void readElementSetAdd(Context& ctx, const deck::Keyword& kw, const KeywordOptio
                      if (const auto it = sets.find(id); it != sets.end()) {
                        out.insert(out.end(), it->second.begin(), it->second.end());
                      } else {
-                       members.problem(c, field, ctx.undefinedMessage(elementSetKind(f), id));
+                       members.problem(c, field, ctx.undefinedMessage(setKindOf(kw, f), id));
                      }
                    }
                  });

@@ -497,8 +497,9 @@ void readTShellAngles(Context& ctx, CardCursor& cur, const deck::KeywordSpec& sp
 }  // namespace
 
 // *SECTION_TSHELL (Keyword Manual vol. I): ELFORM 1 (one point in the plane, NIP through the
-// thickness, hourglass control; src/elements/tshell.hpp) runs; the others are refused when an
-// element uses the section. Kept among the solid sections (model.hpp, kThickShellOnePoint).
+// thickness, hourglass control) and 2 (selective reduced, 2 x 2 points in the plane; both
+// src/elements/tshell.hpp) run; the others are refused when an element uses the section. Kept
+// among the solid sections (model.hpp, kThickShellOnePoint, kThickShellSelective).
 void readSectionTShell(Context& ctx, const deck::Keyword& kw, const KeywordOptions& opts) {
   const auto& spec = keywordSpec("*SECTION_TSHELL");
   CardCursor cur(kw, ctx.deck);
@@ -516,17 +517,18 @@ void readSectionTShell(Context& ctx, const deck::Keyword& kw, const KeywordOptio
     if (icomp == 1) readTShellAngles(ctx, cur, spec, c, s.nip);
     const auto elform = c.integer("ELFORM");
     ctx.define(Kind::Section, s.id, c, "SECID");
-    if (elform != 1) {
+    if (elform != 1 && elform != 2) {
       ctx.defineUnsupported(Kind::Section, s.id, kw.name + " ELFORM=" + std::to_string(elform),
                             c.where());
       ctx.reportUnsupported(kw,
                             "ELFORM " + std::to_string(elform) +
-                                " not supported yet (ELFORM 1, one point in the plane, is)",
+                                " not supported yet (ELFORM 1, one point in the plane, and 2, "
+                                "selective reduced 2 x 2, are)",
                             false);
       ctx.collect(cur);
       continue;
     }
-    s.elform = kThickShellOnePoint;
+    s.elform = elform == 2 ? kThickShellSelective : kThickShellOnePoint;
     s.shrf = c.real("SHRF");
     if (!(s.shrf > 0)) c.fail("SHRF", "the shear factor must be positive");
     c.real("PROPT");  // printout only
@@ -534,8 +536,7 @@ void readSectionTShell(Context& ctx, const deck::Keyword& kw, const KeywordOptio
     // One point through the thickness leaves the element's bending modes free.
     if (s.nip < 2)
       c.fail(s.zeta.empty() ? "NIP" : "QR",
-             "a one-point-in-plane thick shell (ELFORM 1) needs at least 2 points through the "
-             "thickness");
+             "a thick shell (ELFORM 1 or 2) needs at least 2 points through the thickness");
     if (c.integer("TSHEAR") != 0)
       ctx.reject(c, "TSHEAR", "the parabolic transverse shear (TSHEAR = 1); 0 is supported");
     ctx.model.solid_sections.push_back(s);

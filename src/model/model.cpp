@@ -38,6 +38,12 @@ void fill(util::IdIndex& m, const Ids& ids) {
 int32_t Model::nodeIndex(int64_t id) const {
   return find(node_index_, id);
 }
+bool Model::isThickShellElement(int32_t e) const {
+  const Part& p = parts[std::size_t(solids.part[std::size_t(e)])];
+  return p.section_kind == SectionKind::Solid && p.section != kNone &&
+         isThickShell(solid_sections[std::size_t(p.section)].elform);
+}
+
 int32_t Model::elementIndex(Family f, int64_t id) const {
   const auto& ids = familyIds(f);
   const auto it = std::lower_bound(ids.begin(), ids.end(), id);
@@ -189,6 +195,7 @@ void Model::releaseMesh() {
   part_sets.clear();
   segment_sets.clear();
   for (auto& sets : element_sets) sets.clear();
+  tshell_sets.clear();
   std::vector<Vec3>().swap(initial_velocity);
   std::vector<Vec3>().swap(initial_angular_velocity);
   node_index_.clear();

@@ -109,7 +109,8 @@ struct SectionSolid {
   int elform = 1;
   util::SourceLoc where;
   // *SECTION_TSHELL sections are kept here too (their elements are 8-node bricks of the solid
-  // family; src/elements/tshell.hpp) with elform kThickShellOnePoint: NIP points through the
+  // family; src/elements/tshell.hpp) with elform kThickShellOnePoint or kThickShellSelective
+  // (ELFORM 1 or 2): NIP points through the
   // thickness on the Gauss (or Lobatto, QR = 0 with *CONTROL_SHELL INTGRD 1) rule, or the
   // *INTEGRATION_SHELL rule's zeta / weight (QR < 0); SHRF the transverse shear factor.
   int nip = 0;
@@ -118,11 +119,13 @@ struct SectionSolid {
   std::vector<double> zeta = {}, weight = {};
 };
 
-// The internal formulation code of *SECTION_TSHELL ELFORM 1 (one point in the plane, NIP
-// through the thickness, hourglass control): outside LS-DYNA's *SECTION_SOLID codes.
+// The internal formulation codes of *SECTION_TSHELL ELFORM 1 (one point in the plane, NIP
+// through the thickness, hourglass control) and ELFORM 2 (selective reduced: 2 x 2 points in
+// the plane, the transverse shear at the centre): outside LS-DYNA's *SECTION_SOLID codes.
 inline constexpr int kThickShellOnePoint = 101;
+inline constexpr int kThickShellSelective = 102;
 inline bool isThickShell(int elform) {
-  return elform == kThickShellOnePoint;
+  return elform == kThickShellOnePoint || elform == kThickShellSelective;
 }
 
 // *SECTION_SPH (Keyword Manual vol. I, *SECTION_SPH): the smoothing length of a part's SPH
@@ -602,6 +605,8 @@ struct Model {
   // *SET_SOLID, *SET_SHELL, *SET_BEAM, *SET_DISCRETE by family (each keyword has its own ids):
   // the members as indices within the family, ascending.
   std::array<std::map<int64_t, std::vector<int32_t>>, kFamilies> element_sets;
+  // *SET_TSHELL (an id space of its own): thick shells as solid-family indices, ascending.
+  std::map<int64_t, std::vector<int32_t>> tshell_sets;
 
   std::vector<Spc> spcs;
   std::vector<PrescribedMotion> prescribed;
@@ -654,6 +659,8 @@ struct Model {
   int32_t nodeIndex(int64_t id) const;
   // Index within family f of element `id` (kNone if absent); the family's ascending ids.
   int32_t elementIndex(Family f, int64_t id) const;
+  // True if solid-family element e is a thick shell (its part has a *SECTION_TSHELL).
+  bool isThickShellElement(int32_t e) const;
   const std::vector<int64_t>& familyIds(Family f) const;
   int32_t partIndex(int64_t id) const;
   int32_t curveIndex(int64_t id) const;

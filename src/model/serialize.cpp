@@ -205,6 +205,7 @@ void fields(A& a, M& m) {
   a(m.part_sets);
   a(m.segment_sets);
   for (auto& sets : m.element_sets) a(sets);
+  a(m.tshell_sets);
   a(m.spcs);
   a(m.prescribed);
   a(m.nodal_loads);

@@ -11,6 +11,7 @@
 
 #include "elements/beam.hpp"
 #include "elements/shell.hpp"
+#include "elements/tshell.hpp"
 #include "util/error.hpp"
 
 namespace crumple::output {
@@ -104,21 +105,30 @@ int d3plotIndex(const std::string& name) {
 D3plotLayout d3plotLayout(const model::Model& m) {
   D3plotLayout l;
   l.numnp = int64_t(m.nodes.size());
-  l.nel8 = int64_t(m.solids.size());
+  // Thick shells (kept with the solids) go to the NELT section, the others stay solids.
+  l.solid_place.resize(m.solids.size());
+  l.solid_is_tshell.resize(m.solids.size());
+  for (std::size_t e = 0; e < m.solids.size(); ++e) {
+    const bool thick = m.isThickShellElement(int32_t(e));
+    l.solid_is_tshell[e] = thick ? 1 : 0;
+    l.solid_place[e] = thick ? l.nelt++ : l.nel8++;
+  }
   l.nel4 = int64_t(m.shells.size());
   l.num_beams = int64_t(m.beams.size());
   l.nel2 = l.num_beams + int64_t(m.discretes.size());
   // Material numbers as VTK's vtkLSDynaReader and LS-PrePost list them: solid parts first, then
-  // shell parts, then beam parts (the header's NUMMAT8, NUMMAT4, NUMMAT2 counts).
+  // thick-shell parts, shell parts, beam parts (the header's NUMMAT8, NUMMATT, NUMMAT4,
+  // NUMMAT2 counts).
   const std::size_t np = m.parts.size();
-  std::vector<int> family(np, -1);  // 0 solid, 1 shell, 2 beam or discrete
-  for (int32_t p : m.solids.part) family[std::size_t(p)] = 0;
-  for (int32_t p : m.shells.part) family[std::size_t(p)] = 1;
-  for (int32_t p : m.beams.part) family[std::size_t(p)] = 2;
-  for (int32_t p : m.discretes.part) family[std::size_t(p)] = 2;
+  std::vector<int> family(np, -1);  // 0 solid, 1 thick shell, 2 shell, 3 beam or discrete
+  for (std::size_t e = 0; e < m.solids.size(); ++e)
+    family[std::size_t(m.solids.part[e])] = l.solid_is_tshell[e] ? 1 : 0;
+  for (int32_t p : m.shells.part) family[std::size_t(p)] = 2;
+  for (int32_t p : m.beams.part) family[std::size_t(p)] = 3;
+  for (int32_t p : m.discretes.part) family[std::size_t(p)] = 3;
   l.material.assign(np, 0);
-  int* counts[3] = {&l.nummat8, &l.nummat4, &l.nummat2};
-  for (int f = 0; f < 3; ++f)
+  int* counts[4] = {&l.nummat8, &l.nummatt, &l.nummat4, &l.nummat2};
+  for (int f = 0; f < 4; ++f)
     for (std::size_t p = 0; p < np; ++p)
       if (family[p] == f) {
         ++*counts[f];
@@ -167,11 +177,11 @@ void writeControlWords(WordFile& out, const model::Model& m, const D3plotLayout&
   out.integer(-(10000 + D3plotLayout::kMaxint));
   out.integer(0);  // 37 NMSPH
   out.integer(0);  // 38 NGPSPH
-  out.integer(word(16 + l.numnp + l.nel8 + l.nel2 + l.nel4 + 3 * int64_t(l.nmmat),
-                   "user id count"));  // 39 NARBS
-  out.integer(0);                      // 40 NELT
-  out.integer(0);                      // 41 NUMMATT
-  out.integer(0);                      // 42 NV3DT
+  out.integer(word(16 + l.numnp + l.nel8 + l.nel2 + l.nel4 + l.nelt + 3 * int64_t(l.nmmat),
+                   "user id count"));              // 39 NARBS
+  out.integer(word(l.nelt, "thick shell count"));  // 40 NELT
+  out.integer(l.nummatt);                          // 41 NUMMATT
+  out.integer(l.nv3dt());                          // 42 NV3DT
   // 43-46 IOSHL(1..4): 1000 written, 999 not (stress, plastic strain, resultants, thickness
   // and energy of shells).
   for (bool on : {l.shell_stress, l.shell_plastic_strain, l.shell_resultants, l.shell_energy})
@@ -184,15 +194,18 @@ void writeControlWords(WordFile& out, const model::Model& m, const D3plotLayout&
   for (int k = 52; k < 64; ++k) out.integer(0);  // NUMFLUID, INN, NPEFG, NEL48, IDTDT, EXTRA...
 }
 
-// Initial coordinates, then solids (8 nodes, material), beams (nodes 1, 2, orientation node,
-// two unused words, material), shells (4 nodes, material); node numbers from 1.
+// Initial coordinates, then solids (8 nodes, material), thick shells (the same), beams (nodes
+// 1, 2, orientation node, two unused words, material), shells (4 nodes, material); node numbers
+// from 1.
 void writeGeometry(WordFile& out, const model::Model& m, const D3plotLayout& l) {
   for (const auto& x : m.nodes.x)
     for (int c = 0; c < 3; ++c) out.real(x[std::size_t(c)]);
-  for (std::size_t e = 0; e < m.solids.size(); ++e) {
-    for (int32_t n : m.solids.nodes[e]) out.integer(n + 1);
-    out.integer(l.material[std::size_t(m.solids.part[e])]);
-  }
+  for (uint8_t thick : {0, 1})
+    for (std::size_t e = 0; e < m.solids.size(); ++e) {
+      if (l.solid_is_tshell[e] != thick) continue;
+      for (int32_t n : m.solids.nodes[e]) out.integer(n + 1);
+      out.integer(l.material[std::size_t(m.solids.part[e])]);
+    }
   auto beam = [&](const auto& list, std::size_t e, int32_t orientation) {
     const auto& n = list.nodes[e];
     // Without an orientation node the second node stands in (as LS-DYNA writes it).
@@ -210,21 +223,27 @@ void writeGeometry(WordFile& out, const model::Model& m, const D3plotLayout& l) 
 }
 
 // User ids (NSORT < 0: with the part ids of the material numbers): 16 words of pointers and
-// counts, node ids, solid, beam, shell ids, then NORDER (part id of each material number),
+// counts, node ids, solid, beam, shell, thick-shell ids, then NORDER (part id of each material
+// number),
 // the part ids ascending and the material number of each of those.
 void writeUserIds(WordFile& out, const model::Model& m, const D3plotLayout& l) {
   const int64_t first = out.position() + 16 + 1;  // word address of the node ids (from 1)
   const int64_t nsrh = first + l.numnp, nsrb = nsrh + l.nel8, nsrs = nsrb + l.nel2,
-                nsrt = nsrs + l.nel4, nsrma = nsrt, nsrmu = nsrma + l.nmmat,
+                nsrt = nsrs + l.nel4, nsrma = nsrt + l.nelt, nsrmu = nsrma + l.nmmat,
                 nsrmp = nsrmu + l.nmmat;
-  const int64_t head[16] = {-first, nsrh, nsrb,  nsrs,  nsrt,  l.numnp, l.nel8, l.nel2,
-                            l.nel4, 0,    nsrma, nsrmu, nsrmp, l.nmmat, 0,      l.nmmat};
+  const int64_t head[16] = {-first, nsrh,   nsrb,  nsrs,  nsrt,  l.numnp, l.nel8, l.nel2,
+                            l.nel4, l.nelt, nsrma, nsrmu, nsrmp, l.nmmat, 0,      l.nmmat};
   for (int64_t v : head) out.integer(word(v, "user id pointer"));
   for (int64_t id : m.nodes.id) out.integer(word(id, "node id"));
-  for (int64_t id : m.solids.id) out.integer(word(id, "solid id"));
+  auto solid_ids = [&](uint8_t thick) {
+    for (std::size_t e = 0; e < m.solids.size(); ++e)
+      if (l.solid_is_tshell[e] == thick) out.integer(word(m.solids.id[e], "solid id"));
+  };
+  solid_ids(0);
   for (int64_t id : m.beams.id) out.integer(word(id, "beam id"));
   for (int64_t id : m.discretes.id) out.integer(word(id, "discrete element id"));
   for (int64_t id : m.shells.id) out.integer(word(id, "shell id"));
+  solid_ids(1);
   std::vector<int64_t> ids;
   for (int32_t p : l.part_of_material) ids.push_back(m.parts[std::size_t(p)].id);
   for (int64_t id : ids) out.integer(word(id, "part id"));
@@ -332,6 +351,20 @@ Held heldSolids(const domain::Subdomain& sd) {
     ++i;
   }
   return h;
+}
+
+// The held solid-family elements split into the solid and thick-shell sections, each indexed
+// by its place in its section (layout.solid_place).
+std::pair<Held, Held> splitThickShells(const Held& all, const D3plotLayout& layout) {
+  std::pair<Held, Held> out;
+  for (std::size_t i = 0; i < all.index.size(); ++i) {
+    const auto e = std::size_t(all.index[i]);
+    Held& to = layout.solid_is_tshell[e] ? out.second : out.first;
+    to.index.push_back(layout.solid_place[e]);
+    to.at.push_back(all.at[i]);
+    to.tet10.push_back(all.tet10[i]);
+  }
+  return out;
 }
 
 // A solid's record: stress xx, yy, zz, xy, yz, zx in global axes, effective plastic strain.
@@ -479,14 +512,17 @@ void D3plotWriter::writeNodes(WordFile* out, const solver::Solver& s) const {
     });
 }
 
-// Solid records (stress xx, yy, zz, xy, yz, zx in global axes, effective plastic strain), beam
-// records (axial force, shear s, t, moment s, t, torque; discrete elements: the axial force),
-// shell records (per layer mid, inner, outer: stress in global axes and effective plastic
-// strain; resultants; thickness, two element variables, internal energy), deletion flags
-// (solids, shells, beams: 1 in the model, 0 eroded).
+// Solid records (stress xx, yy, zz, xy, yz, zx in global axes, effective plastic strain),
+// thick-shell records (per layer mid, inner, outer: stress in global axes and effective plastic
+// strain), beam records (axial force, shear s, t, moment s, t, torque; discrete elements: the
+// axial force), shell records (per layer mid, inner, outer: stress in global axes and
+// effective plastic strain; resultants; thickness, two element variables, internal energy),
+// deletion flags (solids, thick shells, shells, beams: 1 in the model, 0 eroded).
 void D3plotWriter::writeElements(WordFile* out, const solver::Solver& s) const {
   const auto& sd = s.subdomain();
-  const Held solids = heldSolids(sd);
+  const std::pair<Held, Held> split = splitThickShells(heldSolids(sd), layout_);
+  const Held& solids = split.first;
+  const Held& thick = split.second;
   const Held shells = heldElements(sd.shell_blocks, 0);
   Held beams = heldElements(sd.beam_blocks, 0);
   const int64_t num_beams = layout_.num_beams;
@@ -501,6 +537,11 @@ void D3plotWriter::writeElements(WordFile* out, const solver::Solver& s) const {
                     solidRecord(static_cast<const domain::Tet10Block&>(*blk), k, r);
                   else
                     solidRecord(static_cast<const domain::SolidBlock&>(*blk), k, r);
+                });
+  streamRecords(comm_, out, layout_.nelt, layout_.nv3dt(), thick.index,
+                [&](std::size_t i, float* r) {
+                  const auto& [blk, k] = thick.at[i];
+                  thickShellRecord(static_cast<const domain::SolidBlock&>(*blk), sd.x, k, r);
                 });
   streamRecords(
       comm_, out, layout_.nel2, D3plotLayout::kNv1d, beams.index, [&](std::size_t i, float* r) {
@@ -521,6 +562,8 @@ void D3plotWriter::writeElements(WordFile* out, const solver::Solver& s) const {
     r[0] = solids.tet10[i] ? aliveFlag<domain::Tet10Block>(solids, i)
                            : aliveFlag<domain::SolidBlock>(solids, i);
   });
+  streamRecords(comm_, out, layout_.nelt, 1, thick.index,
+                [&](std::size_t i, float* r) { r[0] = aliveFlag<domain::SolidBlock>(thick, i); });
   streamRecords(comm_, out, layout_.nel4, 1, shells.index,
                 [&](std::size_t i, float* r) { r[0] = aliveFlag<domain::ShellBlock>(shells, i); });
   // Discrete elements (after the beams) do not erode.
@@ -529,15 +572,32 @@ void D3plotWriter::writeElements(WordFile* out, const solver::Solver& s) const {
   });
 }
 
+namespace {
+// The layers mid, inner (bottom), outer (top) of a shell or thick shell (the manual's MAXINT
+// 3): stress and effective plastic strain as IOSHL(1), IOSHL(2) ask; the next word.
+float* layerRecords(const D3plotLayout& layout, const double (&layers)[3][6],
+                    const double (&eps)[3], float* r) {
+  for (int layer : {1, 0, 2}) {
+    if (layout.shell_stress)
+      for (int c = 0; c < 6; ++c) *r++ = static_cast<float>(layers[layer][c]);
+    if (layout.shell_plastic_strain) *r++ = static_cast<float>(eps[layer]);
+  }
+  return r;
+}
+}  // namespace
+
+void D3plotWriter::thickShellRecord(const domain::SolidBlock& b, const domain::NodeVector& x,
+                                    std::size_t k, float* r) const {
+  double layers[3][6], eps[3];
+  elements::thickShellLayerStress(b, x, k, layers, eps);
+  layerRecords(layout_, layers, eps, r);
+}
+
 void D3plotWriter::shellRecord(const domain::ShellBlock& b, const domain::NodeVector& x,
                                std::size_t k, float* r) const {
   double layers[3][6], eps[3];
   elements::shellSurfaceStress(b, x, k, layers, eps);
-  for (int layer : {1, 0, 2}) {  // mid, inner (bottom), outer (top): the manual's MAXINT 3
-    if (layout_.shell_stress)
-      for (int c = 0; c < 6; ++c) *r++ = static_cast<float>(layers[layer][c]);
-    if (layout_.shell_plastic_strain) *r++ = static_cast<float>(eps[layer]);
-  }
+  r = layerRecords(layout_, layers, eps, r);
   if (layout_.shell_resultants) {
     double m[8];
     elements::shellResultants(b, k, m);

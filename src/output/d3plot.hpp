@@ -36,11 +36,17 @@ int d3plotIndex(const std::string& name);
 // Words per state and the header's counts, from the model and *DATABASE_EXTENT_BINARY.
 struct D3plotLayout {
   static constexpr int kMaxint = 3;  // shell layers written: mid, inner, outer surface
-  int64_t numnp = 0, nel8 = 0, nel2 = 0, nel4 = 0;  // nel2: beams, then discrete elements
+  // nel2: beams, then discrete elements; nel8 the solids but thick shells, nelt those (the
+  // model keeps both in its solid family).
+  int64_t numnp = 0, nel8 = 0, nel2 = 0, nel4 = 0, nelt = 0;
   int64_t num_beams = 0;
-  int nummat8 = 0, nummat2 = 0, nummat4 = 0, nmmat = 0;
+  int nummat8 = 0, nummat2 = 0, nummat4 = 0, nummatt = 0, nmmat = 0;
+  // Per solid-family model element: its place in the solid or the thick-shell section.
+  std::vector<int64_t> solid_place;
+  std::vector<uint8_t> solid_is_tshell;
   // Material number (1..nmmat) of each model part, 0 when the part has no element; material
-  // numbers go to parts of solids, then shells, then beams and discretes (each in part order).
+  // numbers go to parts of solids, then thick shells, then shells, then beams and discretes
+  // (each in part order).
   std::vector<int32_t> material;
   std::vector<int32_t> part_of_material;  // material number - 1 -> model part index
   bool shell_stress = true, shell_plastic_strain = true, shell_resultants = true,
@@ -50,10 +56,13 @@ struct D3plotLayout {
     return kMaxint * (6 * shell_stress + shell_plastic_strain) + 8 * shell_resultants +
            4 * shell_energy;
   }
+  // Thick shells: per layer (mid, inner, outer) the stress and plastic strain as the shells'
+  // (IOSHL(1), IOSHL(2)); no extra variables (NEIPS 0), no strains (ISTRN 0).
+  int nv3dt() const { return kMaxint * (6 * shell_stress + shell_plastic_strain); }
   static constexpr int kNv3d = 7, kNv1d = 6;
   int64_t stateWords() const {
-    return 1 + nglbv() + 9 * numnp + kNv3d * nel8 + kNv1d * nel2 + nv2d() * nel4 + nel8 + nel2 +
-           nel4;
+    return 1 + nglbv() + 9 * numnp + kNv3d * nel8 + nv3dt() * nelt + kNv1d * nel2 + nv2d() * nel4 +
+           nel8 + nelt + nel2 + nel4;
   }
 };
 D3plotLayout d3plotLayout(const model::Model& model);
@@ -90,6 +99,8 @@ class D3plotWriter {
                     const std::vector<solver::PartSums>& parts) const;
   void writeNodes(WordFile* out, const solver::Solver& s) const;
   void writeElements(WordFile* out, const solver::Solver& s) const;
+  void thickShellRecord(const domain::SolidBlock& b, const domain::NodeVector& x, std::size_t k,
+                        float* r) const;
   void shellRecord(const domain::ShellBlock& b, const domain::NodeVector& x, std::size_t k,
                    float* r) const;
   // A new family: no states yet; rank 0 removes the members of an earlier run (true there).

@@ -83,6 +83,37 @@ def shell_strip(load):
     return s + "*END\n"
 
 
+def tshell_strip(load):
+    """A strip of 8 x 1 thick shells (*SECTION_TSHELL ELFORM 2, NIP 3), 80 x 10 x 4 mm,
+    elastic steel with nu = 0, clamped at x = 0 and pulled along x by `load` (kN) spread over
+    its four x = 80 nodes, ramped over 50 ms. *SET_TSHELL 10 holds elements 4 and 5 (x = 30 to
+    50), which elout lists (*DATABASE_HISTORY_TSHELL_SET) and which a cut at the x = 50 nodes
+    takes (*DATABASE_CROSS_SECTION_SET TSID)."""
+    node = lambda i, j, k: 1 + i + 9 * (j + 2 * k)  # noqa: E731
+    s = "*KEYWORD\n*TITLE\nthick shell strip\n*CONTROL_TERMINATION\n      50.0\n"
+    s += "*DATABASE_ELOUT\n      12.5\n*DATABASE_SECFORC\n      12.5\n"
+    s += "*SET_TSHELL_LIST\n        10\n" + cards(4, 5)
+    s += "*DATABASE_HISTORY_TSHELL_SET\n        10\n"
+    s += "*SET_NODE_LIST\n        20\n" + cards(*[node(5, j, k) for k in (0, 1) for j in (0, 1)])
+    s += "*DATABASE_CROSS_SECTION_SET\n        20         0         0         0        10\n"
+    s += "*PART\nstrip\n         1         1         1\n"
+    s += "*SECTION_TSHELL\n         1         2    0.8333         3\n"
+    s += "*MAT_ELASTIC\n         1   7.85e-6     210.0       0.0\n*NODE\n"
+    s += "".join(f"{node(i, j, k):8d}{10.0 * i:16.6f}{10.0 * j:16.6f}{4.0 * k:16.6f}\n"
+                 for k in range(2) for j in range(2) for i in range(9))
+    s += "*ELEMENT_TSHELL\n" + "".join(
+        f"{1 + i:8d}{1:8d}" + "".join(f"{node(a, b, k):8d}" for k in (0, 1)
+                                      for a, b in ((i, 0), (i + 1, 0), (i + 1, 1), (i, 1)))
+        + "\n" for i in range(8))
+    s += "*BOUNDARY_SPC_NODE\n" + "".join(f"{node(0, j, k):10d}{0:10d}" + "         1" * 6 +
+                                          "\n" for k in (0, 1) for j in (0, 1))
+    s += "*DEFINE_CURVE\n         1\n                 0.0                 0.0\n"
+    s += "                50.0                 1.0\n"
+    s += "*LOAD_NODE_POINT\n" + "".join(f"{node(8, j, k):10d}         1         1{load / 4:10.4g}\n"
+                                        for k in (0, 1) for j in (0, 1))
+    return s + "*END\n"
+
+
 def hughes_liu(cantilever_deck):
     """The cantilever with Hughes-Liu beams (ELFORM 1) of the same 10 x 10 mm section, 2 x 2
     Gauss points (QR 2), as the bolted joint's spot weld beam has four."""
@@ -163,6 +194,20 @@ class EloutPhysics(Case):
         for r, z in zip(rows, zeta):
             self.assertAlmostEqual(r["sxx"], -surface * z, delta=0.02 * surface, msg=z)
             self.assertLess(abs(r["szz"]), 1e-3 * surface)
+
+
+    def test_tshell_set_history_and_cut(self):
+        load, area = 4.0, 40.0
+        out = self.run_deck("tshell_strip.k", tshell_strip(load))
+        # The thick shells of *SET_TSHELL 10, listed with the solids (family 0): sigma_xx = P / A.
+        rows = elout_rows(out, 0)
+        self.assertEqual(sorted({int(r["element"]) for r in rows}), [4, 5])
+        for r in [r for r in rows if r["time"] == 50.0]:
+            self.assertAlmostEqual(r["sxx"], load / area, delta=0.01 * load / area)
+        cut = read_csv(os.path.join(out, "secforc.csv"))[-1]
+        self.assertEqual(cut["time"], 50.0)
+        self.assertAlmostEqual(cut["fx"], load, delta=0.01 * load)
+        self.assertLess(abs(cut["fz"]), 1e-3 * load)
 
 
 class EloutFiles(Case):

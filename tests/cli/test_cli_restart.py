@@ -97,6 +97,7 @@ class RestartEquality(RestartCase):
             # Plies failed by the dump: the failure flags (shell law history) come back.
             (data_deck("composite_plate.k"), [], 900),
             (data_deck("tshell_plate.k"), [], 400),
+            (data_deck("tshell2_plate.k"), [], 400),
         ]
 
     def test_restart_from_mid_run_dump_is_bitwise(self):
