@@ -74,10 +74,11 @@ class Boundary {
   // Stonewalls: no slave node ends the step behind a wall (DYNA3D stonewall: the normal
   // velocity is corrected so the node lands on the plane; Coulomb friction acts on the
   // tangential velocity with the normal impulse as its bound). Returns the energy absorbed at
-  // the nodes this rank owns. Wall force totals are summed over all ranks in ascending global
-  // node order, so a moving wall moves identically for any number of ranks.
-  double applyRigidWalls(double dt_n, double dt_half, domain::Subdomain& sd,
-                         const domain::NodeVector& v_old, const comm::Communicator& comm);
+  // the nodes this rank owns, in the halves of step_work.hpp. Wall force totals are summed over all
+  // ranks in ascending global node order, so a moving wall moves identically for any number of
+  // ranks.
+  StepWork applyRigidWalls(double dt_n, double dt_half, domain::Subdomain& sd,
+                           const domain::NodeVector& v_old, const comm::Communicator& comm);
 
   const std::vector<WallState>& walls() const { return walls_; }
   // The reactions of the last step at this rank's constrained nodes (every local node that has

@@ -32,7 +32,8 @@ namespace crumple::output {
 // energy when the check ends while penetrated), and *MAT_JOHNSON_COOK a sixth history
 // variable (the spall flag).
 // 6: shells keep their drilling-constraint energy apart from the hourglass energy; joints no
-// longer keep their dampers' last relative velocity.
+// longer keep their dampers' last relative velocity; the solver keeps the stonewall energy of
+// the last step's half ahead (a sixth accumulator per rank).
 inline constexpr uint32_t kDumpVersion = 6;
 
 // One part of the state. `save` is collective (every rank calls every section's save, in

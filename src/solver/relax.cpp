@@ -124,7 +124,8 @@ void Solver::startTransient() {
   }
   // The relaxation's work (its loads, the damping that took the kinetic energy out) stays out
   // of the transient's balance: that starts from the relaxed state's total energy.
-  external_work_ = work_ahead_ = damping_work_ = damping_ahead_ = rigidwall_energy_ = 0.0;
+  external_work_ = work_ahead_ = damping_work_ = damping_ahead_ = rigidwall_energy_ =
+      rigidwall_ahead_ = 0.0;
   initial_energy_ = 0.0;
   initial_energy_ = energies().total;
 }

@@ -634,7 +634,9 @@ constraints::StepWork Solver::applyConstraints(double dt_n, double dt_half) {
   constraints::StepWork work;
   if (rigid_) work = rigid_->apply(time_, dt_n, dt_half, sd_, v_old_, comm_);
   work += boundary_.applyKinematics(time_, dt_n, dt_half, sd_, v_old_);
-  rigidwall_energy_ += boundary_.applyRigidWalls(dt_n, dt_half, sd_, v_old_, comm_);
+  const auto absorbed = boundary_.applyRigidWalls(dt_n, dt_half, sd_, v_old_, comm_);
+  rigidwall_energy_ += absorbed.total();
+  rigidwall_ahead_ = absorbed.ahead;
   return work;
 }
 
@@ -814,12 +816,14 @@ Energies Solver::energies() const {
     for (double d : blk.e_damp) damping += d;
   const auto sums =
       comm_.sumOrdered({e.kinetic, e.internal, e.hourglass, external_work_ - work_ahead_,
-                        rigidwall_energy_, damping, e.drilling});
+                        rigidwall_energy_ - rigidwall_ahead_, damping, e.drilling});
   e.kinetic = sums[0];
   e.internal = sums[1];
   e.hourglass = sums[2];
   e.external_work = sums[3];
-  e.rigidwall = sums[4];
+  // *CONTROL_ENERGY RWEN 1: the stonewalls' energy is not computed, so it is left out of the
+  // balance (what they take out then shows as a fall of the energy ratio, as in LS-DYNA).
+  e.rigidwall = model_.controls.rigidwall_energy ? sums[4] : 0.0;
   e.damping = sums[5];
   e.drilling = sums[6];
   e.kinetic += boundary_.wallKineticEnergy();  // the same on every rank: added once

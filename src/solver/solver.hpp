@@ -269,6 +269,9 @@ class Solver {
   // The work of the mass damping forces (negative) on the nodes this rank owns, and its half
   // ahead like work_ahead_.
   double damping_work_ = 0.0, damping_ahead_ = 0.0;
+  // This rank's share of the last step's stonewall energy at v(n+1/2), left to the next
+  // balance like work_ahead_.
+  double rigidwall_ahead_ = 0.0;
   domain::NodeVector v_old_, w_old_;
   // Element masses per shell / beam block (matsum).
   std::vector<std::vector<double>> shell_mass_, beam_mass_;

@@ -187,8 +187,9 @@ std::vector<char> Solver::saveState(StateSection which) const {
       // Per-rank accumulators are kept per rank: restarted at the same number of ranks each
       // continues its own partial sum, so the energy sums stay bitwise those of the
       // uninterrupted run (at another count rank 0 takes the total, docs/reliability.md).
-      const auto partials = comm_.allGather(std::vector<double>{
-          external_work_, rigidwall_energy_, work_ahead_, damping_work_, damping_ahead_});
+      const auto partials =
+          comm_.allGather(std::vector<double>{external_work_, rigidwall_energy_, work_ahead_,
+                                              damping_work_, damping_ahead_, rigidwall_ahead_});
       const long long eroded = comm_.sumAll(eroded_);
       if (!comm_.isRoot()) return {};
       util::ArchiveWriter w;
@@ -332,12 +333,12 @@ void Solver::loadState(StateSection which, const std::vector<char>& bytes) {
       if (dt_initial != dt_initial_)
         mismatch(fmt::format("its initial time step {:.17g} differs from this deck's {:.17g}",
                              dt_initial, dt_initial_));
-      // Five accumulators per rank (two in dumps written before the work ahead was kept, three
-      // before the damping work was).
+      // Six accumulators per rank (two in dumps written before the work ahead was kept, three
+      // before the damping work was, five before the stonewall energy ahead was).
       const auto per_rank = static_cast<std::size_t>(ranks) == 0
                                 ? std::size_t{0}
                                 : partials.size() / static_cast<std::size_t>(ranks);
-      if ((per_rank < 2 || per_rank > 5 || per_rank == 4) ||
+      if ((per_rank < 2 || per_rank > 6 || per_rank == 4) ||
           partials.size() != per_rank * std::size_t(ranks))
         throw util::InputError("restart dump: the solver section is inconsistent");
       initial_energy_ = initial_energy;
@@ -350,17 +351,19 @@ void Solver::loadState(StateSection which, const std::vector<char>& bytes) {
         work_ahead_ = partial(comm_.rank(), 2);
         damping_work_ = partial(comm_.rank(), 3);
         damping_ahead_ = partial(comm_.rank(), 4);
+        rigidwall_ahead_ = partial(comm_.rank(), 5);
       } else {
         // Summed in rank order from zero, as Communicator::sumOrdered adds them.
-        double sums[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
+        double sums[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
         for (int k = 0; k < ranks; ++k)
-          for (std::size_t i = 0; i < 5; ++i) sums[i] += partial(k, i);
+          for (std::size_t i = 0; i < 6; ++i) sums[i] += partial(k, i);
         const bool root = comm_.isRoot();
         external_work_ = root ? sums[0] : 0.0;
         rigidwall_energy_ = root ? sums[1] : 0.0;
         work_ahead_ = root ? sums[2] : 0.0;
         damping_work_ = root ? sums[3] : 0.0;
         damping_ahead_ = root ? sums[4] : 0.0;
+        rigidwall_ahead_ = root ? sums[5] : 0.0;
       }
       eroded_ = comm_.isRoot() ? eroded : 0;
       if (stepped) v_old_.assign(sd_.v.size(), 0.0);

@@ -655,12 +655,14 @@ TEST(ShellDrill, CornerTurningAboutTheNormalIsResistedAndSelfEquilibrated) {
         EXPECT_NEAR(net_f[c], 0.0, 1e-12 * kd * theta) << triangle << " " << ihq;
         EXPECT_NEAR(net_m[c], 0.0, 1e-12 * kd * theta) << triangle << " " << ihq;
       }
+      // The constraint's work is its own energy term, not hourglass energy.
+      EXPECT_EQ(blk.e_hg[0], 0.0) << ihq;
       if (triangle) {
         EXPECT_EQ(m0n, 0.0) << ihq;
-        EXPECT_EQ(blk.e_hg[0], 0.0) << ihq;
+        EXPECT_EQ(blk.e_drill[0], 0.0) << ihq;
       } else {
         EXPECT_NEAR(m0n, -kd * theta, 1e-12 * kd * theta) << ihq;
-        EXPECT_NEAR(blk.e_hg[0], 0.5 * kd * theta * theta, 1e-12 * kd * theta * theta) << ihq;
+        EXPECT_NEAR(blk.e_drill[0], 0.5 * kd * theta * theta, 1e-12 * kd * theta * theta) << ihq;
       }
     }
   }

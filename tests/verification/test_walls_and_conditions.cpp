@@ -410,6 +410,7 @@ TEST_P(StonewallEnergy, BalancesAtEveryCycle) {
     if (rw_mid < 0.0 && s.time() >= 0.1) rw_mid = e.rigidwall;
   });
   const auto e = sim->solver->energies();
+  std::printf("[ figure ] stonewall nz %d ELFORM %d: worst |ratio - 1| %.2e\n", nz, elform, worst);
   EXPECT_LT(worst, 0.01) << "energy ratio at some cycle, nz " << nz << " ELFORM " << elform;
   // The impact is over (contact lasts about 2 nz / c = 0.0004 nz ms from t = 0.05): the block
   // moves up and the wall took nothing more in the last third of the run.
