@@ -655,8 +655,9 @@ TEST(ShellDrill, CornerTurningAboutTheNormalIsResistedAndSelfEquilibrated) {
         EXPECT_NEAR(net_f[c], 0.0, 1e-12 * kd * theta) << triangle << " " << ihq;
         EXPECT_NEAR(net_m[c], 0.0, 1e-12 * kd * theta) << triangle << " " << ihq;
       }
-      // The constraint's work is its own energy term, not hourglass energy.
-      EXPECT_EQ(blk.e_hg[0], 0.0) << ihq;
+      // The constraint's work is its own energy term, not hourglass energy (the hourglass
+      // forces see only round-off of the turning corner).
+      EXPECT_LT(std::abs(blk.e_hg[0]), 1e-12 * kd * theta * theta) << ihq;
       if (triangle) {
         EXPECT_EQ(m0n, 0.0) << ihq;
         EXPECT_EQ(blk.e_drill[0], 0.0) << ihq;
