@@ -80,6 +80,7 @@ class Card {
   bool readAsSpaceSeparated() const { return spaced_; }
 
  private:
+  friend class PlainRecord;  // reads its lines as readColumns does, field by readPlainField
   struct Value {
     bool blank = true;
     double num = 0.0;
@@ -99,6 +100,7 @@ class Card {
   };
   static constexpr std::size_t kRestOfLine = std::string_view::npos;
   static std::optional<Reference> plainReference(std::string_view s);
+  static std::vector<Column> columnsOf(const CardSpec& spec, Format format);
   void compile(const CardSpec& spec, Format format);
   // The index of a slot of this card's layout (a slot of another layout is a coding error).
   std::size_t slotIndex(const FieldSlot& field) const {
@@ -115,6 +117,8 @@ class Card {
   // The usual card: fixed columns, every value a plain number or text, no comma, tab or '&'
   // anywhere in the line. False (the card unread) when anything needs the general reading.
   bool readColumns(std::string_view text);
+  template <class Field>
+  static bool readPlainLine(std::span<const Column> columns, std::string_view text, Field&& field);
   // One field of such a line into `v` (left blank when it is); false when it needs the general
   // reading. Defined (inline) in card.cpp, its only user.
   static inline bool readPlainField(FieldType type, std::string_view raw, Value& v);
@@ -185,6 +189,42 @@ inline bool Card::blank(const FieldSlot& field) const {
   return values_[slotIndex(field)].blank;
 }
 
+// A line of a list keyword (*NODE, *ELEMENT_SOLID: a card per line, a line per record) read
+// without a Card: its numbers into an array, with no per-line card state, unused-value
+// bookkeeping (the builder reads every field) or texts. Only a line the Card would read in one
+// pass (Card::readColumns: plain numbers in their columns, no comma, tab or '&' in the line) is
+// read, through the same field reading (Card::readPlainField); any other line is the Card's,
+// whose values and messages are the reference (DeckCard.PlainRecordsReadAsTheCardReads).
+class PlainRecord {
+ public:
+  // A layout with a text field reads no line (a text keeps the Card).
+  PlainRecord(const CardSpec& spec, Format format);
+
+  // True and the values set when `text` is such a line; false (the values unspecified) else.
+  bool read(std::string_view text);
+  // The values Card::integer of an Int field and Card::real of a numeric field give (blank, or
+  // 0 in a kZeroIsDefault field, the default). A slot of another layout, or integer of a Real
+  // field (whose fraction is a message), is a std::logic_error.
+  int64_t integer(const FieldSlot& field) const {
+    if (field.card != spec_ || columns_[field.index].type != FieldType::Int) [[unlikely]]
+      wrongField(field);
+    return integers_[field.index];
+  }
+  double real(const FieldSlot& field) const {
+    if (field.card != spec_) [[unlikely]]
+      wrongField(field);
+    return reals_[field.index];
+  }
+
+ private:
+  [[noreturn]] void wrongField(const FieldSlot& field) const;
+
+  const CardSpec* spec_;
+  std::vector<Card::Column> columns_;  // empty for a layout with a text field
+  std::vector<int64_t> integers_;
+  std::vector<double> reals_;
+};
+
 // Walks the data lines of one keyword, card by card.
 class CardCursor {
  public:
@@ -197,6 +237,9 @@ class CardCursor {
   bool nextIsBlank() const;
   // Skips blank lines: list-type keywords (*NODE, *SET_..._LIST) have no meaning for them.
   void skipBlankLines();
+
+  // Passes over the next line (precondition: !atEnd()), read without a card (PlainRecord).
+  void skipLine() { ++next_; }
 
   // The next card; throws util::InputError when the keyword has no more lines.
   const Card& read(const CardSpec& spec);
