@@ -103,34 +103,31 @@ bool isBinary(unsigned char u) {
   return (u < 0x20 || u == 0x7f) && !allowed;
 }
 
+// Bytes below 0x20 and DEL, by their high bit. A byte's low seven bits plus one, wrapped to
+// seven bits (DEL to 0), are below 0x21 exactly for those; a byte of 0x80 or above (UTF-8,
+// Latin-1 text) is not one. No carry crosses a byte, so every byte is told exactly.
+uint64_t controlBytes(uint64_t w) {
+  constexpr uint64_t kLow7 = 0x7f7f7f7f7f7f7f7fULL;
+  const uint64_t t = ((w & kLow7) + 0x0101010101010101ULL) & kLow7;
+  return ~((t + 0x5f5f5f5f5f5f5f5fULL) | w) & 0x8080808080808080ULL;
+}
+
 // Offset of the first binary byte of `text` (isBinary, or a "\r": the caller has removed the
 // one that ends a line), or npos. Eight
 // bytes at a time: a word none of whose bytes is below 0x20 or 0x7f needs no closer look (a
 // branch per byte was a fifth of reading a deck).
 std::size_t firstBinaryByte(std::string_view text) {
-  constexpr uint64_t kOnes = 0x0101010101010101ULL, kHighs = 0x8080808080808080ULL;
   std::size_t i = 0;
   for (; i + 8 <= text.size(); i += 8) {
     uint64_t w;
     std::memcpy(&w, text.data() + i, 8);
-    const uint64_t below_space = (w - 0x20 * kOnes) & ~w & kHighs;
-    const uint64_t x = w ^ (0x7f * kOnes);
-    const uint64_t del = (x - kOnes) & ~x & kHighs;
-    if ((below_space | del) == 0) continue;
+    if (controlBytes(w) == 0) continue;
     for (std::size_t k = i; k < i + 8; ++k)
       if (isBinary(static_cast<unsigned char>(text[k])) || text[k] == '\r') return k;
   }
   for (; i < text.size(); ++i)
     if (isBinary(static_cast<unsigned char>(text[i])) || text[i] == '\r') return i;
   return std::string_view::npos;
-}
-
-// Bytes below 0x20 and DEL: the high bit of each such byte of `w` set, exact for the first one
-// (a borrow flags only bytes after a true one).
-uint64_t controlBytes(uint64_t w) {
-  constexpr uint64_t kOnes = 0x0101010101010101ULL, kHighs = 0x8080808080808080ULL;
-  const uint64_t x = w ^ (0x7f * kOnes);
-  return (((w - 0x20 * kOnes) & ~w) | ((x - kOnes) & ~x)) & kHighs;
 }
 
 // Where the line at `start` ends (its "\n", or the "\r" of its "\r\n", or the end of the

@@ -578,6 +578,37 @@ TEST(DeckLines, LongLinesAndBinaryDataAreRefused) {
           << column;
     }
   }
+  // Every byte in a word's first, last and a middle place: a control byte but tab, form feed,
+  // vertical tab and ^Z is binary, and so are DEL and a lone carriage return; any other byte,
+  // UTF-8 and Latin-1 text included, is read as written.
+  for (int byte = 0; byte < 256; ++byte) {
+    const auto u = static_cast<unsigned char>(byte);
+    if (u == '\n' || u == '$' || u == '*') continue;  // a line end, a comment, a keyword
+    const bool binary = (u < 0x20 && u != '\t' && u != '\f' && u != '\v' && u != 0x1a) || u == 0x7f;
+    for (const std::size_t column : {1u, 8u, 12u, 55u}) {
+      std::string line = row;
+      line[column - 1] = static_cast<char>(u);
+      const std::string text = "*NODE\n" + row + line + row;
+      const std::string expected =
+          binary ? fmt::format(
+                       "d.k:3: byte 0x{:02x} in column {}: binary data, not a keyword "
+                       "deck (text)",
+                       byte, column)
+                 : "";
+      std::string read;
+      EXPECT_EQ(errorOf([&] {
+                  read = crumple::deck::readDeck("d.k", MemorySource(Files{{"d.k", text}}))
+                             .keywords.at(0)
+                             .lines.at(1)
+                             .text;
+                }),
+                expected)
+          << byte << " " << column;
+      if (!binary) {
+        EXPECT_EQ(read, line.substr(0, line.size() - 1)) << byte << " " << column;
+      }
+    }
+  }
 }
 
 TEST(DeckLines, EncryptedIncludeIsNamedAsSuch) {
