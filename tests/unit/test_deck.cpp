@@ -974,7 +974,7 @@ TEST(DeckCard, PlainRecordsReadAsTheCardReads) {
 // each line sends it to the card's general reading, and changes no value).
 TEST(DeckCard, ListKeywordsBuildAsWithCardsOnly) {
   std::mt19937_64 rng(1920);
-  std::uniform_int_distribution<int> pick(0, 19), rare(0, 99), node(1, 200), elform(0, 3);
+  std::uniform_int_distribution<int> pick(0, 19), rare(0, 199), node(201, 400), any(1, 420);
   const auto field = [&](int width, const std::string& v) {
     return std::string(static_cast<std::size_t>(std::max(0, width - static_cast<int>(v.size()))),
                        ' ') +
@@ -992,59 +992,47 @@ TEST(DeckCard, ListKeywordsBuildAsWithCardsOnly) {
         return v + ".5";
       case 4:
         return std::string("&p");
+      case 5:
+        return std::string("8");
       default:
         return v;
     }
   };
-  std::string nodes, solids;
-  for (int b = 0; b < 100; ++b) {  // short keywords: an error ends its keyword's reading
+  const auto coordinate = [&] {
+    return fmt::format("{:.{}g}", std::uniform_real_distribution<double>(-1e3, 1e3)(rng),
+                       1 + pick(rng) % 12);
+  };
+  // Nodes 201..400 plainly written; 1..200 in short keywords (an error ends its keyword's
+  // reading) with odd values; elements mostly on the former.
+  std::string nodes = "*NODE\n", solids;
+  for (int id = 201; id <= 400; ++id)
+    nodes += field(8, std::to_string(id)) + field(16, coordinate()) + field(16, coordinate()) +
+             field(16, coordinate()) + "\n";
+  for (int b = 0; b < 100; ++b) {
     nodes += b % 3 == 0 ? "*NODE %\n" : "*NODE\n";
     const int w = b % 3 == 0 ? 10 : 8;
     for (int k = 0; k < 2; ++k) {
       const int id = b * 2 + k + 1;
-      nodes += field(w, odd(std::to_string(pick(rng) == 0 ? id - 1 : id)));
-      for (int c = 0; c < 3; ++c)
-        nodes += field(
-            16, odd(fmt::format("{:.{}g}", std::uniform_real_distribution<double>(-1e3, 1e3)(rng),
-                                1 + pick(rng) % 12)));
-      if (pick(rng) < 8) nodes += field(w, odd(std::to_string(pick(rng) % 9)));
-      if (pick(rng) < 3) nodes += field(w, odd(std::to_string(pick(rng) % 9)));
+      nodes += field(w, odd(std::to_string(rare(rng) == 0 ? id - 1 : id)));
+      for (int c = 0; c < 3; ++c) nodes += field(16, odd(coordinate()));
+      if (pick(rng) < 8) nodes += field(w, odd(std::to_string(pick(rng) % 8)));
+      if (pick(rng) < 3) nodes += field(w, odd(std::to_string(pick(rng) % 8)));
       nodes += pick(rng) == 0 ? "\n$ comment\n" : "\n";
     }
     solids += "*ELEMENT_SOLID\n";
     for (int k = 0; k < 2; ++k) {
       solids += field(8, odd(std::to_string(b * 2 + k + 1)));
-      solids += field(8, odd(std::to_string(1 + pick(rng) / 9)));  // parts 1, 2 and 3
+      const int part = pick(rng);
+      solids += field(8, odd(part < 14 ? "1" : part < 18 ? "2" : "3"));
       std::array<int, 8> n{};
-      for (int& i : n) i = node(rng);
-      if (pick(rng) < 4) n[5] = n[4];                       // degenerate forms
-      if (pick(rng) < 3) n[7] = n[6] = n[5] = n[4] = n[3];  // N4 repeated
+      for (int& i : n) i = pick(rng) == 0 ? any(rng) : node(rng);
+      if (pick(rng) < 4) n[5] = n[4], n[7] = n[6];          // a pentahedron
+      if (pick(rng) < 8) n[7] = n[6] = n[5] = n[4] = n[3];  // N4 repeated
       const int given = pick(rng) < 3 ? 4 : 8;              // N1..N4 alone
       for (int i = 0; i < given; ++i) solids += field(8, odd(std::to_string(n[i])));
-      solids += "\n";
+      solids += pick(rng) == 0 ? "\n\n" : "\n";
     }
   }
-  const std::string head = fmt::format(R"(*KEYWORD
-*MAT_ELASTIC
-1,7.8e-9,210000,0.3
-*SECTION_SOLID
-1,{}
-*SECTION_SOLID
-2,15
-*SECTION_SHELL
-3
-0.01
-*PART
-one
-1,1,1
-*PART
-two
-2,2,1
-*PART
-three
-3,3,1
-)",
-                                       std::array{1, 10, 2, 13}[std::size_t(elform(rng))]);
   const auto tabbed = [](const std::string& text) {
     std::string out;
     for (std::size_t at = 0, nl; at < text.size(); at = nl + 1) {
@@ -1080,13 +1068,45 @@ three
     }
     return out;
   };
-  const std::string text = head + nodes + solids;
-  for (const bool collect : {true, false}) {
-    const std::string with_cards = built(tabbed(text), collect);
-    EXPECT_EQ(built(text, collect), with_cards);
-    if (collect) {
-      EXPECT_NE(with_cards.find("\nerror "), std::string::npos);  // messages compared too
-      EXPECT_NE(with_cards.find("\nsolid "), std::string::npos);
+  // Each solid form: hexahedra (1, 2), tetrahedra (10, 13); part 2 pentahedra (15), part 3
+  // a shell section (refused for solids).
+  for (const int elform : {1, 2, 10, 13}) {
+    const std::string text = fmt::format(R"(*KEYWORD
+*MAT_ELASTIC
+1,7.8e-9,210000,0.3
+*SECTION_SOLID
+1,{}
+*SECTION_SOLID
+2,15
+*SECTION_SHELL
+3
+0.01
+*PART
+one
+1,1,1
+*PART
+two
+2,2,1
+*PART
+three
+3,3,1
+)",
+                                         elform) +
+                             nodes + solids;
+    for (const bool collect : {true, false}) {
+      const std::string with_cards = built(tabbed(text), collect);
+      EXPECT_EQ(built(text, collect), with_cards) << elform;
+      if (!collect) continue;
+      const auto count = [&](std::string_view what) {
+        std::size_t n = 0;
+        for (std::size_t at = with_cards.find(what); at != std::string::npos;
+             at = with_cards.find(what, at + 1))
+          ++n;
+        return n;
+      };
+      // Messages are compared too, and solids of every part's reading.
+      EXPECT_GT(count("\nerror "), 20u) << elform;
+      EXPECT_GT(count("\nsolid "), 30u) << elform;
     }
   }
 }
