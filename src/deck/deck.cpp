@@ -140,18 +140,23 @@ std::size_t plainLineEnd(std::string_view text, std::size_t start) {
     const bool dos = text[k] == '\r' && k + 1 < text.size() && text[k + 1] == '\n';
     return text[k] == '\n' || dos ? k : std::string_view::npos;
   };
+  // Sixteen bytes a step (two words, one test), then eight; a tab is passed over.
   std::size_t i = start;
-  while (i + 8 <= limit) {
-    uint64_t w;
-    std::memcpy(&w, text.data() + i, 8);
-    const uint64_t control = controlBytes(w);
-    if (control == 0) {
-      i += 8;
-      continue;
+  for (std::size_t step = 16; step >= 8; step /= 2) {
+    while (i + step <= limit) {
+      uint64_t a, b = 0;
+      std::memcpy(&a, text.data() + i, 8);
+      if (step == 16) std::memcpy(&b, text.data() + i + 8, 8);
+      const uint64_t first = controlBytes(a), second = step == 16 ? controlBytes(b) : 0;
+      if ((first | second) == 0) {
+        i += step;
+        continue;
+      }
+      const int bit = first != 0 ? std::countr_zero(first) : 64 + std::countr_zero(second);
+      const std::size_t k = i + static_cast<std::size_t>(bit / 8);
+      if (text[k] != '\t') return end(k);
+      i = k + 1;
     }
-    const std::size_t k = i + static_cast<std::size_t>(std::countr_zero(control) / 8);
-    if (text[k] != '\t') return end(k);
-    i = k + 1;
   }
   for (; i < limit; ++i)
     if (text[i] != '\t' && (static_cast<unsigned char>(text[i]) < 0x20 || text[i] == 0x7f))
