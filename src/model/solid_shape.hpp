@@ -22,13 +22,16 @@ inline int distinctNodes(const std::array<int32_t, 8>& n, int32_t out[8]) {
   return k;
 }
 
-// True when no two of the nodes are the same (the usual hexahedron): every pair compared with
-// no branch, which the compiler does a few pairs at a time, instead of distinctNodes' search.
+// True when no two of the nodes are the same (the usual hexahedron): each node against the
+// ones one to four places after it, cyclically (every pair once or twice), without a branch,
+// which the compiler does four at a time; distinctNodes' search was three times as much.
 inline bool allDistinct(const std::array<int32_t, 8>& n) {
-  bool same = false;
-  for (std::size_t i = 1; i < 8; ++i)
-    for (std::size_t j = 0; j < i; ++j) same |= n[i] == n[j];
-  return !same;
+  std::array<int32_t, 16> twice{};
+  for (std::size_t i = 0; i < 8; ++i) twice[i] = twice[i + 8] = n[i];
+  int same = 0;
+  for (std::size_t r = 1; r <= 4; ++r)
+    for (std::size_t i = 0; i < 8; ++i) same |= twice[i] == twice[i + r];
+  return same == 0;
 }
 
 // A tetrahedron in the canonical form the ELFORM 10 kernel reads: four distinct nodes, then
