@@ -41,6 +41,15 @@ std::vector<std::size_t> ascending(std::size_t n, Get id) {
   return order;
 }
 
+// Room for `more` records at the end of `list`, growing geometrically (a keyword's lines bound
+// its records): no copies of the list as it grows record by record, and none per keyword of a
+// deck of many small ones.
+template <class T>
+void reserveMore(std::vector<T>& list, std::size_t more) {
+  if (list.size() + more > list.capacity())
+    list.reserve(std::max(list.size() + more, 2 * list.capacity()));
+}
+
 materials::Family lawFamily(SectionKind k) {
   switch (k) {
     case SectionKind::Solid:
@@ -133,6 +142,7 @@ void readNodes(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
                         fz = spec.slot("Z"), ftc = spec.slot("TC"), frc = spec.slot("RC");
   CardCursor cur(kw, ctx.deck);
   deck::PlainRecord plain(spec, kw.format);
+  reserveMore(ctx.node_input, kw.lines.size());
   for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
     // The usual node line needs no card; any other, or one with a message, is read below.
     const deck::DataLine& line = cur.peek();
@@ -275,6 +285,7 @@ void readSolids(Context& ctx, const deck::Keyword& kw, const KeywordOptions&) {
   }
   CardCursor cur(kw, ctx.deck);
   deck::PlainRecord plain(card1, kw.format);
+  reserveMore(ctx.solid_input, kw.lines.size());
   for (cur.skipBlankLines(); !cur.atEnd(); cur.skipBlankLines()) {
     if (readPlainSolid(ctx, kw.name, plain, cur.peek(), eid_slot, pid_slot, n1)) {
       cur.skipLine();
