@@ -534,18 +534,6 @@ std::vector<UnusedValue> Card::unusedValues() const {
   return out;
 }
 
-bool CardCursor::nextIsBlank() const {
-  if (atEnd()) return false;
-  // A data line mostly ends in a value: it needs no trimming to be known not blank.
-  const std::string_view t = peek().text;
-  const char last = t.empty() ? ' ' : t.back();
-  return (last == ' ' || last == '\t' || last == '\r' || last == '\n') && trim(t).empty();
-}
-
-void CardCursor::skipBlankLines() {
-  while (nextIsBlank()) ++next_;
-}
-
 const Card& CardCursor::read(const CardSpec& spec) {
   if (atEnd())
     throw util::InputError(deck_->loc(*keyword_).str() + ": " + keyword_->name + " " +

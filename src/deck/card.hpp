@@ -17,6 +17,7 @@
 #include "deck/deck.hpp"
 #include "deck/expression.hpp"
 #include "deck/layout.hpp"
+#include "deck/number.hpp"
 #include "util/source_loc.hpp"
 
 namespace crumple::deck {
@@ -234,9 +235,18 @@ class CardCursor {
   std::size_t remaining() const { return keyword_->lines.size() - next_; }
   // The next line (precondition: !atEnd()).
   const DataLine& peek() const { return keyword_->lines[next_]; }
-  bool nextIsBlank() const;
+  bool nextIsBlank() const {
+    if (atEnd()) return false;
+    // A data line mostly ends in a value: it needs no trimming to be known not blank (inline:
+    // a list keyword asks once per record).
+    const std::string_view t = peek().text;
+    const char last = t.empty() ? ' ' : t.back();
+    return (last == ' ' || last == '\t' || last == '\r' || last == '\n') && trim(t).empty();
+  }
   // Skips blank lines: list-type keywords (*NODE, *SET_..._LIST) have no meaning for them.
-  void skipBlankLines();
+  void skipBlankLines() {
+    while (nextIsBlank()) ++next_;
+  }
 
   // Passes over the next line (precondition: !atEnd()), read without a card (PlainRecord).
   void skipLine() { ++next_; }
