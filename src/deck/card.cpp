@@ -242,12 +242,12 @@ bool Card::readColumns(std::string_view text) {
 }
 
 PlainRecord::PlainRecord(const CardSpec& spec, Format format)
-    : spec_(&spec),
-      columns_(Card::columnsOf(spec, format)),
-      integers_(spec.fields.size()),
-      reals_(spec.fields.size()) {
-  const auto text = [](const Card::Column& c) { return c.type == FieldType::Text; };
-  if (std::any_of(columns_.begin(), columns_.end(), text)) columns_.clear();
+    : spec_(&spec), integers_(spec.fields.size()), reals_(spec.fields.size()) {
+  for (const Card::Column& c : Card::columnsOf(spec, format)) {
+    const FieldSpec& f = spec.fields[columns_.size()];
+    columns_.push_back({c.begin, c.end, c.type, f.zeroIsDefault(), f.def});
+    numeric_ = numeric_ && c.type != FieldType::Text;
+  }
 }
 
 // Card::readColumns without the card, each field defaulted as Card::integer and Card::real
@@ -255,19 +255,18 @@ PlainRecord::PlainRecord(const CardSpec& spec, Format format)
 // read here at once, the value readPlainField gives it (a real of at most eight digits is the
 // integer's exact double, as parseSimpleReal reads it); any other through readPlainField.
 bool PlainRecord::read(std::string_view text) {
-  if (columns_.empty()) return false;
+  if (!numeric_) return false;
   for (std::size_t i = 0; i < columns_.size(); ++i) {
-    const Card::Column& c = columns_[i];
-    const FieldSpec& f = spec_->fields[i];
+    const Column& c = columns_[i];
     if (c.end <= text.size()) {
       int64_t value = 0;
       std::size_t count = 0;
       const Digits form = rightAlignedDigits(
           std::string_view(text.data() + c.begin, c.end - c.begin), value, count);
       if (form != Digits::Other) {
-        const bool def = form == Digits::Blank || (f.zeroIsDefault() && value == 0);
-        integers_[i] = def ? static_cast<int64_t>(f.def) : value;
-        reals_[i] = def ? f.def : static_cast<double>(value);
+        const bool def = form == Digits::Blank || (c.zero_is_default && value == 0);
+        integers_[i] = def ? static_cast<int64_t>(c.def) : value;
+        reals_[i] = def ? c.def : static_cast<double>(value);
         continue;
       }
     }
@@ -276,9 +275,9 @@ bool PlainRecord::read(std::string_view text) {
       const std::string_view raw(text.data() + c.begin, std::min(c.end, text.size()) - c.begin);
       if (!Card::readPlainField(c.type, raw, v)) return false;
     }
-    const bool def = v.blank || (f.zeroIsDefault() && v.num == 0.0);
-    integers_[i] = def ? static_cast<int64_t>(f.def) : v.inum;
-    reals_[i] = def ? f.def : v.num;
+    const bool def = v.blank || (c.zero_is_default && v.num == 0.0);
+    integers_[i] = def ? static_cast<int64_t>(c.def) : v.inum;
+    reals_[i] = def ? c.def : v.num;
   }
   const std::size_t covered = columns_.back().end;
   return covered >= text.size() || !lineMarks(text.substr(covered)).any();

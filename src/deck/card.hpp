@@ -118,10 +118,8 @@ class Card {
   // The usual card: fixed columns, every value a plain number or text, no comma, tab or '&'
   // anywhere in the line. False (the card unread) when anything needs the general reading.
   bool readColumns(std::string_view text);
-  template <class Field>
-  static bool readPlainLine(std::span<const Column> columns, std::string_view text, Field&& field);
   // One field of such a line into `v` (left blank when it is); false when it needs the general
-  // reading. Defined (inline) in card.cpp, its only user.
+  // reading. Defined (inline) in card.cpp, where its users are.
   static inline bool readPlainField(FieldType type, std::string_view raw, Value& v);
   // The text of each field in the card's columns into `out` (room for every field); how many.
   std::size_t fixedFields(std::string_view text, std::span<std::string_view> out) const;
@@ -220,8 +218,16 @@ class PlainRecord {
  private:
   [[noreturn]] void wrongField(const FieldSlot& field) const;
 
+  // A field's columns and kind, and what a blank field (or 0 in a kZeroIsDefault one) gives.
+  struct Column {
+    std::size_t begin = 0, end = 0;
+    FieldType type = FieldType::Real;
+    bool zero_is_default = false;
+    double def = 0.0;
+  };
   const CardSpec* spec_;
-  std::vector<Card::Column> columns_;  // empty for a layout with a text field
+  std::vector<Column> columns_;
+  bool numeric_ = true;  // no text field: a line can be read here
   std::vector<int64_t> integers_;
   std::vector<double> reals_;
 };
