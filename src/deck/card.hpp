@@ -192,8 +192,9 @@ inline bool Card::blank(const FieldSlot& field) const {
 // without a Card: its numbers into an array, with no per-line card state, unused-value
 // bookkeeping (the builder reads every field) or texts. Only a line the Card would read in one
 // pass (Card::readColumns: plain numbers in their columns, no comma, tab or '&' in the line) is
-// read, through the same field reading (Card::readPlainField); any other line is the Card's,
-// whose values and messages are the reference (DeckCard.PlainRecordsReadAsTheCardReads).
+// read, by the same pieces (the right-aligned digit word, Card::readPlainField); any other line
+// is the Card's, whose values and messages are the reference
+// (DeckCard.PlainRecordsReadAsTheCardReads).
 class PlainRecord {
  public:
   // A layout with a text field reads no line (a text keeps the Card).

@@ -30,7 +30,7 @@ DofMask codeMask(int code) {
 
 // Order of `ids` ascending (stable for equal ids, so the first definition comes first).
 // Pre-processors mostly number in order: ids already ascending keep theirs, which is what the
-// sort would give, known in one pass (the sort was a tenth of reading a deck).
+// sort would give, known in one pass (the sorts were 7 % of reading the 19 MB bench deck).
 template <class Get>
 std::vector<std::size_t> ascending(std::size_t n, Get id) {
   std::vector<std::size_t> order(n);
@@ -39,8 +39,8 @@ std::vector<std::size_t> ascending(std::size_t n, Get id) {
   while (i < n && !(id(i) < id(i - 1))) ++i;
   if (i == n) return order;
   // (id, position) pairs sorted: the position breaks ties as the stable sort would, and each id
-  // is read once, not at each comparison (a stable sort of positions by their ids took twice as
-  // long).
+  // is read once, not at each comparison (a stable sort of positions by their ids took a quarter
+  // longer).
   std::vector<std::pair<std::decay_t<decltype(id(0))>, std::size_t>> keyed(n);
   for (std::size_t k = 0; k < n; ++k) keyed[k] = {id(k), k};
   std::sort(keyed.begin(), keyed.end());

@@ -925,11 +925,12 @@ TEST(DeckCard, PlainRecordsReadAsTheCardReads) {
       {"*NODE", "card 1"},          {"*ELEMENT_SOLID", "card 1"},
       {"*ELEMENT_SHELL", "card 1"}, {"*ELEMENT_SHELL", "thickness card"},
       {"*ELEMENT_BEAM", "card 1"},  {"*CONTROL_SOLID", "card 1"},
-      {"*SECTION_SHELL", "card 1"}, {"*PART", "card 2"}};
-  const std::string text = randomListDeck(rng, layouts, 64);
+      {"*SECTION_SHELL", "card 1"}, {"*PART", "card 2"},
+      {"*PART", "card 1"}};  // a text field: read by the card only
+  const std::string text = randomListDeck(rng, layouts, 72);
   Deck deck = memoryDeck(text);
   deck.parameters["P"] = {"p", 'R', 2.5, "2.5", {}};
-  ASSERT_EQ(deck.keywords.size(), 64u);
+  ASSERT_EQ(deck.keywords.size(), 72u);
   int plain = 0, lines = 0;
   for (std::size_t k = 0; k < deck.keywords.size(); ++k) {
     const Keyword& kw = deck.keywords[k];
