@@ -97,7 +97,8 @@ bool parsePlainInteger(std::string_view s, int64_t& out) {
 // after the digits, more digits), left to the scalar reading. The last eight columns are read
 // at once (eightDigitsValue), the leading blanks among them as zeros.
 enum class Digits : uint8_t { Blank, Read, Other };
-Digits rightAlignedDigits(std::string_view s, int64_t& value, std::string_view& text) {
+[[gnu::always_inline]] inline Digits rightAlignedDigits(std::string_view s, int64_t& value,
+                                                        std::size_t& count) {
   if (s.size() < 8 || firstNonSpace(s, 0, s.size() - 8) != s.size() - 8) return Digits::Other;
   uint64_t w;
   std::memcpy(&w, s.data() + s.size() - 8, 8);
@@ -108,7 +109,7 @@ Digits rightAlignedDigits(std::string_view s, int64_t& value, std::string_view& 
   const uint64_t d = w ^ 0x3030303030303030ULL;
   if ((nonDigitBytes(d) & keep) != 0) return Digits::Other;
   value = static_cast<int64_t>(eightDigitsValue(d & keep));
-  text = s.substr(s.size() - 8 + static_cast<std::size_t>(blanks));
+  count = 8 - static_cast<std::size_t>(blanks);
   return Digits::Read;
 }
 
@@ -144,17 +145,22 @@ void Card::assign(const CardSpec& spec, const DataLine* line, const Keyword& key
   if (line) readGeneral(line->text);
 }
 
-void Card::compile(const CardSpec& spec, Format format) {
-  columns_.clear();
+std::vector<Card::Column> Card::columnsOf(const CardSpec& spec, Format format) {
+  std::vector<Column> columns;
   std::size_t col = 0;
   for (std::size_t i = 0; i < spec.fields.size(); ++i) {
     const std::size_t end =
         takesRestOfLine(spec, i)
             ? kRestOfLine
             : col + static_cast<std::size_t>(effectiveWidth(spec.fields[i], format));
-    columns_.push_back({col, end, spec.fields[i].type});
+    columns.push_back({col, end, spec.fields[i].type});
     col = end;
   }
+  return columns;
+}
+
+void Card::compile(const CardSpec& spec, Format format) {
+  columns_ = columnsOf(spec, format);
   compiled_ = &spec;
   compiled_format_ = format;
 }
@@ -186,12 +192,14 @@ void Card::readGeneral(std::string_view text) {
 [[gnu::always_inline]] inline bool Card::readPlainField(FieldType type, std::string_view raw,
                                                         Value& v) {
   if (type == FieldType::Int) {
-    switch (rightAlignedDigits(raw, v.inum, v.text)) {
+    std::size_t count = 0;
+    switch (rightAlignedDigits(raw, v.inum, count)) {
       case Digits::Blank:
         return true;
       case Digits::Read:
         v.num = static_cast<double>(v.inum);
         v.blank = false;
+        v.text = std::string_view(raw.data() + raw.size() - count, count);
         return true;
       case Digits::Other:
         break;
@@ -231,6 +239,53 @@ bool Card::readColumns(std::string_view text) {
   if (covered < text.size() && lineMarks(text.substr(covered)).any()) return false;
   references_ = false;
   return true;
+}
+
+PlainRecord::PlainRecord(const CardSpec& spec, Format format)
+    : spec_(&spec), integers_(spec.fields.size()), reals_(spec.fields.size()) {
+  for (const Card::Column& c : Card::columnsOf(spec, format)) {
+    const FieldSpec& f = spec.fields[columns_.size()];
+    columns_.push_back({c.begin, c.end, c.type, f.zeroIsDefault(), f.def});
+    numeric_ = numeric_ && c.type != FieldType::Text;
+  }
+}
+
+// Card::readColumns without the card, each field defaulted as Card::integer and Card::real
+// default it. A field of blanks and right-aligned digits (ids, and integral coordinates) is
+// read here at once, the value readPlainField gives it (a real of at most eight digits is the
+// integer's exact double, as parseSimpleReal reads it); any other through readPlainField.
+bool PlainRecord::read(std::string_view text) {
+  if (!numeric_) return false;
+  for (std::size_t i = 0; i < columns_.size(); ++i) {
+    const Column& c = columns_[i];
+    if (c.end <= text.size()) {
+      int64_t value = 0;
+      std::size_t count = 0;
+      const Digits form = rightAlignedDigits(
+          std::string_view(text.data() + c.begin, c.end - c.begin), value, count);
+      if (form != Digits::Other) {
+        const bool def = form == Digits::Blank || (c.zero_is_default && value == 0);
+        integers_[i] = def ? static_cast<int64_t>(c.def) : value;
+        reals_[i] = def ? c.def : static_cast<double>(value);
+        continue;
+      }
+    }
+    Card::Value v;
+    if (c.begin < text.size()) {
+      const std::string_view raw(text.data() + c.begin, std::min(c.end, text.size()) - c.begin);
+      if (!Card::readPlainField(c.type, raw, v)) return false;
+    }
+    const bool def = v.blank || (c.zero_is_default && v.num == 0.0);
+    integers_[i] = def ? static_cast<int64_t>(c.def) : v.inum;
+    reals_[i] = def ? c.def : v.num;
+  }
+  const std::size_t covered = columns_.back().end;
+  return covered >= text.size() || !lineMarks(text.substr(covered)).any();
+}
+
+void PlainRecord::wrongField(const FieldSlot& field) const {
+  throw std::logic_error("field " + std::string(field.name) + " is of another card than " +
+                         std::string(spec_->label) + ", or not an integer field");
 }
 
 // A card of one text field (a title, a file name) is never split.
@@ -476,18 +531,6 @@ std::vector<UnusedValue> Card::unusedValues() const {
     out.push_back({keyword_->name, std::string(f.name), std::string(v.text), where()});
   }
   return out;
-}
-
-bool CardCursor::nextIsBlank() const {
-  if (atEnd()) return false;
-  // A data line mostly ends in a value: it needs no trimming to be known not blank.
-  const std::string_view t = peek().text;
-  const char last = t.empty() ? ' ' : t.back();
-  return (last == ' ' || last == '\t' || last == '\r' || last == '\n') && trim(t).empty();
-}
-
-void CardCursor::skipBlankLines() {
-  while (nextIsBlank()) ++next_;
 }
 
 const Card& CardCursor::read(const CardSpec& spec) {

@@ -17,6 +17,7 @@
 #include "deck/deck.hpp"
 #include "deck/expression.hpp"
 #include "deck/layout.hpp"
+#include "deck/number.hpp"
 #include "util/source_loc.hpp"
 
 namespace crumple::deck {
@@ -80,6 +81,7 @@ class Card {
   bool readAsSpaceSeparated() const { return spaced_; }
 
  private:
+  friend class PlainRecord;  // reads its lines as readColumns does, field by readPlainField
   struct Value {
     bool blank = true;
     double num = 0.0;
@@ -99,6 +101,7 @@ class Card {
   };
   static constexpr std::size_t kRestOfLine = std::string_view::npos;
   static std::optional<Reference> plainReference(std::string_view s);
+  static std::vector<Column> columnsOf(const CardSpec& spec, Format format);
   void compile(const CardSpec& spec, Format format);
   // The index of a slot of this card's layout (a slot of another layout is a coding error).
   std::size_t slotIndex(const FieldSlot& field) const {
@@ -116,7 +119,7 @@ class Card {
   // anywhere in the line. False (the card unread) when anything needs the general reading.
   bool readColumns(std::string_view text);
   // One field of such a line into `v` (left blank when it is); false when it needs the general
-  // reading. Defined (inline) in card.cpp, its only user.
+  // reading. Defined (inline) in card.cpp, where its users are.
   static inline bool readPlainField(FieldType type, std::string_view raw, Value& v);
   // The text of each field in the card's columns into `out` (room for every field); how many.
   std::size_t fixedFields(std::string_view text, std::span<std::string_view> out) const;
@@ -185,6 +188,51 @@ inline bool Card::blank(const FieldSlot& field) const {
   return values_[slotIndex(field)].blank;
 }
 
+// A line of a list keyword (*NODE, *ELEMENT_SOLID: a card per line, a line per record) read
+// without a Card: its numbers into an array, with no per-line card state, unused-value
+// bookkeeping (the builder reads every field) or texts. Only a line the Card would read in one
+// pass (Card::readColumns: plain numbers in their columns, no comma, tab or '&' in the line) is
+// read, by the same pieces (the right-aligned digit word, Card::readPlainField); any other line
+// is the Card's, whose values and messages are the reference
+// (DeckCard.PlainRecordsReadAsTheCardReads).
+class PlainRecord {
+ public:
+  // A layout with a text field reads no line (a text keeps the Card).
+  PlainRecord(const CardSpec& spec, Format format);
+
+  // True and the values set when `text` is such a line; false (the values unspecified) else.
+  bool read(std::string_view text);
+  // The values Card::integer of an Int field and Card::real of a numeric field give (blank, or
+  // 0 in a kZeroIsDefault field, the default). A slot of another layout, or integer of a Real
+  // field (whose fraction is a message), is a std::logic_error.
+  int64_t integer(const FieldSlot& field) const {
+    if (field.card != spec_ || columns_[field.index].type != FieldType::Int) [[unlikely]]
+      wrongField(field);
+    return integers_[field.index];
+  }
+  double real(const FieldSlot& field) const {
+    if (field.card != spec_) [[unlikely]]
+      wrongField(field);
+    return reals_[field.index];
+  }
+
+ private:
+  [[noreturn]] void wrongField(const FieldSlot& field) const;
+
+  // A field's columns and kind, and what a blank field (or 0 in a kZeroIsDefault one) gives.
+  struct Column {
+    std::size_t begin = 0, end = 0;
+    FieldType type = FieldType::Real;
+    bool zero_is_default = false;
+    double def = 0.0;
+  };
+  const CardSpec* spec_;
+  std::vector<Column> columns_;
+  bool numeric_ = true;  // no text field: a line can be read here
+  std::vector<int64_t> integers_;
+  std::vector<double> reals_;
+};
+
 // Walks the data lines of one keyword, card by card.
 class CardCursor {
  public:
@@ -194,9 +242,21 @@ class CardCursor {
   std::size_t remaining() const { return keyword_->lines.size() - next_; }
   // The next line (precondition: !atEnd()).
   const DataLine& peek() const { return keyword_->lines[next_]; }
-  bool nextIsBlank() const;
+  bool nextIsBlank() const {
+    if (atEnd()) return false;
+    // A data line mostly ends in a value: it needs no trimming to be known not blank (inline:
+    // a list keyword asks once per record).
+    const std::string_view t = peek().text;
+    const char last = t.empty() ? ' ' : t.back();
+    return (last == ' ' || last == '\t' || last == '\r' || last == '\n') && trim(t).empty();
+  }
   // Skips blank lines: list-type keywords (*NODE, *SET_..._LIST) have no meaning for them.
-  void skipBlankLines();
+  void skipBlankLines() {
+    while (nextIsBlank()) ++next_;
+  }
+
+  // Passes over the next line (precondition: !atEnd()), read without a card (PlainRecord).
+  void skipLine() { ++next_; }
 
   // The next card; throws util::InputError when the keyword has no more lines.
   const Card& read(const CardSpec& spec);

@@ -329,6 +329,8 @@ void readContact(Context&, const deck::Keyword&, const KeywordOptions&);
 void readControlContact(Context&, const deck::Keyword&, const KeywordOptions&);
 // An element of `kind` in a part whose section is of another kind: InputError at PID.
 void checkSectionKind(Context& ctx, const deck::Card& c, int32_t part, SectionKind kind);
+// Whether checkSectionKind passes for an element of `keyword` (no card needed to ask).
+bool sectionKindFits(const Context& ctx, std::string_view keyword, int32_t part, SectionKind kind);
 
 // Helpers shared by the build_*.cpp readers (build_mesh.cpp).
 // Moves to the next record of a keyword that holds several; false at its end. A record that

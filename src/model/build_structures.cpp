@@ -68,14 +68,25 @@ Context::ElementInput<N> elementCard(Context& ctx, const Card& c, SectionKind ki
 
 }  // namespace
 
-void checkSectionKind(Context& ctx, const Card& c, int32_t part, SectionKind kind) {
+namespace {
+// Thick shells keep their *SECTION_TSHELL among the solid sections (model.hpp).
+bool thickShellPart(const Context& ctx, const Part& p) {
+  return p.section_kind == SectionKind::Solid &&
+         isThickShell(ctx.model.solid_sections[std::size_t(p.section)].elform);
+}
+}  // namespace
+
+bool sectionKindFits(const Context& ctx, std::string_view keyword, int32_t part, SectionKind kind) {
   const Part& p = ctx.model.parts[static_cast<std::size_t>(part)];
-  if (p.section == kNone) return;
-  // Thick shells keep their *SECTION_TSHELL among the solid sections (model.hpp).
-  const bool tshell_part = p.section_kind == SectionKind::Solid &&
-                           isThickShell(ctx.model.solid_sections[std::size_t(p.section)].elform);
+  return p.section == kNone ||
+         (p.section_kind == kind && thickShellPart(ctx, p) == (keyword == "*ELEMENT_TSHELL"));
+}
+
+void checkSectionKind(Context& ctx, const Card& c, int32_t part, SectionKind kind) {
+  if (sectionKindFits(ctx, c.keyword().name, part, kind)) return;
+  const Part& p = ctx.model.parts[static_cast<std::size_t>(part)];
+  const bool tshell_part = thickShellPart(ctx, p);
   const bool tshell_keyword = c.keyword().name == "*ELEMENT_TSHELL";
-  if (p.section_kind == kind && tshell_part == tshell_keyword) return;
   c.fail("PID", "part " + std::to_string(p.id) + " has a " +
                     (tshell_part ? "*SECTION_TSHELL" : sectionKeyword(p.section_kind)) +
                     " section, but " + c.keyword().name + " needs a " +

@@ -22,6 +22,18 @@ inline int distinctNodes(const std::array<int32_t, 8>& n, int32_t out[8]) {
   return k;
 }
 
+// True when no two of the nodes are the same (the usual hexahedron): each node against the
+// ones one to four places after it, cyclically (every pair once or twice), without a branch,
+// which the compiler does four at a time; distinctNodes' search was three times as much.
+inline bool allDistinct(const std::array<int32_t, 8>& n) {
+  std::array<int32_t, 16> twice{};
+  for (std::size_t i = 0; i < 8; ++i) twice[i] = twice[i + 8] = n[i];
+  int same = 0;
+  for (std::size_t r = 1; r <= 4; ++r)
+    for (std::size_t i = 0; i < 8; ++i) same |= twice[i] == twice[i + r];
+  return same == 0;
+}
+
 // A tetrahedron in the canonical form the ELFORM 10 kernel reads: four distinct nodes, then
 // the fourth repeated (N1 N2 N3 N4 N4 N4 N4 N4).
 inline bool isCanonicalTet(const std::array<int32_t, 8>& n) {

@@ -578,6 +578,37 @@ TEST(DeckLines, LongLinesAndBinaryDataAreRefused) {
           << column;
     }
   }
+  // Every byte in a word's first, last and a middle place: a control byte but tab, form feed,
+  // vertical tab and ^Z is binary, and so are DEL and a lone carriage return; any other byte,
+  // UTF-8 and Latin-1 text included, is read as written.
+  for (int byte = 0; byte < 256; ++byte) {
+    const auto u = static_cast<unsigned char>(byte);
+    if (u == '\n' || u == '$' || u == '*') continue;  // a line end, a comment, a keyword
+    const bool binary = (u < 0x20 && u != '\t' && u != '\f' && u != '\v' && u != 0x1a) || u == 0x7f;
+    for (const std::size_t column : {1u, 8u, 12u, 55u}) {
+      std::string line = row;
+      line[column - 1] = static_cast<char>(u);
+      const std::string text = "*NODE\n" + row + line + row;
+      const std::string expected =
+          binary ? fmt::format(
+                       "d.k:3: byte 0x{:02x} in column {}: binary data, not a keyword "
+                       "deck (text)",
+                       byte, column)
+                 : "";
+      std::string read;
+      EXPECT_EQ(errorOf([&] {
+                  read = crumple::deck::readDeck("d.k", MemorySource(Files{{"d.k", text}}))
+                             .keywords.at(0)
+                             .lines.at(1)
+                             .text;
+                }),
+                expected)
+          << byte << " " << column;
+      if (!binary) {
+        EXPECT_EQ(read, line.substr(0, line.size() - 1)) << byte << " " << column;
+      }
+    }
+  }
 }
 
 TEST(DeckLines, EncryptedIncludeIsNamedAsSuch) {
@@ -853,6 +884,232 @@ TEST(DeckCard, ColumnReadingMatchesTheGeneralReadingBitForBit) {
   // Both kinds are many: plain lines (the one-pass reading) and lines with messages.
   EXPECT_GT(plain_lines, lines / 10);
   EXPECT_LT(plain_lines, lines);
+}
+
+namespace {
+
+// The keyword text of `blocks` list keywords of random lines over `layouts` (keyword, card), in
+// standard, I10 ('%') and long ('+', and after *KEYWORD LONG=Y) format, with comment and blank
+// lines between the records.
+std::string randomListDeck(
+    std::mt19937_64& rng, const std::vector<std::pair<std::string_view, std::string_view>>& layouts,
+    int blocks) {
+  using namespace crumple::deck;
+  std::uniform_int_distribution<int> pick(0, 9);
+  std::string deck = "*KEYWORD\n", long_part = "*KEYWORD LONG=Y\n";
+  for (int b = 0; b < blocks; ++b) {
+    const auto& [name, label] = layouts[static_cast<std::size_t>(b) % layouts.size()];
+    const int format = b / static_cast<int>(layouts.size()) % 4;  // standard, I10, '+', LONG=Y
+    std::string& out = format == 3 ? long_part : deck;
+    out += std::string(name) + (format == 1 ? " %" : format == 2 ? " +" : "") + "\n";
+    for (int k = 0; k < 60; ++k) {
+      if (pick(rng) == 0) out += pick(rng) < 5 ? "$ a comment\n" : "   $ indented comment\n";
+      if (pick(rng) == 0) out += "\n";
+      out += randomLine(rng, keywordSpec(name).card(label), format == 1 ? 10 : format > 1 ? 20 : 0);
+      out += "\n";
+    }
+  }
+  return deck + long_part;
+}
+
+}  // namespace
+
+// A list keyword's line read without a card (PlainRecord) is read only when the card would
+// read it without a message, and then to the same bits: random lines of plain and malformed
+// fields (parameters, commas, tabs, blanks, cut short, too many digits) in every format, comment
+// lines between records.
+TEST(DeckCard, PlainRecordsReadAsTheCardReads) {
+  using namespace crumple::deck;
+  std::mt19937_64 rng(2019);
+  const std::vector<std::pair<std::string_view, std::string_view>> layouts{
+      {"*NODE", "card 1"},          {"*ELEMENT_SOLID", "card 1"},
+      {"*ELEMENT_SHELL", "card 1"}, {"*ELEMENT_SHELL", "thickness card"},
+      {"*ELEMENT_BEAM", "card 1"},  {"*CONTROL_SOLID", "card 1"},
+      {"*SECTION_SHELL", "card 1"}, {"*PART", "card 2"},
+      {"*PART", "card 1"}};  // a text field: read by the card only
+  const std::string text = randomListDeck(rng, layouts, 72);
+  Deck deck = memoryDeck(text);
+  deck.parameters["P"] = {"p", 'R', 2.5, "2.5", {}};
+  ASSERT_EQ(deck.keywords.size(), 72u);
+  int plain = 0, lines = 0;
+  for (std::size_t k = 0; k < deck.keywords.size(); ++k) {
+    const Keyword& kw = deck.keywords[k];
+    const CardSpec& spec = keywordSpec(kw.name).card(layouts[k % layouts.size()].second);
+    PlainRecord record(spec, kw.format);
+    for (const DataLine& line : kw.lines) {
+      ++lines;
+      std::string general, fast;
+      try {
+        const Card c(spec, &line, kw, deck, Card::Reading::General);
+        for (std::size_t i = 0; i < spec.fields.size(); ++i) {
+          const FieldSlot f = spec.slot(spec.fields[i].name);
+          general += std::to_string(std::bit_cast<uint64_t>(c.real(f))) + " ";
+          if (spec.fields[i].type == FieldType::Int) general += std::to_string(c.integer(f)) + " ";
+        }
+        general += c.readAsSpaceSeparated() ? "spaced" : "";
+      } catch (const std::exception& e) {
+        general = std::string("! ") + e.what();
+      }
+      if (!record.read(line.text)) continue;
+      ++plain;
+      for (std::size_t i = 0; i < spec.fields.size(); ++i) {
+        const FieldSlot f = spec.slot(spec.fields[i].name);
+        fast += std::to_string(std::bit_cast<uint64_t>(record.real(f))) + " ";
+        if (spec.fields[i].type == FieldType::Int) fast += std::to_string(record.integer(f)) + " ";
+      }
+      EXPECT_EQ(fast, general) << kw.name << " line " << line.line << " '" << line.text << "'";
+    }
+  }
+  // Both kinds are many: lines read without a card and lines left to it.
+  EXPECT_GT(plain, lines / 10);
+  EXPECT_LT(plain, lines / 2);
+  // A slot of another layout, or the integer of a real field, is a coding error.
+  const PlainRecord node(keywordSpec("*NODE").card("card 1"), Format::Standard);
+  EXPECT_THROW((void)node.integer(keywordSpec("*NODE").card("card 1").slot("X")), std::logic_error);
+  EXPECT_THROW((void)node.real(keywordSpec("*ELEMENT_SOLID").card("card 1").slot("EID")),
+               std::logic_error);
+}
+
+// *NODE and *ELEMENT_SOLID build the same model, errors and notes (bit for bit, message for
+// message) whether their lines are read without cards or all with them (a tab at the end of
+// each line sends it to the card's general reading, and changes no value).
+TEST(DeckCard, ListKeywordsBuildAsWithCardsOnly) {
+  std::mt19937_64 rng(1920);
+  std::uniform_int_distribution<int> pick(0, 19), rare(0, 199), node(201, 400), any(1, 420);
+  const auto field = [&](int width, const std::string& v) {
+    return std::string(static_cast<std::size_t>(std::max(0, width - static_cast<int>(v.size()))),
+                       ' ') +
+           v;
+  };
+  const auto odd = [&](const std::string& v) {
+    switch (rare(rng)) {
+      case 0:
+        return std::string("x");
+      case 1:
+        return std::string("");
+      case 2:
+        return "-" + v;
+      case 3:
+        return v + ".5";
+      case 4:
+        return std::string("&p");
+      case 5:
+        return std::string("8");
+      default:
+        return v;
+    }
+  };
+  const auto coordinate = [&] {
+    return fmt::format("{:.{}g}", std::uniform_real_distribution<double>(-1e3, 1e3)(rng),
+                       1 + pick(rng) % 12);
+  };
+  // Nodes 201..400 plainly written; 1..200 in short keywords (an error ends its keyword's
+  // reading) with odd values; elements mostly on the former.
+  std::string nodes = "*NODE\n", solids;
+  for (int id = 201; id <= 400; ++id)
+    nodes += field(8, std::to_string(id)) + field(16, coordinate()) + field(16, coordinate()) +
+             field(16, coordinate()) + "\n";
+  for (int b = 0; b < 100; ++b) {
+    nodes += b % 3 == 0 ? "*NODE %\n" : "*NODE\n";
+    const int w = b % 3 == 0 ? 10 : 8;
+    for (int k = 0; k < 2; ++k) {
+      const int id = b * 2 + k + 1;
+      nodes += field(w, odd(std::to_string(rare(rng) == 0 ? id - 1 : id)));
+      for (int c = 0; c < 3; ++c) nodes += field(16, odd(coordinate()));
+      if (pick(rng) < 8) nodes += field(w, odd(std::to_string(pick(rng) % 8)));
+      if (pick(rng) < 3) nodes += field(w, odd(std::to_string(pick(rng) % 8)));
+      nodes += pick(rng) == 0 ? "\n$ comment\n" : "\n";
+    }
+    solids += "*ELEMENT_SOLID\n";
+    for (int k = 0; k < 2; ++k) {
+      solids += field(8, odd(std::to_string(b * 2 + k + 1)));
+      const int part = pick(rng);
+      solids += field(8, odd(part < 14 ? "1" : part < 18 ? "2" : "3"));
+      std::array<int, 8> n{};
+      for (int& i : n) i = pick(rng) == 0 ? any(rng) : node(rng);
+      if (pick(rng) < 4) n[5] = n[4], n[7] = n[6];          // a pentahedron
+      if (pick(rng) < 8) n[7] = n[6] = n[5] = n[4] = n[3];  // N4 repeated
+      const int given = pick(rng) < 3 ? 4 : 8;              // N1..N4 alone
+      for (int i = 0; i < given; ++i) solids += field(8, odd(std::to_string(n[i])));
+      solids += pick(rng) == 0 ? "\n\n" : "\n";
+    }
+  }
+  const auto tabbed = [](const std::string& text) {
+    std::string out;
+    for (std::size_t at = 0, nl; at < text.size(); at = nl + 1) {
+      nl = text.find('\n', at);
+      const std::string line = text.substr(at, nl - at);
+      out += line + (line.empty() || line[0] == '*' || line[0] == '$' ? "" : "\t") + "\n";
+    }
+    return out;
+  };
+  const auto built = [](const std::string& text, bool collect) {
+    std::string out;
+    try {
+      crumple::model::ReadOptions options;
+      options.collect_errors = collect;
+      options.allow_unsupported = collect;
+      crumple::deck::Deck deck = memoryDeck(text);
+      deck.parameters["P"] = {"p", 'R', 2.5, "2.5", {}};
+      const auto m = crumple::model::buildModel(deck, "main.k", options);
+      for (std::size_t i = 0; i < m.nodes.size(); ++i)
+        out += fmt::format(
+            "node {} {} {} {}\n", m.nodes.id[i], std::bit_cast<uint64_t>(m.nodes.x[i][0]),
+            std::bit_cast<uint64_t>(m.nodes.x[i][1]), std::bit_cast<uint64_t>(m.nodes.x[i][2]));
+      for (std::size_t e = 0; e < m.solids.size(); ++e) {
+        out += fmt::format("solid {} {}", m.solids.id[e], m.solids.part[e]);
+        for (const int32_t n : m.solids.nodes[e]) out += " " + std::to_string(n);
+        out += "\n";
+      }
+      for (const auto& e : m.errors) out += "error " + e.message + "\n";
+      for (const auto& i : m.ignored)
+        out += "ignored " + i.where.str() + " " + i.keyword + " " + i.field + " " + i.reason + "\n";
+    } catch (const std::exception& e) {
+      out += std::string("! ") + e.what();
+    }
+    return out;
+  };
+  // Each solid form: hexahedra (1, 2), tetrahedra (10, 13); part 2 pentahedra (15), part 3
+  // a shell section (refused for solids).
+  for (const int elform : {1, 2, 10, 13}) {
+    const std::string text = fmt::format(R"(*KEYWORD
+*MAT_ELASTIC
+1,7.8e-9,210000,0.3
+*SECTION_SOLID
+1,{}
+*SECTION_SOLID
+2,15
+*SECTION_SHELL
+3
+0.01
+*PART
+one
+1,1,1
+*PART
+two
+2,2,1
+*PART
+three
+3,3,1
+)",
+                                         elform) +
+                             nodes + solids;
+    for (const bool collect : {true, false}) {
+      const std::string with_cards = built(tabbed(text), collect);
+      EXPECT_EQ(built(text, collect), with_cards) << elform;
+      if (!collect) continue;
+      const auto count = [&](std::string_view what) {
+        std::size_t n = 0;
+        for (std::size_t at = with_cards.find(what); at != std::string::npos;
+             at = with_cards.find(what, at + 1))
+          ++n;
+        return n;
+      };
+      // Messages are compared too, and solids of every part's reading.
+      EXPECT_GT(count("\nerror "), 20u) << elform;
+      EXPECT_GT(count("\nsolid "), 30u) << elform;
+    }
+  }
 }
 
 // A field slot reads the field it names, and only on a card of its own layout.
