@@ -2,7 +2,7 @@
 """Energy balance of the corpus decks that run: each deck to its own end time (or a budget).
 
   python3 tools/energy_sweep.py [--crumple PATH] [--decks DIR] [--budget 300] [--json FILE]
-                                [--only NAME ...]
+                                [--only NAME ...] [--paths DECK.k ...]
 
 Issue 16 asks the energy ratio to stay within [0.98, 1.02] for the whole run on every explicit
 deck of ../shared/decks that runs. tools/compatibility.py runs 20 cycles of each; this runs
@@ -120,9 +120,14 @@ def main() -> int:
     ap.add_argument("--budget", type=float, default=300.0, help="seconds per deck")
     ap.add_argument("--json", help="write the raw figures here")
     ap.add_argument("--only", nargs="*", help="deck folder names")
+    ap.add_argument("--paths", nargs="*", help="deck files to run instead of the corpus (the "
+                    "project's verification and example decks)")
     opts = ap.parse_args()
     records = []
-    for deck in compatibility.list_decks(opts.decks):
+    decks = compatibility.list_decks(opts.decks) if not opts.paths else [
+        {"deck": os.path.relpath(p, compatibility.ROOT), "folder": os.path.dirname(os.path.abspath(p)),
+         "main_deck": os.path.basename(p)} for p in opts.paths]
+    for deck in decks:
         if opts.only and deck["deck"] not in opts.only:
             continue
         end_time = deck_end_time(deck, opts.crumple) if deck["main_deck"] else None

@@ -931,12 +931,14 @@ void Contact::gatherRecords(std::vector<Record> mine) {
 void Contact::applyRecords() {
   // The history of the checks in contact last cycle is cleared (not of every check: this is
   // the cycle's hot path, and most checks are never in contact), then set from the records.
+  last_contact_seg_.clear();
   for (const int32_t c : in_contact_) {
     const auto check = std::size_t(c);
     for (std::size_t k = 0; k < 3; ++k) {
       friction_[3 * check + k] = 0.0;
       tie_moment_[3 * check + k] = 0.0;
     }
+    last_contact_seg_.push_back(last_seg_[check]);
     last_seg_[check] = -1;
     last_side_[check] = 0;
     entry_[check] = 0.0;
@@ -998,12 +1000,17 @@ void Contact::bookEndedNodeChecks() {
   // pairs (bookEndedSegmentPairs). A check whose spring was unloading (the node parting: its
   // last force acts over the step that takes it out and gives the energy back) books
   // nothing: booked, it over-counted by that last k p^2 / 2 (free nodes kicked off a block:
-  // energy ratio 1.0007 instead of 1.00005).
-  for (const int32_t c : last_in_contact_) {
-    const auto check = std::size_t(c);
+  // energy ratio 1.0007 instead of 1.00005). A check ended by erosion (its segment's element,
+  // or its node's, eroded) books its spring's energy whatever the spring was doing: the node
+  // is still behind the plane and nothing gives the energy back (a block pressed into an
+  // eroding layer: energy ratio 0.62 when unloading springs booked nothing).
+  for (std::size_t k = 0; k < last_in_contact_.size(); ++k) {
+    const auto check = std::size_t(last_in_contact_[k]);
     if (last_seg_[check] >= 0) continue;
     const Pass& p = passes_[std::size_t(check_pass_[check])];
-    if (held_[check] > 0.0) dissipated_[std::size_t(p.iface)] += held_[check];
+    const int32_t seg = last_contact_seg_[k];
+    const bool eroded = !erosion_.checkLive(check) || (seg >= 0 && !live(p, std::size_t(seg)));
+    if (held_[check] > 0.0 || eroded) dissipated_[std::size_t(p.iface)] += std::abs(held_[check]);
     held_[check] = 0.0;
   }
 }

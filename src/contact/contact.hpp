@@ -301,7 +301,8 @@ class Contact {
   void bookEndedSegmentPairs();
   // The same for the node checks of last cycle with no record now (held_).
   void bookEndedNodeChecks();
-  std::vector<int32_t> last_in_contact_;  // applyRecords' scratch: in_contact_ of the cycle before
+  std::vector<int32_t> last_in_contact_;   // applyRecords' scratch: in_contact_ of the cycle before
+  std::vector<int32_t> last_contact_seg_;  // and the segment each of them was in contact with
   const EdgePair* findEdgePair(int32_t check, int32_t segment) const;
   // A pair of pass p in contact last cycle whose edges are edges a and b of the pass or their
   // neighbours (sharing a node), the first in pair order; none if none.
