@@ -355,9 +355,8 @@ StepWork Boundary::applyRigidWalls(double dt_n, double dt_half, domain::Subdomai
       for (int c = 0; c < 3; ++c) {
         const double dv = v_new[c] - v[c];
         if (owned) {
-          const StepWork w_node = impulseWork(m * dv, v_old[3 * n + c], v_new[c]);
-          absorbed.behind -= w_node.behind;
-          absorbed.ahead -= w_node.ahead;
+          absorbed +=
+              impulseWork(-m * dv, v_old[3 * n + c], v_new[c]);  // work on the node, negated
           impulse_n += m * dv * nrm[c];
           forces.push_back(dt_n > 0.0 ? m * dv / dt_n : 0.0);
         }
