@@ -386,11 +386,26 @@ void curveAt(std::span<const double> x, const Y& y, double eps, double& h, doubl
   h = y[k] + (y[k + 1] - y[k]) * (eps - x[k]) / dx;
 }
 
+// The residual q(dg) - flow(e + 2/3 dg q(dg)) of the return below at dg.
+template <class Flow>
+double flowResidual(const Flow& flow, double dg, double e, double c1, double c2, double m1,
+                    double m2) {
+  double i1, i2, h, slope;
+  inverseFactors(m1, m2, dg, i1, i2);
+  const double q = std::sqrt(1.5 * (c1 * i1 * i1 + c2 * i2 * i2));
+  flow(e + kTwoThirds * dg * q, h, slope);
+  return q - h;
+}
+
 // The plastic multiplier of the same return as linearPlaneStress (no back stress) onto a
 // flow stress `flow(eps, h, slope)` that does not decrease, looked up at the current iterate,
 // from the trial state (c1, c2, q_trial) at plastic strain e; 0 for an elastic step.
+// `may_fall`: the flow stress may fall below its value at e (*MAT_024 VP = 1 on a rate table
+// whose curves cross), so the bracket's upper end from it may hold no root: it is doubled
+// until the residual there is not positive.
 template <class Flow>
-double flowMultiplier(const Flow& flow, double e, double c1, double c2, double m1, double m2) {
+double flowMultiplier(const Flow& flow, double e, double c1, double c2, double m1, double m2,
+                      bool may_fall = false) {
   double h, slope;
   flow(e, h, slope);
   const double q_trial = std::sqrt(1.5 * (c1 + c2));
@@ -400,6 +415,14 @@ double flowMultiplier(const Flow& flow, double e, double c1, double c2, double m
   double lo = 0.0;
   double hi =
       h > 0.0 ? 2.0 * (q_trial / h - 1.0) / std::min(m1, m2) : std::numeric_limits<double>::max();
+  if (may_fall && h > 0.0) {
+    for (int k = 0; k < kPlaneStressMaxIterations; ++k) {
+      if (!(flowResidual(flow, hi, e, c1, c2, m1, m2) > 0.0)) break;
+      lo = hi;
+      hi *= 2.0;
+    }
+    if (!(dg > lo && dg < hi)) dg = 0.5 * (lo + hi);
+  }
   for (int it = 0; it < kPlaneStressMaxIterations; ++it) {
     double i1, i2;
     inverseFactors(m1, m2, dg, i1, i2);
@@ -488,6 +511,20 @@ void curvePlaneStress(PlaneStressPoints& b, const Moduli& moduli, const CurveHar
       });
 }
 
+// MAT_024 with VP = 1: the return onto the yield stress at the plastic strain rate of the
+// step (return_mapping.hpp, viscoplasticFlow), whose slope along the step includes the rate's.
+void viscoplasticCurvePlaneStress(PlaneStressPoints& b, const Moduli& moduli,
+                                  const CurveHardening& law) {
+  const double inv_dt = b.dt > 0.0 ? 1.0 / b.dt : 0.0;
+  isotropicPlaneStress(
+      b, moduli, [&](double, double, double, double e, double c1, double c2, double m1, double m2) {
+        auto flow = [&](double eps, double& h, double& slope) {
+          viscoplasticFlow(law, eps, e, inv_dt, h, slope);
+        };
+        return flowMultiplier(flow, e, c1, c2, m1, m2, true);
+      });
+}
+
 // MAT_018: the power law scaled by the Cowper-Symonds factor.
 template <Rate kRate>
 void powerPlaneStress(PlaneStressPoints& b, const Moduli& moduli, const PowerHardening& law) {
@@ -529,7 +566,9 @@ void planeStressPower(PlaneStressPoints& b, const Moduli& m, const PowerHardenin
 }
 
 void planeStressCurve(PlaneStressPoints& b, const Moduli& m, const CurveHardening& P) {
-  if (!P.table.empty()) {
+  if (P.viscoplastic) {
+    viscoplasticCurvePlaneStress(b, m, P);
+  } else if (!P.table.empty()) {
     curvePlaneStress<Rate::Table>(b, m, P);
   } else if (P.C > 0.0) {
     curvePlaneStress<Rate::CowperSymonds>(b, m, P);

@@ -7,10 +7,13 @@
 //          rates the yield stress is interpolated linearly in the rate (in ln(rate) when the
 //          table's values are natural logarithms, its first value being negative), and below
 //          the first / above the last rate the end curves are used.
-// Both are evaluated at the point's effective strain rate of the step (VP = 0), which each
+// With VP = 0 both are evaluated at the point's effective strain rate of the step, which each
 // family measures as its Cowper-Symonds path does (return_mapping.cpp, plane_stress.cpp,
 // uniaxial.cpp). At that rate the yield curve is piecewise linear in eps_p, so the returns stay
-// exact on it (the curve returns take any indexable sequence of ordinates).
+// exact on it (the curve returns take any indexable sequence of ordinates). With VP = 1
+// (viscoplastic) they are evaluated at the effective plastic strain rate of the step, inside
+// the consistency condition (return_mapping.hpp, viscoplasticFlow), and so need the slopes in
+// the rate as well (valueAndSlope, weightSlope).
 #pragma once
 
 #include <cmath>
@@ -34,6 +37,10 @@ struct RateCurve {
   double operator()(double r) const {
     if (rate.size() == 1) return factor[0];
     return util::onSegment(rate, factor, util::segmentOf(rate, r), r);
+  }
+  // The factor at r and its slope d factor / d rate (0 on a step and for one point).
+  void valueAndSlope(double r, double& f, double& df) const {
+    util::valueAndSlope(rate, factor, r, f, df);
   }
 };
 
@@ -69,6 +76,17 @@ struct RateTable {
     const std::size_t k = util::segmentOf(rates, x);
     return {sig.data() + k * n, sig.data() + (k + 1) * n,
             (x - rates[k]) / (rates[k + 1] - rates[k])};
+  }
+  // d w / d rate of the blend at(rate): 0 at and beyond the end rates, where the end curves
+  // hold; 1 / (r_k+1 - r_k) between two rates, divided by the rate when the values are ln(rate).
+  double weightSlope(double rate) const {
+    const std::size_t m = rates.size();
+    if (m == 1 || !(rate > 0.0)) return 0.0;
+    const double x = log_rates ? std::log(rate) : rate;
+    if (!(x > rates[0]) || x >= rates[m - 1]) return 0.0;
+    const std::size_t k = util::segmentOf(rates, x);
+    const double dw_dx = 1.0 / (rates[k + 1] - rates[k]);
+    return log_rates ? dw_dx / rate : dw_dx;
   }
 };
 

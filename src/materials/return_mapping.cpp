@@ -272,6 +272,20 @@ void curveHardeningUpdate(PointBatch& b, const Moduli& m, const CurveHardening& 
   });
 }
 
+// MAT_024 with VP = 1: the radial return onto the yield stress at the step's plastic strain
+// rate (viscoplasticFlow), by safeguarded Newton; the yield check is at the static surface.
+void viscoplasticCurveUpdate(PointBatch& b, const Moduli& m, const CurveHardening& P) {
+  const double inv_dt = b.dt > 0.0 ? 1.0 / b.dt : 0.0;
+  isotropicRadialUpdate<false>(b, m, [&](double, double G3, double q, double e) {
+    double y = 0.0, h = 0.0;
+    viscoplasticFlow(P, e, e, inv_dt, y, h);
+    if (!(q > y)) return 0.0;
+    return radialReturnIncrement(
+        q, e, G3,
+        [&](double x, double& yx, double& hx) { viscoplasticFlow(P, x, e, inv_dt, yx, hx); }, true);
+  });
+}
+
 // MAT_018: the power law scaled by the Cowper-Symonds factor, by safeguarded Newton.
 template <Rate kRate>
 void powerHardeningUpdate(PointBatch& b, const Moduli& m, const PowerHardening& P) {
@@ -327,6 +341,34 @@ double curveFlowStress(const CurveHardening& P, double eps_p) {
   return flowStressOn(P.eps, P.sig, eps_p);
 }
 
+void viscoplasticFlow(const CurveHardening& P, double e, double e0, double inv_dt, double& y,
+                      double& h) {
+  const double r = e > e0 ? (e - e0) * inv_dt : 0.0;
+  if (!P.table.empty()) {
+    // y = lo(e) + w(r) (hi(e) - lo(e)): the blend's slope in e, and the curves' spread times
+    // the weight's slope in r.
+    const CurveBlend blend = P.table.at(r);
+    const std::size_t n = P.table.eps.size();
+    double lo = 0.0, hi = 0.0, slope = 0.0;
+    util::valueAndSlope(P.table.eps, blend, e, y, slope);
+    util::valueAndSlope(P.table.eps, std::span<const double>(blend.lo, n), e, lo, h);
+    util::valueAndSlope(P.table.eps, std::span<const double>(blend.hi, n), e, hi, h);
+    h = slope + inv_dt * (hi - lo) * P.table.weightSlope(r);
+    return;
+  }
+  double ys = 0.0, hs = 0.0;  // the static curve
+  util::valueAndSlope(P.eps, P.sig, e, ys, hs);
+  double rf = 1.0, drf = 0.0;  // the rate factor and its slope in r
+  if (P.C > 0.0) {
+    rf = 1.0 + std::pow(r / P.C, P.inv_P);
+    drf = r > 0.0 ? P.inv_P * (rf - 1.0) / r : 0.0;
+  } else if (!P.lcsr.empty()) {
+    P.lcsr.valueAndSlope(r, rf, drf);
+  }
+  y = rf * ys;
+  h = rf * hs + inv_dt * drf * ys;
+}
+
 void powerHardeningReturn(PointBatch& b, const Moduli& m, const PowerHardening& P) {
   if (P.C > 0.0) {
     powerHardeningUpdate<Rate::CowperSymonds>(b, m, P);
@@ -336,7 +378,9 @@ void powerHardeningReturn(PointBatch& b, const Moduli& m, const PowerHardening& 
 }
 
 void curveHardeningReturn(PointBatch& b, const Moduli& m, const CurveHardening& P) {
-  if (!P.table.empty()) {
+  if (P.viscoplastic) {
+    viscoplasticCurveUpdate(b, m, P);
+  } else if (!P.table.empty()) {
     curveHardeningUpdate<Rate::Table>(b, m, P);
   } else if (P.C > 0.0) {
     curveHardeningUpdate<Rate::CowperSymonds>(b, m, P);

@@ -30,12 +30,25 @@ struct LinearHardening {
 // Isotropic hardening along a piecewise-linear yield curve (stress vs effective plastic
 // strain, linearly extrapolated past its ends), with the same rate factors; or, when `table`
 // is not empty, along the curve of a rate table at the point's strain rate (eps, sig unused).
+// `viscoplastic` (*MAT_024 VP = 1): the rate forms take the effective plastic strain rate of
+// the step inside the consistency condition (viscoplasticFlow), not the total strain rate.
 struct CurveHardening {
   std::span<const double> eps, sig;
   double C = 0.0, inv_P = 0.0;
   RateCurve lcsr;
   RateTable table;
+  bool viscoplastic = false;
 };
+
+// VP = 1 (LS-DYNA Keyword Manual vol. II, *MAT_024 VP; Theory Manual, material 24): the yield
+// stress y(e, r) of P at the effective plastic strain e and the plastic strain rate
+// r = (e - e0) inv_dt of a step that starts at e0, and its slope along the step,
+// h = dy/de + inv_dt dy/dr, the derivative a return onto y needs. At e = e0 (r = 0) y is the
+// static yield stress: the yield check of the viscoplastic formulation. The Cowper-Symonds
+// factor's rate slope is infinite at r = 0 for P > 1; it is taken as 0 there (the returns
+// bracket their root, so a missing slope costs iterations, not accuracy).
+void viscoplasticFlow(const CurveHardening& P, double e, double e0, double inv_dt, double& y,
+                      double& h);
 
 // Isotropic power-law hardening, the yield stress rf k (eps0 + eps_p)^n (*MAT_POWER_LAW_
 // PLASTICITY, 018: eps0 the strain at yield), with the Cowper-Symonds factor of C and inv_P
@@ -57,9 +70,12 @@ struct PowerHardening {
 // and y does not decrease. g falls from g(0) > 0 to g(hi) <= 0 at hi = g(0) / G3: Newton from
 // hi, kept inside the bracket [lo, hi] by bisection, converges to round-off whatever the sign
 // of y'' (Simo & Hughes, Computational Inelasticity, 1998, Box 3.1, with a safeguard).
-// `flow(e, y, h)` gives the flow stress y and its slope h at e.
+// `flow(e, y, h)` gives the flow stress y and its slope h at e. `may_fall`: y may fall below
+// y(eps_p) (*MAT_024 VP = 1 on a rate table whose curves cross), which may leave g(hi) > 0:
+// the bracket is then doubled until g changes sign (-G3 x wins), and a root is found inside.
 template <class Flow>
-double radialReturnIncrement(double q, double eps_p, double G3, const Flow& flow) {
+double radialReturnIncrement(double q, double eps_p, double G3, const Flow& flow,
+                             bool may_fall = false) {
   double y = 0.0, h = 0.0;
   flow(eps_p, y, h);
   double lo = 0.0, hi = (q - y) / G3;
@@ -68,6 +84,11 @@ double radialReturnIncrement(double q, double eps_p, double G3, const Flow& flow
     flow(eps_p + x, y, h);
     const double g = q - G3 * x - y;
     if (g == 0.0) return x;
+    if (may_fall && g > 0.0 && x >= hi) {  // the root lies past hi
+      lo = x;
+      hi = x = 2.0 * x;
+      continue;
+    }
     (g > 0.0 ? lo : hi) = x;
     double next = x + g / (G3 + h);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);

@@ -74,17 +74,24 @@ bool updateFibre(const FibreLaw& fibre, FibrePoint& p, double de, double dgs, do
   if (!law.plastic) return false;
 
   // Rate effects at the fibre's strain rate: the Cowper-Symonds or LCSR factor on the yield
-  // stress, or the yield curve of the rate table at that rate (with rf = 1).
+  // stress, or the yield curve of the rate table at that rate (with rf = 1). VP = 1: rf = 1,
+  // and the flow stress is the one at the step's plastic strain rate (viscoplasticFlow).
+  const bool vp = law.viscoplastic;
   double rf = 1.0;
-  if (law.C > 0.0 && dt > 0.0) {
+  if (!vp && law.C > 0.0 && dt > 0.0) {
     rf = 1.0 + std::pow(fibreRate(de, dgs, dgt, dt) / law.C, law.inv_P);
-  } else if (!law.lcsr.empty()) {
+  } else if (!vp && !law.lcsr.empty()) {
     rf = law.lcsr(fibreRate(de, dgs, dgt, dt));
   }
-  const bool tabled = !law.table.empty();
+  const bool tabled = !vp && !law.table.empty();
   const CurveBlend blend = tabled ? law.table.at(fibreRate(de, dgs, dgt, dt)) : CurveBlend{};
+  const CurveHardening vp_curve{law.curve_eps, law.curve_sig, law.C, law.inv_P,
+                                law.lcsr,      law.table,     true};
+  const double e0 = p.eps_p, inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;
   auto flow = [&](double eps_p, double& y, double& h) {
-    if (tabled) {
+    if (vp) {
+      viscoplasticFlow(vp_curve, eps_p, e0, inv_dt, y, h);
+    } else if (tabled) {
       curveStressAndSlope(law.table.eps, blend, eps_p, y, h);
     } else {
       flowStressAndSlope(law, eps_p, y, h);

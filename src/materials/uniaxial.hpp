@@ -71,6 +71,9 @@ struct FibreLaw {
   RateTable table;
   // MAT_019 LC1: the initial yield stress vs the strain rate (sigy unused); empty: none.
   RateCurve sigy_rate;
+  // MAT_024 VP = 1: C and P, lcsr or the table at the fibre's plastic strain rate, inside the
+  // return (return_mapping.hpp, viscoplasticFlow); the yield curve is then curve_eps/curve_sig.
+  bool viscoplastic = false;
   double fail = 0.0;      // effective plastic strain at failure; 0: none
   ResultantFailure weld;  // *MAT_SPOTWELD only (the beam kernel checks it)
   // *MAT_MUSCLE: the truss kernel takes its stress from this law (laws/muscle.hpp), not from
@@ -84,8 +87,8 @@ double flowStress(const FibreLaw& law, double eps_p);
 
 // Advances p over one step by the axial strain increment de and the engineering shear strain
 // increments dgs, dgt (gamma_rs, gamma_rt); dt sets the strain rate of the Cowper-Symonds
-// factor, the LCSR factor or the rate table's curve. Returns true when the point has reached
-// the failure strain.
+// factor, the LCSR factor or the rate table's curve (with VP = 1, the plastic strain rate). Returns
+// true when the point has reached the failure strain.
 bool updateFibre(const FibreLaw& law, FibrePoint& p, double de, double dgs, double dgt, double dt);
 
 }  // namespace crumple::materials

@@ -90,17 +90,18 @@ inline m::CurveAt rateCurves() {
 // Aluminium-like elasticity (MPa).
 constexpr double kE = 70000.0, kNu = 0.33;
 
-// MAT_024 with LCSS naming table 0 (rates) or 1 (ln rates).
-inline m::PiecewiseLinear tableLaw(int32_t table = 0) {
+// MAT_024 with LCSS naming table 0 (rates) or 1 (ln rates); vp: VP = 1.
+inline m::PiecewiseLinear tableLaw(int32_t table = 0, bool vp = false) {
   m::PiecewiseLinear::Params p;
   p.E = kE;
   p.nu = kNu;
   p.table = table;
+  p.viscoplastic = vp;
   return m::PiecewiseLinear::make(p, rateCurves(), "");
 }
 
 // MAT_024 with LCSR: on the curve hA (LCSS) or bilinear from SIGY 250, ETAN 2100.
-inline m::PiecewiseLinear lcsrLaw(bool curve) {
+inline m::PiecewiseLinear lcsrLaw(bool curve, bool vp = false) {
   m::PiecewiseLinear::Params p;
   p.E = kE;
   p.nu = kNu;
@@ -108,6 +109,21 @@ inline m::PiecewiseLinear lcsrLaw(bool curve) {
   p.etan = 2100.0;
   p.lcss = curve ? 0 : -1;
   p.lcsr = 3;
+  p.viscoplastic = vp;
+  return m::PiecewiseLinear::make(p, rateCurves(), "");
+}
+
+// MAT_024 with the Cowper-Symonds factor C, P on SIGY 250 and ETAN (bilinear), VP = 1.
+constexpr double kCsC = 40.0, kCsP = 5.0;
+inline m::PiecewiseLinear cowperSymondsLaw(double etan = 2100.0, double C = kCsC, double P = kCsP) {
+  m::PiecewiseLinear::Params p;
+  p.E = kE;
+  p.nu = kNu;
+  p.sigy = 250.0;
+  p.etan = etan;
+  p.c = C;
+  p.p = P;
+  p.viscoplastic = true;
   return m::PiecewiseLinear::make(p, rateCurves(), "");
 }
 
@@ -118,17 +134,46 @@ inline double lcsrStatic(bool curve, double e) {
 
 // Every rate-dependent law above with the yield stress (plastic strain, strain rate) it must
 // give: the table in rates and in ln(rate), LCSR on the curve and on SIGY/ETAN.
+// vp: the same laws with VP = 1 (their yield stress then at the plastic strain rate), and
+// the Cowper-Symonds law.
 using Yield = double (*)(double, double);
-inline std::vector<std::pair<m::Law, Yield>> allLaws() {
+inline std::vector<std::pair<m::Law, Yield>> allLaws(bool vp = false) {
   const Yield lcsr_curve = [](double e, double r) { return lcsrFactor(r) * lcsrStatic(true, e); };
   const Yield lcsr_bilinear = [](double e, double r) {
     return lcsrFactor(r) * lcsrStatic(false, e);
   };
-  return {{tableLaw(0), tableYield},
-          {tableLaw(1), logTableYield},
-          {lcsrLaw(true), lcsr_curve},
-          {lcsrLaw(false), lcsr_bilinear}};
+  std::vector<std::pair<m::Law, Yield>> laws{{tableLaw(0, vp), tableYield},
+                                             {tableLaw(1, vp), logTableYield},
+                                             {lcsrLaw(true, vp), lcsr_curve},
+                                             {lcsrLaw(false, vp), lcsr_bilinear}};
+  if (vp) {
+    const Yield cs = [](double e, double r) {
+      return (1.0 + std::pow(r / kCsC, 1.0 / kCsP)) * lcsrStatic(false, e);
+    };
+    laws.emplace_back(cowperSymondsLaw(), cs);
+  }
+  return laws;
 }
+
+// VP = 1 with the Cowper-Symonds factor of P = 1 on a flat yield curve (SIGY, ETAN 0) is the
+// overstress law of Perzyna (1966): eps_p' = C (q / SIGY - 1). Driven from the yield surface at
+// a constant effective strain rate `rate` in a state whose von Mises stress grows elastically
+// with modulus M (3 G in shear, E in a truss), q' = M (rate - eps_p'), so
+//   q(t) = q_inf + (SIGY - q_inf) exp(-k t),  q_inf = SIGY (1 + rate / C),  k = M C / SIGY.
+struct Overstress {
+  double sigy = 250.0, C = 100.0, M = 0.0, rate = 200.0;
+  double steady() const { return sigy * (1.0 + rate / C); }
+  double rateConstant() const { return M * C / sigy; }
+  double exact(double t) const {
+    return steady() + (sigy - steady()) * std::exp(-rateConstant() * t);
+  }
+  // The backward-Euler step of the law, which the return is: from q, a step dt of effective
+  // strain rate dt, q + M (rate dt - x) = SIGY (1 + x / (C dt)).
+  double backwardEuler(double q, double dt) const {
+    const double x = (q + M * rate * dt - sigy) / (M + sigy / (C * dt));
+    return sigy * (1.0 + x / (C * dt));
+  }
+};
 
 }  // namespace rate_law
 

@@ -808,6 +808,46 @@ TEST(Truss, RateDependentYieldStaysOnTheCurveAtTheRate) {
   EXPECT_DOUBLE_EQ(m::flowStress(m::fibreLawOf(rl::tableLaw(0)), 0.1), rl::hA(0.1));
 }
 
+// VP = 1 in a truss fibre: after every plastic step the axial stress is the yield stress at the
+// new plastic strain and the step's plastic strain rate; with Cowper-Symonds P = 1 on a flat
+// curve the stress follows Perzyna's overstress law (tests/support/rate_law.hpp) with M = E.
+TEST(Truss, ViscoplasticYieldIsAtThePlasticStrainRate) {
+  namespace rl = crumple::testing::rate_law;
+  for (const auto& [law, yield] : rl::allLaws(true)) {
+    const m::FibreLaw fl = m::fibreLawOf(law);
+    for (const double rate : {0.5, 40.0, 1000.0}) {
+      m::FibrePoint p;
+      const double de = 2e-4, dt = de / rate;
+      for (int n = 0; n < 500; ++n) {
+        const double before = p.eps_p;
+        m::updateFibre(fl, p, de, 0.0, 0.0, dt);
+        const double expected = yield(p.eps_p, (p.eps_p - before) / dt);
+        if (p.eps_p == before) {
+          ASSERT_LE(p.sig, expected * (1.0 + 1e-12)) << rate << " " << n;
+          continue;
+        }
+        ASSERT_NEAR(p.sig, expected, 1e-9 * expected) << rate << " " << n;
+      }
+      EXPECT_GT(p.eps_p, 0.06) << rate;
+    }
+  }
+  rl::Overstress o;
+  const m::Law overstress = rl::cowperSymondsLaw(0.0, o.C, 1.0);  // fl views its curve
+  const m::FibreLaw fl = m::fibreLawOf(overstress);
+  o.M = fl.E;
+  const double dt = 0.01 / o.rateConstant();
+  m::FibrePoint p;
+  p.sig = o.sigy;
+  double q_be = o.sigy;
+  for (int k = 1; k <= 1000; ++k) {
+    m::updateFibre(fl, p, o.rate * dt, 0.0, 0.0, dt);
+    q_be = o.backwardEuler(q_be, dt);
+    ASSERT_NEAR(p.sig, q_be, 1e-9 * q_be) << k;
+    ASSERT_NEAR(p.sig, o.exact(k * dt), 0.01 * (o.steady() - o.sigy)) << k;
+  }
+  EXPECT_NEAR(p.sig, o.steady(), 1e-4 * o.steady());
+}
+
 TEST(Truss, ErodesAtFailureStrain) {
   // MAT_003 FS: once the point reaches the failure strain the element is removed, its slots
   // zeroed, once.

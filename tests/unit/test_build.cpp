@@ -647,15 +647,28 @@ TEST(BuildTables, Mat024LcsrAndVp) {
   EXPECT_EQ(law.c, 0.0);
   ASSERT_FALSE(m.ignored.empty());
   EXPECT_EQ(m.ignored.back().field, "C");
-  // VP = 1 (viscoplastic) with a rate table is refused, naming the field.
-  const auto p = t.write("vp.k", rateDeck("*DEFINE_TABLE\n5\n0.0\n1.0\n", "0,0,5,0,1\n"));
+  EXPECT_FALSE(law.viscoplastic);
+  // VP = 1 (viscoplastic) with a rate table, with LCSR and with C and P.
+  const std::string lcsr = "*DEFINE_CURVE\n11\n0,200\n0.1,300\n*DEFINE_CURVE\n12\n0,1\n100,1.5\n";
+  for (const auto& deck : {rateDeck("*DEFINE_TABLE\n5\n0.0\n1.0\n", "0,0,5,0,1\n"),
+                           rateDeck("", "0,0,11,12,1\n", lcsr), rateDeck("", "40,5,0,0,1\n")}) {
+    const Model v = readModel(t.write("vp.k", deck));
+    EXPECT_TRUE(mat024(v).viscoplastic) << deck;
+  }
+  // VP = 3 (filtered rates) is refused, naming the field; without a rate form VP acts on
+  // nothing and is said to be ignored.
+  const auto p = t.write("vp3.k", rateDeck("*DEFINE_TABLE\n5\n0.0\n1.0\n", "0,0,5,0,3\n"));
   EXPECT_EQ(
       errorOf([&] { readModel(p); })
-          .rfind(p.string() +
-                     ":39: *MAT_024 card 2 field 5 (VP): only VP = 0 (the yield stress at the "
-                     "total effective strain rate) is supported with LCSR or a table in LCSS",
+          .rfind(p.string() + ":39: *MAT_024 card 2 field 5 (VP): VP is 0 (the yield stress at the "
+                              "total effective strain rate) or 1 (viscoplastic: at the plastic "
+                              "strain rate); -1 and 3 are not supported",
                  0),
       0u);
+  const Model n = readModel(t.write("vp0.k", rateDeck("", "0,0,0,0,1\n")));
+  EXPECT_FALSE(mat024(n).viscoplastic);
+  ASSERT_FALSE(n.ignored.empty());
+  EXPECT_EQ(n.ignored.back().field, "VP");
 }
 
 TEST(BuildUnsupported, CountsFirstLocationsReasonsAndIgnoredFields) {

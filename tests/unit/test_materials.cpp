@@ -574,6 +574,58 @@ TEST(MaterialsPiecewiseLinear, LcsrScalesTheYieldStress) {
   }
 }
 
+// VP = 1 (viscoplastic, Keyword Manual *MAT_024 VP): pulled in uniaxial stress at a constant
+// rate, after every plastic step the von Mises stress is the yield stress at the new plastic
+// strain and the step's plastic strain rate, for every rate form (the tables, LCSR on a curve
+// and on SIGY/ETAN, Cowper-Symonds), and the axial strain splits into the elastic strain of
+// the stress increment and the plastic one (uniaxial flow: d eps_p^xx = d eps_p): the two
+// equations that fix the step's answer.
+TEST(MaterialsPiecewiseLinear, ViscoplasticYieldIsAtThePlasticStrainRate) {
+  for (const auto& [law, yield] : rl::allLaws(true)) {
+    const double E = m::youngOf(m::moduliOf(law));
+    for (const double rate : {0.5, 40.0, 1000.0}) {
+      Point p;
+      const double dex = 2e-4, dt = dex / rate;
+      for (int k = 0; k < 500; ++k) {
+        const double before = p.eps_p, s_before = p.s[0];
+        uniaxialStep(law, p, dex, dt);
+        const double plastic_rate = (p.eps_p - before) / dt;
+        const double expected = yield(p.eps_p, plastic_rate);
+        if (p.eps_p == before) {
+          ASSERT_LE(vonMises(p, false), expected * (1.0 + 1e-12)) << rate << " " << k;
+          continue;
+        }
+        ASSERT_NEAR(vonMises(p, false), expected, 1e-10 * expected) << rate << " " << k;
+        ASSERT_NEAR(p.eps_p - before, dex - (p.s[0] - s_before) / E, 1e-9 * dex) << k;
+      }
+      EXPECT_GT(p.eps_p, 0.06) << rate;
+    }
+  }
+}
+
+// VP = 1 with Cowper-Symonds P = 1 on a flat curve is Perzyna's overstress law (rate_law.hpp,
+// Overstress): in pure shear from the yield surface at a constant rate, the return is its
+// backward-Euler step to round-off, within 1 % of the overstress of the exact exponential
+// approach at a step of 1/100 of the time constant, and ends at q_inf = SIGY (1 + rate / C).
+TEST(MaterialsPiecewiseLinear, ViscoplasticOverstressFollowsPerzyna) {
+  rl::Overstress o;
+  const m::Law law = rl::cowperSymondsLaw(0.0, o.C, 1.0);
+  o.M = 3.0 * m::moduliOf(law).shear;
+  const double dt = 0.01 / o.rateConstant();
+  const double d3 = 0.5 * std::sqrt(3.0) * o.rate * dt;  // tensor shear: effective rate `rate`
+  Point p;
+  p.s[3] = o.sigy / std::sqrt(3.0);
+  double q_be = o.sigy;
+  for (int k = 1; k <= 1000; ++k) {
+    step(law, p, Strain{0, 0, 0, d3, 0, 0}, dt);
+    q_be = o.backwardEuler(q_be, dt);
+    const double q = vonMises(p, false);
+    ASSERT_NEAR(q, q_be, 1e-11 * q) << k;
+    ASSERT_NEAR(q, o.exact(k * dt), 0.01 * (o.steady() - o.sigy)) << k;
+  }
+  EXPECT_NEAR(vonMises(p, false), o.steady(), 1e-4 * o.steady());
+}
+
 // The shared checks of make(): a table that cannot be used is an input error naming it.
 TEST(MaterialsPiecewiseLinear, RateTableChecks) {
   m::PiecewiseLinear::Params p;

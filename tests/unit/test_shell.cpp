@@ -292,6 +292,45 @@ TEST(ShellPlaneStress, RateDependentYieldStaysOnTheCurveAtTheRate) {
   }
 }
 
+// VP = 1 (the rate forms at the plastic strain rate, inside the return): in uniaxial stress the
+// stress after every plastic step is the yield stress at the new plastic strain and the step's
+// plastic strain rate; in pure shear with Cowper-Symonds P = 1 on a flat curve the return is
+// Perzyna's overstress law stepped by backward Euler (tests/support/rate_law.hpp).
+TEST(ShellPlaneStress, ViscoplasticYieldIsAtThePlasticStrainRate) {
+  namespace rl = crumple::testing::rate_law;
+  for (const auto& [law, yield] : rl::allLaws(true)) {
+    for (const double rate : {0.5, 40.0, 1000.0}) {
+      PsPoint p;
+      const double dex = 2e-4, dt = dex / rate;
+      for (int n = 0; n < 500; ++n) {
+        const double before = p.eps_p;
+        uniaxialStepBisected(law, p, dex, dt);
+        const double expected = yield(p.eps_p, (p.eps_p - before) / dt);
+        if (p.eps_p == before) {
+          ASSERT_LE(vonMises(p.s), expected * (1.0 + 1e-12)) << rate << " " << n;
+          continue;
+        }
+        ASSERT_NEAR(vonMises(p.s), expected, 1e-9 * expected) << rate << " " << n;
+      }
+      EXPECT_GT(p.eps_p, 0.06) << rate;
+    }
+  }
+  rl::Overstress o;
+  const mat::Law law = rl::cowperSymondsLaw(0.0, o.C, 1.0);
+  o.M = 3.0 * mat::moduliOf(law).shear;
+  const double dt = 0.01 / o.rateConstant();
+  PsPoint p;
+  p.s[2] = o.sigy / std::sqrt(3.0);
+  double q_be = o.sigy;
+  for (int k = 1; k <= 1000; ++k) {
+    psStep(law, p, 0.0, 0.0, 0.5 * std::sqrt(3.0) * o.rate * dt, dt);
+    q_be = o.backwardEuler(q_be, dt);
+    ASSERT_NEAR(vonMises(p.s), q_be, 1e-9 * q_be) << k;
+    ASSERT_NEAR(vonMises(p.s), o.exact(k * dt), 0.01 * (o.steady() - o.sigy)) << k;
+  }
+  EXPECT_NEAR(vonMises(p.s), o.steady(), 1e-4 * o.steady());
+}
+
 // Equibiaxial stretch: s_xx = s_yy = s (von Mises stress s); elastic s = E / (1 - nu) eps, then
 // on the hardening line with plastic strain eps_p = 2 (eps - s (1 - nu) / E); the thickness
 // strain -2 nu s / E - eps_p.

@@ -84,9 +84,10 @@ void readHardening(LawInput& in, PiecewiseLinear::Params& p, const deck::Card& c
 
 // Rate dependence (Keyword Manual, *MAT_024, LCSS and LCSR): a table in LCSS gives it, and C,
 // P and LCSR are then ignored; else an LCSR curve scales the yield stress, in place of the
-// Cowper-Symonds factor of C and P. With either, only VP = 0 (the yield stress at the total
-// effective strain rate) is supported: VP = 1 (viscoplastic: the rate is the plastic strain
-// rate, in the consistency condition) and VP = 3 (filtered rates) change the answer.
+// Cowper-Symonds factor of C and P. VP picks the rate they take: 0 the total effective strain
+// rate of the step, 1 (viscoplastic) the plastic strain rate, in the consistency condition;
+// VP = -1 (the deviatoric rate of the Cowper-Symonds factor) and 3 (filtered rates) change the
+// answer and are refused. Without a rate form VP acts on nothing.
 void readRate(LawInput& in, PiecewiseLinear::Params& p, const deck::Card& c2) {
   const int64_t lcsr = c2.integer("LCSR");
   const bool cowper = p.c != 0.0 || p.p != 0.0;
@@ -98,12 +99,19 @@ void readRate(LawInput& in, PiecewiseLinear::Params& p, const deck::Card& c2) {
     p.lcsr = in.curve(c2, "LCSR", lcsr);
     if (cowper) in.ignore(c2, "C", "LCSR gives the rate dependence: C and P are not used");
   }
-  if (p.table < 0 && p.lcsr < 0) return;
-  p.c = p.p = 0.0;
-  if (c2.real("VP") != 0.0)
+  if (p.table >= 0 || p.lcsr >= 0) p.c = p.p = 0.0;
+  const double vp = c2.real("VP");
+  if (p.table < 0 && p.lcsr < 0 && !(p.c > 0.0 && p.p > 0.0)) {
+    if (vp != 0.0) in.ignore(c2, "VP", "no rate dependence (C and P, LCSR or a table) to act on");
+    return;
+  }
+  if (vp == 1.0) {
+    p.viscoplastic = true;
+  } else if (vp != 0.0) {
     in.reject(c2, "VP",
-              "only VP = 0 (the yield stress at the total effective strain rate) is supported "
-              "with LCSR or a table in LCSS");
+              "VP is 0 (the yield stress at the total effective strain rate) or 1 "
+              "(viscoplastic: at the plastic strain rate); -1 and 3 are not supported");
+  }
 }
 
 }  // namespace
@@ -173,9 +181,16 @@ PiecewiseLinear PiecewiseLinear::make(const Params& p, const CurveAt& curves,
   }
   law.fail = p.fail;
   law.tdel = p.tdel;
+  law.viscoplastic = p.viscoplastic;
   if (p.table < 0 && p.lcss < 0) {
     checkTangent(at, p.E, p.etan);
     law.linear.Hi = plasticModulus(youngOf(law.moduli), p.etan);
+    // VP = 1 runs on the curve returns (the linear ones take the rate factor outside the
+    // return): the bilinear hardening as the curve it is, extrapolated past its second point.
+    if (law.viscoplastic) {
+      law.curve_eps = {0.0, 1.0};
+      law.curve_sig = {p.sigy, p.sigy + law.linear.Hi};
+    }
     return law;
   }
   // LCSS given: SIGY and ETAN are ignored (Keyword Manual, *MAT_024); the initial yield
@@ -228,6 +243,7 @@ FibreLaw PiecewiseLinear::fibre() const {
   f.inv_P = linear.inv_P;
   f.lcsr = rateCurve();
   f.table = table.view();
+  f.viscoplastic = viscoplastic;
   f.fail = fail;
   return f;
 }

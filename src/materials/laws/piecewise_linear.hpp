@@ -4,8 +4,9 @@
 // a *DEFINE_TABLE in LCSS giving one yield curve per strain rate (materials/rate.hpp), erosion
 // at the effective plastic strain FAIL and deletion of elements whose step falls below TDEL
 // (LS-DYNA Keyword Manual vol. II, *MAT_PIECEWISE_LINEAR_PLASTICITY; Theory Manual, material
-// model 24). The rate is the total effective strain rate (VP = 0); VP = 1 (viscoplastic) with
-// LCSR or a table is refused.
+// model 24). VP = 0: the rate forms scale the yield stress at the total effective strain rate
+// of the step; VP = 1 (viscoplastic): at the effective plastic strain rate, inside the
+// consistency condition (return_mapping.hpp, viscoplasticFlow; docs/theory.md).
 #pragma once
 
 #include <array>
@@ -39,6 +40,7 @@ struct PiecewiseLinear {
     double tdel = 0;      // minimum time step for automatic element deletion
     int32_t lcsr = -1;    // curve index: yield stress factor vs effective strain rate; -1 = none
     int32_t table = -1;   // LCSS naming a *DEFINE_TABLE: model table index; -1 = none
+    bool viscoplastic = false;  // VP = 1 with a rate form (C and P, LCSR or a table)
   };
   static const deck::KeywordSpec& cards();
   // The cards of *MAT_024 under another keyword, with fields added at the end of card 2 (the
@@ -54,6 +56,8 @@ struct PiecewiseLinear {
   std::vector<double> lcsr_rate, lcsr_factor;  // the LCSR curve; empty: none
   RateTableData table;                         // the LCSS table; empty: none
   double fail = 0, tdel = 0;
+  // VP = 1; a bilinear law then runs as the two-point curve (0, SIGY), (1, SIGY + Ep).
+  bool viscoplastic = false;
   void update(PointBatch& b) const;
   void updatePlaneStress(PlaneStressPoints& b) const;
   FibreLaw fibre() const;
@@ -65,7 +69,7 @@ struct PiecewiseLinear {
  private:
   RateCurve rateCurve() const { return {lcsr_rate, lcsr_factor}; }
   CurveHardening curve() const {
-    return {curve_eps, curve_sig, linear.C, linear.inv_P, rateCurve(), table.view()};
+    return {curve_eps, curve_sig, linear.C, linear.inv_P, rateCurve(), table.view(), viscoplastic};
   }
   LinearHardening bilinear() const {
     LinearHardening h = linear;
