@@ -25,14 +25,14 @@ the suite). It checks:
   - a, p, v_bl through the residual velocities at 300, 400 and 600 m/s put v_bl between
     250 and 300 m/s, and predict the residual velocities at 350 and 500 m/s within
     PREDICTION_TOLERANCE of the impact velocity;
-  - from 350 to 600 m/s the residual velocities follow p = 2 (within 2 % of v_i) with
-    a = m_p / (m_p + m_plug) within 3 %, m_plug the plate's cylinder under the projectile;
+  - from 350 to 600 m/s the residual velocities follow p = 2 (within 2 % of v_i) with a
+    between m_p / (m_p + m_plug) (m_plug the plate's cylinder under the projectile) and 1;
   - energy: the ratio within [0.98, 1.02] at every glstat sample of every run, with the
     eroded elements' internal energy kept in the internal energy (as Crumple books it); that
     energy is more than 2 % of the initial energy in every perforating run, so a run that
     lost it would leave the band;
   - momentum: the projectile's change of momentum (matsum) equals the impulse of the
-    contact force on it (rcforc, side 2, trapezoid over the 0.5 us samples) within 2 %.
+    contact force on it (rcforc, side 2, written every cycle, trapezoid) within 0.5 %.
 
 Doubtful (docs/validation.md): the limit of this mesh, 250-300 m/s, is 35-60 % above the
 measured one; near it the residual velocity depends on the rigid nose's element depth (the
@@ -58,7 +58,7 @@ from clitest import history_rows as rows  # noqa: E402
 BELOW = 250.0  # m/s: does not perforate
 FIT = (300.0, 400.0, 600.0)  # m/s: the runs a, p, v_bl are fitted to
 PREDICTED = (350.0, 500.0)  # m/s: the runs they predict
-PREDICTION_TOLERANCE = 0.05  # of the impact velocity
+PREDICTION_TOLERANCE = 0.02  # of the impact velocity
 
 
 def end_time(v0):
@@ -153,11 +153,12 @@ class PerforationVerification(unittest.TestCase):
                   f"({(measured - predicted) / v:+.1%} of v_i)")
             self.assertAlmostEqual(measured, predicted, delta=PREDICTION_TOLERANCE * v)
 
-    def test_plugging_gives_p_2_and_a_of_the_plug_mass(self):
-        # Recht and Ipson's own constants for a plug that leaves with the projectile: p = 2,
-        # a = m_p / (m_p + m_plug), m_plug the plate's cylinder under the projectile (the
-        # quarter model's quarter). Away from the limit (350-600 m/s) v_r^2 is linear in
-        # v_i^2 with slope a^2.
+    def test_away_from_the_limit_p_is_2_and_a_is_bounded_by_the_plug(self):
+        # Recht and Ipson's constants for a plug that leaves with the projectile: p = 2,
+        # a = m_p / (m_p + m_plug). Away from the limit (350-600 m/s) v_r^2 is linear in
+        # v_i^2 with slope a^2, and a lies between the whole plug carried (m_plug the plate's
+        # cylinder under the projectile, the quarter model's quarter) and none (a = 1): at 500
+        # and 600 m/s much of the plug erodes.
         decks = clitest.tools_module("perforation_decks")
         pts = [(v, self.residual(v)) for v in sorted((*FIT, *PREDICTED)) if v >= 350.0]
         m_p = self.projectile(pts[0][0])[1]
@@ -170,7 +171,8 @@ class PerforationVerification(unittest.TestCase):
         a, v_bl = slope ** 0.5, (mx - my / slope) ** 0.5
         print(f"\np = 2 through {[(v, round(r, 1)) for v, r in pts]}: a = {a:.4f}, "
               f"v_bl = {v_bl:.1f} m/s; m_p / (m_p + m_plug) = {m_p / (m_p + m_plug):.4f}")
-        self.assertAlmostEqual(a, m_p / (m_p + m_plug), delta=0.03 * a)
+        self.assertGreater(a, m_p / (m_p + m_plug))
+        self.assertLess(a, 1.0)
         for v, r in pts:
             self.assertAlmostEqual(r, residual_velocity(a, 2.0, v_bl, v), delta=0.02 * v)
 
@@ -198,7 +200,8 @@ class PerforationVerification(unittest.TestCase):
                 f = [(r["time"], r["fz"]) for r in rows(out, "rcforc.csv") if r["side"] == 2.0]
                 impulse = sum(0.5 * (f[i][1] + f[i + 1][1]) * (f[i + 1][0] - f[i][0])
                               for i in range(len(f) - 1))
-                self.assertAlmostEqual(impulse / change, 1.0, delta=0.02)
+                print(f"\n{v0:g} m/s: contact impulse / momentum change {impulse / change:.5f}")
+                self.assertAlmostEqual(impulse / change, 1.0, delta=0.005)
 
 
 if __name__ == "__main__":
