@@ -10,7 +10,8 @@ The set-up follows Børvik et al.'s blunt-projectile tests on 12 mm Weldox 460 E
 (Int. J. Impact Eng. 27 (2002) 19; as recalled, the paper not at hand: the projectile 20 mm
 across, 80 mm long, 197 g, the plate clamped at 500 mm diameter), here with the plate
 clamped at 100 mm diameter (perforation by plugging is local: what the plate does beyond a
-few thicknesses changes the residual velocity little; not checked here) and a coarse mesh. Units mm, ms, kg, GPa (m/s = mm/ms, J = kN mm).
+few thicknesses changes the residual velocity little; not checked here) and a coarse mesh.
+Units mm, ms, kg, GPa (m/s = mm/ms, J = kN mm).
 """
 
 from __future__ import annotations
