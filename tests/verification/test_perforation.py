@@ -18,8 +18,8 @@ Weldox 460 E plates struck by 20 mm blunt projectiles (Int. J. Impact Eng. 27 (2
 ballistic limit about 185 m/s, quoted from memory of the paper). The test checks the model
 against the relation, not the relation's constants against the experiment: the mesh, 1 mm
 in the shear zone, is far too coarse for the shear band a plug forms in and overestimates
-v_bl (twice finer, at SFS 1, the residual velocity at 300 m/s rises from 99 to 204 m/s;
-too slow for the suite). It checks:
+v_bl (twice finer, the residual velocity at 300 m/s rises from 103 to 192 m/s; too slow
+for the suite). It checks:
 
   - 250 m/s does not perforate (nothing erodes; the projectile rebounds) and 300, 350, 400,
     500, 600 m/s do, each leaving at a steady velocity;
