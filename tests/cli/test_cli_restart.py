@@ -98,6 +98,8 @@ class RestartEquality(RestartCase):
             (data_deck("composite_plate.k"), [], 900),
             (data_deck("tshell_plate.k"), [], 400),
             (data_deck("tshell2_plate.k"), [], 400),
+            # *MAT_024 VP = 1 on hexes, shells and beams, plastic by the dump.
+            (data_deck("vp1_mixed.k"), [], 150),
         ]
 
     def test_restart_from_mid_run_dump_is_bitwise(self):
