@@ -7,6 +7,7 @@
 #include <omp.h>
 
 #include <cmath>
+#include <functional>
 
 #include "brick_model.hpp"
 #include "domain/subdomain.hpp"
@@ -38,11 +39,14 @@ model::Model brick(int nx, int ny, int nz, model::MaterialLaw law, int ihq, int 
   return m;
 }
 
+// `complete` adds what the law needs beyond its parameters (an equation of state, a curve).
 void runKernel(benchmark::State& state, model::MaterialLaw law, int ihq, int tshell_nip = 0,
-               int tshell_form = model::kThickShellOnePoint) {
+               int tshell_form = model::kThickShellOnePoint,
+               const std::function<void(model::Model&)>& complete = {}) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
   // Range 1: brick edge in elements along z (40 = 100k elements; 4 = 10k, which fits in cache).
-  const auto m = brick(50, 50, static_cast<int>(state.range(1)), law, ihq, tshell_nip, tshell_form);
+  auto m = brick(50, 50, static_cast<int>(state.range(1)), law, ihq, tshell_nip, tshell_form);
+  if (complete) complete(m);
   auto sd = domain::buildSerialSubdomain(m);
   std::vector<double> dt_e;
   for (auto& b : sd.solid_blocks) elements::initializeSolids(b, sd.x0, sd.slots.data(), dt_e, {});
@@ -145,5 +149,55 @@ void TShellCounted(benchmark::State& s) {
 }
 BENCHMARK(TShellCounted)->Args({1, 4})->Iterations(10)->Unit(benchmark::kMillisecond);
 BENCHMARK(Hex8PlasticKinematicViscousHourglass)->Apply(hexArgs);
+
+// Crash and impact laws of issue 13 on the same brick, each yielding (or crushing) at once
+// under the imposed velocity field: *MAT_JOHNSON_COOK with an *EOS_LINEAR_POLYNOMIAL (the law
+// takes its pressure from the part's equation of state), with damage D1-D5 and adiabatic
+// heating (OFHC copper's constants, Johnson & Cook 1985, but A small so that every point is
+// plastic from the first pass); *MAT_SOIL_AND_FOAM with a pressure curve and a Drucker-Prager
+// like surface (a0 + a1 p + a2 p^2).
+void Hex8JohnsonCook(benchmark::State& s) {
+  materials::JohnsonCook::Params jc;
+  jc.rho = 8.96e-6;
+  jc.G = 46.0;
+  jc.a = 0.001;
+  jc.b = 0.292;
+  jc.n = 0.31;
+  jc.c = 0.025;
+  jc.m = 1.09;
+  jc.tm = 1356.0;
+  jc.tr = 293.0;
+  jc.epso = 1.0;
+  jc.cp = 383.0;
+  jc.pc = -10.0;
+  jc.d = {0.54, 4.89, -3.03, 0.014, 1.12};
+  runKernel(s, jc, 4, 0, model::kThickShellOnePoint, [](model::Model& m) {
+    model::EquationOfState eos;
+    eos.id = 1;
+    eos.eos.form = materials::Eos::Form::LinearPolynomial;
+    eos.eos.c = {0.0, 140.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // C1 = K, GPa
+    m.eos.push_back(eos);
+    m.parts[0].eos = 0;
+  });
+}
+void Hex8SoilFoam(benchmark::State& s) {
+  materials::SoilAndFoam::Params soil;
+  soil.G = 0.05;
+  soil.kun = 0.5;
+  soil.a0 = 1e-6;
+  soil.a1 = 1e-3;
+  soil.a2 = 0.3;
+  soil.pc = -1e-4;
+  soil.curve = 0;
+  runKernel(s, soil, 4, 0, model::kThickShellOnePoint, [](model::Model& m) {
+    model::Curve c;
+    c.id = 1;
+    c.x = {0.0, -0.05, -0.1, -0.3};  // ln(V / V0), as a deck's LCID
+    c.y = {0.0, 0.01, 0.03, 0.2};    // pressure, GPa
+    m.curves.push_back(c);
+  });
+}
+BENCHMARK(Hex8JohnsonCook)->Apply(hexArgs);
+BENCHMARK(Hex8SoilFoam)->Apply(hexArgs);
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <numeric>
 #include <vector>
 
@@ -29,7 +30,9 @@ struct Plate {
   std::vector<int32_t> ptr, corner;
 };
 
-Plate plate(int nx, int ny, const materials::Law& law, int nip, int ihq) {
+// `ply`: the points' material angles through the thickness (*SECTION_SHELL ICOMP 1); empty: 0.
+Plate plate(int nx, int ny, const materials::Law& law, int nip, int ihq,
+            const std::vector<double>& ply = {}) {
   Plate p;
   const auto node = [&](int i, int j) { return int32_t(i + (nx + 1) * j); };
   for (int j = 0; j <= ny; ++j)
@@ -49,6 +52,7 @@ Plate plate(int nx, int ny, const materials::Law& law, int nip, int ihq) {
     for (int i = 0; i < nx; ++i)
       b.conn.push_back({node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)});
   b.corner_thickness.assign(b.conn.size(), {0.1, 0.1, 0.1, 0.1});
+  b.ply = ply;
   b.elem.resize(b.conn.size());
   std::iota(b.elem.begin(), b.elem.end(), 0);
   b.elem_id.assign(b.elem.begin(), b.elem.end());
@@ -83,9 +87,10 @@ Plate plate(int nx, int ny, const materials::Law& law, int nip, int ihq) {
   return p;
 }
 
-void runShell(benchmark::State& state, const materials::Law& law, int ihq, int warmup = 0) {
+void runShell(benchmark::State& state, const materials::Law& law, int ihq, int warmup = 0,
+              const std::vector<double>& ply = {}) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
-  Plate p = plate(static_cast<int>(state.range(1)), 250, law, 5, ihq);
+  Plate p = plate(static_cast<int>(state.range(1)), 250, law, 5, ihq, ply);
   const double dt = 1e-5;
   const std::size_t nn = p.x.size() / 3;
   const bool gather = state.range(2) != 0;
@@ -152,11 +157,12 @@ const std::vector<double> kEpsC{0.0, 0.02, 0.3}, kSigC{0.36, 0.4, 0.52};
 const std::vector<double> kRates{0.1, 1.0, 10.0};
 const std::vector<int32_t> kTableCurves{0, 1, 2};
 
-materials::Law curve024(bool table) {
+materials::Law curve024(bool table, bool viscoplastic = false) {
   materials::PiecewiseLinear::Params p;
   p.E = 210.0;
   p.nu = 0.3;
   (table ? p.table : p.lcss) = 0;
+  p.viscoplastic = viscoplastic;
   const materials::CurveAt curves(
       [](int32_t i) -> materials::CurveData {
         if (i == 1) return {2, kEpsB, kSigB};
@@ -173,6 +179,30 @@ void ShellPlastic024CurveCrash(benchmark::State& s) {
 }
 void ShellPlastic024RateTableCrash(benchmark::State& s) {
   runShell(s, curve024(true), 1, 300);
+}
+// VP = 1 (viscoplastic): the same table at the plastic strain rate, inside the return
+// (return_mapping.hpp, viscoplasticFlow): Newton on the rate as well as the curve.
+void ShellPlastic024RateTableViscoplasticCrash(benchmark::State& s) {
+  runShell(s, curve024(true, true), 1, 300);
+}
+// *MAT_054 (enhanced composite damage, Chang-Chang) on a [0/45/90/-45/0] lay-up, one ply per
+// point through the thickness (*SECTION_SHELL ICOMP 1): a carbon-epoxy ply (GPa), with
+// strengths too high for the imposed strains to fail it, so that every pass evaluates the
+// intact ply's stress and the four failure criteria.
+materials::Law composite054() {
+  materials::EnhancedComposite::Params p;
+  p.ea = 130.0;
+  p.eb = p.ec = 10.0;
+  p.prba = 0.02;
+  p.prca = p.prcb = 0.3;
+  p.gab = p.gca = 5.0;
+  p.gbc = 3.0;
+  p.xt = p.xc = p.yt = p.yc = p.sc = 100.0;
+  return materials::makeLaw(p, {}, "");
+}
+void ShellComposite054(benchmark::State& s) {
+  const double d = std::numbers::pi / 180.0;
+  runShell(s, composite054(), 1, 0, {0.0, 45.0 * d, 90.0 * d, -45.0 * d, 0.0});
 }
 void ShellElastic(benchmark::State& s) {
   runShell(s, materials::Elastic{materials::moduliFromYoung(210.0, 0.3)}, 1);
@@ -199,6 +229,8 @@ BENCHMARK(ShellPlastic024Stiffness)->Apply(shellArgs);
 BENCHMARK(ShellPlastic024Crash)->Apply(shellArgs);
 BENCHMARK(ShellPlastic024CurveCrash)->Apply(shellArgs);
 BENCHMARK(ShellPlastic024RateTableCrash)->Apply(shellArgs);
+BENCHMARK(ShellPlastic024RateTableViscoplasticCrash)->Apply(shellArgs);
+BENCHMARK(ShellComposite054)->Apply(shellArgs);
 BENCHMARK(ShellElastic)->Apply(shellArgs);
 // A fixed amount of work, for instruction counts under callgrind:
 //   valgrind --tool=callgrind --toggle-collect='*shellBlockForces*' crumple_bench
